@@ -1,0 +1,81 @@
+/* relcol/kinematics.h — special-relativistic kinematics with c as a parameter.
+ *
+ * Every formula takes inv_c2 = 1/c^2; inv_c2 = 0 (c = INFINITY) is the exact classical
+ * case of the same expression, not a separate code path. A ball's state is its rest
+ * mass m and momentum p; the relativistic mass M = E/c^2 = sqrt(m^2 + p^2/c^2) and the
+ * velocity v = p/M are derived from them, so |v| < c holds by construction and nothing
+ * computes 1 - v^2/c^2 from a stored velocity (it cancels catastrophically near c). */
+#ifndef RELCOL_KINEMATICS_H
+#define RELCOL_KINEMATICS_H
+
+#include <stddef.h>
+#include "relcol/vec.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* A ball's dynamical state: rest mass m > 0 and momentum p. */
+typedef struct rc_particle {
+    double m;
+    rc_vec3 p;
+} rc_particle;
+
+/* A four-vector written as (time component / c, spatial part), so that c enters only
+ * through inv_c2:
+ *   four-momentum: t = M = E/c^2, x = p;     event: t = time, x = position;
+ *   contact-normal four-vector of the zmf law: t = (u.n)/c^2, x = n. */
+typedef struct rc_four {
+    double t;
+    rc_vec3 x;
+} rc_four;
+
+/* inv_c2 = 1/c^2 from c; c = INFINITY gives 0. RC_ESPEEDOFLIGHT unless c > 0 (NaN too). */
+int rc_inv_c2(double c, double *inv_c2);
+
+/* M = E/c^2 = sqrt(m^2 + p^2/c^2); m when inv_c2 = 0. */
+double rc_mass_rel(double m, rc_vec3 p, double inv_c2);
+/* gamma - 1 = (p^2/c^2) / (m (M + m)): no cancellation, exact 0 classically. */
+double rc_gamma_m1(double m, rc_vec3 p, double inv_c2);
+/* gamma = M / m. */
+double rc_gamma(double m, rc_vec3 p, double inv_c2);
+/* Kinetic energy (gamma - 1) m c^2 = p^2 / (M + m); p^2 / 2m classically. */
+double rc_kinetic_energy(double m, rc_vec3 p, double inv_c2);
+/* Rapidity artanh(|v|/c) = asinh(|p| / (m c)), in units of c: 0 classically. */
+double rc_rapidity(double m, rc_vec3 p, double inv_c2);
+/* Velocity p / M. */
+rc_vec3 rc_velocity(double m, rc_vec3 p, double inv_c2);
+
+/* Lorentz factor of a velocity: RC_ESPEED if |v| >= c, RC_ENONFINITE for NaN/inf. */
+int rc_gamma_from_velocity(rc_vec3 v, double inv_c2, double *gamma);
+/* p = m gamma(v) v. RC_ESPEED if |v| >= c, RC_EMASS if m <= 0. */
+int rc_momentum_from_velocity(double m, rc_vec3 v, double inv_c2, rc_vec3 *p);
+
+/* Lorentz boost into the frame that moves with velocity w (|w| < c, any direction):
+ *   t' = gamma (t - w.x/c^2),  x' = x + [(gamma-1)/w^2 (x.w) - gamma t] w,
+ * with (gamma-1)/w^2 = gamma^2/(c^2 (gamma + 1)) so w -> 0 and c -> inf are exact.
+ * Classically this is the Galilean change of frame (t' = t, x' = x - t w). */
+int rc_boost(rc_vec3 w, double inv_c2, rc_four *a);
+/* Velocity, seen from a frame moving at w, of a body moving at v (relativistic velocity
+ * subtraction). rc_velocity_add(w, v') is the inverse: the table velocity of a body
+ * moving at v' in the frame moving at w. RC_ESPEED if |v| or |w| >= c. */
+int rc_velocity_boost(rc_vec3 v, rc_vec3 w, double inv_c2, rc_vec3 *out);
+int rc_velocity_add(rc_vec3 w, rc_vec3 vprime, double inv_c2, rc_vec3 *out);
+
+/* Four-momentum (M, p) of a particle. */
+rc_four rc_particle_four(const rc_particle *b, double inv_c2);
+
+/* Zero-momentum-frame velocity u = sum p / sum M and invariant mass
+ * sqrt((sum M)^2 - (sum p)^2/c^2) of n particles (either output may be NULL). */
+int rc_zmf(const rc_particle *b, size_t n, double inv_c2, rc_vec3 *u, double *minv);
+/* Invariant mass of two particles, sqrt(m0^2 + m1^2 + 2 m0 m1 gamma_rel), with
+ * gamma_rel - 1 accumulated without the large cancellation of (sum M)^2 - (sum p)^2/c^2. */
+double rc_pair_invariant_mass(const rc_particle *a, const rc_particle *b, double inv_c2);
+
+/* Validate a particle: finite momentum, 0 < m < inf. */
+int rc_particle_check(const rc_particle *b);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,83 @@
+/* relcol/law.h — two-ball collision laws as a small table of function pointers.
+ *
+ * A law maps the pre-collision states of two balls (rest mass, momentum), a unit contact
+ * normal n from ball 0 to ball 1 and the law's parameters to the post-collision states,
+ * rest-mass change included. Laws are `const rc_law` objects (like GSL's
+ * gsl_root_fsolver_brent); rc_laws[] lists the built-in ones by name. To add a law:
+ * write one file defining `const rc_law rc_law_mine = {"mine", "...", mine_collide}`,
+ * declare it below and add its address to rc_laws[] in lib/law_table.c — nothing else
+ * changes; rc_law_find(), relcol-collide --law and the law tests pick it up by name. */
+#ifndef RELCOL_LAW_H
+#define RELCOL_LAW_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "relcol/kinematics.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Parameters shared by the laws. Make one with rc_collision_params_default(). */
+typedef struct rc_collision_params {
+    double inv_c2;  /* 1/c^2; 0 is the classical limit */
+    double eps;     /* restitution in [0, 1] (zmf: normal ZMF momentum; cm-isotropic: R) */
+    /* cm-isotropic only: impact angle alpha in (-pi/2, pi/2) between the ZMF direction
+     * of motion of ball 0 and the ZMF contact normal (seed 002), and in 3-D the azimuth
+     * of the normal about that direction. alpha = NAN: take the normal from n instead. */
+    double alpha;
+    double azimuth;
+} rc_collision_params;
+
+/* Law kernel. On RC_OK, *a and *b hold the outcome. RC_NO_COLLISION (a and b untouched)
+ * when the balls do not approach along n. Kernels assume validated input (finite, m > 0,
+ * |n| = 1, eps in [0,1]): rc_collide() validates, rc_collide_batch() trusts. */
+typedef int (*rc_law_fn)(const rc_collision_params *prm, rc_particle *a, rc_particle *b,
+                         rc_vec3 n);
+
+typedef struct rc_law {
+    const char *name;    /* as on the command line */
+    const char *summary; /* one line for --help */
+    rc_law_fn collide;
+} rc_law;
+
+/* The four-impulse law of shared/DESIGN.md: impulse J (u.n/c^2, n) with
+ *   J = -(1+eps) (p0.n - M0 u.n) / (1 - (u.n)^2/c^2),
+ * energy of each ball kept in the pair's ZMF, ZMF normal momentum scaled by -eps,
+ * rest masses from m'^2 = m^2 + (1-eps^2) pbar_n^2 / c^2. */
+extern const rc_law rc_law_zmf;
+/* Seed 002's law made relativistic (papers/cm-isotropic.md): in the pair's ZMF reflect
+ * the momenta about the ZMF contact normal, then scale the whole ZMF momentum by R=eps. */
+extern const rc_law rc_law_cm_isotropic;
+
+/* NULL-terminated table of the built-in laws. */
+extern const rc_law *const rc_laws[];
+/* Law by name, NULL if unknown. */
+const rc_law *rc_law_find(const char *name);
+
+rc_collision_params rc_collision_params_default(void); /* classical, eps = 1, alpha NAN */
+
+/* Validating entry point: checks the particles, c, eps and n (normalised here; a zero
+ * normal is RC_EZERONORMAL), then calls law->collide. */
+int rc_collide(const rc_law *law, const rc_collision_params *prm, rc_particle *a,
+               rc_particle *b, rc_vec3 n);
+
+/* Batch: n_pairs collisions a[i] with b[i] along unit normals n[i] (trusted input).
+ * status[i] (may be NULL) receives each kernel's code. Returns the number that collided. */
+size_t rc_collide_batch(const rc_law *law, const rc_collision_params *prm, size_t n_pairs,
+                        rc_particle *a, rc_particle *b, const rc_vec3 *n, int *status);
+
+/* Ball against an infinitely massive wall with outward unit normal n (pointing from the
+ * ball into the wall): p_n' = -eps_w p_n, tangential kept, energy M kept, rest mass
+ * m'^2 = m^2 + (1 - eps_w^2) p_n^2 / c^2. RC_NO_COLLISION if p.n <= 0. */
+int rc_collide_wall(double inv_c2, double eps_w, rc_particle *a, rc_vec3 n);
+
+/* Draw a cm-isotropic impact angle for uniformly distributed impact parameters:
+ * 2-D sin(alpha) uniform in [-1, 1]; 3-D sin^2(alpha) uniform in [0, 1] and azimuth
+ * uniform. u1, u2 are uniform deviates in [0, 1) (the caller owns the generator). */
+void rc_impact_angle_draw(int dim, double u1, double u2, double *alpha, double *azimuth);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

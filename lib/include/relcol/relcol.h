@@ -1,0 +1,10 @@
+/* relcol/relcol.h — the whole public API of librelcol in one include. */
+#ifndef RELCOL_RELCOL_H
+#define RELCOL_RELCOL_H
+
+#include "relcol/status.h"
+#include "relcol/vec.h"
+#include "relcol/kinematics.h"
+#include "relcol/law.h"
+
+#endif

@@ -1,0 +1,74 @@
+/* law_cm_isotropic.c — seed 002's impact-angle law with restitution R on the whole
+ * centre-of-momentum velocity, made relativistic (papers/cm-isotropic.md): in the pair's
+ * ZMF the momenta are reflected about the ZMF contact normal (an elastic collision at
+ * impact angle alpha) and then the whole ZMF momentum is scaled by R, each ball's ZMF
+ * energy kept, so m'^2 = m^2 + (1 - R^2) |pbar|^2 / c^2. Classically this is exactly
+ * eqs (8)-(13) followed by (22)-(27). */
+#include <math.h>
+
+#include "relcol/law.h"
+#include "relcol/status.h"
+#include "kinematics_private.h"
+
+/* Unit vectors e1, e2 completing phat to a right-handed frame, with e1 the in-plane
+ * (xy) perpendicular rotated +90 degrees, so that azimuth 0 keeps a 2-D problem 2-D. */
+static void perp_frame(rc_vec3 phat, rc_vec3 *e1, rc_vec3 *e2)
+{
+    double h = hypot(phat.x, phat.y);
+    if (h > 0.0)
+        *e1 = rc_v3(-phat.y / h, phat.x / h, 0.0);
+    else
+        *e1 = rc_v3(1.0, 0.0, 0.0);
+    *e2 = rc_v3_cross(phat, *e1);
+}
+
+static int cm_isotropic_collide(const rc_collision_params *prm, rc_particle *a,
+                                rc_particle *b, rc_vec3 n)
+{
+    const double k = prm->inv_c2, R = prm->eps;
+    const double M0 = rc_mass_rel(a->m, a->p, k), M1 = rc_mass_rel(b->m, b->p, k);
+    const double Mt = M0 + M1;
+    const rc_vec3 P = rc_v3_add(a->p, b->p);
+    const rc_vec3 u = rc_v3_scale(1.0 / Mt, P);
+    const double g = Mt / rc_pair_invariant_mass(a, b, k); /* gamma of the ZMF */
+
+    rc_four A = {M0, a->p};
+    rc_boost_g(u, g, k, &A); /* ball 0 in the ZMF: (Mbar0, pbar) */
+    const double pb2 = rc_v3_norm2(A.x);
+    if (!(pb2 > 0.0))
+        return RC_NO_COLLISION;
+
+    rc_vec3 nh;
+    if (isnan(prm->alpha)) {
+        rc_four q = {rc_v3_dot(u, n) * k, n}; /* normal four-vector -> (0, nbar) */
+        rc_boost_g(u, g, k, &q);
+        nh = rc_v3_scale(1.0 / rc_v3_norm(q.x), q.x);
+    } else {
+        rc_vec3 ph = rc_v3_scale(1.0 / sqrt(pb2), A.x), e1, e2;
+        perp_frame(ph, &e1, &e2);
+        const double sa = sin(prm->alpha), ca = cos(prm->alpha);
+        nh = rc_v3_scale(ca, ph);
+        nh = rc_v3_axpy(nh, sa * cos(prm->azimuth), e1);
+        nh = rc_v3_axpy(nh, sa * sin(prm->azimuth), e2);
+    }
+    const double pn = rc_v3_dot(A.x, nh);
+    if (!(pn > 0.0))
+        return RC_NO_COLLISION;
+
+    A.x = rc_v3_scale(R, rc_v3_axpy(A.x, -2.0 * pn, nh));
+    rc_boost_g(rc_v3_scale(-1.0, u), g, k, &A); /* back to the table frame */
+    if (R != 1.0) {
+        const double dm2 = (1.0 - R * R) * pb2 * k;
+        a->m = sqrt(a->m * a->m + dm2);
+        b->m = sqrt(b->m * b->m + dm2);
+    }
+    a->p = A.x;
+    b->p = rc_v3_sub(P, A.x);
+    return RC_OK;
+}
+
+const rc_law rc_law_cm_isotropic = {
+    "cm-isotropic",
+    "seed 002: elastic at impact angle alpha in the ZMF, then ZMF momentum scaled by R",
+    cm_isotropic_collide,
+};

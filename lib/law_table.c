@@ -1,0 +1,93 @@
+/* law_table.c — the table of collision laws, the validating and batch entry points,
+ * the wall law and the impact-angle draw. Add a law here: one line in rc_laws[]. */
+#include <math.h>
+#include <string.h>
+
+#include "relcol/law.h"
+#include "relcol/status.h"
+
+const rc_law *const rc_laws[] = {
+    &rc_law_zmf,
+    &rc_law_cm_isotropic,
+    NULL,
+};
+
+const rc_law *rc_law_find(const char *name)
+{
+    if (!name)
+        return NULL;
+    for (size_t i = 0; rc_laws[i]; i++)
+        if (strcmp(rc_laws[i]->name, name) == 0)
+            return rc_laws[i];
+    return NULL;
+}
+
+rc_collision_params rc_collision_params_default(void)
+{
+    rc_collision_params p = {0.0, 1.0, NAN, 0.0};
+    return p;
+}
+
+int rc_collide(const rc_law *law, const rc_collision_params *prm, rc_particle *a,
+               rc_particle *b, rc_vec3 n)
+{
+    if (!law || !prm || !a || !b)
+        return RC_EINVAL;
+    int st;
+    if ((st = rc_particle_check(a)) != RC_OK || (st = rc_particle_check(b)) != RC_OK)
+        return st;
+    if (!(prm->inv_c2 >= 0.0) || isinf(prm->inv_c2))
+        return RC_ESPEEDOFLIGHT;
+    if (!(prm->eps >= 0.0 && prm->eps <= 1.0))
+        return RC_ERESTITUTION;
+    if (!isnan(prm->alpha) &&
+        (!isfinite(prm->alpha) || !(fabs(prm->alpha) < M_PI / 2) || !isfinite(prm->azimuth)))
+        return RC_EINVAL;
+    if (!rc_v3_isfinite(n))
+        return RC_ENONFINITE;
+    double len = rc_v3_norm(n);
+    if (!(len > 0.0))
+        return RC_EZERONORMAL;
+    return law->collide(prm, a, b, rc_v3_scale(1.0 / len, n));
+}
+
+size_t rc_collide_batch(const rc_law *law, const rc_collision_params *prm, size_t n_pairs,
+                        rc_particle *a, rc_particle *b, const rc_vec3 *n, int *status)
+{
+    size_t hits = 0;
+    const rc_law_fn f = law->collide;
+    for (size_t i = 0; i < n_pairs; i++) {
+        int st = f(prm, &a[i], &b[i], n[i]);
+        hits += (st == RC_OK);
+        if (status)
+            status[i] = st;
+    }
+    return hits;
+}
+
+int rc_collide_wall(double inv_c2, double eps_w, rc_particle *a, rc_vec3 n)
+{
+    if (!(eps_w >= 0.0 && eps_w <= 1.0))
+        return RC_ERESTITUTION;
+    const double pn = rc_v3_dot(a->p, n);
+    if (!(pn > 0.0))
+        return RC_NO_COLLISION;
+    a->p = rc_v3_axpy(a->p, -(1.0 + eps_w) * pn, n);
+    if (eps_w != 1.0)
+        a->m = sqrt(a->m * a->m + (1.0 - eps_w * eps_w) * pn * pn * inv_c2);
+    return RC_OK;
+}
+
+void rc_impact_angle_draw(int dim, double u1, double u2, double *alpha, double *azimuth)
+{
+    if (dim <= 1) {
+        *alpha = 0.0;
+        *azimuth = 0.0;
+    } else if (dim == 2) {
+        *alpha = asin(2.0 * u1 - 1.0);
+        *azimuth = 0.0;
+    } else {
+        *alpha = asin(sqrt(u1));
+        *azimuth = 2.0 * M_PI * u2;
+    }
+}
