@@ -1,0 +1,163 @@
+/* app.h — the relcol apps' shared plumbing (internal static library, never part of
+ * librelcol): strict number parsing, a CSV table reader, ball rows -> rc_particle, an
+ * atomic file writer, a gnuplot runner, a log-log slope fit and a TTY-only progress bar.
+ *
+ * Error convention: functions that can fail return 0 on success and -1 on failure, and
+ * write one line of text (no program name, no newline) into the caller's buffer `err` of
+ * size APP_ERR_LEN; the app prefixes its name and prints it. Nothing here prints, except
+ * app_gnuplot_run (a note when gnuplot is absent) and the progress bar. */
+#ifndef RELCOL_APP_H
+#define RELCOL_APP_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "relcol/relcol.h"
+
+#define APP_ERR_LEN 512
+
+/* printf into an error buffer of APP_ERR_LEN bytes (truncating). */
+#if defined(__GNUC__)
+__attribute__((format(printf, 2, 3)))
+#endif
+void app_errf(char *err, const char *fmt, ...);
+
+/* ---- numbers ---------------------------------------------------------------------- */
+
+/* Parse the whole token s (surrounding blanks allowed) as a finite double. With
+ * allow_inf, "inf"/"infinity" (any case, optional '+') gives +INFINITY; NaN, hex floats
+ * with trailing junk, empty strings, overflow ("1e999") are rejected with the reason in
+ * err (e.g. "not a number: '1.5x'"). */
+int app_parse_double(const char *s, int allow_inf, double *out, char *err);
+/* The shortest %g form of x that reads back as x (for messages: "0.6", not
+ * "0.59999999999999998"); buf needs APP_FMT_LEN bytes. */
+#define APP_FMT_LEN 32
+const char *app_fmt(double x, char *buf);
+/* Whole-token integer in [lo, hi]. */
+int app_parse_long(const char *s, long lo, long hi, long *out, char *err);
+/* Whole-token unsigned 64-bit integer (seeds). */
+int app_parse_u64(const char *s, uint64_t *out, char *err);
+/* Comma-separated list of 1..max finite numbers ("1,0.5"): *n gets the count. */
+int app_parse_list(const char *s, double *out, int max, int *n, char *err);
+
+/* ---- CSV tables ------------------------------------------------------------------- */
+
+/* A CSV table: a header line of column names, then rows of fields. Fields are trimmed of
+ * blanks, CR of CRLF files is dropped, blank lines are skipped (trailing or not), lines
+ * starting with '#' are comments. No quoting: relcol tables hold numbers and names. */
+typedef struct app_table {
+    int ncols;
+    char **names;    /* ncols column names */
+    size_t nrows;
+    char **cells;    /* nrows * ncols field strings, row-major */
+    long *line;      /* the 1-based file line number of each row, for messages */
+    long header_line;
+} app_table;
+
+/* Read a whole table from f. Errors name the line, e.g. "line 4: 3 fields, header has 4";
+ * a header with an empty or repeated name is an error too. On failure *t is empty. */
+int app_table_read(FILE *f, app_table *t, char *err);
+void app_table_free(app_table *t);
+/* Index of the column called name, or -1. */
+int app_table_col(const app_table *t, const char *name);
+static inline const char *app_table_cell(const app_table *t, size_t row, int col)
+{
+    return t->cells[row * (size_t)t->ncols + (size_t)col];
+}
+/* The field (row, col) as a finite number (or inf if allowed). The error names the line,
+ * the row label (e.g. "ball 1"; NULL for none) and the column:
+ * "line 3 (ball 1), column vx: not a number: 'abc'". */
+int app_table_double(const app_table *t, size_t row, int col, const char *row_label,
+                     int allow_inf, double *out, char *err);
+/* "line L (ball i)" for messages: writes into buf of size n and returns buf. */
+const char *app_row_name(const app_table *t, size_t row, char *buf, size_t n);
+
+/* ---- ball rows -------------------------------------------------------------------- */
+
+/* Balls as given in a table, before c is known. Column conventions: `m` (rest mass),
+ * then either velocity columns vx[,vy[,vz]] or momentum columns px[,py[,pz]] (never both;
+ * the dimension is their number, and a component needs all earlier ones), optional
+ * positions x[,y[,z]] of the same dimension. Each row is one ball, numbered from 0. */
+typedef struct app_balls {
+    int dim;           /* 1..3 */
+    int momentum;      /* 1: the table gives p; 0: it gives v */
+    int has_pos;
+    size_t n;
+    double *m;         /* n rest masses (checked > 0) */
+    rc_vec3 *q;        /* n velocities or momenta as given, unused components 0 */
+    rc_vec3 *x;        /* n positions (zeros if !has_pos) */
+    const app_table *table; /* for messages; must outlive this struct */
+} app_balls;
+
+/* Parse ball rows. `extra` is a NULL-terminated list of further column names the caller
+ * accepts (e.g. {"r", NULL}; NULL for none): any other unknown column is an error. The
+ * caller reads extra columns itself with app_table_double. nrows_want > 0 demands that
+ * exactly many rows. All numbers must be finite and m > 0; |v| < c is checked later, by
+ * app_balls_particles, since it depends on c. */
+int app_balls_parse(const app_table *t, const char *const *extra, size_t nrows_want,
+                    app_balls *b, char *err);
+void app_balls_free(app_balls *b);
+/* States at speed of light c (inf allowed): momentum input is taken as is; velocity input
+ * goes through rc_momentum_from_velocity, with "line 3 (ball 1), column vx: |v| = 1.5 >=
+ * c = 1" on failure. out has b->n entries. */
+int app_balls_particles(const app_balls *b, double c, rc_particle *out, char *err);
+/* Column names of the given vector columns ("vx", "vx,vy", ...) for messages. */
+const char *app_balls_colnames(const app_balls *b, int positions, char *buf, size_t n);
+
+/* ---- files ------------------------------------------------------------------------ */
+
+/* Atomic writer: the content goes to a temporary file beside `path`; commit flushes,
+ * fsyncs, renames it over path and fsyncs the folder, so readers see the old file or the
+ * whole new one, never half. abort (or a failed commit) removes the temporary. */
+typedef struct app_atomic {
+    FILE *f;
+    char *path;
+    char *tmp;
+} app_atomic;
+int app_atomic_open(app_atomic *a, const char *path, char *err);
+int app_atomic_commit(app_atomic *a, char *err);
+void app_atomic_abort(app_atomic *a);
+
+/* mkdir -p (mode 0777 before umask). */
+int app_mkdir_p(const char *dir, char *err);
+/* dir + "/" + name, malloc'ed (NULL on ENOMEM). */
+char *app_path_join(const char *dir, const char *name);
+
+/* ---- gnuplot ---------------------------------------------------------------------- */
+
+/* Is `gnuplot` an executable on PATH? */
+int app_have_gnuplot(void);
+/* Run `gnuplot -e "outfile='TMP'" script` in folder dir, then fsync and rename TMP to
+ * dir/out_name, so the figure appears atomically too. Scripts should start with
+ *   if (!exists("outfile")) outfile = 'NAME.png'
+ * so that they also run by hand. Without gnuplot on PATH it prints one note on stderr
+ * (prefixed by prog) and returns 0: the data and the script are the product. Returns -1
+ * with the reason in err if gnuplot ran and failed. *made (may be NULL) is set to 1 if
+ * the figure was written. */
+int app_gnuplot_run(const char *prog, const char *dir, const char *script_name,
+                    const char *out_name, int *made, char *err);
+
+/* ---- fits ------------------------------------------------------------------------- */
+
+/* Least-squares slope of log10(y) against log10(x) over the points where both are
+ * finite and > 0 (gsl_fit_linear). *used gets the number of points used; -1 if < 3.
+ * slope_sd (may be NULL) gets the slope's standard error from the fit's residuals. */
+int app_loglog_slope(const double *x, const double *y, size_t n, double *slope,
+                     double *intercept, double *slope_sd, size_t *used);
+
+/* ---- progress --------------------------------------------------------------------- */
+
+/* A progress bar on stderr that draws only when stderr is a terminal (pipes, CI logs and
+ * tests stay clean) and only when the whole percentage changes. */
+typedef struct app_progress {
+    const char *label;
+    size_t total;
+    int tty;
+    int last_pct;
+} app_progress;
+void app_progress_init(app_progress *p, const char *label, size_t total);
+void app_progress_update(app_progress *p, size_t done);
+void app_progress_done(app_progress *p);
+
+#endif

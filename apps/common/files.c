@@ -1,0 +1,148 @@
+/* files.c — output files that are never seen half-written: write beside the target under
+ * a temporary name, fsync, rename over it (atomic on POSIX), fsync the folder. */
+#include <errno.h>
+#include <fcntl.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "app.h"
+
+char *app_path_join(const char *dir, const char *name)
+{
+    size_t a = strlen(dir), b = strlen(name);
+    char *s = malloc(a + b + 2);
+    if (!s)
+        return NULL;
+    memcpy(s, dir, a);
+    size_t k = a;
+    if (a > 0 && dir[a - 1] != '/')
+        s[k++] = '/';
+    memcpy(s + k, name, b + 1);
+    return s;
+}
+
+/* The folder part of path ("." if none), malloc'ed. */
+static char *dir_of(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    if (!slash)
+        return strdup(".");
+    if (slash == path)
+        return strdup("/");
+    return strndup(path, (size_t)(slash - path));
+}
+
+int app_mkdir_p(const char *dir, char *err)
+{
+    char *s = strdup(dir);
+    if (!s) {
+        app_errf(err, "out of memory");
+        return -1;
+    }
+    for (char *p = s + 1;; p++) {
+        if (*p == '/' || *p == '\0') {
+            char save = *p;
+            *p = '\0';
+            if (mkdir(s, 0777) != 0 && errno != EEXIST) {
+                app_errf(err, "cannot create folder %s: %s", s, strerror(errno));
+                free(s);
+                return -1;
+            }
+            *p = save;
+            if (save == '\0')
+                break;
+        }
+    }
+    struct stat st;
+    if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
+        app_errf(err, "%s exists and is not a folder", dir);
+        free(s);
+        return -1;
+    }
+    free(s);
+    return 0;
+}
+
+int app_atomic_open(app_atomic *a, const char *path, char *err)
+{
+    memset(a, 0, sizeof *a);
+    char *dir = dir_of(path);
+    const char *base = strrchr(path, '/') ? strrchr(path, '/') + 1 : path;
+    a->path = strdup(path);
+    a->tmp = dir ? malloc(strlen(dir) + strlen(base) + 16) : NULL;
+    if (!a->path || !a->tmp) {
+        free(dir);
+        app_atomic_abort(a);
+        app_errf(err, "out of memory");
+        return -1;
+    }
+    /* hidden, in the same folder: rename() is atomic only within one file system */
+    sprintf(a->tmp, "%s/.%s.XXXXXX", dir, base);
+    free(dir);
+    int fd = mkstemp(a->tmp);
+    if (fd < 0) {
+        app_errf(err, "cannot create a temporary file for %s: %s", path, strerror(errno));
+        free(a->tmp);
+        a->tmp = NULL;
+        app_atomic_abort(a);
+        return -1;
+    }
+    /* mkstemp makes 0600; give the final file the usual 0666 & ~umask */
+    mode_t um = umask(0);
+    umask(um);
+    if (fchmod(fd, 0666 & ~um) != 0 || !(a->f = fdopen(fd, "w"))) {
+        app_errf(err, "cannot open %s: %s", a->tmp, strerror(errno));
+        close(fd);
+        app_atomic_abort(a);
+        return -1;
+    }
+    return 0;
+}
+
+void app_atomic_abort(app_atomic *a)
+{
+    if (a->f)
+        fclose(a->f);
+    if (a->tmp)
+        unlink(a->tmp);
+    free(a->tmp);
+    free(a->path);
+    memset(a, 0, sizeof *a);
+}
+
+int app_atomic_commit(app_atomic *a, char *err)
+{
+    if (fflush(a->f) != 0 || ferror(a->f) || fsync(fileno(a->f)) != 0) {
+        app_errf(err, "cannot write %s: %s", a->path, strerror(errno));
+        app_atomic_abort(a);
+        return -1;
+    }
+    FILE *f = a->f;
+    a->f = NULL;
+    if (fclose(f) != 0) {
+        app_errf(err, "cannot write %s: %s", a->path, strerror(errno));
+        app_atomic_abort(a);
+        return -1;
+    }
+    if (rename(a->tmp, a->path) != 0) {
+        app_errf(err, "cannot rename %s to %s: %s", a->tmp, a->path, strerror(errno));
+        app_atomic_abort(a);
+        return -1;
+    }
+    /* make the rename itself durable; some file systems refuse fsync on folders */
+    char *dir = dir_of(a->path);
+    if (dir) {
+        int dfd = open(dir, O_RDONLY | O_DIRECTORY);
+        if (dfd >= 0) {
+            (void)fsync(dfd);
+            close(dfd);
+        }
+        free(dir);
+    }
+    free(a->tmp);
+    a->tmp = NULL;
+    app_atomic_abort(a); /* frees path; tmp is gone, so nothing is unlinked */
+    return 0;
+}

@@ -1,0 +1,178 @@
+/* table.c — the CSV reader every app uses for its input tables: a header of column names,
+ * rows of fields, and errors that name the file line and the column. */
+#include <ctype.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "app.h"
+
+/* Trim blanks (and the CR of CRLF files) in place; returns the trimmed start. */
+static char *trim(char *s)
+{
+    while (*s && isspace((unsigned char)*s))
+        s++;
+    size_t len = strlen(s);
+    while (len > 0 && isspace((unsigned char)s[len - 1]))
+        s[--len] = '\0';
+    return s;
+}
+
+/* Split a line at commas into trimmed, malloc'ed fields. Returns the count or -1. */
+static int split(char *line, char ***out)
+{
+    int n = 1;
+    for (const char *p = line; *p; p++)
+        n += (*p == ',');
+    char **f = calloc((size_t)n, sizeof *f);
+    if (!f)
+        return -1;
+    char *p = line;
+    for (int i = 0; i < n; i++) {
+        char *comma = strchr(p, ',');
+        if (comma)
+            *comma = '\0';
+        f[i] = strdup(trim(p));
+        if (!f[i]) {
+            for (int j = 0; j < i; j++)
+                free(f[j]);
+            free(f);
+            return -1;
+        }
+        p = comma ? comma + 1 : p + strlen(p);
+    }
+    *out = f;
+    return n;
+}
+
+static void free_fields(char **f, int n)
+{
+    if (!f)
+        return;
+    for (int i = 0; i < n; i++)
+        free(f[i]);
+    free(f);
+}
+
+void app_table_free(app_table *t)
+{
+    if (!t)
+        return;
+    free_fields(t->names, t->ncols);
+    if (t->cells)
+        for (size_t i = 0; i < t->nrows * (size_t)t->ncols; i++)
+            free(t->cells[i]);
+    free(t->cells);
+    free(t->line);
+    memset(t, 0, sizeof *t);
+}
+
+int app_table_read(FILE *f, app_table *t, char *err)
+{
+    memset(t, 0, sizeof *t);
+    char *buf = NULL;
+    size_t cap = 0, rows_cap = 0;
+    long lineno = 0;
+    ssize_t got;
+    int rc = -1;
+    while ((got = getline(&buf, &cap, f)) >= 0) {
+        lineno++;
+        if (memchr(buf, '\0', (size_t)got)) {
+            app_errf(err, "line %ld: NUL byte (binary input?)", lineno);
+            goto out;
+        }
+        char *s = trim(buf);
+        if (*s == '\0' || *s == '#')
+            continue; /* blank lines (trailing ones too) and comments */
+        char **fields;
+        int n = split(s, &fields);
+        if (n < 0) {
+            app_errf(err, "out of memory");
+            goto out;
+        }
+        if (!t->names) {
+            t->names = fields;
+            t->ncols = n;
+            t->header_line = lineno;
+            for (int i = 0; i < n; i++) {
+                if (fields[i][0] == '\0') {
+                    app_errf(err, "line %ld (header): column %d has an empty name", lineno,
+                             i + 1);
+                    goto out;
+                }
+                for (int j = 0; j < i; j++)
+                    if (strcmp(fields[i], fields[j]) == 0) {
+                        app_errf(err, "line %ld (header), column %s: repeated column",
+                                 lineno, fields[i]);
+                        goto out;
+                    }
+            }
+            continue;
+        }
+        if (n != t->ncols) {
+            app_errf(err, "line %ld: %d field%s, but the header (line %ld) has %d columns",
+                     lineno, n, n == 1 ? "" : "s", t->header_line, t->ncols);
+            free_fields(fields, n);
+            goto out;
+        }
+        if (t->nrows == rows_cap) {
+            size_t nc = rows_cap ? 2 * rows_cap : 8;
+            char **cells = realloc(t->cells, nc * (size_t)t->ncols * sizeof *cells);
+            if (cells)
+                t->cells = cells;
+            long *lines = realloc(t->line, nc * sizeof *lines);
+            if (lines)
+                t->line = lines;
+            if (!cells || !lines) {
+                app_errf(err, "out of memory");
+                free_fields(fields, n);
+                goto out;
+            }
+            rows_cap = nc;
+        }
+        memcpy(t->cells + t->nrows * (size_t)t->ncols, fields, (size_t)n * sizeof *fields);
+        free(fields); /* the strings now belong to cells */
+        t->line[t->nrows++] = lineno;
+    }
+    if (ferror(f)) {
+        app_errf(err, "read error after line %ld", lineno);
+        goto out;
+    }
+    if (!t->names) {
+        app_errf(err, "empty input: expected a header line of column names");
+        goto out;
+    }
+    rc = 0;
+out:
+    free(buf);
+    if (rc != 0)
+        app_table_free(t);
+    return rc;
+}
+
+int app_table_col(const app_table *t, const char *name)
+{
+    for (int i = 0; i < t->ncols; i++)
+        if (strcmp(t->names[i], name) == 0)
+            return i;
+    return -1;
+}
+
+const char *app_row_name(const app_table *t, size_t row, char *buf, size_t n)
+{
+    snprintf(buf, n, "line %ld (ball %zu)", t->line[row], row);
+    return buf;
+}
+
+int app_table_double(const app_table *t, size_t row, int col, const char *row_label,
+                     int allow_inf, double *out, char *err)
+{
+    char why[APP_ERR_LEN];
+    if (app_parse_double(app_table_cell(t, row, col), allow_inf, out, why) == 0)
+        return 0;
+    if (row_label)
+        app_errf(err, "line %ld (%s), column %s: %s", t->line[row], row_label,
+                 t->names[col], why);
+    else
+        app_errf(err, "line %ld, column %s: %s", t->line[row], t->names[col], why);
+    return -1;
+}
