@@ -40,6 +40,11 @@ int rc_collide(const rc_law *law, const rc_collision_params *prm, rc_particle *a
         return RC_ESPEEDOFLIGHT;
     if (!(prm->eps >= 0.0 && prm->eps <= 1.0))
         return RC_ERESTITUTION;
+    /* m^2 + p^2/c^2 must not overflow: the kernels' comparisons would see NaN */
+    if (!isfinite(rc_mass_rel(a->m, a->p, prm->inv_c2)) ||
+        !isfinite(rc_mass_rel(b->m, b->p, prm->inv_c2)) ||
+        !isfinite(rc_v3_norm2(rc_v3_add(a->p, b->p))))
+        return RC_ENONFINITE;
     if (!isnan(prm->alpha) &&
         (!isfinite(prm->alpha) || !(fabs(prm->alpha) < M_PI / 2) || !isfinite(prm->azimuth)))
         return RC_EINVAL;

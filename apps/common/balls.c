@@ -6,13 +6,14 @@
 
 #include "app.h"
 
-static const char *const vel_names[3] = {"vx", "vy", "vz"};
-static const char *const mom_names[3] = {"px", "py", "pz"};
-static const char *const pos_names[3] = {"x", "y", "z"};
+/* NULL-terminated, so in_list() can scan them too */
+static const char *const vel_names[4] = {"vx", "vy", "vz", NULL};
+static const char *const mom_names[4] = {"px", "py", "pz", NULL};
+static const char *const pos_names[4] = {"x", "y", "z", NULL};
 
 /* Columns of a vector family: fills col[] (-1 if absent) and returns the dimension, or -1
  * with a message if a component is present without the earlier ones. */
-static int vector_cols(const app_table *t, const char *const names[3], int col[3], char *err)
+static int vector_cols(const app_table *t, const char *const names[4], int col[3], char *err)
 {
     int dim = 0;
     for (int i = 0; i < 3; i++)
@@ -38,15 +39,21 @@ static int in_list(const char *name, const char *const *list)
     return 0;
 }
 
-const char *app_balls_colnames(const app_balls *b, int positions, char *buf, size_t n)
+/* "vx,vy" from the first d names */
+static const char *join_names(const char *const *names, int d, char *buf, size_t n)
 {
-    const char *const *names = positions ? pos_names : (b->momentum ? mom_names : vel_names);
     buf[0] = '\0';
-    for (int i = 0; i < b->dim; i++) {
+    for (int i = 0; i < d; i++) {
         size_t len = strlen(buf);
         snprintf(buf + len, n - len, "%s%s", i ? "," : "", names[i]);
     }
     return buf;
+}
+
+const char *app_balls_colnames(const app_balls *b, int positions, char *buf, size_t n)
+{
+    return join_names(positions ? pos_names : (b->momentum ? mom_names : vel_names), b->dim,
+                      buf, n);
 }
 
 void app_balls_free(app_balls *b)
@@ -67,8 +74,8 @@ int app_balls_parse(const app_table *t, const char *const *extra, size_t nrows_w
     const long hl = t->header_line;
     for (int i = 0; i < t->ncols; i++) {
         const char *nm = t->names[i];
-        if (strcmp(nm, "m") == 0 || in_list(nm, (const char *const *)vel_names) ||
-            in_list(nm, (const char *const *)mom_names) || in_list(nm, pos_names) ||
+        if (strcmp(nm, "m") == 0 || in_list(nm, vel_names) ||
+            in_list(nm, mom_names) || in_list(nm, pos_names) ||
             in_list(nm, extra))
             continue;
         char more[128] = "";
@@ -116,12 +123,7 @@ int app_balls_parse(const app_table *t, const char *const *extra, size_t nrows_w
             return -1;
         if (d != b->dim) {
             char names[32];
-            b->has_pos = 1;
-            int save = b->dim;
-            b->dim = d;
-            app_balls_colnames(b, 1, names, sizeof names);
-            b->dim = save;
-            b->has_pos = 0;
+            join_names(pos_names, d, names, sizeof names);
             app_errf(err, "line %ld (header), column%s %s: %d position component%s, but the "
                           "%s columns give dimension %d", hl, d > 1 ? "s" : "", names, d,
                      d > 1 ? "s" : "", b->momentum ? "momentum" : "velocity", b->dim);
@@ -191,9 +193,23 @@ int app_balls_particles(const app_balls *b, double c, rc_particle *out, char *er
         out[r].m = b->m[r];
         if (b->momentum) {
             out[r].p = b->q[r];
-            continue;
+            st = RC_OK;
+        } else {
+            st = rc_momentum_from_velocity(b->m[r], b->q[r], k, &out[r].p);
         }
-        st = rc_momentum_from_velocity(b->m[r], b->q[r], k, &out[r].p);
+        /* the laws square M and p: a state whose M = sqrt(m^2 + p^2/c^2) or p^2
+         * overflows cannot collide meaningfully in double precision */
+        if (st == RC_OK && (!rc_v3_isfinite(out[r].p) ||
+                            !isfinite(rc_v3_norm2(out[r].p)) ||
+                            !isfinite(b->m[r] * b->m[r] + rc_v3_norm2(out[r].p) * k)))
+            st = RC_ENONFINITE;
+        if (st == RC_ENONFINITE) {
+            char names[32], rn[48];
+            app_balls_colnames(b, 0, names, sizeof names);
+            app_errf(err, "%s, columns m,%s: too large: m^2 + p^2/c^2 overflows double "
+                          "precision", app_row_name(b->table, r, rn, sizeof rn), names);
+            return -1;
+        }
         if (st != RC_OK) {
             char names[32], rn[48], f1[APP_FMT_LEN], f2[APP_FMT_LEN];
             app_balls_colnames(b, 0, names, sizeof names);

@@ -75,11 +75,15 @@ int app_parse_double(const char *s, int allow_inf, double *out, char *err)
 
 const char *app_fmt(double x, char *buf)
 {
+    /* the shortest string among the precisions that read back exactly: "10", not "1e+01" */
+    char best[APP_FMT_LEN] = "";
     for (int prec = 1; prec <= 17; prec++) {
-        snprintf(buf, APP_FMT_LEN, "%.*g", prec, x);
-        if (!isfinite(x) || strtod(buf, NULL) == x)
-            break;
+        char s[APP_FMT_LEN];
+        snprintf(s, sizeof s, "%.*g", prec, x);
+        if ((!isfinite(x) || strtod(s, NULL) == x) && (!best[0] || strlen(s) < strlen(best)))
+            memcpy(best, s, sizeof best);
     }
+    memcpy(buf, best, APP_FMT_LEN);
     return buf;
 }
 

@@ -1,0 +1,356 @@
+/* collide.c — relcol-collide: one two-ball collision from a CSV table on stdin, at any c,
+ * with any law of the library's table; the command-line face of rc_collide(). Exit status:
+ * 0 collided, 2 bad input (one line on stderr), 3 no collision (separating), 1 I/O error. */
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <gsl/gsl_rng.h>
+
+#include "app.h"
+
+static const char *const prog = "relcol-collide";
+
+enum { EXIT_BAD_INPUT = 2, EXIT_NO_COLLISION = 3 };
+
+static void usage(FILE *f)
+{
+    fprintf(f,
+"usage: relcol-collide [--c C|inf] [--eps E] [--law LAW] [--normal X[,Y[,Z]]]\n"
+"                      [--alpha A|random [--seed N] [--azimuth PHI]] [--format csv|json]\n"
+"\n"
+"Collide two balls read from stdin and print their states after the collision.\n"
+"\n"
+"stdin: CSV with a header line and exactly two data rows (ball 0, ball 1). Columns:\n"
+"  m                 rest mass (> 0)\n"
+"  vx[,vy[,vz]]      velocity (|v| < c), or\n"
+"  px[,py[,pz]]      momentum (any finite value); never both kinds.\n"
+"  x[,y[,z]]         optional positions, same dimension: the default normal is then\n"
+"                    the unit vector from ball 0 to ball 1 (else +x).\n"
+"The dimension (1, 2 or 3) is the number of velocity or momentum columns. Columns may\n"
+"come in any order; spaces around fields, CRLF line ends, blank lines and lines\n"
+"starting with # are ignored.\n"
+"\n"
+"options:\n"
+"  --c C|inf         speed of light, > 0 (default inf: exact classical mechanics)\n"
+"  --eps E           restitution in [0, 1] (default 1: elastic)\n"
+"  --law LAW         collision law (default zmf):\n");
+    for (size_t i = 0; rc_laws[i]; i++)
+        fprintf(f, "                      %-13s %s\n", rc_laws[i]->name, rc_laws[i]->summary);
+    fprintf(f,
+"  --normal X[,Y[,Z]] contact normal from ball 0 to ball 1 (any length > 0; missing\n"
+"                    components are 0, more than the dimension is an error)\n"
+"  --alpha A         cm-isotropic only: impact angle in radians, |A| < pi/2, between\n"
+"                    ball 0's ZMF direction of motion and the ZMF normal (replaces the\n"
+"                    normal); 'random' draws it for a uniform impact parameter\n"
+"                    (rc_impact_angle_draw) from --seed N (default 1). Must be 0 in 1-D.\n"
+"  --azimuth PHI     3-D only, with a numeric --alpha: azimuth of the normal (radians)\n"
+"  --format csv|json output format (default csv)\n"
+"  --help            this text\n"
+"\n"
+"stdout (csv): header ball,m,px[,py[,pz]],vx[,vy[,vz]],E then two rows, numbers %%.17g.\n"
+"  m is the rest mass after the collision (it grows when eps < 1 and c is finite);\n"
+"  E is the total energy M c^2 = sqrt(m^2 c^4 + p^2 c^2). With c = inf, where that is\n"
+"  infinite, E is the kinetic energy p^2/2m instead.\n"
+"stdout (json): {\"c\": C or \"inf\", \"law\", \"eps\", \"dimension\",\n"
+"  \"balls\": [{\"ball\", \"m\", \"p\": [...], \"v\": [...], \"E\"}, ...]}\n"
+"\n"
+"exit status: 0 collided; 2 bad input or option (one line on stderr naming the row,\n"
+"column or option and the reason); 3 no collision: the balls are separating (or\n"
+"tangent) along the normal, nothing printed on stdout; 1 I/O error.\n");
+}
+
+#if defined(__GNUC__)
+__attribute__((format(printf, 1, 2)))
+#endif
+static int fail(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    fprintf(stderr, "%s: ", prog);
+    vfprintf(stderr, fmt, ap);
+    fputc('\n', stderr);
+    va_end(ap);
+    return EXIT_BAD_INPUT;
+}
+
+typedef struct options {
+    double c, eps, alpha, azimuth;
+    const rc_law *law;
+    double normal[3];
+    int n_normal; /* 0: not given */
+    int alpha_given, alpha_random, azimuth_given, seed_given, json;
+    uint64_t seed;
+} options;
+
+/* Parse the command line; returns -1 to print help, 0 on success, else an exit code. */
+static int parse_options(int argc, char **argv, options *o)
+{
+    char err[APP_ERR_LEN];
+    o->c = INFINITY;
+    o->eps = 1.0;
+    o->law = rc_law_find("zmf");
+    o->seed = 1;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0)
+            return -1;
+        if (strncmp(a, "--", 2) != 0)
+            return fail("unexpected argument '%s' (input is read from stdin; see --help)", a);
+        /* "--name value" or "--name=value" */
+        char name[32];
+        const char *val, *eq = strchr(a, '=');
+        size_t len = eq ? (size_t)(eq - a) : strlen(a);
+        if (len >= sizeof name)
+            return fail("unknown option %.40s (see --help)", a);
+        memcpy(name, a, len);
+        name[len] = '\0';
+        static const char *const known[] = {"--c", "--eps", "--law", "--normal", "--alpha",
+                                            "--seed", "--azimuth", "--format", NULL};
+        int ok = 0;
+        for (const char *const *k = known; *k; k++)
+            ok |= strcmp(name, *k) == 0;
+        if (!ok)
+            return fail("unknown option %s (see --help)", name);
+        if (eq)
+            val = eq + 1;
+        else if (i + 1 < argc)
+            val = argv[++i];
+        else
+            return fail("%s: missing value", name);
+
+        if (strcmp(name, "--c") == 0) {
+            if (app_parse_double(val, 1, &o->c, err) != 0)
+                return fail("--c: %s", err);
+        } else if (strcmp(name, "--eps") == 0) {
+            if (app_parse_double(val, 0, &o->eps, err) != 0)
+                return fail("--eps: %s", err);
+        } else if (strcmp(name, "--law") == 0) {
+            o->law = rc_law_find(val);
+            if (!o->law) {
+                char list[256] = "";
+                for (size_t k = 0; rc_laws[k]; k++) {
+                    size_t l = strlen(list);
+                    snprintf(list + l, sizeof list - l, "%s%s", k ? ", " : "", rc_laws[k]->name);
+                }
+                return fail("--law: unknown law '%s' (known: %s)", val, list);
+            }
+        } else if (strcmp(name, "--normal") == 0) {
+            if (app_parse_list(val, o->normal, 3, &o->n_normal, err) != 0)
+                return fail("--normal: %s", err);
+        } else if (strcmp(name, "--alpha") == 0) {
+            o->alpha_given = 1;
+            if (strcmp(val, "random") == 0)
+                o->alpha_random = 1;
+            else if (app_parse_double(val, 0, &o->alpha, err) != 0)
+                return fail("--alpha: %s (radians, or 'random')", err);
+        } else if (strcmp(name, "--seed") == 0) {
+            o->seed_given = 1;
+            if (app_parse_u64(val, &o->seed, err) != 0)
+                return fail("--seed: %s", err);
+        } else if (strcmp(name, "--azimuth") == 0) {
+            o->azimuth_given = 1;
+            if (app_parse_double(val, 0, &o->azimuth, err) != 0)
+                return fail("--azimuth: %s", err);
+        } else if (strcmp(name, "--format") == 0) {
+            if (strcmp(val, "csv") == 0)
+                o->json = 0;
+            else if (strcmp(val, "json") == 0)
+                o->json = 1;
+            else
+                return fail("--format: unknown format '%s' (csv or json)", val);
+        }
+    }
+    /* checks that need no input */
+    char f[APP_FMT_LEN];
+    if (!(o->c > 0.0))
+        return fail("--c: c = %s must be > 0", app_fmt(o->c, f));
+    double k;
+    if (rc_inv_c2(o->c, &k) != RC_OK)
+        return fail("--c: c = %s is out of range (1/c^2 under- or overflows; use inf)",
+                    app_fmt(o->c, f));
+    if (!(o->eps >= 0.0 && o->eps <= 1.0))
+        return fail("--eps: eps = %s outside [0, 1]", app_fmt(o->eps, f));
+    const int cm = strcmp(o->law->name, "cm-isotropic") == 0;
+    if (o->alpha_given && !cm)
+        return fail("--alpha: only with --law cm-isotropic (law is %s)", o->law->name);
+    if (o->alpha_given && o->n_normal > 0)
+        return fail("--alpha: conflicts with --normal (the impact angle fixes the normal)");
+    if (o->alpha_given && !o->alpha_random && !(fabs(o->alpha) < M_PI / 2))
+        return fail("--alpha: |alpha| = %s must be < pi/2 (radians)", app_fmt(fabs(o->alpha), f));
+    if (o->seed_given && !o->alpha_random)
+        return fail("--seed: only with --alpha random");
+    if (o->azimuth_given && (!o->alpha_given || o->alpha_random))
+        return fail("--azimuth: only with a numeric --alpha (random draws the azimuth too)");
+    return 0;
+}
+
+static void print_vec(FILE *out, rc_vec3 v, int dim, const char *sep)
+{
+    for (int i = 0; i < dim; i++)
+        fprintf(out, "%s%.17g", i ? sep : "", rc_v3_get(v, i));
+}
+
+int main(int argc, char **argv)
+{
+    options o;
+    memset(&o, 0, sizeof o);
+    int st = parse_options(argc, argv, &o);
+    if (st < 0) {
+        usage(stdout);
+        return fflush(stdout) == 0 ? 0 : 1;
+    }
+    if (st != 0)
+        return st;
+
+    char err[APP_ERR_LEN], f[APP_FMT_LEN];
+    app_table t;
+    if (app_table_read(stdin, &t, err) != 0)
+        return fail("stdin: %s", err);
+    app_balls b;
+    if (app_balls_parse(&t, NULL, 2, &b, err) != 0) {
+        app_table_free(&t);
+        return fail("%s", err);
+    }
+    int rc = EXIT_BAD_INPUT;
+    const int dim = b.dim;
+    rc_particle ball[2];
+    rc_vec3 n = rc_v3(1.0, 0.0, 0.0);
+    rc_collision_params prm = rc_collision_params_default();
+    rc_inv_c2(o.c, &prm.inv_c2);
+    prm.eps = o.eps;
+
+    if (o.n_normal > dim) {
+        fail("--normal: %d components, but the input is %d-D", o.n_normal, dim);
+        goto out;
+    }
+    if (o.alpha_given && !o.alpha_random && dim == 1 && o.alpha != 0.0) {
+        fail("--alpha: alpha = %s, but a 1-D collision is head-on (alpha must be 0)",
+             app_fmt(o.alpha, f));
+        goto out;
+    }
+    if (o.azimuth_given && dim != 3) {
+        fail("--azimuth: only in 3-D (the input is %d-D)", dim);
+        goto out;
+    }
+    if (app_balls_particles(&b, o.c, ball, err) != 0) {
+        fail("%s", err);
+        goto out;
+    }
+    if (o.n_normal > 0) {
+        n = rc_v3(0.0, 0.0, 0.0);
+        for (int i = 0; i < o.n_normal; i++)
+            rc_v3_set(&n, i, o.normal[i]);
+        if (!(rc_v3_norm(n) > 0.0)) {
+            fail("--normal: zero normal");
+            goto out;
+        }
+    } else if (b.has_pos && !o.alpha_given) {
+        n = rc_v3_sub(b.x[1], b.x[0]);
+        if (!(rc_v3_norm(n) > 0.0)) {
+            char rn[48], cols[32];
+            fail("%s, column%s %s: zero normal: ball 1 is at the position of ball 0 (line "
+                 "%ld)", app_row_name(&t, 1, rn, sizeof rn), dim > 1 ? "s" : "",
+                 app_balls_colnames(&b, 1, cols, sizeof cols), t.line[0]);
+            goto out;
+        }
+    }
+    if (o.alpha_given) {
+        if (o.alpha_random) {
+            gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+            if (!r) {
+                fail("out of memory");
+                rc = 1;
+                goto out;
+            }
+            /* gsl_rng_set takes an unsigned long: fold the 64-bit seed so all bits count */
+            gsl_rng_set(r, (unsigned long)(o.seed ^ (o.seed >> 32)));
+            const double u1 = gsl_rng_uniform(r), u2 = gsl_rng_uniform(r);
+            gsl_rng_free(r);
+            rc_impact_angle_draw(dim, u1, u2, &prm.alpha, &prm.azimuth);
+        } else {
+            prm.alpha = o.alpha;
+            prm.azimuth = o.azimuth_given ? o.azimuth : 0.0;
+        }
+    }
+
+    st = rc_collide(o.law, &prm, &ball[0], &ball[1], n);
+    if (st == RC_NO_COLLISION) {
+        fprintf(stderr, "%s: no collision: the balls are separating (or tangent) along the "
+                        "normal n = (", prog);
+        print_vec(stderr, rc_v3_scale(1.0 / rc_v3_norm(n), n), dim, ", ");
+        fprintf(stderr, ")%s\n", o.alpha_given ? " (from --alpha)" :
+                                 (o.n_normal ? " (--normal)" :
+                                  (b.has_pos ? " (from the positions)" : " (default +x)")));
+        rc = EXIT_NO_COLLISION;
+        goto out;
+    }
+    if (st != RC_OK) {
+        fail("%s", rc_strerror(st));
+        goto out;
+    }
+
+    FILE *out = stdout;
+    const double k = prm.inv_c2;
+    double E[2];
+    rc_vec3 v[2];
+    for (int i = 0; i < 2; i++) {
+        v[i] = rc_velocity(ball[i].m, ball[i].p, k);
+        E[i] = isinf(o.c) ? rc_kinetic_energy(ball[i].m, ball[i].p, 0.0)
+                          : rc_mass_rel(ball[i].m, ball[i].p, k) * o.c * o.c;
+    }
+    for (int i = 0; i < 2; i++)
+        if (!isfinite(E[i]) || !isfinite(ball[i].m) || !rc_v3_isfinite(ball[i].p) ||
+            !rc_v3_isfinite(v[i])) {
+            fail("the result overflows double precision (momenta or masses too large for c "
+                 "= %s)", app_fmt(o.c, f));
+            goto out;
+        }
+    if (o.json) {
+        fprintf(out, "{\"c\": ");
+        if (isinf(o.c))
+            fprintf(out, "\"inf\"");
+        else
+            fprintf(out, "%.17g", o.c);
+        fprintf(out, ", \"law\": \"%s\", \"eps\": %.17g, \"dimension\": %d", o.law->name,
+                o.eps, dim);
+        if (o.alpha_given)
+            fprintf(out, ", \"alpha\": %.17g", prm.alpha);
+        fprintf(out, ", \"balls\": [");
+        for (int i = 0; i < 2; i++) {
+            fprintf(out, "%s\n  {\"ball\": %d, \"m\": %.17g, \"p\": [", i ? "," : "", i,
+                    ball[i].m);
+            print_vec(out, ball[i].p, dim, ", ");
+            fprintf(out, "], \"v\": [");
+            print_vec(out, v[i], dim, ", ");
+            fprintf(out, "], \"E\": %.17g}", E[i]);
+        }
+        fprintf(out, "\n]}\n");
+    } else {
+        static const char *const pn[3] = {"px", "py", "pz"}, *const vn[3] = {"vx", "vy", "vz"};
+        fprintf(out, "ball,m");
+        for (int i = 0; i < dim; i++)
+            fprintf(out, ",%s", pn[i]);
+        for (int i = 0; i < dim; i++)
+            fprintf(out, ",%s", vn[i]);
+        fprintf(out, ",E\n");
+        for (int i = 0; i < 2; i++) {
+            fprintf(out, "%d,%.17g,", i, ball[i].m);
+            print_vec(out, ball[i].p, dim, ",");
+            fputc(',', out);
+            print_vec(out, v[i], dim, ",");
+            fprintf(out, ",%.17g\n", E[i]);
+        }
+    }
+    if (fflush(out) != 0 || ferror(out)) {
+        fprintf(stderr, "%s: cannot write to stdout\n", prog);
+        rc = 1;
+        goto out;
+    }
+    rc = 0;
+out:
+    app_balls_free(&b);
+    app_table_free(&t);
+    return rc;
+}
