@@ -32,9 +32,16 @@ static int cm_isotropic_collide(const rc_collision_params *prm, rc_particle *a,
     const rc_vec3 u = rc_v3_scale(1.0 / Mt, P);
     const double g = Mt / rc_pair_invariant_mass(a, b, k); /* gamma of the ZMF */
 
-    rc_four A = {M0, a->p};
-    rc_boost_g(u, g, k, &A); /* ball 0 in the ZMF: (Mbar0, pbar) */
+    /* Ball 0 in the ZMF: (Mbar0, pbar). Boosting p0 directly computes p0 - gamma M0 u + ...,
+     * which cancels when ball 0 moves nearly with the ZMF (a heavy ball 0), and then costs
+     * the light ball its accuracy. With d = p0 - M0 u = (M1 p0 - M0 p1)/(M0 + M1) the boost
+     * is pbar = d + (gamma - 1)(d.uhat) uhat: no cancellation beyond that of v0 - v1. */
+    const rc_vec3 d =
+        rc_v3_scale(1.0 / Mt, rc_v3_sub(rc_v3_scale(M1, a->p), rc_v3_scale(M0, b->p)));
+    rc_four A;
+    A.x = rc_v3_axpy(d, g * g * k / (g + 1.0) * rc_v3_dot(d, u), u);
     const double pb2 = rc_v3_norm2(A.x);
+    A.t = sqrt(a->m * a->m + pb2 * k);
     if (!(pb2 > 0.0))
         return RC_NO_COLLISION;
 
@@ -56,14 +63,19 @@ static int cm_isotropic_collide(const rc_collision_params *prm, rc_particle *a,
         return RC_NO_COLLISION;
 
     A.x = rc_v3_scale(R, rc_v3_axpy(A.x, -2.0 * pn, nh));
+    /* Ball 1 has the opposite ZMF momentum and its own ZMF energy (kept); each ball is
+     * boosted back on its own rather than as P - p0', which would lose the light ball's
+     * digits to the heavy one's. */
+    rc_four B = {sqrt(b->m * b->m + pb2 * k), rc_v3_scale(-1.0, A.x)};
     rc_boost_g(rc_v3_scale(-1.0, u), g, k, &A); /* back to the table frame */
+    rc_boost_g(rc_v3_scale(-1.0, u), g, k, &B);
     if (R != 1.0) {
         const double dm2 = (1.0 - R * R) * pb2 * k;
         a->m = sqrt(a->m * a->m + dm2);
         b->m = sqrt(b->m * b->m + dm2);
     }
     a->p = A.x;
-    b->p = rc_v3_sub(P, A.x);
+    b->p = B.x;
     return RC_OK;
 }
 

@@ -72,8 +72,22 @@ size_t rc_collide_batch(const rc_law *law, const rc_collision_params *prm, size_
 
 int rc_collide_wall(double inv_c2, double eps_w, rc_particle *a, rc_vec3 n)
 {
+    if (!a)
+        return RC_EINVAL;
+    int st = rc_particle_check(a);
+    if (st != RC_OK)
+        return st;
+    if (!(inv_c2 >= 0.0) || isinf(inv_c2))
+        return RC_ESPEEDOFLIGHT;
     if (!(eps_w >= 0.0 && eps_w <= 1.0))
         return RC_ERESTITUTION;
+    if (!rc_v3_isfinite(n))
+        return RC_ENONFINITE;
+    const double len = rc_v3_norm(n);
+    if (!(len > 0.0))
+        return RC_EZERONORMAL;
+    if (len != 1.0)
+        n = rc_v3_scale(1.0 / len, n);
     const double pn = rc_v3_dot(a->p, n);
     if (!(pn > 0.0))
         return RC_NO_COLLISION;

@@ -67,7 +67,7 @@ int rc_collide(const rc_law *law, const rc_collision_params *prm, rc_particle *a
 size_t rc_collide_batch(const rc_law *law, const rc_collision_params *prm, size_t n_pairs,
                         rc_particle *a, rc_particle *b, const rc_vec3 *n, int *status);
 
-/* Ball against an infinitely massive wall with outward unit normal n (pointing from the
+/* Ball against an infinitely massive wall with outward normal n (pointing from the
  * ball into the wall): p_n' = -eps_w p_n, tangential kept, energy M kept, rest mass
  * m'^2 = m^2 + (1 - eps_w^2) p_n^2 / c^2. RC_NO_COLLISION if p.n <= 0. */
 int rc_collide_wall(double inv_c2, double eps_w, rc_particle *a, rc_vec3 n);
