@@ -6,5 +6,8 @@
 #include "relcol/vec.h"
 #include "relcol/kinematics.h"
 #include "relcol/law.h"
+#include "relcol/toi.h"
+#include "relcol/sim.h"
+#include "relcol/soft.h"
 
 #endif

@@ -1,0 +1,424 @@
+/* frames.c — relcol-frames: how much a rigid-ball prediction depends on the frame in which
+ * contact is decided. A family of oblique 2-D collisions (impact parameter from head-on to
+ * grazing) is run at many c with each contact frame of the library (table, zmf, sphere)
+ * feeding its normal to the zmf law; the app plots how far the outcomes differ and fits
+ * the order p of |difference| ~ (v/c)^p as c -> inf. */
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "app.h"
+
+static const char *const prog = "relcol-frames";
+
+enum { EXIT_BAD_INPUT = 2 };
+enum { NF = 3, NPAIR = 3, NOBS = 3 };
+
+/* impact parameters b/R: head-on to grazing (R = r0 + r1 = 2) */
+static const double impacts[] = {0.0, 0.25, 0.5, 0.75, 0.9, 0.99};
+enum { NB = sizeof impacts / sizeof impacts[0] };
+static const int pair_a[NPAIR] = {0, 0, 1}, pair_b[NPAIR] = {1, 2, 2};
+static const char *const obs_name[NOBS] = {"angle", "vel", "heat"};
+/* fits use c/v >= FIT_FROM: the asymptotic regime (the next order is (v/c)^2 smaller,
+ * 1% at c/v = 10) */
+#define FIT_FROM 10.0
+/* ... and differences above FIT_FLOOR (dimensionless, like the observables, which are
+ * O(1)): the outcomes carry ~1e-16 of round-off, so a difference of 1e-12 is still known
+ * to 1e-4 relative; smaller ones drift towards the round-off floor and bias the slope. */
+#define FIT_FLOOR 1e-12
+
+static void usage(FILE *f)
+{
+    fprintf(f,
+"usage: relcol-frames [--out DIR] [--points N] [--from F] [--to T] [--eps E]\n"
+"\n"
+"How far the outcome of a rigid-ball collision depends on the frame in which contact is\n"
+"decided. Ball 0 (r = 1, m = 1) moves at speed v = 1 along +x onto ball 1 (r = 1, m = 1)\n"
+"at rest, with impact parameter b = %g ... %g R (R = 2: head-on to grazing). For each c\n"
+"(log-spaced from F v to T v) and each contact frame\n",
+            impacts[0], impacts[NB - 1]);
+    for (size_t i = 0; rc_toi_frames[i]; i++)
+        fprintf(f, "  %-7s %s\n", rc_toi_frames[i]->name, rc_toi_frames[i]->summary);
+    fprintf(f,
+"the contact normal found by relcol-toi's routine is fed to the zmf collision law\n"
+"(restitution E), and the outcomes are compared between frames, pair by pair:\n"
+"  angle  |theta_A - theta_B|, theta = deflection of ball 0 (radians)\n"
+"  vel    max over balls |v'_A - v'_B| / v\n"
+"  heat   max over balls |Q_A - Q_B| / (m v^2 / 2), Q = (m' - m) c^2 the heat that became\n"
+"         rest mass (computed without cancellation from ZMF momenta; 0 when E = 1)\n"
+"\n"
+"options:\n"
+"  --out DIR     output folder, created if missing (default out/frames)\n"
+"  --points N    number of values of c (default 33, at least 5)\n"
+"  --from F      smallest c / v, > 1 (default 1.25)\n"
+"  --to T        largest c / v, >= 100 (default 1e4)\n"
+"  --eps E       restitution in [0, 1] (default 0.5)\n"
+"  --help        this text\n"
+"\n"
+"writes, atomically, DIR/frames.csv, DIR/frames.gp and (with gnuplot) DIR/frames.png,\n"
+"then prints, per impact parameter, observable and pair of frames, the fitted order p\n"
+"of |difference| ~ (v/c)^p over c >= %g v (differences above %g, clear of round-off),\n"
+"and per pair of frames the range of p.\n"
+"exit status: 0 ok; 2 bad option; 1 I/O or computation error.\n",
+            FIT_FROM, FIT_FLOOR);
+}
+
+#if defined(__GNUC__)
+__attribute__((format(printf, 1, 2)))
+#endif
+static int fail(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    fprintf(stderr, "%s: ", prog);
+    vfprintf(stderr, fmt, ap);
+    fputc('\n', stderr);
+    va_end(ap);
+    return EXIT_BAD_INPUT;
+}
+
+typedef struct options {
+    const char *out;
+    long points;
+    double from, to, eps;
+} options;
+
+static int parse_options(int argc, char **argv, options *o)
+{
+    char err[APP_ERR_LEN], f[APP_FMT_LEN];
+    o->out = "out/frames";
+    o->points = 33;
+    o->from = 1.25;
+    o->to = 1e4;
+    o->eps = 0.5;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0)
+            return -1;
+        if (strncmp(a, "--", 2) != 0)
+            return fail("unexpected argument '%s' (see --help)", a);
+        char name[32];
+        const char *val, *eq = strchr(a, '=');
+        size_t len = eq ? (size_t)(eq - a) : strlen(a);
+        if (len >= sizeof name)
+            return fail("unknown option %.40s (see --help)", a);
+        memcpy(name, a, len);
+        name[len] = '\0';
+        static const char *const known[] = {"--out", "--points", "--from", "--to", "--eps",
+                                            NULL};
+        int ok = 0;
+        for (const char *const *k = known; *k; k++)
+            ok |= strcmp(name, *k) == 0;
+        if (!ok)
+            return fail("unknown option %s (see --help)", name);
+        if (eq)
+            val = eq + 1;
+        else if (i + 1 < argc)
+            val = argv[++i];
+        else
+            return fail("%s: missing value", name);
+        if (strcmp(name, "--out") == 0) {
+            if (!*val)
+                return fail("--out: empty folder name");
+            o->out = val;
+        } else if (strcmp(name, "--points") == 0) {
+            if (app_parse_long(val, 5, 100000, &o->points, err) != 0)
+                return fail("--points: %s", err);
+        } else if (strcmp(name, "--from") == 0) {
+            if (app_parse_double(val, 0, &o->from, err) != 0)
+                return fail("--from: %s", err);
+        } else if (strcmp(name, "--to") == 0) {
+            if (app_parse_double(val, 0, &o->to, err) != 0)
+                return fail("--to: %s", err);
+        } else if (strcmp(name, "--eps") == 0) {
+            if (app_parse_double(val, 0, &o->eps, err) != 0)
+                return fail("--eps: %s", err);
+        }
+    }
+    if (!(o->from > 1.0))
+        return fail("--from: %s must be > 1 (c must exceed the speed)", app_fmt(o->from, f));
+    if (!(o->to >= 100.0) || !(o->to > o->from))
+        return fail("--to: %s must be >= 100 and > --from (the fit needs c >= %g v)",
+                    app_fmt(o->to, f), FIT_FROM);
+    if (!(o->eps >= 0.0 && o->eps <= 1.0))
+        return fail("--eps: eps = %s outside [0, 1]", app_fmt(o->eps, f));
+    return 0;
+}
+
+/* The outcome of one collision with one contact frame. */
+typedef struct outcome {
+    double theta;   /* deflection of ball 0 */
+    rc_vec3 v[2];   /* final velocities */
+    double q[2];    /* heat (m' - m) c^2 per ball */
+} outcome;
+
+/* (m'^2 - m^2) c^2 = |pbar|^2 - |pbar'|^2 (ZMF momenta; the zmf law keeps each ball's ZMF
+ * energy), so Q = (m' - m) c^2 = (|pbar|^2 - |pbar'|^2) / (m' + m): no cancellation. At
+ * c = inf this is the classical kinetic energy lost per ball in the ZMF. */
+static double heat(const rc_particle *in, const rc_particle *out, rc_vec3 u, double k)
+{
+    rc_four a = rc_particle_four(in, k), b = rc_particle_four(out, k);
+    rc_boost(u, k, &a);
+    rc_boost(u, k, &b);
+    return (rc_v3_norm2(a.x) - rc_v3_norm2(b.x)) / (out->m + in->m);
+}
+
+static int run_one(const rc_toi_frame *fr, double c, double bR, double eps,
+                   rc_toi_workspace *ws, outcome *res, char *err)
+{
+    rc_toi_params prm = rc_toi_params_default();
+    rc_inv_c2(c, &prm.inv_c2);
+    const double k = prm.inv_c2;
+    rc_toi_ball a = {rc_v3(-6.0, 2.0 * bR, 0.0), 1.0, 1.0, rc_v3(0, 0, 0)};
+    rc_toi_ball b = {rc_v3(0.0, 0.0, 0.0), 1.0, 1.0, rc_v3(0, 0, 0)};
+    if (rc_momentum_from_velocity(1.0, rc_v3(1.0, 0.0, 0.0), k, &a.p) != RC_OK) {
+        app_errf(err, "c = %g: speed 1 not below c", c);
+        return -1;
+    }
+    rc_toi_contact con;
+    int st = rc_toi(fr, &prm, &a, &b, ws, &con);
+    if (st != RC_OK) {
+        app_errf(err, "frame %s, c = %g, b/R = %g: %s", fr->name, c, bR, rc_strerror(st));
+        return -1;
+    }
+    rc_particle in[2] = {{a.m, a.p}, {b.m, b.p}}, outp[2] = {in[0], in[1]};
+    rc_collision_params cp = rc_collision_params_default();
+    cp.inv_c2 = k;
+    cp.eps = eps;
+    st = rc_collide(&rc_law_zmf, &cp, &outp[0], &outp[1], con.n);
+    if (st != RC_OK) {
+        app_errf(err, "frame %s, c = %g, b/R = %g: law: %s", fr->name, c, bR, rc_strerror(st));
+        return -1;
+    }
+    rc_vec3 u;
+    rc_zmf(in, 2, k, &u, NULL);
+    for (int i = 0; i < 2; i++) {
+        res->v[i] = rc_velocity(outp[i].m, outp[i].p, k);
+        res->q[i] = heat(&in[i], &outp[i], u, k);
+    }
+    res->theta = atan2(res->v[0].y, res->v[0].x);
+    return 0;
+}
+
+static void differences(const outcome *A, const outcome *B, double d[NOBS])
+{
+    d[0] = fabs(A->theta - B->theta);
+    d[1] = fmax(rc_v3_norm(rc_v3_sub(A->v[0], B->v[0])), rc_v3_norm(rc_v3_sub(A->v[1], B->v[1])));
+    d[2] = fmax(fabs(A->q[0] - B->q[0]), fabs(A->q[1] - B->q[1])) / 0.5; /* m v^2/2 = 1/2 */
+}
+
+static int write_script(const char *path, const options *o, char *err)
+{
+    app_atomic a;
+    if (app_atomic_open(&a, path, err) != 0)
+        return -1;
+    FILE *f = a.f;
+    char fe[APP_FMT_LEN];
+    fprintf(f,
+"# frames.gp — written by relcol-frames; run `gnuplot frames.gp` in this folder.\n"
+"# How much a rigid-ball collision's outcome depends on the frame in which contact is\n"
+"# decided: differences between frames against c/v, for several impact parameters.\n"
+"if (!exists(\"outfile\")) outfile = 'frames.png'\n"
+"set encoding utf8\n"
+"set terminal pngcairo size 1500,620 enhanced font 'Sans,12' linewidth 1.4\n"
+"set output outfile\n"
+"set datafile separator ','\n"
+"set logscale xy\n"
+"set format x '10^{%%T}'\n"
+"set format y '10^{%%T}'\n"
+"set grid xtics ytics lc rgb '#dddddd' lw 0.8\n"
+"set xlabel 'c / v'\n"
+"set key bottom left spacing 1.1 font ',10'\n"
+"set multiplot layout 1,3 title \"Contact frame dependence of a rigid-ball collision"
+" (v = 1 onto a ball at rest, zmf law, ε = %s)\\n"
+"{/*0.8 solid: table vs sphere (contraction ignored)   dashed: table vs zmf"
+"   grey: (v/c)^2 and (v/c)^4}\"\n",
+            app_fmt(o->eps, fe));
+    static const char *const ylab[NOBS] = {
+        "|Δθ| deflection of ball 0 (rad)", "max |Δv′| / v", "max |ΔQ| / (m v^2/2)"};
+    static const char *const colors[] = {"#999999", "#1f77b4", "#2ca02c", "#ff7f0e",
+                                         "#d62728", "#9467bd"};
+    for (int ob = 0; ob < NOBS; ob++) {
+        fprintf(f, "set ylabel '%s'\n", ylab[ob]);
+        /* references over the first block of rows only (one pass over c) */
+        fprintf(f, "plot 'frames.csv' skip 1 every ::0::%ld using 3:(1/$3**2) with lines lw 2 "
+                   "dt 3 lc rgb '#888888' notitle, \\\n     '' skip 1 every ::0::%ld using "
+                   "3:(1/$3**4) with lines lw 2 dt 3 lc rgb '#888888' notitle",
+                o->points - 1, o->points - 1);
+        for (int ib = 1; ib < NB; ib++) {
+            /* column of table-sphere (pair 1) and table-zmf (pair 0) for this observable */
+            const int col_ts = 4 + ob * NPAIR + 1, col_tz = 4 + ob * NPAIR + 0;
+            fprintf(f, ", \\\n     '' skip 1 using 3:($1 == %g && $%d > 0 ? $%d : 1/0) with "
+                       "lines lw 2 lc rgb '%s' title 'b/R = %g'",
+                    impacts[ib], col_ts, col_ts, colors[ib], impacts[ib]);
+            fprintf(f, ", \\\n     '' skip 1 using 3:($1 == %g && $%d > 0 ? $%d : 1/0) with "
+                       "lines lw 2 dt 2 lc rgb '%s' notitle",
+                    impacts[ib], col_tz, col_tz, colors[ib]);
+        }
+        fprintf(f, "\n");
+    }
+    fprintf(f, "unset multiplot\n");
+    return app_atomic_commit(&a, err);
+}
+
+int main(int argc, char **argv)
+{
+    options o;
+    memset(&o, 0, sizeof o);
+    int st = parse_options(argc, argv, &o);
+    if (st < 0) {
+        usage(stdout);
+        return fflush(stdout) == 0 ? 0 : 1;
+    }
+    if (st != 0)
+        return st;
+    char err[APP_ERR_LEN];
+    const size_t N = (size_t)o.points;
+    int rc = 1;
+    double *cs = malloc(N * sizeof *cs);
+    /* d[((ib * N + j) * NOBS + ob) * NPAIR + pr] */
+    double *d = malloc(NB * N * NOBS * NPAIR * sizeof *d);
+    double *th = malloc(NB * N * NF * sizeof *th);
+    double *xs = malloc(N * sizeof *xs), *ys = malloc(N * sizeof *ys);
+    char *csv = app_path_join(o.out, "frames.csv"), *gp = app_path_join(o.out, "frames.gp");
+    rc_toi_workspace *ws = rc_toi_workspace_alloc();
+    if (!cs || !d || !th || !xs || !ys || !csv || !gp || !ws) {
+        fprintf(stderr, "%s: out of memory\n", prog);
+        goto out;
+    }
+    const rc_toi_frame *frames[NF] = {&rc_toi_frame_table, &rc_toi_frame_zmf,
+                                      &rc_toi_frame_sphere};
+    app_progress bar;
+    app_progress_init(&bar, "frames", NB * N);
+    for (size_t j = 0; j < N; j++)
+        cs[j] = o.from * pow(o.to / o.from, (double)j / (double)(N - 1));
+    for (int ib = 0; ib < NB; ib++)
+        for (size_t j = 0; j < N; j++) {
+            outcome res[NF];
+            for (int fi = 0; fi < NF; fi++) {
+                if (run_one(frames[fi], cs[j], impacts[ib], o.eps, ws, &res[fi], err) != 0) {
+                    fprintf(stderr, "%s: %s\n", prog, err);
+                    goto out;
+                }
+                th[(ib * N + j) * NF + fi] = res[fi].theta;
+            }
+            for (int pr = 0; pr < NPAIR; pr++) {
+                double dd[NOBS];
+                differences(&res[pair_a[pr]], &res[pair_b[pr]], dd);
+                for (int ob = 0; ob < NOBS; ob++)
+                    d[((ib * N + j) * NOBS + ob) * NPAIR + pr] = dd[ob];
+            }
+            app_progress_update(&bar, ib * N + j + 1);
+        }
+    app_progress_done(&bar);
+
+    if (app_mkdir_p(o.out, err) != 0) {
+        fprintf(stderr, "%s: --out: %s\n", prog, err);
+        goto out;
+    }
+    app_atomic a;
+    if (app_atomic_open(&a, csv, err) != 0) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        goto out;
+    }
+    fprintf(a.f, "b_over_R,c,c_over_v");
+    for (int ob = 0; ob < NOBS; ob++)
+        for (int pr = 0; pr < NPAIR; pr++)
+            fprintf(a.f, ",d_%s_%s_%s", obs_name[ob], frames[pair_a[pr]]->name,
+                    frames[pair_b[pr]]->name);
+    for (int fi = 0; fi < NF; fi++)
+        fprintf(a.f, ",theta_%s", frames[fi]->name);
+    fprintf(a.f, "\n");
+    for (int ib = 0; ib < NB; ib++)
+        for (size_t j = 0; j < N; j++) {
+            fprintf(a.f, "%g,%.17g,%.17g", impacts[ib], cs[j], cs[j]);
+            for (int k = 0; k < NOBS * NPAIR; k++)
+                fprintf(a.f, ",%.17g", d[(ib * N + j) * NOBS * NPAIR + k]);
+            for (int fi = 0; fi < NF; fi++)
+                fprintf(a.f, ",%.17g", th[(ib * N + j) * NF + fi]);
+            fprintf(a.f, "\n");
+        }
+    if (app_atomic_commit(&a, err) != 0) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        goto out;
+    }
+    if (write_script(gp, &o, err) != 0) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        goto out;
+    }
+    int made = 0;
+    if (app_gnuplot_run(prog, o.out, "frames.gp", "frames.png", &made, err) != 0) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        goto out;
+    }
+
+    char f1[APP_FMT_LEN], f2[APP_FMT_LEN], f3[APP_FMT_LEN];
+    printf("%s: 2-D, v = 1 onto a ball at rest, zmf law, eps %s; %zu values of c from %s to "
+           "%s v\n", prog, app_fmt(o.eps, f1), N, app_fmt(o.from, f2), app_fmt(o.to, f3));
+    if (made)
+        printf("wrote %s, %s, %s/frames.png\n", csv, gp, o.out);
+    else
+        printf("wrote %s, %s (no figure: gnuplot is not installed)\n", csv, gp);
+    printf("fitted order p of |difference| ~ (v/c)^p (least squares on log-log, c >= %g v, "
+           "differences > %g):\n", FIT_FROM, FIT_FLOOR);
+    printf("  b/R   observable   table-zmf  table-sphere  zmf-sphere\n");
+    double pmin[NPAIR], pmax[NPAIR];
+    int nfit[NPAIR];
+    for (int pr = 0; pr < NPAIR; pr++) {
+        pmin[pr] = INFINITY;
+        pmax[pr] = -INFINITY;
+        nfit[pr] = 0;
+    }
+    for (int ib = 0; ib < NB; ib++)
+        for (int ob = 0; ob < NOBS; ob++) {
+            printf("  %-5g %-10s", impacts[ib], obs_name[ob]);
+            for (int pr = 0; pr < NPAIR; pr++) {
+                size_t n = 0;
+                int zero = 1;
+                for (size_t j = 0; j < N; j++) {
+                    const double y = d[((ib * N + j) * NOBS + ob) * NPAIR + pr];
+                    zero &= y == 0.0;
+                    if (cs[j] >= FIT_FROM && y > FIT_FLOOR) {
+                        xs[n] = cs[j];
+                        ys[n] = y;
+                        n++;
+                    }
+                }
+                double slope = NAN, sd = NAN;
+                size_t used = 0;
+                const int width = pr == 0 ? 12 : (pr == 1 ? 14 : 12);
+                if (app_loglog_slope(xs, ys, n, &slope, NULL, &sd, &used) == 0) {
+                    printf("%*.3f", width, -slope);
+                    pmin[pr] = fmin(pmin[pr], -slope);
+                    pmax[pr] = fmax(pmax[pr], -slope);
+                    nfit[pr]++;
+                } else {
+                    /* exactly 0 at every c (head-on; heat with eps = 1), or fewer than 3
+                     * points above the floor */
+                    printf("%*s", width, zero ? "exact 0" : "<3 pts");
+                }
+            }
+            printf("\n");
+        }
+    for (int pr = 0; pr < NPAIR; pr++) {
+        if (nfit[pr] > 0)
+            printf("%s vs %s: frame differences vanish as (v/c)^p, p in [%.3f, %.3f] "
+                   "(%d fits)\n", frames[pair_a[pr]]->name, frames[pair_b[pr]]->name,
+                   pmin[pr], pmax[pr], nfit[pr]);
+        else
+            printf("%s vs %s: no fit (differences exactly 0 or below the floor)\n",
+                   frames[pair_a[pr]]->name, frames[pair_b[pr]]->name);
+    }
+    rc = fflush(stdout) == 0 ? 0 : 1;
+out:
+    rc_toi_workspace_free(&ws);
+    free(cs);
+    free(d);
+    free(th);
+    free(xs);
+    free(ys);
+    free(csv);
+    free(gp);
+    return rc;
+}

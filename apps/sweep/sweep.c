@@ -1,0 +1,367 @@
+/* sweep.c — relcol-sweep: the general sweep over c. For each scenario (collision law, time
+ * of impact, soft reference, engine run) and each c of a log or linear grid it computes
+ * named observables and their deviation from the classical limit, writes CSV + gnuplot
+ * script + PNG atomically, and prints the fitted convergence order. Grid points run in
+ * parallel with OpenMP, and in an MPI build (-Dmpi=enabled) are split across ranks; each
+ * point is computed independently and deterministically, so the output is the same bits
+ * whatever the thread or rank count. Exit: 0 done, 2 bad option, 1 failure. */
+#include <float.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <gsl/gsl_errno.h>
+#ifdef RELCOL_HAVE_MPI
+#include <mpi.h>
+#endif
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "app.h"
+#include "observables.h"
+
+static const char *const prog = "relcol-sweep";
+static int rank = 0, nranks = 1;
+
+static void usage(FILE *f)
+{
+    fprintf(f,
+"usage: relcol-sweep [--scenario NAME|all] [--grid log|lin] [--from F] [--to T]\n"
+"                    [--points N] [--eps E] [--stiffness K] [--out DIR] [--no-plot]\n"
+"\n"
+"Sweep the speed of light c over a grid of multiples of the fastest speed |v|max and\n"
+"measure how far each scenario's observables are from their classical (c = inf) values.\n"
+"\n"
+"scenarios (default all):\n");
+    for (size_t i = 0; sweep_scenarios[i]; i++)
+        fprintf(f, "  %-9s %s\n", sweep_scenarios[i]->name, sweep_scenarios[i]->summary);
+    fprintf(f,
+"options:\n"
+"  --grid log|lin  spacing of the c grid (default log)\n"
+"  --from F --to T c from F to T times |v|max (default 10 to 1e6; F > 1)\n"
+"  --points N      grid points (default 25)\n"
+"  --eps E         restitution (default 0.8; soft: in (0, 1])\n"
+"  --stiffness K   soft-sphere stiffness (default 1e8)\n"
+"  --out DIR       output folder (default out/sweep)\n"
+"  --no-plot       data and script only\n"
+"\n"
+"Writes DIR/sweep.csv (c, c/|v|max, (|v|max/c)^2, then per scenario the deviation of each\n"
+"observable group and the raw observables), DIR/sweep.gp and DIR/sweep.png, and prints\n"
+"the fitted log-log order of each deviation (expect -2: the first relativistic\n"
+"corrections are of order (v/c)^2). Parallel over grid points with OpenMP\n"
+"(OMP_NUM_THREADS) and, in an MPI build, across ranks (mpirun -np N relcol-sweep ...).\n");
+}
+
+#if defined(__GNUC__)
+__attribute__((format(printf, 2, 3)))
+#endif
+static int fail(int code, const char *fmt, ...)
+{
+    if (rank == 0) {
+        va_list ap;
+        va_start(ap, fmt);
+        fprintf(stderr, "%s: ", prog);
+        vfprintf(stderr, fmt, ap);
+        fputc('\n', stderr);
+        va_end(ap);
+    }
+    return code;
+}
+
+typedef struct task_out {
+    double obs[OBS_MAX];
+    double status; /* 0 ok, 1 failed (a double so one MPI datatype carries the record) */
+} task_out;
+
+static int run(int argc, char **argv)
+{
+    const char *scen = "all", *grid = "log", *out_dir = "out/sweep";
+    double from = 10, to = 1e6;
+    long points = 25;
+    int no_plot = 0;
+    sweep_setup su = sweep_setup_default();
+    char err[APP_ERR_LEN];
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            if (rank == 0)
+                usage(stdout);
+            return 0;
+        }
+        if (!strcmp(a, "--no-plot")) {
+            no_plot = 1;
+            continue;
+        }
+        static const char *const valued[] = {"--scenario", "--grid", "--from", "--to", "--points",
+                                             "--eps", "--stiffness", "--out", NULL};
+        int known = 0;
+        for (size_t k = 0; valued[k]; k++)
+            known |= !strcmp(a, valued[k]);
+        if (!known)
+            return fail(2, "unknown option %s (see --help)", a);
+        if (i + 1 >= argc)
+            return fail(2, "option %s: needs a value", a);
+        const char *v = argv[++i];
+        int bad = 0;
+        if (!strcmp(a, "--scenario"))
+            scen = v;
+        else if (!strcmp(a, "--grid"))
+            grid = v;
+        else if (!strcmp(a, "--out"))
+            out_dir = v;
+        else if (!strcmp(a, "--from"))
+            bad = app_parse_double(v, 0, &from, err);
+        else if (!strcmp(a, "--to"))
+            bad = app_parse_double(v, 0, &to, err);
+        else if (!strcmp(a, "--points"))
+            bad = app_parse_long(v, 2, 100000, &points, err);
+        else if (!strcmp(a, "--eps"))
+            bad = app_parse_double(v, 0, &su.eps, err);
+        else if (!strcmp(a, "--stiffness"))
+            bad = app_parse_double(v, 0, &su.stiffness, err);
+        if (bad)
+            return fail(2, "option %s: %s", a, err);
+    }
+    if (strcmp(grid, "log") && strcmp(grid, "lin"))
+        return fail(2, "option --grid: must be log or lin (got '%s')", grid);
+    if (!(from > 1))
+        return fail(2, "option --from: must be > 1 (c above the fastest speed)");
+    if (!(to > from))
+        return fail(2, "option --to: must be > --from");
+    if (!(su.eps > 0 && su.eps <= 1))
+        return fail(2, "option --eps: restitution must be in (0, 1] (the soft reference's "
+                       "dashpot never releases at 0)");
+    if (!(su.stiffness > 0))
+        return fail(2, "option --stiffness: must be > 0");
+    const sweep_scenario *list[16];
+    size_t ns = 0;
+    if (!strcmp(scen, "all")) {
+        for (size_t i = 0; sweep_scenarios[i] && ns < 16; i++)
+            list[ns++] = sweep_scenarios[i];
+    } else if ((list[0] = sweep_scenario_find(scen))) {
+        ns = 1;
+    } else {
+        return fail(2, "option --scenario: unknown scenario '%s' (see --help)", scen);
+    }
+
+    double vmax = fmax(rc_v3_norm(su.v[0]), rc_v3_norm(su.v[1]));
+    size_t N = (size_t)points;
+    double *cs = malloc(N * sizeof *cs);
+    size_t ntask = ns * (N + 1); /* +1: the classical reference of each scenario */
+    task_out *res = calloc(ntask, sizeof *res);
+    if (!cs || !res) {
+        free(cs);
+        free(res);
+        return fail(1, "out of memory");
+    }
+    for (size_t j = 0; j < N; j++) {
+        double f = (double)j / (double)(N - 1);
+        cs[j] = vmax * (!strcmp(grid, "log") ? from * pow(to / from, f) : from + (to - from) * f);
+    }
+
+    /* this rank's contiguous block of tasks */
+    size_t lo = ntask * (size_t)rank / (size_t)nranks, hi = ntask * (size_t)(rank + 1) / (size_t)nranks;
+    app_progress bar;
+    app_progress_init(&bar, prog, hi - lo);
+    size_t done = 0;
+#pragma omp parallel for schedule(dynamic, 1)
+    for (size_t t = lo; t < hi; t++) {
+        size_t s = t / (N + 1), j = t % (N + 1);
+        double k = j == N ? 0.0 : 1.0 / (cs[j] * cs[j]);
+        char e[APP_ERR_LEN];
+        res[t].status = list[s]->eval(&su, k, res[t].obs, e) ? 1.0 : 0.0;
+#pragma omp atomic
+        done++;
+#ifdef _OPENMP
+        if (omp_get_thread_num() == 0)
+#endif
+            app_progress_update(&bar, done);
+    }
+    app_progress_done(&bar);
+#ifdef RELCOL_HAVE_MPI
+    if (nranks > 1) {
+        int *counts = malloc((size_t)nranks * sizeof *counts), *displs = malloc((size_t)nranks * sizeof *displs);
+        int rec = (int)(sizeof(task_out) / sizeof(double));
+        for (int r = 0; r < nranks; r++) {
+            size_t a = ntask * (size_t)r / (size_t)nranks, b = ntask * (size_t)(r + 1) / (size_t)nranks;
+            counts[r] = (int)(b - a) * rec;
+            displs[r] = (int)a * rec;
+        }
+        if (rank == 0)
+            MPI_Gatherv(MPI_IN_PLACE, counts[0], MPI_DOUBLE, res, counts, displs, MPI_DOUBLE, 0,
+                        MPI_COMM_WORLD);
+        else
+            MPI_Gatherv(res + lo, counts[rank], MPI_DOUBLE, NULL, NULL, NULL, MPI_DOUBLE, 0,
+                        MPI_COMM_WORLD);
+        free(counts);
+        free(displs);
+    }
+#endif
+    int rc = 0;
+    if (rank != 0)
+        goto done;
+    for (size_t t = 0; t < ntask; t++)
+        if (res[t].status != 0.0) {
+            size_t s = t / (N + 1), j = t % (N + 1);
+            double k = j == N ? 0.0 : 1.0 / (cs[j] * cs[j]);
+            double tmp[OBS_MAX];
+            list[s]->eval(&su, k, tmp, err); /* again, serially, for the message */
+            rc = fail(1, "scenario %s at c = %s: %s", list[s]->name,
+                      j == N ? "inf" : app_fmt(cs[j], (char[APP_FMT_LEN]){0}), err);
+            goto done;
+        }
+
+    /* deviations: per group, |a - a_inf| / |a_inf| over the group's components */
+    size_t ncol = 0;
+    for (size_t s = 0; s < ns; s++)
+        ncol += (size_t)list[s]->n_groups;
+    double *dev = calloc(N * ncol, sizeof *dev);
+    if (!dev) {
+        rc = fail(1, "out of memory");
+        goto done;
+    }
+    size_t col = 0;
+    for (size_t s = 0; s < ns; s++) {
+        const sweep_scenario *sc = list[s];
+        const double *ref = res[s * (N + 1) + N].obs;
+        for (int g = 0; g < sc->n_groups; g++, col++)
+            for (size_t j = 0; j < N; j++) {
+                const double *o = res[s * (N + 1) + j].obs;
+                double num = 0, den = 0;
+                for (int q = 0; q < sc->n_obs; q++)
+                    if (sc->group_of[q] == g) {
+                        num += (o[q] - ref[q]) * (o[q] - ref[q]);
+                        den += ref[q] * ref[q];
+                    }
+                dev[j * ncol + col] = den > 0 ? sqrt(num / den) : sqrt(num);
+            }
+    }
+
+    if (app_mkdir_p(out_dir, err)) {
+        free(dev);
+        rc = fail(1, "%s", err);
+        goto done;
+    }
+    char *csv = app_path_join(out_dir, "sweep.csv"), *gp = app_path_join(out_dir, "sweep.gp");
+    app_atomic a;
+    if (!csv || !gp || app_atomic_open(&a, csv, err)) {
+        rc = fail(1, "%s", csv && gp ? err : "out of memory");
+        goto files_done;
+    }
+    fprintf(a.f, "c,c_over_vmax,vmax2_over_c2");
+    for (size_t s = 0; s < ns; s++)
+        for (int g = 0; g < list[s]->n_groups; g++)
+            fprintf(a.f, ",dev_%s_%s", list[s]->name, list[s]->group[g]);
+    for (size_t s = 0; s < ns; s++)
+        for (int q = 0; q < list[s]->n_obs; q++)
+            fprintf(a.f, ",%s_%s", list[s]->name, list[s]->obs[q]);
+    fputc('\n', a.f);
+    for (size_t j = 0; j <= N; j++) { /* the last row is the classical reference */
+        if (j < N)
+            fprintf(a.f, "%.17g,%.17g,%.17g", cs[j], cs[j] / vmax, (vmax / cs[j]) * (vmax / cs[j]));
+        else
+            fprintf(a.f, "inf,inf,0");
+        for (size_t c2 = 0; c2 < ncol; c2++)
+            fprintf(a.f, ",%.17g", j < N ? dev[j * ncol + c2] : 0.0);
+        for (size_t s = 0; s < ns; s++)
+            for (int q = 0; q < list[s]->n_obs; q++)
+                fprintf(a.f, ",%.17g", res[s * (N + 1) + j].obs[q]);
+        fputc('\n', a.f);
+    }
+    if (app_atomic_commit(&a, err)) {
+        rc = fail(1, "%s", err);
+        goto files_done;
+    }
+
+    /* fitted orders */
+    double *x = malloc(N * sizeof *x), *y = malloc(N * sizeof *y);
+    double order[64];
+    col = 0;
+    printf("%s: %zu values of c from %g to %g x |v|max = %.6g (%s grid)\n", prog, N, from, to,
+           vmax, grid);
+    for (size_t s = 0; s < ns && x && y; s++)
+        for (int g = 0; g < list[s]->n_groups; g++, col++) {
+            size_t m = 0;
+            for (size_t j = 0; j < N; j++)
+                if (dev[j * ncol + col] > list[s]->floor) {
+                    x[m] = cs[j] / vmax;
+                    y[m] = dev[j * ncol + col];
+                    m++;
+                }
+            double slope = NAN, sd = NAN;
+            size_t used = 0;
+            if (app_loglog_slope(x, y, m, &slope, NULL, &sd, &used) != 0)
+                slope = NAN;
+            if (col < 64)
+                order[col] = slope;
+            printf("order %-8s %-11s %8.4f +- %.2g (%zu points above the noise floor %g; "
+                   "expect -2)\n", list[s]->name, list[s]->group[g], slope, sd, used,
+                   list[s]->floor);
+        }
+    free(x);
+    free(y);
+
+    if (app_atomic_open(&a, gp, err)) {
+        rc = fail(1, "%s", err);
+        goto files_done;
+    }
+    fprintf(a.f,
+            "# relcol-sweep: deviation from the classical limit against c (run: gnuplot sweep.gp)\n"
+            "if (!exists(\"outfile\")) outfile = 'sweep.png'\n"
+            "set terminal pngcairo size 1100,760 enhanced font ',12'\n"
+            "set output outfile\nset datafile separator ','\n"
+            "set logscale xy\nset format x '10^{%%L}'\nset format y '10^{%%L}'\n"
+            "set xlabel 'c / |v|_{max}'\nset ylabel 'relative deviation from c = ∞'\n"
+            "set title \"Classical-limit convergence: collision law, time of impact, soft reference\\n"
+            "{/*0.8 ε = %g, soft stiffness %g; dashed: (|v|_{max}/c)^2}\"\n"
+            "set grid\nset key bottom left font ',10'\n",
+            su.eps, su.stiffness);
+    fprintf(a.f, "plot '%s' u 2:3 w l dt 2 lw 2 lc rgb '#555555' t '(|v|_{max}/c)^2'", "sweep.csv");
+    col = 0;
+    for (size_t s = 0; s < ns; s++)
+        for (int g = 0; g < list[s]->n_groups; g++, col++)
+            fprintf(a.f, ", \\\n     '' u 2:($%zu > %g ? $%zu : 1/0) w lp pt %zu ps 0.8 lw 1.5 t '%s: %s (order %.3f)'",
+                    4 + col, list[s]->floor, 4 + col, 5 + 2 * col, list[s]->name, list[s]->group[g],
+                    col < 64 ? order[col] : NAN);
+    fprintf(a.f, "\n");
+    if (app_atomic_commit(&a, err)) {
+        rc = fail(1, "%s", err);
+        goto files_done;
+    }
+    printf("wrote %s, %s", csv, gp);
+    if (!no_plot) {
+        int made = 0;
+        if (app_gnuplot_run(prog, out_dir, "sweep.gp", "sweep.png", &made, err))
+            rc = fail(1, "%s", err);
+        else if (made)
+            printf(", %s/sweep.png", out_dir);
+    }
+    printf("\n");
+files_done:
+    free(csv);
+    free(gp);
+    free(dev);
+done:
+    free(cs);
+    free(res);
+    return rc;
+}
+
+int main(int argc, char **argv)
+{
+    gsl_set_error_handler_off();
+#ifdef RELCOL_HAVE_MPI
+    MPI_Init(&argc, &argv);
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &nranks);
+#endif
+    int rc = run(argc, argv);
+#ifdef RELCOL_HAVE_MPI
+    /* every rank returns the same code: rank 0 decides */
+    MPI_Bcast(&rc, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    MPI_Finalize();
+#endif
+    return rc;
+}

@@ -1,0 +1,1187 @@
+/* engine_core.c — the event loop: schedule each ball's earliest event (wall, ball, cell
+ * crossing) from its own stored state, pop events in (time, ball) order, drop stale ones
+ * by counters, and resolve each collision together with every contact simultaneous to it. */
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "engine_private.h"
+#include "relcol/status.h"
+
+/* Cell edge margin over the largest bounding diameter (relative): keeps balls that can
+ * touch (or be within sim_tol of touching) in adjacent cells despite round-off of the
+ * cell boundaries. */
+#define CELL_MARGIN 1e-8
+
+rc_sim_def rc_sim_def_default(void)
+{
+    rc_sim_def d;
+    memset(&d, 0, sizeof d);
+    d.dim = 3;
+    d.box = rc_v3(1.0, 1.0, 1.0);
+    d.c = INFINITY;
+    d.eps_ball = 1.0;
+    d.eps_wall = 1.0;
+    d.t_c = 0.0;
+    d.law = &rc_law_zmf;
+    d.frame = NULL;
+    d.toi = rc_toi_params_default();
+    d.sim_tol = 1e-9;
+    d.approach_tol = 1e-10;
+    d.overlap_tol = 1e-9;
+    d.cell_size = 0.0;
+    d.density = 1.0;
+    return d;
+}
+
+static int check_def(const rc_sim_def *d)
+{
+    if (d->dim != 2 && d->dim != 3)
+        return RC_EDIM;
+    if (!rc_v3_isfinite(d->box) || !isfinite(d->eps_ball) || !isfinite(d->eps_wall) ||
+        !isfinite(d->t_c) || !isfinite(d->sim_tol) || !isfinite(d->approach_tol) ||
+        !isfinite(d->overlap_tol) || !isfinite(d->cell_size) || !isfinite(d->density))
+        return RC_ENONFINITE;
+    if (!(d->box.x > 0.0 && d->box.y > 0.0 && (d->dim == 2 || d->box.z > 0.0)))
+        return RC_EINVAL;
+    if (!(d->eps_ball >= 0.0 && d->eps_ball <= 1.0 && d->eps_wall >= 0.0 &&
+          d->eps_wall <= 1.0))
+        return RC_ERESTITUTION;
+    if (!(d->t_c >= 0.0 && d->sim_tol >= 0.0 && d->sim_tol < 1e-3 && d->approach_tol >= 0.0 &&
+          d->approach_tol < 1e-3 && d->overlap_tol >= 0.0 && d->cell_size >= 0.0 &&
+          d->density > 0.0))
+        return RC_EINVAL;
+    if (!d->law || !d->law->collide)
+        return RC_EINVAL;
+    if (d->frame) { /* the engine calls frame->toi directly: validate its settings once */
+        const rc_toi_params *t = &d->toi;
+        if (!d->frame->toi || !isfinite(t->touch_tol) || !isfinite(t->graze_tol) ||
+            !isfinite(t->lambda_tol) || !(t->touch_tol >= 0.0 && t->graze_tol >= 0.0 &&
+                                          t->lambda_tol > 0.0 && t->max_iter > 0))
+            return RC_EINVAL;
+    }
+    double k;
+    return rc_inv_c2(d->c, &k);
+}
+
+int rc_sim_create(const rc_sim_def *def, rc_sim **out)
+{
+    if (!def || !out)
+        return RC_EINVAL;
+    *out = NULL;
+    int st = check_def(def);
+    if (st != RC_OK)
+        return st;
+    rc_sim *s = calloc(1, sizeof *s);
+    if (!s)
+        return RC_ENOMEM;
+    s->def = *def;
+    if (def->dim == 2)
+        s->def.box.z = 0.0;
+    rc_inv_c2(def->c, &s->inv_c2);
+    s->L[0] = def->box.x;
+    s->L[1] = def->box.y;
+    s->L[2] = def->box.z;
+    s->prm = rc_collision_params_default();
+    s->prm.inv_c2 = s->inv_c2;
+    s->toi = def->toi;
+    s->toi.inv_c2 = s->inv_c2;
+    s->narrow = def->frame && strcmp(def->frame->name, "sphere") != 0;
+    s->wall_contracted = def->frame && def->frame->wall_contracted && s->inv_c2 > 0.0;
+    if (s->narrow) {
+        if (!def->frame->toi || !(s->ws = rc_toi_workspace_alloc())) {
+            free(s);
+            return def->frame->toi ? RC_ENOMEM : RC_EINVAL;
+        }
+    }
+    *out = s;
+    return RC_OK;
+}
+
+static void release_balls(rc_sim *s)
+{
+    free(s->b);
+    free(s->a);
+    free(s->id);
+    free(s->slot);
+    free(s->cnt);
+    s->cnt = NULL;
+    s->b = NULL;
+    s->a = NULL;
+    s->id = NULL;
+    s->slot = NULL;
+    rc_eng_heap_free(&s->q);
+    rc_eng_cells_free(&s->g);
+    s->n = 0;
+}
+
+void rc_sim_free(rc_sim **sp)
+{
+    if (!sp || !*sp)
+        return;
+    rc_sim *s = *sp;
+    release_balls(s);
+    free(s->grp_ball);
+    free(s->grp_part);
+    free(s->grp_con);
+    rc_toi_workspace_free(&s->ws);
+    free(s->cand);
+    free(s);
+    *sp = NULL;
+}
+
+/* ---- event prediction ------------------------------------------------------------ */
+
+static inline void cell_coords(const eng_cells *g, int32_t cell, int c[3])
+{
+    c[0] = cell % g->n[0];
+    c[1] = (cell / g->n[0]) % g->n[1];
+    c[2] = cell / (g->n[0] * g->n[1]);
+}
+
+/* Bounding-sphere (and, if plugged in, contracted) contact time of balls i and k, as an
+ * absolute time >= now, INFINITY if none before `best`. It depends only on the two stored
+ * states (reference time max(t_i, t_k)), so the same pair gives the same bits whichever
+ * ball asks, and a continued run predicts what an uninterrupted one did. */
+static inline double pair_time_dx(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
+                                  rc_vec3 dx, double d2, double tref, double best,
+                                  int use_narrow);
+
+static inline double pair_time(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
+                               double best)
+{
+    rc_vec3 dx;
+    double tref;
+    if (bi->t >= bk->t) {
+        tref = bi->t;
+        dx = rc_v3_sub(rc_v3_axpy(bk->x, bi->t - bk->t, bk->v), bi->x);
+    } else {
+        tref = bk->t;
+        dx = rc_v3_sub(bk->x, rc_v3_axpy(bi->x, bk->t - bi->t, bi->v));
+    }
+    return pair_time_dx(s, bi, bk, dx, rc_v3_norm2(dx), tref, best, s->narrow);
+}
+
+/* The bounding-sphere time only (the broad phase of a contracted frame). */
+static inline double sphere_time(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
+                                 double best)
+{
+    rc_vec3 dx;
+    double tref;
+    if (bi->t >= bk->t) {
+        tref = bi->t;
+        dx = rc_v3_sub(rc_v3_axpy(bk->x, bi->t - bk->t, bk->v), bi->x);
+    } else {
+        tref = bk->t;
+        dx = rc_v3_sub(bk->x, rc_v3_axpy(bi->x, bk->t - bi->t, bi->v));
+    }
+    return pair_time_dx(s, bi, bk, dx, rc_v3_norm2(dx), tref, best, 0);
+}
+
+/* The same from the separation dx (and its square d2) at time tref. */
+__attribute__((always_inline)) static inline double pair_time_dx(
+    const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx, double d2, double tref,
+    double best, int use_narrow)
+{
+    const rc_vec3 dv = rc_v3_sub(bk->v, bi->v);
+    const double b = rc_v3_dot(dx, dv);
+    const double sig = bi->r + bk->r;
+    const double dd = d2 - sig * sig;
+    const double dv2 = rc_v3_norm2(dv);
+    const double disc = b * b - dv2 * dd;
+    const double tol = s->def.approach_tol * sig;
+    /* Branch-free on purpose: whether a neighbour approaches, touches or misses is a coin
+     * toss for the branch predictor, and computing the root for every neighbour is cheaper
+     * than mispredicting. Hit: approaching (b < 0) and either already touching (dd <= 0,
+     * collide now if the approach is real) or the roots are real. The root is
+     * dd / (-b + sqrt(disc)), free of cancellation. */
+    const double root = dd / (sqrt(disc > 0.0 ? disc : 0.0) - b);
+    const int touching = dd <= 0.0;
+    const int hit = (b < 0.0) & (touching ? b * b > tol * tol * dv2 : disc > 0.0);
+    const double t = touching ? 0.0 : root;
+    if (!hit)
+        return INFINITY;
+    double ta = tref + t;
+    if (ta < s->now)
+        ta = s->now;
+    if (!(ta < best))
+        return INFINITY;
+    if (use_narrow) {
+        /* narrow phase: the contracted shapes inside the bounding spheres */
+        const eng_aux *ai = &s->a[bi - s->b], *ak = &s->a[bk - s->b];
+        rc_toi_ball A = {rc_v3(0, 0, 0), bi->r, ai->m, ai->p};
+        rc_toi_ball B = {dx, bk->r, ak->m, ak->p};
+        rc_toi_contact out;
+        int st = s->def.frame->toi(&s->toi, &A, &B, s->ws, &out);
+        if (st == RC_EOVERLAP)
+            return s->now; /* approaching bounding spheres: overlap policy, resolve now */
+        if (st != RC_OK)
+            return INFINITY;
+        ta = tref + out.t;
+        if (ta < s->now)
+            ta = s->now;
+        if (!(ta < best))
+            return INFINITY;
+    }
+    return ta;
+}
+
+/* Support distance of ball i's shape along the wall normal e_d: r, or contracted
+ * r sqrt(1 - v_d^2/c^2) = (r/M) sqrt(m^2 + p_perp^2/c^2) (no cancellation near c). */
+static inline double wall_support(const rc_sim *s, int32_t i, int d)
+{
+    const double r = s->b[i].r;
+    if (!s->wall_contracted)
+        return r;
+    const eng_aux *a = &s->a[i];
+    double pd = rc_v3_get(a->p, d), pp = rc_v3_norm2(a->p) - pd * pd;
+    if (pp < 0.0)
+        pp = 0.0;
+    double M = eng_mass_rel(a->m, a->p, s->inv_c2);
+    return r / M * sqrt(a->m * a->m + pp * s->inv_c2);
+}
+
+static void wall_event(const rc_sim *s, int32_t i, double *best, int32_t *bp)
+{
+    const eng_ball *bi = &s->b[i];
+    for (int d = 0; d < s->def.dim; d++) {
+        double v = rc_v3_get(bi->v, d), x = rc_v3_get(bi->x, d), t;
+        int w;
+        if (v > 0.0) {
+            t = bi->t + (s->L[d] - wall_support(s, i, d) - x) / v;
+            w = 2 * d + 1;
+        } else if (v < 0.0) {
+            t = bi->t + (x - wall_support(s, i, d)) / (-v);
+            w = 2 * d;
+        } else {
+            continue;
+        }
+        if (t < s->now)
+            t = s->now;
+        if (t < *best) {
+            *best = t;
+            *bp = ENG_WALL(w);
+        }
+    }
+}
+
+/* Neighbours gathered per scan before testing (stack buffer; more are done in chunks). */
+#define GATHER_MAX 128
+
+static inline void test_list(const rc_sim *s, int32_t i, const int32_t *nb, size_t m,
+                             double *best, int32_t *bp)
+{
+    const eng_ball *bi = &s->b[i];
+    for (size_t j = 0; j < m; j++) {
+        double t = pair_time(s, bi, &s->b[nb[j]], *best);
+        if (t < *best) {
+            *best = t;
+            *bp = nb[j];
+        }
+    }
+}
+
+static inline void scan_cell(const rc_sim *s, int32_t i, int32_t cell, double *best,
+                             int32_t *bp)
+{
+    const eng_ball *bi = &s->b[i];
+    const int32_t *next = s->g.next;
+    for (int32_t k = s->g.head[cell]; k >= 0; k = next[k]) {
+        if (k == i)
+            continue;
+        double t = pair_time(s, bi, &s->b[k], *best);
+        if (t < *best) {
+            *best = t;
+            *bp = k;
+        }
+    }
+}
+
+/* Scan the cells around c with offsets lo[d]..hi[d] (clipped to the grid). */
+/* Contracted frames: the root finding is the cost, so first collect the neighbours whose
+ * bounding spheres can touch before `best`, then ask the frame in order of sphere time and
+ * stop as soon as the next sphere time is no earlier than the best contracted contact
+ * (the contracted contact is never earlier than the bounding spheres'). */
+static void scan_block_narrow(const rc_sim *cs, int32_t i, int x0, int x1, int y0, int y1,
+                              int z0, int z1, double *best, int32_t *bp)
+{
+    rc_sim *s = (rc_sim *)cs; /* the candidate buffer is scratch */
+    const eng_cells *g = &s->g;
+    const eng_ball *bi = &s->b[i];
+    size_t nc = 0;
+    for (int z = z0; z <= z1; z++)
+        for (int y = y0; y <= y1; y++)
+            for (int x = x0; x <= x1; x++)
+                for (int32_t k = g->head[x + g->n[0] * (y + g->n[1] * z)]; k >= 0;
+                     k = g->next[k]) {
+                    if (k == i)
+                        continue;
+                    double t = sphere_time(s, bi, &s->b[k], *best);
+                    if (!(t < *best))
+                        continue;
+                    if (nc == s->cand_cap) {
+                        size_t cap = s->cand_cap ? 2 * s->cand_cap : 64;
+                        eng_cand *c = realloc(s->cand, cap * sizeof *c);
+                        if (!c) { /* no memory: ask the frame at once */
+                            double tn = pair_time(s, bi, &s->b[k], *best);
+                            if (tn < *best) {
+                                *best = tn;
+                                *bp = k;
+                            }
+                            continue;
+                        }
+                        s->cand = c;
+                        s->cand_cap = cap;
+                    }
+                    s->cand[nc].t = t;
+                    s->cand[nc].k = k;
+                    nc++;
+                }
+    for (size_t a = 1; a < nc; a++) { /* insertion sort by (t, k): lists are short */
+        eng_cand c = s->cand[a];
+        size_t b = a;
+        while (b > 0 && (s->cand[b - 1].t > c.t ||
+                         (s->cand[b - 1].t == c.t && s->cand[b - 1].k > c.k))) {
+            s->cand[b] = s->cand[b - 1];
+            b--;
+        }
+        s->cand[b] = c;
+    }
+    for (size_t a = 0; a < nc; a++) {
+        if (!(s->cand[a].t < *best))
+            break;
+        double t = pair_time(s, bi, &s->b[s->cand[a].k], *best);
+        if (t < *best) {
+            *best = t;
+            *bp = s->cand[a].k;
+        }
+    }
+}
+
+static void scan_block(const rc_sim *s, int32_t i, const int c[3], const int lo[3],
+                       const int hi[3], double *best, int32_t *bp)
+{
+    const eng_cells *g = &s->g;
+    int z0 = c[2] + lo[2], z1 = c[2] + hi[2], y0 = c[1] + lo[1], y1 = c[1] + hi[1];
+    int x0 = c[0] + lo[0], x1 = c[0] + hi[0];
+    if (z0 < 0) z0 = 0;
+    if (z1 >= g->n[2]) z1 = g->n[2] - 1;
+    if (y0 < 0) y0 = 0;
+    if (y1 >= g->n[1]) y1 = g->n[1] - 1;
+    if (x0 < 0) x0 = 0;
+    if (x1 >= g->n[0]) x1 = g->n[0] - 1;
+    if (s->narrow) {
+        scan_block_narrow(s, i, x0, x1, y0, y1, z0, z1, best, bp);
+        return;
+    }
+    /* Gather the neighbours first, prefetching each, then test them: walking the lists
+     * and loading the balls overlap instead of waiting on each other. */
+    int32_t nb[GATHER_MAX];
+    size_t m = 0;
+    for (int z = z0; z <= z1; z++)
+        for (int y = y0; y <= y1; y++)
+            for (int x = x0; x <= x1; x++)
+                for (int32_t k = g->head[x + g->n[0] * (y + g->n[1] * z)]; k >= 0;
+                     k = g->next[k]) {
+                    if (k == i)
+                        continue;
+                    __builtin_prefetch(&s->b[k]);
+                    nb[m++] = k;
+                    if (m == GATHER_MAX) {
+                        test_list(s, i, nb, m, best, bp);
+                        m = 0;
+                    }
+                }
+    test_list(s, i, nb, m, best, bp);
+}
+
+static void cross_event(rc_sim *s, int32_t i, const int c[3])
+{
+    const eng_ball *bi = &s->b[i];
+    double best = INFINITY;
+    int32_t code = -1;
+    for (int d = 0; d < s->def.dim; d++) {
+        double v = rc_v3_get(bi->v, d), x = rc_v3_get(bi->x, d), t;
+        if (v > 0.0 && c[d] < s->g.n[d] - 1)
+            t = bi->t + ((c[d] + 1) * s->g.w[d] - x) / v;
+        else if (v < 0.0 && c[d] > 0)
+            t = bi->t + (c[d] * s->g.w[d] - x) / v;
+        else
+            continue;
+        if (t < s->now)
+            t = s->now;
+        if (t < best) {
+            best = t;
+            code = 2 * d + (v > 0.0);
+        }
+    }
+    s->a[i].cross_t = best;
+    s->a[i].cross_code = code;
+}
+
+static inline void store_event(rc_sim *s, int32_t i, double best, int32_t bp)
+{
+    eng_aux *a = &s->a[i];
+    a->ev_t = best;
+    a->ev_partner = bp;
+    a->ev_pcount = bp >= 0 ? s->cnt[bp] : 0;
+}
+
+static inline double key_of(const eng_aux *a)
+{
+    return a->ev_t < a->cross_t ? a->ev_t : a->cross_t;
+}
+
+/* Full prediction for ball i: walls, the 3^d cells around it, its next cell crossing. */
+static void predict(rc_sim *s, int32_t i, int update_heap)
+{
+    double best = INFINITY;
+    int32_t bp = ENG_NONE;
+    int c[3];
+    wall_event(s, i, &best, &bp);
+    cell_coords(&s->g, s->a[i].cell, c);
+    static const int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
+    scan_block(s, i, c, lo, hi, &best, &bp);
+    store_event(s, i, best, bp);
+    cross_event(s, i, c);
+    if (update_heap)
+        rc_eng_heap_update(&s->q, (uint32_t)i, key_of(&s->a[i]));
+}
+
+/* ---- setting up ------------------------------------------------------------------ */
+
+int rc_sim_set_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad)
+{
+    if (!s || (!in && n))
+        return RC_EINVAL;
+    if (n > (size_t)INT32_MAX)
+        return RC_EINVAL;
+    const int dim = s->def.dim;
+    double rmax = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        const rc_sim_ball *b = &in[i];
+        if (bad)
+            *bad = i;
+        if (!rc_v3_isfinite(b->x) || !rc_v3_isfinite(b->p) || !isfinite(b->r) ||
+            !isfinite(b->m) || !isfinite(b->tau))
+            return RC_ENONFINITE;
+        if (!(b->r > 0.0))
+            return RC_ERADIUS;
+        if (dim == 2 && (b->x.z != 0.0 || b->p.z != 0.0))
+            return RC_EDIM;
+        for (int d = 0; d < dim; d++) {
+            double x = rc_v3_get(b->x, d);
+            if (!(x >= b->r && x <= s->L[d] - b->r))
+                return RC_EINVAL; /* bounding sphere not inside the box */
+        }
+        if (b->r > rmax)
+            rmax = b->r;
+    }
+    release_balls(s);
+    /* a new set of balls starts its bookkeeping afresh */
+    s->heat = s->heat_c = 0.0;
+    for (int d = 0; d < 3; d++)
+        s->wall[d] = s->wall_c[d] = 0.0;
+    s->overlaps = s->collisions = s->group_fallbacks = s->since_reorder = 0;
+    s->max_group = 0;
+    memset(s->events, 0, sizeof s->events);
+    int st = RC_ENOMEM;
+    s->b = malloc((n ? n : 1) * sizeof *s->b);
+    s->a = malloc((n ? n : 1) * sizeof *s->a);
+    if (!s->b || !s->a)
+        goto fail;
+    double edge = 2.0 * rmax * (1.0 + CELL_MARGIN + 2.0 * s->def.sim_tol);
+    if (s->def.cell_size > edge)
+        edge = s->def.cell_size;
+    if (!(edge > 0.0))
+        edge = 1.0;
+    if ((st = rc_eng_cells_init(&s->g, dim, s->def.box, edge, n)) != RC_OK)
+        goto fail;
+    if ((st = rc_eng_heap_init(&s->q, n)) != RC_OK)
+        goto fail;
+    s->n = n;
+    /* Store balls in cell order (stable): neighbours then share cache lines and the
+     * prefetcher, which matters more than anything else once N no longer fits in cache.
+     * id[] / slot[] translate to and from the caller's indices. */
+    s->cnt = calloc(n ? n : 1, sizeof *s->cnt);
+    s->id = malloc((n ? n : 1) * sizeof *s->id);
+    s->slot = malloc((n ? n : 1) * sizeof *s->slot);
+    int32_t *cellof = malloc((n ? n : 1) * sizeof *cellof);
+    size_t *start = calloc(s->g.ncells + 1, sizeof *start);
+    if (!s->id || !s->slot || !s->cnt || !cellof || !start) {
+        free(cellof);
+        free(start);
+        st = RC_ENOMEM;
+        goto fail;
+    }
+    for (size_t i = 0; i < n; i++) {
+        cellof[i] = rc_eng_cells_index_of(&s->g, dim, in[i].x);
+        start[cellof[i] + 1]++;
+    }
+    for (size_t c = 0; c < s->g.ncells; c++)
+        start[c + 1] += start[c];
+    for (size_t i = 0; i < n; i++) {
+        size_t k = start[cellof[i]]++;
+        s->id[k] = (uint32_t)i;
+        s->slot[i] = (uint32_t)k;
+    }
+    free(start);
+    for (size_t k = n; k-- > 0;) {
+        const rc_sim_ball *b = &in[s->id[k]];
+        eng_ball *e = &s->b[k];
+        eng_aux *a = &s->a[k];
+        memset(a, 0, sizeof *a);
+        a->m = b->m > 0.0 ? b->m : s->def.density * b->r * b->r * b->r;
+        a->p = b->p;
+        a->tau = b->tau;
+        a->tau_last = -INFINITY;
+        double M = eng_mass_rel(a->m, a->p, s->inv_c2);
+        e->x = b->x;
+        e->v = rc_v3_scale(1.0 / M, a->p);
+        e->t = s->now;
+        e->r = b->r;
+        rc_eng_cells_insert(&s->g, s->a, (int32_t)k, cellof[s->id[k]]);
+    }
+    free(cellof);
+    /* overlap check through the cells: each pair once */
+    for (size_t i = 0; i < n; i++) {
+        int c[3];
+        cell_coords(&s->g, s->a[i].cell, c);
+        for (int dz = (dim == 3 ? -1 : 0); dz <= (dim == 3 ? 1 : 0); dz++)
+            for (int dy = -1; dy <= 1; dy++)
+                for (int dx = -1; dx <= 1; dx++) {
+                    int x = c[0] + dx, y = c[1] + dy, z = c[2] + dz;
+                    if (x < 0 || y < 0 || z < 0 || x >= s->g.n[0] || y >= s->g.n[1] ||
+                        z >= s->g.n[2])
+                        continue;
+                    int32_t cell = (int32_t)(x + s->g.n[0] * (y + s->g.n[1] * z));
+                    for (int32_t k = s->g.head[cell]; k >= 0; k = s->g.next[k]) {
+                        if ((size_t)k <= i)
+                            continue;
+                        /* touching is allowed (a rack): only overlaps deeper than the
+                         * round-off of placed positions, overlap_tol, are rejected */
+                        double sig = (s->b[i].r + s->b[k].r) * (1.0 - s->def.overlap_tol);
+                        if (rc_v3_norm2(rc_v3_sub(s->b[k].x, s->b[i].x)) < sig * sig) {
+                            if (bad)
+                                *bad = s->id[k] > s->id[i] ? s->id[k] : s->id[i];
+                            st = RC_EOVERLAP;
+                            goto fail;
+                        }
+                    }
+                }
+    }
+    double *keys = malloc((n ? n : 1) * sizeof *keys);
+    if (!keys) {
+        st = RC_ENOMEM;
+        goto fail;
+    }
+    for (size_t i = 0; i < n; i++)
+        predict(s, (int32_t)i, 0);
+    for (size_t i = 0; i < n; i++)
+        keys[i] = key_of(&s->a[i]);
+    rc_eng_heap_build(&s->q, keys);
+    free(keys);
+    return RC_OK;
+fail:
+    release_balls(s);
+    return st;
+}
+
+/* ---- resolving events ------------------------------------------------------------ */
+
+/* Move ball i's stored state to time T (position, proper time, clock). */
+static void advance_ball(rc_sim *s, int32_t i, double T)
+{
+    eng_ball *b = &s->b[i];
+    eng_aux *a = &s->a[i];
+    double h = T - b->t;
+    if (h == 0.0)
+        return;
+    b->x = rc_v3_axpy(b->x, h, b->v);
+    if (s->inv_c2 == 0.0)
+        a->tau += h;
+    else
+        a->tau += h * (a->m / eng_mass_rel(a->m, a->p, s->inv_c2));
+    b->t = T;
+}
+
+static int grow(void **p, size_t *cap, size_t need, size_t elem)
+{
+    if (need <= *cap)
+        return RC_OK;
+    size_t nc = *cap ? *cap : 16;
+    while (nc < need)
+        nc *= 2;
+    void *q = realloc(*p, nc * elem);
+    if (!q)
+        return RC_ENOMEM;
+    *p = q;
+    *cap = nc;
+    return RC_OK;
+}
+
+/* Group member index of ball k, adding it (advanced to T) if new; -1 on ENOMEM. */
+static int member_of(rc_sim *s, size_t *nm, int32_t k, double T)
+{
+    for (size_t j = 0; j < *nm; j++)
+        if (s->grp_ball[j] == k)
+            return (int)j;
+    size_t cap = s->grp_ball_cap;
+    if (grow((void **)&s->grp_ball, &cap, *nm + 1, sizeof *s->grp_ball) != RC_OK)
+        return -1;
+    if (grow((void **)&s->grp_part, &s->grp_ball_cap, *nm + 1, sizeof *s->grp_part) != RC_OK)
+        return -1;
+    advance_ball(s, k, T);
+    s->grp_ball[*nm] = k;
+    return (int)(*nm)++;
+}
+
+static int have_contact(const rc_sim *s, size_t nc, int a, int b)
+{
+    for (size_t j = 0; j < nc; j++) {
+        const rc_contact *c = &s->grp_con[j];
+        if ((c->a == a && c->b == b) || (c->a == b && c->b == a))
+            return 1;
+    }
+    return 0;
+}
+
+static int add_contact(rc_sim *s, size_t *nc, int a, int b, rc_vec3 n)
+{
+    if (grow((void **)&s->grp_con, &s->grp_con_cap, *nc + 1, sizeof *s->grp_con) != RC_OK)
+        return RC_ENOMEM;
+    rc_contact *c = &s->grp_con[(*nc)++];
+    c->a = a;
+    c->b = b;
+    c->n = n;
+    c->eps = 0.0;
+    return RC_OK;
+}
+
+/* Find every contact simultaneous with the group's so far (gap <= sim_tol, approaching),
+ * growing the group through shared balls. Members are at time T. */
+static int grow_group(rc_sim *s, size_t *nm, size_t *nc, double T)
+{
+    const double stol = s->def.sim_tol, atol = s->def.approach_tol;
+    for (size_t mi = 0; mi < *nm; mi++) {
+        const int32_t i = s->grp_ball[mi];
+        /* walls */
+        for (int d = 0; d < s->def.dim; d++) {
+            const eng_ball *bi = &s->b[i];
+            double v = rc_v3_get(bi->v, d), x = rc_v3_get(bi->x, d);
+            if (v == 0.0)
+                continue;
+            double h = wall_support(s, i, d);
+            double gap = v > 0.0 ? s->L[d] - h - x : x - h;
+            if (!(gap <= stol * bi->r))
+                continue;
+            int w = 2 * d + (v > 0.0);
+            if (have_contact(s, *nc, (int)mi, ENG_WALL(w)))
+                continue;
+            rc_vec3 n = rc_v3(0, 0, 0);
+            rc_v3_set(&n, d, v > 0.0 ? 1.0 : -1.0);
+            if (add_contact(s, nc, (int)mi, ENG_WALL(w), n) != RC_OK)
+                return RC_ENOMEM;
+        }
+        int c[3];
+        cell_coords(&s->g, s->a[i].cell, c);
+        const eng_cells *g = &s->g;
+        for (int z = c[2] - 1; z <= c[2] + 1; z++)
+            for (int y = c[1] - 1; y <= c[1] + 1; y++)
+                for (int x = c[0] - 1; x <= c[0] + 1; x++) {
+                    if (x < 0 || y < 0 || z < 0 || x >= g->n[0] || y >= g->n[1] || z >= g->n[2])
+                        continue;
+                    int32_t cell = (int32_t)(x + g->n[0] * (y + g->n[1] * z));
+                    for (int32_t k = g->head[cell]; k >= 0; k = g->next[k]) {
+                        if (k == i)
+                            continue;
+                        const eng_ball *bi = &s->b[i], *bk = &s->b[k];
+                        rc_vec3 dx = rc_v3_sub(rc_v3_axpy(bk->x, T - bk->t, bk->v), bi->x);
+                        double sig = bi->r + bk->r, lim = sig * (1.0 + stol);
+                        double d2 = rc_v3_norm2(dx);
+                        if (!(d2 <= lim * lim))
+                            continue;
+                        rc_vec3 dv = rc_v3_sub(bk->v, bi->v);
+                        double bb = rc_v3_dot(dx, dv);
+                        if (!(bb < 0.0 && bb * bb > atol * atol * sig * sig * rc_v3_norm2(dv)))
+                            continue;
+                        rc_vec3 n = rc_v3_scale(1.0 / sqrt(d2), dx);
+                        if (s->narrow) {
+                            /* contracted shapes: in contact within sim_tol of now? */
+                            rc_toi_ball A = {rc_v3(0, 0, 0), bi->r, s->a[i].m, s->a[i].p};
+                            rc_toi_ball B = {dx, bk->r, s->a[k].m, s->a[k].p};
+                            rc_toi_contact out;
+                            int st = s->def.frame->toi(&s->toi, &A, &B, s->ws, &out);
+                            if (st != RC_OK ||
+                                !(out.t * out.t * rc_v3_norm2(dv) <= stol * stol * sig * sig))
+                                continue;
+                            n = out.n;
+                        }
+                        int mk = member_of(s, nm, k, T);
+                        if (mk < 0)
+                            return RC_ENOMEM;
+                        if (have_contact(s, *nc, (int)mi, mk))
+                            continue;
+                        if (add_contact(s, nc, (int)mi, mk, n) != RC_OK)
+                            return RC_ENOMEM;
+                    }
+                }
+    }
+    return RC_OK;
+}
+
+static inline void kahan(double *sum, double *comp, double x)
+{
+    double y = x - *comp;
+    double t = *sum + y;
+    *comp = (t - *sum) - y;
+    *sum = t;
+}
+
+static double kinetic(const rc_particle *b, double inv_c2)
+{
+    double M = eng_mass_rel(b->m, b->p, inv_c2);
+    return rc_v3_norm2(b->p) / (M + b->m);
+}
+
+/* Full prediction for member i of a tentatively resolved single contact (i is at time T,
+ * vold its velocity before): while scanning, look with the old velocities for any other
+ * contact simultaneous with the resolved one (gap <= sim_tol, approaching) -- the same
+ * test as grow_group, at no extra distance computation. Returns 1 on such a contact (the
+ * caller then undoes and resolves the whole group), else stores the event and returns 0. */
+static int predict_checked(rc_sim *s, int32_t i, rc_vec3 vold, int32_t partner, double T)
+{
+    const double stol = s->def.sim_tol, atol = s->def.approach_tol;
+    const eng_ball *bi = &s->b[i];
+    /* sim_tol = 0: no grouping asked for, no check */
+    const int check = stol > 0.0;
+    for (int d = 0; d < s->def.dim && check; d++) {
+        double v = rc_v3_get(vold, d), x = rc_v3_get(bi->x, d);
+        if (v == 0.0)
+            continue;
+        int w = 2 * d + (v > 0.0);
+        if (ENG_WALL(w) == partner)
+            continue;
+        double h = wall_support(s, i, d);
+        double gap = v > 0.0 ? s->L[d] - h - x : x - h;
+        if (gap <= stol * bi->r)
+            return 1;
+    }
+    double best = INFINITY;
+    int32_t bp = ENG_NONE;
+    wall_event(s, i, &best, &bp);
+    int c[3];
+    cell_coords(&s->g, s->a[i].cell, c);
+    const eng_cells *g = &s->g;
+    const int32_t *next = g->next;
+    int z0 = c[2] > 0 ? c[2] - 1 : 0, z1 = c[2] + 1 < g->n[2] ? c[2] + 1 : g->n[2] - 1;
+    int y0 = c[1] > 0 ? c[1] - 1 : 0, y1 = c[1] + 1 < g->n[1] ? c[1] + 1 : g->n[1] - 1;
+    int x0 = c[0] > 0 ? c[0] - 1 : 0, x1 = c[0] + 1 < g->n[0] ? c[0] + 1 : g->n[0] - 1;
+    int32_t nb[GATHER_MAX];
+    size_t m = 0;
+    int more = 1;
+    int z = z0, y = y0, x = x0;
+    int32_t k = g->head[x + g->n[0] * (y + g->n[1] * z)];
+    while (more) {
+        /* gather a chunk of neighbours (prefetching them), then test the chunk */
+        m = 0;
+        while (m < GATHER_MAX) {
+            while (k < 0) {
+                if (++x > x1) {
+                    x = x0;
+                    if (++y > y1) {
+                        y = y0;
+                        if (++z > z1)
+                            break;
+                    }
+                }
+                k = g->head[x + g->n[0] * (y + g->n[1] * z)];
+            }
+            if (k < 0)
+                break;
+            if (k != i) {
+                __builtin_prefetch(&s->b[k]);
+                nb[m++] = k;
+            }
+            k = next[k];
+        }
+        more = m == GATHER_MAX;
+        for (size_t j = 0; j < m; j++) {
+            const int32_t kk = nb[j];
+            const eng_ball *bk = &s->b[kk];
+            /* t_k <= T = t_i: the reference time is T, as in pair_time */
+            rc_vec3 dx = rc_v3_sub(rc_v3_axpy(bk->x, T - bk->t, bk->v), bi->x);
+            double d2 = rc_v3_norm2(dx), sig = bi->r + bk->r;
+            double lim = sig * (1.0 + stol);
+            if (check && d2 <= lim * lim && kk != partner) {
+                rc_vec3 dv = rc_v3_sub(bk->v, vold);
+                double bb = rc_v3_dot(dx, dv);
+                if (bb < 0.0 && bb * bb > atol * atol * sig * sig * rc_v3_norm2(dv))
+                    return 1;
+            }
+            double t = pair_time_dx(s, bi, bk, dx, d2, T, best, 0);
+            if (t < best) {
+                best = t;
+                bp = kk;
+            }
+        }
+    }
+    store_event(s, i, best, bp);
+    cross_event(s, i, c);
+    return 0;
+}
+
+static double contact_eps(rc_sim *s, const rc_contact *c);
+static void finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int kind, int done);
+
+/* The common case: the event's own contact alone. Resolve it, then predict both balls
+ * while checking that no other contact was simultaneous with it; if one was, undo
+ * (return 0) so the caller resolves the whole group. 1 when done. */
+static int try_single(rc_sim *s, size_t nm, int32_t bp, double T)
+{
+    rc_particle *P = s->grp_part;
+    rc_vec3 vold[2];
+    double k0 = 0.0;
+    rc_vec3 p0 = rc_v3(0, 0, 0);
+    for (size_t j = 0; j < nm; j++) {
+        int32_t b = s->grp_ball[j];
+        P[j].m = s->a[b].m;
+        P[j].p = s->a[b].p;
+        vold[j] = s->b[b].v;
+        k0 += kinetic(&P[j], s->inv_c2);
+        p0 = rc_v3_add(p0, P[j].p);
+    }
+    rc_contact *c = &s->grp_con[0];
+    const uint64_t tc_before = s->events[RC_SIM_EV_TC];
+    double eps = contact_eps(s, c);
+    rc_particle Q[2] = {P[0], nm > 1 ? P[1] : P[0]};
+    if (bp >= 0) {
+        s->prm.eps = eps;
+        s->def.law->collide(&s->prm, &Q[0], &Q[1], c->n);
+    } else {
+        rc_collide_wall(s->inv_c2, eps, &Q[0], c->n);
+    }
+    for (size_t j = 0; j < nm; j++) {
+        int32_t b = s->grp_ball[j];
+        s->a[b].m = Q[j].m;
+        s->a[b].p = Q[j].p;
+        s->b[b].v = rc_v3_scale(1.0 / eng_mass_rel(Q[j].m, Q[j].p, s->inv_c2), Q[j].p);
+        s->cnt[b]++;
+    }
+    int conflict = 0;
+    for (size_t j = 0; j < nm && !conflict; j++) {
+        int32_t b = s->grp_ball[j];
+        int32_t partner = nm > 1 ? s->grp_ball[1 - j] : bp;
+        conflict = predict_checked(s, b, vold[j], partner, T);
+    }
+    if (conflict) {
+        for (size_t j = 0; j < nm; j++) {
+            int32_t b = s->grp_ball[j];
+            s->a[b].m = P[j].m;
+            s->a[b].p = P[j].p;
+            s->b[b].v = vold[j];
+            s->cnt[b]--;
+        }
+        s->events[RC_SIM_EV_TC] = tc_before;
+        return 0;
+    }
+    for (size_t j = 0; j < nm; j++)
+        P[j] = Q[j];
+    finish(s, nm, 1, k0, p0, bp >= 0 ? RC_SIM_EV_BALL : RC_SIM_EV_WALL, 1);
+    return 1;
+}
+
+/* Resolve the collision of ball i with partner bp (ball or wall) at time T, with every
+ * simultaneous contact. */
+static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
+{
+    size_t nm = 0, nc = 0;
+    rc_vec3 n0;
+    int frame_normal = 0;
+    if (bp >= 0 && s->narrow) {
+        /* The frame's normal at contact: ask it again with exactly the inputs it was
+         * given when this event was predicted (both stored states are unchanged, the
+         * counters say so), which reproduces its answer bit for bit -- also for frames
+         * (zmf) whose contact is not simultaneous in the table frame. RC_EOVERLAP: the
+         * shape-change policy, resolved along the centre line and counted. */
+        const eng_ball *bi = &s->b[i], *bk = &s->b[bp];
+        rc_vec3 dx;
+        if (bi->t >= bk->t)
+            dx = rc_v3_sub(rc_v3_axpy(bk->x, bi->t - bk->t, bk->v), bi->x);
+        else
+            dx = rc_v3_sub(bk->x, rc_v3_axpy(bi->x, bk->t - bi->t, bi->v));
+        rc_toi_ball A = {rc_v3(0, 0, 0), bi->r, s->a[i].m, s->a[i].p};
+        rc_toi_ball B = {dx, bk->r, s->a[bp].m, s->a[bp].p};
+        rc_toi_contact out;
+        int st = s->def.frame->toi(&s->toi, &A, &B, s->ws, &out);
+        if (st == RC_OK) {
+            n0 = out.n;
+            frame_normal = 1;
+        } else if (st == RC_EOVERLAP) {
+            s->overlaps++;
+        }
+    }
+    if (member_of(s, &nm, i, T) < 0)
+        return RC_ENOMEM;
+    if (bp >= 0) {
+        if (member_of(s, &nm, bp, T) < 0)
+            return RC_ENOMEM;
+        rc_vec3 dx = rc_v3_sub(s->b[bp].x, s->b[i].x);
+        double len = rc_v3_norm(dx);
+        if (!frame_normal)
+            n0 = len > 0.0 ? rc_v3_scale(1.0 / len, dx) : rc_v3(1.0, 0.0, 0.0);
+        if (!s->narrow && len < (s->b[i].r + s->b[bp].r) * (1.0 - s->def.overlap_tol))
+            s->overlaps++;
+        if (add_contact(s, &nc, 0, 1, n0) != RC_OK)
+            return RC_ENOMEM;
+    } else {
+        int w = ENG_WALL_INDEX(bp), d = w / 2;
+        n0 = rc_v3(0, 0, 0);
+        rc_v3_set(&n0, d, (w & 1) ? 1.0 : -1.0);
+        if (add_contact(s, &nc, 0, bp, n0) != RC_OK)
+            return RC_ENOMEM;
+    }
+    if (!s->narrow && try_single(s, nm, bp, T))
+        return RC_OK;
+    if (s->def.sim_tol > 0.0) {
+        int st = grow_group(s, &nm, &nc, T);
+        if (st != RC_OK)
+            return st;
+    }
+    /* states before, TC model per contact */
+    rc_particle *P = s->grp_part;
+    double k0 = 0.0;
+    rc_vec3 p0 = rc_v3(0, 0, 0);
+    for (size_t j = 0; j < nm; j++) {
+        const eng_aux *a = &s->a[s->grp_ball[j]];
+        P[j].m = a->m;
+        P[j].p = a->p;
+        k0 += kinetic(&P[j], s->inv_c2);
+        p0 = rc_v3_add(p0, a->p);
+    }
+    for (size_t j = 0; j < nc; j++)
+        s->grp_con[j].eps = contact_eps(s, &s->grp_con[j]);
+    int kind;
+    if (nc == 1) {
+        const rc_contact *c = &s->grp_con[0];
+        if (c->b >= 0) {
+            s->prm.eps = c->eps;
+            s->def.law->collide(&s->prm, &P[0], &P[1], c->n);
+            kind = RC_SIM_EV_BALL;
+        } else {
+            rc_collide_wall(s->inv_c2, c->eps, &P[0], c->n);
+            kind = RC_SIM_EV_WALL;
+        }
+    } else {
+        /* members may be many: the solver works on the group's local indices */
+        kind = RC_SIM_EV_MULTI;
+        int st = rc_contacts_resolve(s->inv_c2, nm, P, nc, s->grp_con, NULL);
+        if (st != RC_OK) {
+            /* dependent normals (or no convergence): resolve the event's own contact,
+             * the others become events of their own at the same time */
+            s->group_fallbacks++;
+            for (size_t j = 0; j < nm; j++) {
+                P[j].m = s->a[s->grp_ball[j]].m;
+                P[j].p = s->a[s->grp_ball[j]].p;
+            }
+            const rc_contact *c = &s->grp_con[0];
+            if (c->b >= 0) {
+                s->prm.eps = c->eps;
+                s->def.law->collide(&s->prm, &P[0], &P[1], c->n);
+            } else {
+                rc_collide_wall(s->inv_c2, c->eps, &P[0], c->n);
+            }
+            nm = bp >= 0 ? 2 : 1;
+            nc = 1;
+        }
+    }
+    finish(s, nm, nc, k0, p0, kind, 0);
+    return RC_OK;
+}
+
+/* Restitution of a contact, elastic under the TC model when a ball's proper time since
+ * its previous collision is below t_c. */
+static double contact_eps(rc_sim *s, const rc_contact *c)
+{
+    const eng_aux *aa = &s->a[s->grp_ball[c->a]];
+    int wall = c->b < 0;
+    int tc = aa->tau - aa->tau_last < s->def.t_c;
+    if (!wall) {
+        const eng_aux *ab = &s->a[s->grp_ball[c->b]];
+        tc = tc || ab->tau - ab->tau_last < s->def.t_c;
+    }
+    const double eps = wall ? s->def.eps_wall : s->def.eps_ball;
+    s->events[RC_SIM_EV_TC] += (uint64_t)(tc && eps != 1.0);
+    return tc ? 1.0 : eps;
+}
+
+/* Write the group's new states (P) back, account heat and wall impulse, and predict
+ * every member. In the single-contact path states, counters and predictions are done. */
+static void finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int kind, int single)
+{
+    const rc_particle *P = s->grp_part;
+    s->events[kind]++;
+    s->collisions += nc;
+    if (nc > s->max_group)
+        s->max_group = nc;
+    double k1 = 0.0;
+    rc_vec3 p1 = rc_v3(0, 0, 0);
+    for (size_t j = 0; j < nm; j++) {
+        int32_t b = s->grp_ball[j];
+        eng_aux *a = &s->a[b];
+        k1 += kinetic(&P[j], s->inv_c2);
+        p1 = rc_v3_add(p1, P[j].p);
+        a->tau_last = a->tau;
+        if (!single) {
+            a->m = P[j].m;
+            a->p = P[j].p;
+            s->b[b].v = rc_v3_scale(1.0 / eng_mass_rel(a->m, a->p, s->inv_c2), a->p);
+            s->cnt[b]++;
+        }
+    }
+    kahan(&s->heat, &s->heat_c, k0 - k1);
+    kahan(&s->wall[0], &s->wall_c[0], p0.x - p1.x);
+    kahan(&s->wall[1], &s->wall_c[1], p0.y - p1.y);
+    kahan(&s->wall[2], &s->wall_c[2], p0.z - p1.z);
+    for (size_t j = 0; j < nm; j++) {
+        if (single)
+            rc_eng_heap_update(&s->q, (uint32_t)s->grp_ball[j], key_of(&s->a[s->grp_ball[j]]));
+        else
+            predict(s, s->grp_ball[j], 1);
+    }
+}
+
+/* Ball i enters the next cell: the balls that became neighbours are one slab of cells. */
+static void cross(rc_sim *s, int32_t i)
+{
+    eng_aux *a = &s->a[i];
+    int d = a->cross_code / 2, dir = (a->cross_code & 1) ? 1 : -1;
+    int c[3];
+    cell_coords(&s->g, a->cell, c);
+    c[d] += dir;
+    rc_eng_cells_remove(&s->g, s->a, i);
+    rc_eng_cells_insert(&s->g, s->a, i, (int32_t)(c[0] + s->g.n[0] * (c[1] + s->g.n[1] * c[2])));
+    s->events[RC_SIM_EV_CELL]++;
+    if (a->ev_partner >= 0 && s->cnt[a->ev_partner] != a->ev_pcount) {
+        predict(s, i, 1); /* the kept event went stale: full scan */
+        return;
+    }
+    double best = a->ev_t;
+    int32_t bp = a->ev_partner;
+    int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
+    lo[d] = hi[d] = dir;
+    if (s->def.dim == 2)
+        lo[2] = hi[2] = 0;
+    scan_block(s, i, c, lo, hi, &best, &bp);
+    if (bp != a->ev_partner || best != a->ev_t)
+        store_event(s, i, best, bp);
+    cross_event(s, i, c);
+    rc_eng_heap_update(&s->q, (uint32_t)i, key_of(a));
+}
+
+/* Every REORDER_EVERY x N events the balls are renumbered in cell order again: they
+ * diffuse away from the order set_balls gave them, and neighbours that share cache lines
+ * are what keeps a pair test from being a cache miss. O(N), in place, deterministic
+ * (it depends only on the event count), invisible to the caller (id / slot). */
+#define REORDER_EVERY 4
+
+static void reorder(rc_sim *s)
+{
+    const size_t n = s->n;
+    uint32_t *np = malloc(n * sizeof *np);
+    size_t *start = calloc(s->g.ncells + 1, sizeof *start);
+    unsigned char *done = calloc(n, 1);
+    if (!np || !start || !done) { /* no memory: simply keep the old order */
+        free(np);
+        free(start);
+        free(done);
+        return;
+    }
+    for (size_t i = 0; i < n; i++)
+        start[s->a[i].cell + 1]++;
+    for (size_t c = 0; c < s->g.ncells; c++)
+        start[c + 1] += start[c];
+    for (size_t i = 0; i < n; i++)
+        np[i] = (uint32_t)start[s->a[i].cell]++;
+    free(start);
+    /* references first, then move the elements along the cycles of the permutation */
+    for (size_t i = 0; i < n; i++) {
+        if (s->a[i].ev_partner >= 0)
+            s->a[i].ev_partner = (int32_t)np[s->a[i].ev_partner];
+        s->q.h[i].ball = np[s->q.h[i].ball];
+        s->slot[i] = np[s->slot[i]];
+    }
+    for (size_t i = 0; i < n; i++) {
+        if (done[i])
+            continue;
+        eng_ball cb = s->b[i];
+        eng_aux ca = s->a[i];
+        uint32_t cid = s->id[i], cpos = s->q.pos[i], ccnt = s->cnt[i];
+        size_t o = i;
+        do {
+            size_t to = np[o];
+            eng_ball tb = s->b[to];
+            eng_aux ta = s->a[to];
+            uint32_t tid = s->id[to], tpos = s->q.pos[to], tcnt = s->cnt[to];
+            s->b[to] = cb;
+            s->a[to] = ca;
+            s->id[to] = cid;
+            s->q.pos[to] = cpos;
+            s->cnt[to] = ccnt;
+            cb = tb;
+            ca = ta;
+            cid = tid;
+            cpos = tpos;
+            ccnt = tcnt;
+            done[o] = 1;
+            o = to;
+        } while (o != i);
+    }
+    free(done);
+    free(np);
+    for (size_t c = 0; c < s->g.ncells; c++)
+        s->g.head[c] = -1;
+    for (size_t k = n; k-- > 0;)
+        rc_eng_cells_insert(&s->g, s->a, (int32_t)k, s->a[k].cell);
+}
+
+int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
+{
+    if (!s || isnan(t_end))
+        return RC_EINVAL;
+    if (t_end < s->now)
+        return RC_EINVAL;
+    if (isinf(t_end) && max_events == 0)
+        return RC_EINVAL;
+    uint64_t done = 0;
+    while (s->n > 0) {
+        if (s->since_reorder >= REORDER_EVERY * (uint64_t)s->n) {
+            s->since_reorder = 0;
+            reorder(s);
+        }
+        const eng_heap_entry top = s->q.h[0];
+        if (!(top.t <= t_end))
+            break;
+        if (max_events && done >= max_events)
+            return RC_OK;
+        s->since_reorder++;
+        const int32_t i = (int32_t)top.ball;
+        eng_aux *a = &s->a[i];
+        s->now = top.t;
+        done++;
+        if (a->cross_t <= a->ev_t) {
+            cross(s, i);
+        } else if (a->ev_partner >= 0 && s->cnt[a->ev_partner] != a->ev_pcount) {
+            s->events[RC_SIM_EV_STALE]++;
+            predict(s, i, 1);
+        } else {
+            int st = collide(s, i, a->ev_partner, top.t);
+            if (st != RC_OK)
+                return st;
+        }
+    }
+    if (isfinite(t_end))
+        s->now = t_end;
+    return RC_OK;
+}

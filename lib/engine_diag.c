@@ -1,0 +1,138 @@
+/* engine_diag.c — reading the engine's state: balls at the engine's time, conservation
+ * diagnostics (wall impulses and dissipated energy included), a state hash, memory. */
+#include <math.h>
+#include <string.h>
+
+#include "engine_private.h"
+#include "relcol/status.h"
+
+size_t rc_sim_count(const rc_sim *s) { return s ? s->n : 0; }
+double rc_sim_time(const rc_sim *s) { return s ? s->now : NAN; }
+
+/* Ball i extrapolated (without changing the engine) to the engine's time. */
+static void ball_now(const rc_sim *s, size_t i, rc_sim_ball *o)
+{
+    const eng_ball *b = &s->b[i];
+    const eng_aux *a = &s->a[i];
+    double h = s->now - b->t;
+    o->x = h == 0.0 ? b->x : rc_v3_axpy(b->x, h, b->v);
+    o->p = a->p;
+    o->r = b->r;
+    o->m = a->m;
+    o->tau = a->tau;
+    if (h != 0.0)
+        o->tau += s->inv_c2 == 0.0 ? h : h * (a->m / eng_mass_rel(a->m, a->p, s->inv_c2));
+}
+
+int rc_sim_get_ball(const rc_sim *s, size_t i, rc_sim_ball *out)
+{
+    if (!s || !out || i >= s->n)
+        return RC_EINVAL;
+    ball_now(s, s->slot[i], out);
+    return RC_OK;
+}
+
+/* Deepest overlap among ball i's neighbours at the engine's time, relative to ri + rk. */
+static double overlap_around(const rc_sim *s, size_t i, const rc_vec3 xi)
+{
+    const eng_cells *g = &s->g;
+    int32_t cell = s->a[i].cell;
+    int c[3] = {cell % g->n[0], (cell / g->n[0]) % g->n[1], cell / (g->n[0] * g->n[1])};
+    double worst = 0.0;
+    for (int z = c[2] - 1; z <= c[2] + 1; z++)
+        for (int y = c[1] - 1; y <= c[1] + 1; y++)
+            for (int x = c[0] - 1; x <= c[0] + 1; x++) {
+                if (x < 0 || y < 0 || z < 0 || x >= g->n[0] || y >= g->n[1] || z >= g->n[2])
+                    continue;
+                for (int32_t k = g->head[x + g->n[0] * (y + g->n[1] * z)]; k >= 0;
+                     k = g->next[k]) {
+                    if ((size_t)k <= i)
+                        continue;
+                    const eng_ball *bk = &s->b[k];
+                    rc_vec3 xk = rc_v3_axpy(bk->x, s->now - bk->t, bk->v);
+                    double sig = s->b[i].r + bk->r;
+                    double d = rc_v3_norm(rc_v3_sub(xk, xi));
+                    if ((sig - d) / sig > worst)
+                        worst = (sig - d) / sig;
+                }
+            }
+    return worst;
+}
+
+int rc_sim_diagnostics(const rc_sim *s, rc_sim_diag *d)
+{
+    if (!s || !d)
+        return RC_EINVAL;
+    memset(d, 0, sizeof *d);
+    d->time = s->now;
+    for (size_t i = 0; i < s->n; i++) {
+        const eng_aux *a = &s->a[i];
+        double M = eng_mass_rel(a->m, a->p, s->inv_c2);
+        d->mass_rel += M;
+        d->kinetic += rc_v3_norm2(a->p) / (M + a->m);
+        d->rest_mass += a->m;
+        d->momentum = rc_v3_add(d->momentum, a->p);
+        d->momentum_scale += rc_v3_norm(a->p);
+        if (s->narrow)
+            continue;
+        rc_sim_ball b;
+        ball_now(s, i, &b);
+        double w = overlap_around(s, i, b.x);
+        if (w > d->max_overlap)
+            d->max_overlap = w;
+    }
+    if (s->narrow)
+        d->max_overlap = NAN; /* bounding spheres may overlap legitimately: see overlaps */
+    d->heat = s->heat;
+    d->energy = d->kinetic + s->heat;
+    d->wall_impulse = rc_v3(s->wall[0], s->wall[1], s->wall[2]);
+    d->overlaps = s->overlaps;
+    d->collisions = s->collisions;
+    memcpy(d->events, s->events, sizeof d->events);
+    d->max_group = s->max_group;
+    d->group_fallbacks = s->group_fallbacks;
+    return RC_OK;
+}
+
+static uint64_t fnv(uint64_t h, double x)
+{
+    unsigned char c[sizeof x];
+    memcpy(c, &x, sizeof x);
+    for (size_t k = 0; k < sizeof x; k++) {
+        h ^= c[k];
+        h *= 0x100000001b3ULL;
+    }
+    return h;
+}
+
+uint64_t rc_sim_hash(const rc_sim *s)
+{
+    uint64_t h = 0xcbf29ce484222325ULL;
+    if (!s)
+        return h;
+    h = fnv(h, s->now);
+    for (size_t i = 0; i < s->n; i++) {
+        rc_sim_ball b;
+        ball_now(s, s->slot[i], &b);
+        h = fnv(h, b.x.x);
+        h = fnv(h, b.x.y);
+        h = fnv(h, b.x.z);
+        h = fnv(h, b.p.x);
+        h = fnv(h, b.p.y);
+        h = fnv(h, b.p.z);
+        h = fnv(h, b.m);
+        h = fnv(h, b.tau);
+    }
+    return h;
+}
+
+size_t rc_sim_bytes(const rc_sim *s)
+{
+    if (!s)
+        return 0;
+    return sizeof *s + s->n * (sizeof *s->b + sizeof *s->a + sizeof *s->q.h + sizeof *s->q.pos +
+                               sizeof *s->g.next + sizeof *s->id + sizeof *s->slot + sizeof *s->cnt) +
+           s->g.ncells * sizeof *s->g.head +
+           s->grp_ball_cap * (sizeof *s->grp_ball + sizeof *s->grp_part) +
+           s->grp_con_cap * sizeof *s->grp_con;
+}

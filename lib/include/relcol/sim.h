@@ -1,0 +1,182 @@
+/* relcol/sim.h — the event-driven N-ball engine: balls in a 2-D table or 3-D box, exact
+ * event times, any c, ball and wall restitution, simultaneous contacts solved together.
+ *
+ * Lifecycle (Box2D style): fill an rc_sim_def made by rc_sim_def_default(), rc_sim_create,
+ * rc_sim_set_balls, then rc_sim_advance as often as wanted, read the state with
+ * rc_sim_get_ball / rc_sim_diagnostics, and rc_sim_free. The engine never prints.
+ *
+ * Overlap policy (contracted shapes change shape when their speed changes, so a collision
+ * can leave a ball overlapping a neighbour): a pair found overlapping (RC_EOVERLAP from
+ * the frame, or spheres deeper than round-off) whose bounding spheres approach collides
+ * at once along the frame's normal (or the centre line), and is counted in
+ * rc_sim_diag.overlaps; an overlapping pair that separates is left to separate.
+ *
+ * Cost per event does not grow with N: balls are grouped in cells at least one bounding
+ * diameter wide, each ball keeps only its own earliest event in an indexed binary heap,
+ * events made stale by a partner's later collision are detected by per-ball collision
+ * counters, and every ball keeps its own clock (its state is stored at the time it was
+ * last touched and advanced lazily), so an event touches only its balls. */
+#ifndef RELCOL_SIM_H
+#define RELCOL_SIM_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "relcol/kinematics.h"
+#include "relcol/law.h"
+#include "relcol/toi.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct rc_sim rc_sim;
+
+/* Definition of a simulation. Make one with rc_sim_def_default() and change fields. */
+typedef struct rc_sim_def {
+    int dim;            /* 2 (table: z ignored, kept 0) or 3 */
+    rc_vec3 box;        /* box edge lengths; the box is [0, box.x] x [0, box.y] (x [0, box.z]) */
+    double c;           /* speed of light, > 0; INFINITY is the exact classical case */
+    double eps_ball;    /* ball-ball restitution in [0, 1] */
+    double eps_wall;    /* ball-wall restitution in [0, 1] */
+    /* TC model against inelastic collapse: a contact in which a ball's proper time since
+     * its previous collision is < t_c is elastic. Proper time, time units; 0 = off. */
+    double t_c;
+    const rc_law *law;  /* two-ball law (rc_law_zmf by default, see relcol/law.h) */
+    /* Contact geometry (relcol/toi.h): NULL or &rc_toi_frame_sphere = uncontracted
+     * spheres (the engine's own inlined exact kernel); any other frame (table, zmf, or a
+     * user's) is called as the narrow phase after the exact bounding-sphere test says
+     * the balls can touch first, and gives the contact normal. Walls see the contracted
+     * support r sqrt(1 - (v.n)^2/c^2) when frame->wall_contracted. toi.inv_c2 is set by
+     * the engine; the other fields are the frame's tolerances. */
+    const rc_toi_frame *frame;
+    rc_toi_params toi;
+    /* Simultaneous contacts: at an event, every other contact whose surface gap is at
+     * most sim_tol * (ri + rj) (walls: sim_tol * r) and which is approaching is resolved
+     * together with it (relative, dimensionless; default 1e-9: far above the 1e-16
+     * round-off of a computed contact, far below any physical gap). */
+    double sim_tol;
+    /* A touching pair whose normal approach speed is below approach_tol times its relative
+     * speed scale counts as not approaching (dimensionless, default 1e-10): this stops the
+     * zero-time re-collisions that round-off would otherwise create after an eps = 0 or a
+     * grazing contact; the overlap it allows is <= approach_tol * (ri + rj) per free time. */
+    double approach_tol;
+    /* An overlap deeper than overlap_tol * (ri + rj) is counted in rc_sim_diag.overlaps
+     * (dimensionless, default 1e-9; shallower ones are round-off of contact positions). */
+    double overlap_tol;
+    double cell_size;   /* cell edge, >= the largest ball diameter; 0 = automatic */
+    double density;     /* rest mass of a ball given with m <= 0: density * r^3 (default 1) */
+} rc_sim_def;
+
+rc_sim_def rc_sim_def_default(void);
+
+/* A ball as given to and read from the engine (at the engine's current time). */
+typedef struct rc_sim_ball {
+    rc_vec3 x;   /* centre position */
+    rc_vec3 p;   /* momentum */
+    double r;    /* rest radius > 0 */
+    double m;    /* rest mass; <= 0 on input: density * r^3 */
+    double tau;  /* proper time */
+} rc_sim_ball;
+
+/* Event kinds, for rc_sim_diag.events[]. */
+enum rc_sim_event_kind {
+    RC_SIM_EV_BALL = 0,   /* two-ball collision resolved alone */
+    RC_SIM_EV_WALL,       /* ball-wall collision resolved alone */
+    RC_SIM_EV_MULTI,      /* a group of simultaneous contacts resolved together */
+    RC_SIM_EV_CELL,       /* cell crossing (bookkeeping) */
+    RC_SIM_EV_STALE,      /* queue entry invalidated by a partner's collision */
+    RC_SIM_EV_TC,         /* contacts made elastic by the TC model */
+    RC_SIM_EV_NKINDS
+};
+
+typedef struct rc_sim_diag {
+    double time;            /* engine time */
+    double mass_rel;        /* sum of M = E/c^2: conserved exactly when c is finite */
+    double kinetic;         /* sum of kinetic energies */
+    double heat;            /* kinetic energy turned into internal energy so far */
+    double energy;          /* kinetic + heat: conserved for every c and restitution */
+    double rest_mass;       /* sum of rest masses */
+    rc_vec3 momentum;       /* sum of ball momenta */
+    rc_vec3 wall_impulse;   /* momentum taken by the walls so far */
+    double momentum_scale;  /* sum of |p_i| (scale for relative momentum checks) */
+    double max_overlap;     /* deepest sphere overlap now, relative to ri + rj (0 if none;
+                               NAN with a contracted frame, whose bounding spheres may
+                               overlap while the shapes do not) */
+    uint64_t overlaps;      /* overlaps deeper than overlap_tol met by the engine */
+    uint64_t collisions;    /* contacts resolved (each contact of a group counts) */
+    uint64_t events[RC_SIM_EV_NKINDS];
+    size_t max_group;       /* most contacts resolved together */
+    uint64_t group_fallbacks; /* groups whose joint solve failed (singular normals): only
+                                 the event's own contact was resolved, the rest follow */
+} rc_sim_diag;
+
+int rc_sim_create(const rc_sim_def *def, rc_sim **out);
+/* Frees and sets *s to NULL (NULL and *s == NULL are fine). */
+void rc_sim_free(rc_sim **s);
+
+/* Place n balls at the engine's time (replaces any previous set). Rejects non-finite
+ * input, r <= 0, |v| >= c (impossible from a finite p), a ball not inside the box
+ * (RC_EINVAL) and balls overlapping by more than overlap_tol (RC_EOVERLAP; touching is
+ * fine); *bad (may be NULL) gets the index. */
+int rc_sim_set_balls(rc_sim *s, size_t n, const rc_sim_ball *balls, size_t *bad);
+
+/* Process events in time order until the next one would be later than t_end (then all
+ * balls are at t_end) or max_events events were processed (0 = no limit). */
+int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events);
+
+size_t rc_sim_count(const rc_sim *s);
+double rc_sim_time(const rc_sim *s);
+/* Ball i as it is at the engine's time. */
+int rc_sim_get_ball(const rc_sim *s, size_t i, rc_sim_ball *out);
+/* Diagnostics at the engine's time (O(N); max_overlap is O(N) with the cells). */
+int rc_sim_diagnostics(const rc_sim *s, rc_sim_diag *d);
+/* FNV-1a hash of every ball's state bits at the engine's time (determinism tests). */
+uint64_t rc_sim_hash(const rc_sim *s);
+/* Bytes of memory held by the engine. */
+size_t rc_sim_bytes(const rc_sim *s);
+
+/* ---- simultaneous contacts ------------------------------------------------------ */
+
+/* A contact of a group: ball a against ball b (b >= 0) or against a wall (b < 0), with
+ * unit normal n from a towards b (or into the wall) and restitution eps. */
+typedef struct rc_contact {
+    int a, b;
+    rc_vec3 n;
+    double eps;
+} rc_contact;
+
+/* Resolve k contacts among balls[] together (papers/simultaneous-contacts.md): contact
+ * j gives ball b the four-impulse J_j q_j and ball a -J_j q_j, q_j = (u_j.n_j/c^2, n_j)
+ * with u_j the pair's zero-momentum velocity before the group (q = (0, n) for a wall), and
+ * the J_j solve, by Newton's method, the k restitution conditions of the zmf law: each
+ * pair's post-group ZMF-normal approach a_j' = -eps_j a_j. Classically (inv_c2 = 0) this
+ * is the k x k linear system, solved exactly in one step; k = 1 is the zmf law itself.
+ * A contact whose impulse comes out pulling (J < 0) is dropped and the rest re-solved.
+ * jout (may be NULL, k entries) receives the impulses. prm->eps is not used.
+ * RC_ENOCONVERGE if Newton fails, RC_EMASS if a rest mass would become imaginary. */
+int rc_contacts_resolve(double inv_c2, size_t nballs, rc_particle *balls, size_t k,
+                        const rc_contact *contacts, double *jout);
+
+/* ---- initial states ------------------------------------------------------------- */
+
+typedef struct rc_sim_gas_def {
+    int dim;          /* 2 or 3 */
+    size_t n;         /* number of balls */
+    double radius;    /* rest radius of every ball */
+    double packing;   /* packing fraction: < 0.52 in 3-D, < 0.78 in 2-D (lattice start) */
+    double v_rms;     /* rms speed (< c) */
+    double c;         /* speed of light (INFINITY classical) */
+    double density;   /* rest mass = density * r^3 */
+    uint64_t seed;
+} rc_sim_gas_def;
+
+/* n equal balls on a random subset of the sites of a square / cubic lattice filling a
+ * cubic box whose edge makes the packing fraction exact, with isotropic random momenta
+ * scaled so the rms speed is v_rms and total momentum is zero. Melt it with
+ * rc_sim_advance before measuring anything that needs a fluid. balls: n entries. */
+int rc_sim_gas_init(const rc_sim_gas_def *g, rc_vec3 *box, rc_sim_ball *balls);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

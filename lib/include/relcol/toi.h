@@ -1,0 +1,158 @@
+/* relcol/toi.h — time of impact of Lorentz-contracted balls and walls, with the contact
+ * point, the contact normal and the frame in which contact is decided as an option.
+ *
+ * Shapes. A ball of rest radius r moving at v is, in any frame where it moves at v, the
+ * ellipse (2-D) / spheroid (3-D) with semi-axis r/gamma along v and r across it:
+ *     P = r^2 (I - beta beta^T),  beta = v/c,   support h(n) = sqrt(n^T P n) (|n| = 1),
+ * so h(n) = r sqrt(1 - (v.n)^2/c^2). With c = INFINITY (inv_c2 = 0) P = r^2 I exactly
+ * and every routine below returns bit for bit what the uncontracted-sphere routine
+ * returns (the bracket built from the bounding and inscribed spheres has zero width).
+ *
+ * Contact frames are `const rc_toi_frame` objects (GSL style, like rc_law): "table"
+ * finds contact between the table-frame shapes, "zmf" finds it in the pair's
+ * zero-momentum frame and transforms the event and the normal back, "sphere" ignores
+ * the contraction. To add a frame: define `const rc_toi_frame rc_toi_frame_mine` in a
+ * new lib/toi_*.c, declare it here and add it to rc_toi_frames[] in lib/toi_frames.c.
+ * The derivation and every tolerance decision are in papers/time-of-impact.md.
+ *
+ * Outcomes (every entry point): RC_OK with a contact at t >= 0; RC_MISS when there is
+ * no contact in the future — including "touching but separating" (touching within
+ * touch_tol at t = 0 with the normal approach speed not above graze_tol |w|) and
+ * grazing (first contact with normal approach speed <= graze_tol |w|: the shapes only
+ * touch tangentially and no law would transfer an impulse); RC_EOVERLAP when the
+ * shapes overlap by more than touch_tol at t = 0; negative codes for invalid input. */
+#ifndef RELCOL_TOI_H
+#define RELCOL_TOI_H
+
+#include "relcol/kinematics.h"
+#include "relcol/vec.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* A ball at table time t = 0: centre x, rest radius r > 0, rest mass m > 0 and
+ * momentum p (only v = p/M enters the contact geometry). */
+typedef struct rc_toi_ball {
+    rc_vec3 x;
+    double r;
+    double m;
+    rc_vec3 p;
+} rc_toi_ball;
+
+/* Shape of a contracted ball, P = r^2 (g2 I + beta^2 I - beta beta^T), g2 = 1/gamma^2 =
+ * (m/M)^2: every entry of P is a sum of non-negative terms or a single product, so
+ * nothing computes 1 - beta^2 by subtraction. */
+typedef struct rc_toi_shape {
+    double r;
+    double g;     /* 1/gamma = m/M */
+    double g2;    /* 1/gamma^2 = 1 - beta^2, computed as (m/M)^2 */
+    rc_vec3 beta; /* v/c = p sqrt(inv_c2)/M; exactly 0 when inv_c2 = 0 */
+} rc_toi_shape;
+
+/* Tolerances and solver settings. Make one with rc_toi_params_default(). */
+typedef struct rc_toi_params {
+    double inv_c2;     /* 1/c^2 (0: classical) */
+    /* Touching at t = 0 means |mu - 1| <= touch_tol, with mu the factor by which both
+     * shapes must be scaled about their centres to touch (dimensionless). Default
+     * 1e-12: ~4500 ulp, room for positions that were themselves computed. */
+    double touch_tol;
+    /* A contact whose normal approach speed -w.n is <= graze_tol |w| is grazing, not a
+     * collision (dimensionless: sine of the angle between w and the tangent plane).
+     * Default 1e-9: the time of a contact at angle theta is only determined to
+     * ~eps/theta relative, so below ~1e-9 the hit/miss decision is round-off. */
+    double graze_tol;
+    /* Root finding on the Perram-Wertheim parameter lambda in (0, 1) (dimensionless):
+     * stop when the GSL Brent bracket is narrower than lambda_tol. The time is
+     * stationary in lambda, so its error is O(lambda_tol^2); the normal's is
+     * O(lambda_tol). Default 1e-14. */
+    double lambda_tol;
+    int max_iter; /* Brent iterations before RC_ENOCONVERGE (default 100) */
+} rc_toi_params;
+
+rc_toi_params rc_toi_params_default(void);
+
+/* Result of a ball-ball contact: table-frame event time t and point x of the contact,
+ * unit normal n from ball 0 to ball 1 in the table frame. */
+typedef struct rc_toi_contact {
+    double t;
+    rc_vec3 x;
+    rc_vec3 n;
+} rc_toi_contact;
+
+/* Workspace of the contracted root finder (owns a GSL Brent solver). */
+typedef struct rc_toi_workspace rc_toi_workspace;
+rc_toi_workspace *rc_toi_workspace_alloc(void); /* NULL when out of memory */
+void rc_toi_workspace_free(rc_toi_workspace **ws); /* frees and sets *ws = NULL */
+
+/* ---- building blocks (relative coordinates: ball 1 minus ball 0) ---- */
+
+/* Shape of a ball state (m, p) of rest radius r. */
+rc_toi_shape rc_toi_shape_of(double r, double m, rc_vec3 p, double inv_c2);
+/* Support distance h(n) = r sqrt(1 - (beta.n)^2) of a shape along unit n, computed as
+ * r sqrt(g2 + |beta x n|^2) (cancellation-free). */
+double rc_toi_support(const rc_toi_shape *s, rc_vec3 n);
+
+/* Uncontracted spheres: first t >= 0 with |d + w t| = R, with the cancellation-free
+ * root t = (d.d - R^2) / (-d.w + sqrt(w.w R^2 - |d x w|^2)). *n = (d + w t)/|d + w t|.
+ * Trusted input (finite, R > 0). Outcomes as in the file comment. */
+int rc_toi_sphere_rel(double R, rc_vec3 d, rc_vec3 w, const rc_toi_params *prm,
+                      double *t, rc_vec3 *n);
+
+/* Two contracted shapes, centre separation d at t = 0 (ball 1 minus ball 0) moving
+ * apart at w: first contact time *t, contact point relative to ball 0's centre at that
+ * time *y0, and the common unit normal *n (outward from shape 0). Root finding with
+ * GSL Brent on the Perram-Wertheim parameter; shapes that are exact spheres (inv_c2 =
+ * 0 or both at rest) give rc_toi_sphere_rel's result bit for bit. Trusted input. */
+int rc_toi_shapes_rel(const rc_toi_shape *s0, const rc_toi_shape *s1, rc_vec3 d,
+                      rc_vec3 w, const rc_toi_params *prm, rc_toi_workspace *ws,
+                      double *t, rc_vec3 *y0, rc_vec3 *n);
+
+/* ---- contact frames ---- */
+
+/* Frame kernel: first contact of balls a and b (validated input). */
+typedef int (*rc_toi_frame_fn)(const rc_toi_params *prm, const rc_toi_ball *a,
+                               const rc_toi_ball *b, rc_toi_workspace *ws,
+                               rc_toi_contact *out);
+
+typedef struct rc_toi_frame {
+    const char *name;    /* as on the command line */
+    const char *summary; /* one line for --help */
+    rc_toi_frame_fn toi;
+    /* Whether walls see the contracted shape. A wall is infinitely massive, so its
+     * rest frame is both the table and the ball-wall ZMF: table and zmf say 1. */
+    int wall_contracted;
+} rc_toi_frame;
+
+extern const rc_toi_frame rc_toi_frame_table;  /* contact of the table-frame shapes */
+extern const rc_toi_frame rc_toi_frame_zmf;    /* contact found in the pair's ZMF */
+extern const rc_toi_frame rc_toi_frame_sphere; /* contraction ignored (naive model) */
+extern const rc_toi_frame *const rc_toi_frames[]; /* NULL-terminated */
+const rc_toi_frame *rc_toi_frame_find(const char *name); /* NULL if unknown */
+
+/* Validating entry point: checks params (inv_c2 >= 0 finite, tolerances >= 0), balls
+ * (finite, r > 0, m > 0) and ws, then calls frame->toi. */
+int rc_toi(const rc_toi_frame *frame, const rc_toi_params *prm, const rc_toi_ball *a,
+           const rc_toi_ball *b, rc_toi_workspace *ws, rc_toi_contact *out);
+
+/* ---- walls ---- */
+
+/* Ball against the plane n.x = offset (n unit, pointing from the ball into the wall;
+ * the ball is on the side n.x < offset). Closed form: the centre meets the plane
+ * offset - h(n) with h(n) = r sqrt(1 - (v.n)^2/c^2) (contracted) or r. *t: time;
+ * *x: contact point (the support point of the shape along n). Validating. */
+int rc_toi_wall(const rc_toi_params *prm, int contracted, const rc_toi_ball *a,
+                rc_vec3 n, double offset, double *t, rc_vec3 *x);
+
+/* Ball inside the box lo[i] <= x_i <= hi[i], i < dim (dim 1..3): first wall contact.
+ * Sides are numbered 2 i (the lo wall of axis i, normal -e_i) and 2 i + 1 (hi wall,
+ * +e_i); ties go to the lowest side number. *side, *n (outward normal), *t, *x.
+ * RC_EOVERLAP if the ball sticks out of the box, RC_EINVAL if lo >= hi. */
+int rc_toi_box(const rc_toi_params *prm, int contracted, const rc_toi_ball *a, int dim,
+               const double lo[], const double hi[], double *t, int *side, rc_vec3 *n,
+               rc_vec3 *x);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,91 @@
+/* queue_heap.c — the event queue: an indexed binary min-heap with one entry per ball
+ * (its earliest event), keyed by (time, ball index) so that equal times pop in a fixed
+ * order. The key is stored in the entry so sifting never leaves the heap array. */
+#include <stdlib.h>
+
+#include "engine_private.h"
+#include "relcol/status.h"
+
+static inline int less(const eng_heap_entry *a, const eng_heap_entry *b)
+{
+    return a->t < b->t || (a->t == b->t && a->ball < b->ball);
+}
+
+int rc_eng_heap_init(eng_heap *q, size_t n)
+{
+    q->h = malloc((n ? n : 1) * sizeof *q->h);
+    q->pos = malloc((n ? n : 1) * sizeof *q->pos);
+    q->n = n;
+    if (!q->h || !q->pos) {
+        rc_eng_heap_free(q);
+        return RC_ENOMEM;
+    }
+    return RC_OK;
+}
+
+void rc_eng_heap_free(eng_heap *q)
+{
+    free(q->h);
+    free(q->pos);
+    q->h = NULL;
+    q->pos = NULL;
+    q->n = 0;
+}
+
+static void sift_up(eng_heap *q, size_t k)
+{
+    eng_heap_entry e = q->h[k];
+    while (k > 0) {
+        size_t parent = (k - 1) / 2;
+        if (!less(&e, &q->h[parent]))
+            break;
+        q->h[k] = q->h[parent];
+        q->pos[q->h[k].ball] = (uint32_t)k;
+        k = parent;
+    }
+    q->h[k] = e;
+    q->pos[e.ball] = (uint32_t)k;
+}
+
+static void sift_down(eng_heap *q, size_t k)
+{
+    const size_t n = q->n;
+    eng_heap_entry e = q->h[k];
+    for (;;) {
+        size_t c = 2 * k + 1;
+        if (c >= n)
+            break;
+        if (c + 1 < n && less(&q->h[c + 1], &q->h[c]))
+            c++;
+        if (!less(&q->h[c], &e))
+            break;
+        q->h[k] = q->h[c];
+        q->pos[q->h[k].ball] = (uint32_t)k;
+        k = c;
+    }
+    q->h[k] = e;
+    q->pos[e.ball] = (uint32_t)k;
+}
+
+void rc_eng_heap_build(eng_heap *q, const double *keys)
+{
+    for (size_t i = 0; i < q->n; i++) {
+        q->h[i].t = keys[i];
+        q->h[i].ball = (uint32_t)i;
+        q->h[i].pad_ = 0;
+        q->pos[i] = (uint32_t)i;
+    }
+    for (size_t k = q->n / 2; k-- > 0;)
+        sift_down(q, k);
+}
+
+void rc_eng_heap_update(eng_heap *q, uint32_t ball, double t)
+{
+    size_t k = q->pos[ball];
+    double old = q->h[k].t;
+    q->h[k].t = t;
+    if (t < old)
+        sift_up(q, k);
+    else if (t > old)
+        sift_down(q, k);
+}

@@ -1,0 +1,237 @@
+/* sim_contacts.c — simultaneous contacts resolved together, independent of their order
+ * (papers/simultaneous-contacts.md): one four-impulse J_j q_j per contact, the J_j found
+ * by Newton's method on the k restitution conditions of the zmf law (a k x k linear
+ * system each step, GSL LU); classically the conditions are linear and one step is exact. */
+#include <math.h>
+#include <stdlib.h>
+
+#include <gsl/gsl_linalg.h>
+#include <gsl/gsl_matrix.h>
+#include <gsl/gsl_permutation.h>
+#include <gsl/gsl_vector.h>
+
+#include "relcol/sim.h"
+#include "relcol/status.h"
+
+/* Newton stops when every step is below this fraction of the largest impulse or ball
+ * momentum (relative, a few ulps above the round-off floor of the residuals, which are
+ * sums of products of the momenta) ... */
+#define NEWTON_REL_TOL 1e-14
+/* ... or fails after this many steps (quadratic convergence needs < 10 from J = 0). */
+#define NEWTON_MAX_ITER 50
+/* A pivot smaller than this fraction of the largest diagonal entry means the contact
+ * normals are linearly dependent: the impulses are not unique (RC_ENOCONVERGE). */
+#define PIVOT_REL_TOL 1e-13
+
+typedef struct cwork {
+    size_t k;
+    const rc_contact *c;
+    const int *active;
+    const rc_particle *b0; /* states before the group */
+    const double *M0;
+    double *qt;            /* time component of q_j: u_j.n_j / c^2 (0 for walls) */
+    double *a0;            /* pre-group ZMF-normal approach of each contact */
+    double *Mp;            /* post states for the current J */
+    rc_vec3 *pp;
+} cwork;
+
+/* Post states of every ball for impulses J (inactive contacts carry none). */
+static void post_states(const cwork *w, size_t nb, const double *J)
+{
+    for (size_t i = 0; i < nb; i++) {
+        w->pp[i] = w->b0[i].p;
+        w->Mp[i] = w->M0[i];
+    }
+    for (size_t j = 0; j < w->k; j++) {
+        if (!w->active[j])
+            continue;
+        const rc_contact *c = &w->c[j];
+        w->pp[c->a] = rc_v3_axpy(w->pp[c->a], -J[j], c->n);
+        w->Mp[c->a] -= J[j] * w->qt[j];
+        if (c->b >= 0) {
+            w->pp[c->b] = rc_v3_axpy(w->pp[c->b], J[j], c->n);
+            w->Mp[c->b] += J[j] * w->qt[j];
+        }
+    }
+}
+
+/* Residual of contact j: M_b' p_a'.n - M_a' p_b'.n + eps a0 (M_a' + M_b') for two balls
+ * (the zmf-law condition a' = -eps a multiplied by M_a' + M_b' > 0), p_a'.n + eps a0 for
+ * a wall. */
+static double residual(const cwork *w, size_t j)
+{
+    const rc_contact *c = &w->c[j];
+    double pan = rc_v3_dot(w->pp[c->a], c->n);
+    if (c->b < 0)
+        return pan + c->eps * w->a0[j];
+    double pbn = rc_v3_dot(w->pp[c->b], c->n);
+    double Ma = w->Mp[c->a], Mb = w->Mp[c->b];
+    return Mb * pan - Ma * pbn + c->eps * w->a0[j] * (Ma + Mb);
+}
+
+/* d residual_j / d J_l at the current post states. */
+static double jacobian(const cwork *w, size_t j, size_t l)
+{
+    const rc_contact *c = &w->c[j], *cl = &w->c[l];
+    const double nn = rc_v3_dot(c->n, cl->n);
+    /* sign with which J_l acts on ball x: -1 on its a, +1 on its b */
+    double sa = (cl->a == c->a ? -1.0 : 0.0) + (cl->b == c->a ? 1.0 : 0.0);
+    if (c->b < 0)
+        return sa * nn;
+    double sb = (cl->a == c->b ? -1.0 : 0.0) + (cl->b == c->b ? 1.0 : 0.0);
+    double dpan = sa * nn, dpbn = sb * nn;
+    double dMa = sa * w->qt[l], dMb = sb * w->qt[l];
+    double pan = rc_v3_dot(w->pp[c->a], c->n), pbn = rc_v3_dot(w->pp[c->b], c->n);
+    double Ma = w->Mp[c->a], Mb = w->Mp[c->b];
+    return dMb * pan + Mb * dpan - dMa * pbn - Ma * dpbn + c->eps * w->a0[j] * (dMa + dMb);
+}
+
+/* Newton on the active contacts; J of inactive ones stays 0. */
+static int newton(cwork *w, size_t nb, double *J, double *A, double *rhs, size_t *idx,
+                  gsl_permutation *perm)
+{
+    double pscale = 0.0;
+    for (size_t i = 0; i < nb; i++)
+        pscale = fmax(pscale, rc_v3_norm(w->b0[i].p));
+    size_t m = 0;
+    for (size_t j = 0; j < w->k; j++) {
+        J[j] = 0.0;
+        if (w->active[j])
+            idx[m++] = j;
+    }
+    if (m == 0)
+        return RC_OK;
+    for (int it = 0; it < NEWTON_MAX_ITER; it++) {
+        post_states(w, nb, J);
+        double dmax = 0.0;
+        for (size_t r = 0; r < m; r++) {
+            rhs[r] = -residual(w, idx[r]);
+            for (size_t s = 0; s < m; s++)
+                A[r * m + s] = jacobian(w, idx[r], idx[s]);
+            if (fabs(A[r * m + r]) > dmax)
+                dmax = fabs(A[r * m + r]);
+        }
+        gsl_matrix_view Av = gsl_matrix_view_array(A, m, m);
+        gsl_vector_view bv = gsl_vector_view_array(rhs, m);
+        perm->size = m;
+        int sgn;
+        gsl_linalg_LU_decomp(&Av.matrix, perm, &sgn);
+        for (size_t r = 0; r < m; r++)
+            if (!(fabs(A[r * m + r]) > PIVOT_REL_TOL * dmax))
+                return RC_ENOCONVERGE; /* singular: never hand it to GSL (it would abort) */
+        gsl_linalg_LU_svx(&Av.matrix, perm, &bv.vector);
+        double step = 0.0, jmax = 0.0;
+        for (size_t r = 0; r < m; r++) {
+            J[idx[r]] += rhs[r];
+            step = fmax(step, fabs(rhs[r]));
+            jmax = fmax(jmax, fabs(J[idx[r]]));
+        }
+        if (!isfinite(step))
+            return RC_ENOCONVERGE;
+        if (step <= NEWTON_REL_TOL * (jmax + pscale) || jmax == 0.0)
+            return RC_OK;
+    }
+    return RC_ENOCONVERGE;
+}
+
+int rc_contacts_resolve(double inv_c2, size_t nballs, rc_particle *balls, size_t k,
+                        const rc_contact *contacts, double *jout)
+{
+    if (!balls || (!contacts && k) || !(inv_c2 >= 0.0) || isinf(inv_c2))
+        return RC_EINVAL;
+    for (size_t i = 0; i < nballs; i++) {
+        int st = rc_particle_check(&balls[i]);
+        if (st != RC_OK)
+            return st;
+    }
+    for (size_t j = 0; j < k; j++) {
+        const rc_contact *c = &contacts[j];
+        if (c->a < 0 || (size_t)c->a >= nballs || (c->b >= 0 && (size_t)c->b >= nballs) ||
+            c->a == c->b)
+            return RC_EINVAL;
+        if (!rc_v3_isfinite(c->n) || !isfinite(c->eps))
+            return RC_ENONFINITE;
+        if (!(fabs(rc_v3_norm2(c->n) - 1.0) < 1e-12)) /* unit normals: caller normalises */
+            return RC_EZERONORMAL;
+        if (!(c->eps >= 0.0 && c->eps <= 1.0))
+            return RC_ERESTITUTION;
+    }
+    if (k == 0)
+        return RC_OK;
+
+    int st = RC_ENOMEM;
+    double *M0 = malloc(nballs * sizeof *M0), *Mp = malloc(nballs * sizeof *Mp);
+    rc_vec3 *pp = malloc(nballs * sizeof *pp);
+    double *qt = malloc(k * sizeof *qt), *a0 = malloc(k * sizeof *a0);
+    double *J = malloc(k * sizeof *J), *A = malloc(k * k * sizeof *A);
+    double *rhs = malloc(k * sizeof *rhs);
+    size_t *idx = malloc(k * sizeof *idx);
+    int *active = malloc(k * sizeof *active);
+    gsl_permutation *perm = gsl_permutation_alloc(k);
+    if (!M0 || !Mp || !pp || !qt || !a0 || !J || !A || !rhs || !idx || !active || !perm)
+        goto done;
+
+    for (size_t i = 0; i < nballs; i++)
+        M0[i] = sqrt(balls[i].m * balls[i].m + rc_v3_norm2(balls[i].p) * inv_c2);
+    for (size_t j = 0; j < k; j++) {
+        const rc_contact *c = &contacts[j];
+        double pan = rc_v3_dot(balls[c->a].p, c->n);
+        if (c->b < 0) {
+            qt[j] = 0.0;
+            a0[j] = pan;
+        } else {
+            double pbn = rc_v3_dot(balls[c->b].p, c->n), Mt = M0[c->a] + M0[c->b];
+            qt[j] = (pan + pbn) / Mt * inv_c2;
+            a0[j] = (M0[c->b] * pan - M0[c->a] * pbn) / Mt;
+        }
+        /* a contact that is not approaching takes no impulse */
+        active[j] = a0[j] > 0.0;
+    }
+    cwork w = {k, contacts, active, balls, M0, qt, a0, Mp, pp};
+    /* Active set: solve, drop the most pulling contact, repeat (at most k times). */
+    for (;;) {
+        st = newton(&w, nballs, J, A, rhs, idx, perm);
+        if (st != RC_OK)
+            goto done;
+        size_t worst = k;
+        for (size_t j = 0; j < k; j++)
+            if (active[j] && J[j] < 0.0 && (worst == k || J[j] < J[worst]))
+                worst = j;
+        if (worst == k)
+            break;
+        active[worst] = 0;
+    }
+    post_states(&w, nballs, J);
+    for (size_t i = 0; i < nballs; i++) {
+        double m2 = Mp[i] * Mp[i] - rc_v3_norm2(pp[i]) * inv_c2;
+        if (!(m2 > 0.0) || !(Mp[i] > 0.0)) {
+            st = RC_EMASS;
+            goto done;
+        }
+    }
+    for (size_t i = 0; i < nballs; i++) {
+        if (inv_c2 != 0.0)
+            balls[i].m = sqrt(Mp[i] * Mp[i] - rc_v3_norm2(pp[i]) * inv_c2);
+        balls[i].p = pp[i];
+    }
+    if (jout)
+        for (size_t j = 0; j < k; j++)
+            jout[j] = J[j];
+    st = RC_OK;
+done:
+    free(M0);
+    free(Mp);
+    free(pp);
+    free(qt);
+    free(a0);
+    free(J);
+    free(A);
+    free(rhs);
+    free(idx);
+    free(active);
+    if (perm) {
+        perm->size = k;
+        gsl_permutation_free(perm);
+    }
+    return st;
+}

@@ -1,0 +1,110 @@
+/* toi_frames.c — the table of contact frames, the "table" and "sphere" frames, default
+ * parameters and the validating entry point rc_toi(). Add a frame: one line in
+ * rc_toi_frames[] (the zmf frame lives in toi_zmf.c). */
+#include <math.h>
+#include <string.h>
+
+#include "relcol/status.h"
+#include "relcol/toi.h"
+#include "toi_private.h"
+
+rc_toi_params rc_toi_params_default(void)
+{
+    rc_toi_params p;
+    p.inv_c2 = 0.0;
+    p.touch_tol = 1e-12;
+    p.graze_tol = 1e-9;
+    p.lambda_tol = 1e-14;
+    p.max_iter = 100;
+    return p;
+}
+
+/* Contact found between the table-frame shapes, each contracted along its own v. */
+static int table_toi(const rc_toi_params *prm, const rc_toi_ball *a, const rc_toi_ball *b,
+                     rc_toi_workspace *ws, rc_toi_contact *out)
+{
+    const double k = prm->inv_c2;
+    const double M0 = rc_mass_rel(a->m, a->p, k), M1 = rc_mass_rel(b->m, b->p, k);
+    /* v = p/M exactly as rc_velocity computes it (the frames compare with ==) */
+    const rc_vec3 v0 = rc_v3_scale(1.0 / M0, a->p), v1 = rc_v3_scale(1.0 / M1, b->p);
+    const rc_toi_shape s0 = rc_toi_shape_M_(a->r, a->m, a->p, k, M0);
+    const rc_toi_shape s1 = rc_toi_shape_M_(b->r, b->m, b->p, k, M1);
+    double t;
+    rc_vec3 y0, n;
+    int st = rc_toi_shapes_rel(&s0, &s1, rc_v3_sub(b->x, a->x), rc_v3_sub(v1, v0), prm,
+                               ws, &t, &y0, &n);
+    if (st != RC_OK)
+        return st;
+    out->t = t;
+    out->x = rc_toi_point_(a->x, v0, t, y0);
+    out->n = n;
+    return RC_OK;
+}
+
+/* The naive model: uncontracted spheres of radius r moving at v. */
+static int sphere_toi(const rc_toi_params *prm, const rc_toi_ball *a, const rc_toi_ball *b,
+                      rc_toi_workspace *ws, rc_toi_contact *out)
+{
+    (void)ws;
+    const double k = prm->inv_c2;
+    const rc_vec3 v0 = rc_velocity(a->m, a->p, k), v1 = rc_velocity(b->m, b->p, k);
+    double t;
+    rc_vec3 n;
+    int st = rc_toi_sphere_rel(a->r + b->r, rc_v3_sub(b->x, a->x), rc_v3_sub(v1, v0), prm,
+                               &t, &n);
+    if (st != RC_OK)
+        return st;
+    out->t = t;
+    out->x = rc_toi_point_(a->x, v0, t, rc_v3_scale(a->r, n));
+    out->n = n;
+    return RC_OK;
+}
+
+const rc_toi_frame rc_toi_frame_table = {
+    "table", "contact of the shapes contracted along their table-frame velocities",
+    table_toi, 1};
+const rc_toi_frame rc_toi_frame_sphere = {
+    "sphere", "contraction ignored: uncontracted spheres (the naive model)", sphere_toi, 0};
+
+const rc_toi_frame *const rc_toi_frames[] = {
+    &rc_toi_frame_table,
+    &rc_toi_frame_zmf,
+    &rc_toi_frame_sphere,
+    NULL,
+};
+
+const rc_toi_frame *rc_toi_frame_find(const char *name)
+{
+    if (!name)
+        return NULL;
+    for (size_t i = 0; rc_toi_frames[i]; i++)
+        if (strcmp(rc_toi_frames[i]->name, name) == 0)
+            return rc_toi_frames[i];
+    return NULL;
+}
+
+static int check_ball(const rc_toi_ball *a)
+{
+    if (!rc_v3_isfinite(a->x) || !isfinite(a->r))
+        return RC_ENONFINITE;
+    if (!(a->r > 0.0))
+        return RC_ERADIUS;
+    rc_particle b = {a->m, a->p};
+    return rc_particle_check(&b);
+}
+
+int rc_toi(const rc_toi_frame *frame, const rc_toi_params *prm, const rc_toi_ball *a,
+           const rc_toi_ball *b, rc_toi_workspace *ws, rc_toi_contact *out)
+{
+    if (!frame || !prm || !a || !b || !out || !ws)
+        return RC_EINVAL;
+    if (!(prm->inv_c2 >= 0.0) || isinf(prm->inv_c2))
+        return RC_ESPEEDOFLIGHT;
+    if (!(prm->touch_tol >= 0.0 && prm->touch_tol < 1.0) || !(prm->graze_tol >= 0.0) ||
+        !(prm->lambda_tol > 0.0) || prm->max_iter < 1)
+        return RC_EINVAL;
+    int st;
+    if ((st = check_ball(a)) != RC_OK || (st = check_ball(b)) != RC_OK)
+        return st;
+    return frame->toi(prm, a, b, ws, out);
+}

@@ -1,0 +1,35 @@
+/* toi_private.h — helpers shared by the time-of-impact files (not installed). */
+#ifndef RELCOL_TOI_PRIVATE_H
+#define RELCOL_TOI_PRIVATE_H
+
+#include "relcol/toi.h"
+
+/* Shape of a ball state whose relativistic mass M = sqrt(m^2 + p^2/c^2) is known. */
+static inline rc_toi_shape rc_toi_shape_M_(double r, double m, rc_vec3 p, double inv_c2,
+                                           double M)
+{
+    rc_toi_shape s;
+    s.r = r;
+    s.g = m / M; /* exactly 1 when inv_c2 = 0 (M = m) */
+    s.g2 = s.g * s.g;
+    s.beta = rc_v3_scale(sqrt(inv_c2) / M, p);
+    return s;
+}
+
+/* Table-frame contact point: ball 0's centre at time t plus the contact offset y0.
+ * Every frame assembles the point with this one expression so that frames that agree
+ * on (t, y0) agree bit for bit on the point (c = inf tests compare with ==). */
+static inline rc_vec3 rc_toi_point_(rc_vec3 x0, rc_vec3 v0, double t, rc_vec3 y0)
+{
+    return rc_v3_add(rc_v3_axpy(x0, t, v0), y0);
+}
+
+/* Support point of a shape along unit n, relative to its centre: P n / h(n). */
+static inline rc_vec3 rc_toi_support_point_(const rc_toi_shape *s, rc_vec3 n, double h)
+{
+    const double b2 = rc_v3_norm2(s->beta), bn = rc_v3_dot(s->beta, n);
+    const double r2h = s->r * s->r / h;
+    return rc_v3_scale(r2h, rc_v3_axpy(rc_v3_scale(s->g2 + b2, n), -bn, s->beta));
+}
+
+#endif
