@@ -1,48 +1,21 @@
-/* test_law_seeds.c — the seeds' own formulas, transcribed literally, against the library:
- * seed 000's relativistic 1-D (U), (V), (M); seed 000 part 3's classical `collide`;
- * seed 001's equal-mass dot-product `collision`; seed 002's eqs (8)-(13) and (22)-(27). */
+/* test_law_seeds.c — the seeds' own formulas (transcribed literally in seed_formulas.h)
+ * against the library: seed 000's relativistic 1-D (U), (V), (M); seed 000 part 3's
+ * classical `collide`; seed 001's equal-mass dot-product `collision`; seed 002's eqs
+ * (8)-(13) and (22)-(27). */
 #include <float.h>
 #include <math.h>
 #include <string.h>
 
 #include "law_util.h"
+#include "seed_formulas.h"
 
 #define N_SEED 20000
 
-/* ---- seed 000, "Relativistic collision in one dimension": (U), (V), (M) literally ---- */
-
-/* The formulas are written in `real` = long double: they work from velocities, and
- * 1 - v^2/c^2 and the (1 - v^2/c^2)(1 - u^2/c^2) of (M) lose ~ gamma^2 ulp; 11 more bits
- * keep the reference well below the library's double round-off. */
-typedef long double real;
-
-/* (U): velocity of the zero-momentum frame. */
-static real seed000_U(real m0, real v0, real m1, real v1, real c)
-{
-    real gamma0 = 1 / sqrtl(1 - v0 * v0 / (c * c));
-    real gamma1 = 1 / sqrtl(1 - v1 * v1 / (c * c));
-    return (m0 * gamma0 * v0 + m1 * gamma1 * v1) / (m0 * gamma0 + m1 * gamma1);
-}
-
-/* (V): a ball's velocity after the collision. */
-static real seed000_V(real v, real u, real epsilon, real c)
-{
-    return (u * (1 - u * v / (c * c)) + epsilon * (u - v)) /
-           (1 - u * v / (c * c) + epsilon * u / (c * c) * (u - v));
-}
-
-/* (M): a ball's rest mass after the collision. */
-static real seed000_M(real m, real v, real u, real epsilon, real c)
-{
-    real c2 = c * c, c4 = c2 * c2;
-    return m * sqrtl((1 - 2 * (1 - epsilon * epsilon) * v * u / c2 -
-                      epsilon * epsilon * (v * v + u * u) / c2 + v * v * u * u / c4) /
-                     (1 - (v * v + u * u) / c2 + v * v * u * u / c4));
-}
+/* ---- seed 000, "Relativistic collision in one dimension": (U), (V), (M) ---- */
 
 /* (U), (V), (M) against zmf and cm-isotropic (in 1-D the whole ZMF momentum is normal, so
  * the two laws coincide) at random c in [1.01 vmax, 1e4 vmax] and inf, eps in [0, 1].
- * Reference in long double (above). Tolerance: the library works in double from momenta;
+ * Reference in long double (seed_formulas.h). Tolerance: the library works in double from momenta;
  * its velocities and masses carry ~ eps gamma^2 relative error at worst (gamma <= 7 at
  * c = 1.01 vmax): allow 32 eps gamma_max^2 of the largest speed in or out (measured worst
  * printed). Each ball is checked on its own scale: the light ball must not inherit the
@@ -97,33 +70,7 @@ static void test_seed000_1d(void)
            worst_m);
 }
 
-/* ---- seed 000 part 3, classical `collide`, transcribed from its TypeScript ---- */
-
-typedef struct Ball {
-    double x, y; /* position */
-    double v, w; /* velocity components */
-    double radius;
-} Ball;
-
-/* Math.pow(radius, 3) is the seed's mass (equal densities); tests give masses m by
- * radius = cbrt(m) and hand the library exactly pow(radius, 3). */
-static void seed000_collide(Ball *this, Ball *otherBall, double restitution)
-{
-    double dx = this->x - otherBall->x;
-    double dy = this->y - otherBall->y;
-    double dv = this->v - otherBall->v;
-    double dw = this->w - otherBall->w;
-    double alpha = atan2(dy, dx);
-    double sinAlpha = sin(alpha);
-    double cosAlpha = cos(alpha);
-    double m1 = pow(this->radius, 3);
-    double m2 = pow(otherBall->radius, 3);
-    double a = (1 + restitution) / (m1 + m2) * (cosAlpha * dv + sinAlpha * dw);
-    this->v = -m2 * a * cosAlpha + this->v;
-    this->w = -m2 * a * sinAlpha + this->w;
-    otherBall->v = m1 * a * cosAlpha + otherBall->v;
-    otherBall->w = m1 * a * sinAlpha + otherBall->w;
-} /* collide */
+/* ---- seed 000 part 3, classical `collide` ---- */
 
 /* Against zmf at c = inf (the DESIGN's law reduces to it exactly). Both are a few
  * roundings of terms of size |v|: 1e-14 of the largest speed (~ 45 ulp). */
@@ -161,41 +108,7 @@ static void test_seed000_collide(void)
     }
 }
 
-/* ---- seed 001, equal-mass elastic `collision(i, j)`, transcribed from its JavaScript ---- */
-
-typedef struct { double x, y, vx, vy; } particle001;
-static particle001 particles[2];
-static double diameter2;
-
-static void collision(int i, int j)
-{
-    // First we find the components of d.
-    double dy = particles[i].y - particles[j].y;
-    double dx = particles[i].x - particles[j].x;
-    // Then we calculate d^2.
-    double d2 = pow(dx, 2) + pow(dy, 2);
-    // If d^2<the diameter och the particles^2 then we might
-    // have a collision.
-    if (d2 < diameter2) {
-        // Then we calculate the components of difference
-        // in velocities.
-        double dvx = particles[j].vx - particles[i].vx;
-        double dvy = particles[j].vy - particles[i].vy;
-        // Then we calculate the dot product...
-        double dvs = dx * dvx + dy * dvy;
-        // ... and if this is positive the particles are
-        // colliding.
-        if (dvs > 0) {
-            dvs = dvs / d2;
-            dvx = dvs * dx;
-            dvy = dvs * dy;
-            particles[i].vx += dvx;
-            particles[i].vy += dvy;
-            particles[j].vx -= dvx;
-            particles[j].vy -= dvy;
-        }
-    }
-}
+/* ---- seed 001, equal-mass elastic `collision(i, j)` ---- */
 
 /* Against zmf at c = inf, eps = 1, equal masses (any common value). The seed only acts
  * when d^2 < diameter^2: the balls are placed at distance 0.999 diameter. Also its
@@ -238,29 +151,7 @@ static void test_seed001_collision(void)
     ENSURE(hits > N_SEED / 3);
 }
 
-/* ---- seed 002, eqs (7)-(13) then (22)-(27), transcribed literally ---- */
-
-typedef struct { double vx1, vy1, vx2, vy2; } vel002;
-
-static vel002 seed002(double m1, double m2, vel002 in, double alpha, double R)
-{
-    double vx1 = in.vx1, vy1 = in.vy1, vx2 = in.vx2, vy2 = in.vy2;
-    double gamma_v = atan((vy1 - vy2) / (vx1 - vx2));                               /* (7) */
-    double a = tan(gamma_v + alpha);                                                /* (9) */
-    double dvx2 = 2 * (vx1 - vx2 + a * (vy1 - vy2)) / ((1 + a * a) * (1 + m2 / m1)); /* (8) */
-    double vx2p = vx2 + dvx2;                                                       /* (10) */
-    double vy2p = vy2 + a * dvx2;                                                   /* (11) */
-    double vx1p = vx1 - m2 / m1 * dvx2;                                             /* (12) */
-    double vy1p = vy1 - a * m2 / m1 * dvx2;                                         /* (13) */
-    double vxcm = (m1 * vx1 + m2 * vx2) / (m1 + m2);                                /* (22) */
-    double vycm = (m1 * vy1 + m2 * vy2) / (m1 + m2);                                /* (23) */
-    vel002 out;
-    out.vx1 = (vx1p - vxcm) * R + vxcm;                                             /* (24) */
-    out.vy1 = (vy1p - vycm) * R + vycm;                                             /* (25) */
-    out.vx2 = (vx2p - vxcm) * R + vxcm;                                             /* (26) */
-    out.vy2 = (vy2p - vycm) * R + vycm;                                             /* (27) */
-    return out;
-}
+/* ---- seed 002, eqs (7)-(13) then (22)-(27) ---- */
 
 /* Against cm-isotropic at c = inf with prm.alpha (seed 002's ball 1 is our ball 0).
  * Tolerance: the seed goes through a = tan(gamma_v + alpha), which loses ~ eps (1 + |a|)
