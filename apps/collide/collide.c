@@ -2,7 +2,6 @@
  * with any law of the library's table; the command-line face of rc_collide(). Exit status:
  * 0 collided, 2 bad input (one line on stderr), 3 no collision (separating), 1 I/O error. */
 #include <math.h>
-#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -61,19 +60,8 @@ static void usage(FILE *f)
 "tangent) along the normal, nothing printed on stdout; 1 I/O error.\n");
 }
 
-#if defined(__GNUC__)
-__attribute__((format(printf, 1, 2)))
-#endif
-static int fail(const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    fprintf(stderr, "%s: ", prog);
-    vfprintf(stderr, fmt, ap);
-    fputc('\n', stderr);
-    va_end(ap);
-    return EXIT_BAD_INPUT;
-}
+/* every input error: "relcol-collide: message" and exit status 2 */
+#define fail(...) app_fail(prog, EXIT_BAD_INPUT, __VA_ARGS__)
 
 typedef struct options {
     double c, eps, alpha, azimuth;
@@ -92,34 +80,16 @@ static int parse_options(int argc, char **argv, options *o)
     o->eps = 1.0;
     o->law = rc_law_find("zmf");
     o->seed = 1;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0)
+    static const char *const known[] = {"--c", "--eps", "--law", "--normal", "--alpha",
+                                        "--seed", "--azimuth", "--format", NULL};
+    app_opts it;
+    app_opts_init(&it, prog, argc, argv, known, NULL, "input is read from stdin; see --help");
+    const char *name, *val;
+    for (int kind; (kind = app_opts_next(&it, &name, &val)) != APP_OPT_END;) {
+        if (kind == APP_OPT_HELP)
             return -1;
-        if (strncmp(a, "--", 2) != 0)
-            return fail("unexpected argument '%s' (input is read from stdin; see --help)", a);
-        /* "--name value" or "--name=value" */
-        char name[32];
-        const char *val, *eq = strchr(a, '=');
-        size_t len = eq ? (size_t)(eq - a) : strlen(a);
-        if (len >= sizeof name)
-            return fail("unknown option %.40s (see --help)", a);
-        memcpy(name, a, len);
-        name[len] = '\0';
-        static const char *const known[] = {"--c", "--eps", "--law", "--normal", "--alpha",
-                                            "--seed", "--azimuth", "--format", NULL};
-        int ok = 0;
-        for (const char *const *k = known; *k; k++)
-            ok |= strcmp(name, *k) == 0;
-        if (!ok)
-            return fail("unknown option %s (see --help)", name);
-        if (eq)
-            val = eq + 1;
-        else if (i + 1 < argc)
-            val = argv[++i];
-        else
-            return fail("%s: missing value", name);
-
+        if (kind == APP_OPT_ERROR)
+            return EXIT_BAD_INPUT;
         if (strcmp(name, "--c") == 0) {
             if (app_parse_double(val, 1, &o->c, err) != 0)
                 return fail("--c: %s", err);
@@ -129,12 +99,9 @@ static int parse_options(int argc, char **argv, options *o)
         } else if (strcmp(name, "--law") == 0) {
             o->law = rc_law_find(val);
             if (!o->law) {
-                char list[256] = "";
-                for (size_t k = 0; rc_laws[k]; k++) {
-                    size_t l = strlen(list);
-                    snprintf(list + l, sizeof list - l, "%s%s", k ? ", " : "", rc_laws[k]->name);
-                }
-                return fail("--law: unknown law '%s' (known: %s)", val, list);
+                char list[256];
+                return fail("--law: unknown law '%s' (known: %s)", val,
+                            app_law_list(list, sizeof list));
             }
         } else if (strcmp(name, "--normal") == 0) {
             if (app_parse_list(val, o->normal, 3, &o->n_normal, err) != 0)
@@ -164,12 +131,8 @@ static int parse_options(int argc, char **argv, options *o)
     }
     /* checks that need no input */
     char f[APP_FMT_LEN];
-    if (!(o->c > 0.0))
-        return fail("--c: c = %s must be > 0", app_fmt(o->c, f));
-    double k;
-    if (rc_inv_c2(o->c, &k) != RC_OK)
-        return fail("--c: c = %s is out of range (1/c^2 under- or overflows; use inf)",
-                    app_fmt(o->c, f));
+    if (app_check_c(o->c, err) != 0)
+        return fail("--c: %s", err);
     if (!(o->eps >= 0.0 && o->eps <= 1.0))
         return fail("--eps: eps = %s outside [0, 1]", app_fmt(o->eps, f));
     const int cm = strcmp(o->law->name, "cm-isotropic") == 0;
@@ -197,10 +160,8 @@ int main(int argc, char **argv)
     options o;
     memset(&o, 0, sizeof o);
     int st = parse_options(argc, argv, &o);
-    if (st < 0) {
-        usage(stdout);
-        return fflush(stdout) == 0 ? 0 : 1;
-    }
+    if (st < 0)
+        return app_help(usage);
     if (st != 0)
         return st;
 

@@ -1,14 +1,17 @@
 /* app.h — the relcol apps' shared plumbing (internal static library, never part of
  * librelcol): strict number parsing, a CSV table reader, ball rows -> rc_particle, an
- * atomic file writer, a gnuplot runner, a log-log slope fit and a TTY-only progress bar.
+ * atomic file writer, a gnuplot runner, a log-log slope fit, a TTY-only progress bar and
+ * the command-line plumbing (errors, the option loop, --help, --c, name lists).
  *
  * Error convention: functions that can fail return 0 on success and -1 on failure, and
  * write one line of text (no program name, no newline) into the caller's buffer `err` of
- * size APP_ERR_LEN; the app prefixes its name and prints it. Nothing here prints, except
- * app_gnuplot_run (a note when gnuplot is absent) and the progress bar. */
+ * size APP_ERR_LEN; the app prefixes its name and prints it (app_fail). Nothing here
+ * prints, except app_fail, app_help, app_opts_next (its own errors), app_gnuplot_run (a
+ * note when gnuplot is absent) and the progress bar. */
 #ifndef RELCOL_APP_H
 #define RELCOL_APP_H
 
+#include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -22,6 +25,55 @@
 __attribute__((format(printf, 2, 3)))
 #endif
 void app_errf(char *err, const char *fmt, ...);
+
+/* ---- command line ----------------------------------------------------------------- */
+
+/* Print "prog: message\n" on stderr (fmt as printf, no newline) and return code, so that
+ * an app's error paths read `return app_fail(prog, 2, "--eps: %s", err);`. */
+#if defined(__GNUC__)
+__attribute__((format(printf, 3, 4)))
+#endif
+int app_fail(const char *prog, int code, const char *fmt, ...);
+int app_vfail(const char *prog, int code, const char *fmt, va_list ap);
+/* Print usage(stdout) for --help; returns the exit status: 0, or 1 if stdout failed. */
+int app_help(void (*usage)(FILE *));
+
+/* The option loop shared by the apps: each argument is "--help" or "-h"; a flag from the
+ * list `flags` (exact match, no value); or "--name value" / "--name=value" with --name
+ * from the list `valued`. Anything else is an error, printed by app_opts_next itself as
+ * one app_fail line (so that no message is cut to a buffer):
+ *   "unexpected argument 'X' (STRAY_HINT)"       X does not start with "--"
+ *   "unknown option --NAME (see --help)"         (at most 40 chars of a very long one)
+ *   "--NAME: missing value"                      the last argument wants a value
+ * Use:
+ *   app_opts it;
+ *   app_opts_init(&it, prog, argc, argv, valued, NULL, "see --help");
+ *   while ((k = app_opts_next(&it, &name, &val)) != APP_OPT_END) { switch (k) ... } */
+enum { APP_OPT_END = 0, APP_OPT_VALUE, APP_OPT_FLAG, APP_OPT_HELP, APP_OPT_ERROR };
+typedef struct app_opts {
+    const char *prog;
+    int argc;
+    char **argv;
+    int i;                      /* the next argument */
+    const char *const *valued;  /* NULL-terminated "--name"s that take a value */
+    const char *const *flags;   /* NULL-terminated "--name"s without a value, or NULL */
+    const char *stray_hint;     /* e.g. "see --help" */
+    char name[32];              /* the current option's name (without "=value") */
+} app_opts;
+void app_opts_init(app_opts *it, const char *prog, int argc, char **argv,
+                   const char *const *valued, const char *const *flags,
+                   const char *stray_hint);
+/* The next argument: APP_OPT_VALUE (*name, *value set), APP_OPT_FLAG (*name), APP_OPT_HELP,
+ * APP_OPT_ERROR (already printed) or APP_OPT_END. *name stays valid until the next call. */
+int app_opts_next(app_opts *it, const char **name, const char **value);
+
+/* A usable speed of light: c > 0 and 1/c^2 representable (c = inf is fine). Errors:
+ * "c = -1 must be > 0", "c = 1e-200 is out of range (1/c^2 under- or overflows; use inf)". */
+int app_check_c(double c, char *err);
+/* The names of the library's collision laws (rc_laws) or contact frames (rc_toi_frames)
+ * as "zmf, cm-isotropic, ..." for "unknown law" messages; truncated to n - 1 chars. */
+const char *app_law_list(char *buf, size_t n);
+const char *app_toi_frame_list(char *buf, size_t n);
 
 /* ---- numbers ---------------------------------------------------------------------- */
 
@@ -137,6 +189,10 @@ int app_have_gnuplot(void);
  * the figure was written. */
 int app_gnuplot_run(const char *prog, const char *dir, const char *script_name,
                     const char *out_name, int *made, char *err);
+/* The opening lines of an app's PNG script: the outfile default above, utf8, `set terminal
+ * pngcairo TERMINAL` (e.g. "size 1100,760 enhanced font 'Sans,13' linewidth 1.5"), the
+ * output and the CSV separator; with loglog also log x and y axes labelled 10^{n}. */
+void app_gnuplot_head(FILE *f, const char *png_name, const char *terminal, int loglog);
 
 /* ---- fits ------------------------------------------------------------------------- */
 

@@ -1,6 +1,7 @@
 /* gnuplot.c — run an app's gnuplot script when gnuplot is installed; without it the CSV
  * and the script are the product, so its absence is a note, not an error. The figure is
- * written under a temporary name and renamed, like every other output file. */
+ * written under a temporary name and renamed, like every other output file. The apps'
+ * PNG scripts open with the same lines, written here once (app_gnuplot_head). */
 #include <errno.h>
 #include <fcntl.h>
 #include <stdlib.h>
@@ -126,4 +127,19 @@ out:
     free(final);
     free(expr);
     return rc;
+}
+
+void app_gnuplot_head(FILE *f, const char *png_name, const char *terminal, int loglog)
+{
+    fprintf(f,
+            "if (!exists(\"outfile\")) outfile = '%s'\n"
+            "set encoding utf8\n"
+            "set terminal pngcairo %s\n"
+            "set output outfile\n"
+            "set datafile separator ','\n",
+            png_name, terminal);
+    if (loglog)
+        fprintf(f, "set logscale xy\n"
+                   "set format x '10^{%%T}'\n"
+                   "set format y '10^{%%T}'\n");
 }

@@ -4,7 +4,6 @@
  * feeding its normal to the zmf law; the app plots how far the outcomes differ and fits
  * the order p of |difference| ~ (v/c)^p as c -> inf. */
 #include <math.h>
-#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -64,19 +63,8 @@ static void usage(FILE *f)
             FIT_FROM, FIT_FLOOR);
 }
 
-#if defined(__GNUC__)
-__attribute__((format(printf, 1, 2)))
-#endif
-static int fail(const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    fprintf(stderr, "%s: ", prog);
-    vfprintf(stderr, fmt, ap);
-    fputc('\n', stderr);
-    va_end(ap);
-    return EXIT_BAD_INPUT;
-}
+/* every option error: "relcol-frames: message" and exit status 2 */
+#define fail(...) app_fail(prog, EXIT_BAD_INPUT, __VA_ARGS__)
 
 typedef struct options {
     const char *out;
@@ -92,32 +80,16 @@ static int parse_options(int argc, char **argv, options *o)
     o->from = 1.25;
     o->to = 1e4;
     o->eps = 0.5;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0)
+    static const char *const known[] = {"--out", "--points", "--from", "--to", "--eps",
+                                        NULL};
+    app_opts it;
+    app_opts_init(&it, prog, argc, argv, known, NULL, "see --help");
+    const char *name, *val;
+    for (int kind; (kind = app_opts_next(&it, &name, &val)) != APP_OPT_END;) {
+        if (kind == APP_OPT_HELP)
             return -1;
-        if (strncmp(a, "--", 2) != 0)
-            return fail("unexpected argument '%s' (see --help)", a);
-        char name[32];
-        const char *val, *eq = strchr(a, '=');
-        size_t len = eq ? (size_t)(eq - a) : strlen(a);
-        if (len >= sizeof name)
-            return fail("unknown option %.40s (see --help)", a);
-        memcpy(name, a, len);
-        name[len] = '\0';
-        static const char *const known[] = {"--out", "--points", "--from", "--to", "--eps",
-                                            NULL};
-        int ok = 0;
-        for (const char *const *k = known; *k; k++)
-            ok |= strcmp(name, *k) == 0;
-        if (!ok)
-            return fail("unknown option %s (see --help)", name);
-        if (eq)
-            val = eq + 1;
-        else if (i + 1 < argc)
-            val = argv[++i];
-        else
-            return fail("%s: missing value", name);
+        if (kind == APP_OPT_ERROR)
+            return EXIT_BAD_INPUT;
         if (strcmp(name, "--out") == 0) {
             if (!*val)
                 return fail("--out: empty folder name");
@@ -218,15 +190,9 @@ static int write_script(const char *path, const options *o, char *err)
     fprintf(f,
 "# frames.gp — written by relcol-frames; run `gnuplot frames.gp` in this folder.\n"
 "# How much a rigid-ball collision's outcome depends on the frame in which contact is\n"
-"# decided: differences between frames against c/v, for several impact parameters.\n"
-"if (!exists(\"outfile\")) outfile = 'frames.png'\n"
-"set encoding utf8\n"
-"set terminal pngcairo size 1500,620 enhanced font 'Sans,12' linewidth 1.4\n"
-"set output outfile\n"
-"set datafile separator ','\n"
-"set logscale xy\n"
-"set format x '10^{%%T}'\n"
-"set format y '10^{%%T}'\n"
+"# decided: differences between frames against c/v, for several impact parameters.\n");
+    app_gnuplot_head(f, "frames.png", "size 1500,620 enhanced font 'Sans,12' linewidth 1.4", 1);
+    fprintf(f,
 "set grid xtics ytics lc rgb '#dddddd' lw 0.8\n"
 "set xlabel 'c / v'\n"
 "set key bottom left spacing 1.1 font ',10'\n"
@@ -267,10 +233,8 @@ int main(int argc, char **argv)
     options o;
     memset(&o, 0, sizeof o);
     int st = parse_options(argc, argv, &o);
-    if (st < 0) {
-        usage(stdout);
-        return fflush(stdout) == 0 ? 0 : 1;
-    }
+    if (st < 0)
+        return app_help(usage);
     if (st != 0)
         return st;
     char err[APP_ERR_LEN];

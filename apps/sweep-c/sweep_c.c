@@ -2,7 +2,6 @@
  * fastest speed, and how fast its outcome approaches the c = inf (classical) one: the
  * final velocities and the heat (rest-mass gain x c^2) should deviate like (v/c)^2. */
 #include <math.h>
-#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -55,19 +54,8 @@ static void usage(FILE *f)
             example_csv);
 }
 
-#if defined(__GNUC__)
-__attribute__((format(printf, 1, 2)))
-#endif
-static int fail(const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    fprintf(stderr, "%s: ", prog);
-    vfprintf(stderr, fmt, ap);
-    fputc('\n', stderr);
-    va_end(ap);
-    return EXIT_BAD_INPUT;
-}
+/* every input error: "relcol-sweep-c: message" and exit status 2 */
+#define fail(...) app_fail(prog, EXIT_BAD_INPUT, __VA_ARGS__)
 
 typedef struct options {
     const char *input, *out;
@@ -86,36 +74,21 @@ static int parse_options(int argc, char **argv, options *o)
     o->to = 1e6;
     o->eps = 1.0;
     o->law = rc_law_find("zmf");
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0)
+    static const char *const known[] = {"--input", "--out", "--points", "--from", "--to",
+                                        "--eps", "--law", NULL};
+    static const char *const flags[] = {"--example", NULL};
+    app_opts it;
+    app_opts_init(&it, prog, argc, argv, known, flags, "see --help");
+    const char *name, *val;
+    for (int kind; (kind = app_opts_next(&it, &name, &val)) != APP_OPT_END;) {
+        if (kind == APP_OPT_HELP)
             return -1;
-        if (strcmp(a, "--example") == 0) {
-            o->example = 1;
+        if (kind == APP_OPT_ERROR)
+            return EXIT_BAD_INPUT;
+        if (kind == APP_OPT_FLAG) {
+            o->example = 1; /* --example, the only flag */
             continue;
         }
-        if (strncmp(a, "--", 2) != 0)
-            return fail("unexpected argument '%s' (see --help)", a);
-        char name[32];
-        const char *val, *eq = strchr(a, '=');
-        size_t len = eq ? (size_t)(eq - a) : strlen(a);
-        if (len >= sizeof name)
-            return fail("unknown option %.40s (see --help)", a);
-        memcpy(name, a, len);
-        name[len] = '\0';
-        static const char *const known[] = {"--input", "--out", "--points", "--from",
-                                            "--to", "--eps", "--law", NULL};
-        int ok = 0;
-        for (const char *const *k = known; *k; k++)
-            ok |= strcmp(name, *k) == 0;
-        if (!ok)
-            return fail("unknown option %s (see --help)", name);
-        if (eq)
-            val = eq + 1;
-        else if (i + 1 < argc)
-            val = argv[++i];
-        else
-            return fail("%s: missing value", name);
         if (strcmp(name, "--input") == 0) {
             o->input = val;
         } else if (strcmp(name, "--out") == 0) {
@@ -196,15 +169,10 @@ static int write_script(const char *path, const options *o, const app_balls *b,
     fprintf(f,
 "# sweep-c.gp — written by relcol-sweep-c; run `gnuplot sweep-c.gp` in this folder.\n"
 "# Deviation of a two-ball collision's outcome at speed of light c from the classical\n"
-"# (c = inf) outcome, against c / |v|max; both should fall like (|v|max / c)^2.\n"
-"if (!exists(\"outfile\")) outfile = 'sweep-c.png'\n"
-"set encoding utf8\n"
-"set terminal pngcairo size 1100,760 enhanced font 'Sans,13' linewidth 1.5\n"
-"set output outfile\n"
-"set datafile separator ','\n"
-"set logscale xy\n"
-"set format x '10^{%%T}'\n"
-"set format y '10^{%%T}'\n"
+"# (c = inf) outcome, against c / |v|max; both should fall like (|v|max / c)^2.\n");
+    app_gnuplot_head(f, "sweep-c.png", "size 1100,760 enhanced font 'Sans,13' linewidth 1.5",
+                     1);
+    fprintf(f,
 "set mxtics 10\n"
 "set grid xtics ytics mxtics lc rgb '#dddddd' lw 0.8, lc rgb '#f0f0f0' lw 0.5\n"
 "set xlabel 'c / |v|_{max}'\n"
@@ -235,10 +203,8 @@ int main(int argc, char **argv)
     options o;
     memset(&o, 0, sizeof o);
     int st = parse_options(argc, argv, &o);
-    if (st < 0) {
-        usage(stdout);
-        return fflush(stdout) == 0 ? 0 : 1;
-    }
+    if (st < 0)
+        return app_help(usage);
     if (st != 0)
         return st;
 

@@ -7,7 +7,6 @@
  * whatever the thread or rank count. Exit: 0 done, 2 bad option, 1 failure. */
 #include <float.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -54,21 +53,8 @@ static void usage(FILE *f)
 "(OMP_NUM_THREADS) and, in an MPI build, across ranks (mpirun -np N relcol-sweep ...).\n");
 }
 
-#if defined(__GNUC__)
-__attribute__((format(printf, 2, 3)))
-#endif
-static int fail(int code, const char *fmt, ...)
-{
-    if (rank == 0) {
-        va_list ap;
-        va_start(ap, fmt);
-        fprintf(stderr, "%s: ", prog);
-        vfprintf(stderr, fmt, ap);
-        fputc('\n', stderr);
-        va_end(ap);
-    }
-    return code;
-}
+/* "relcol-sweep: message" on stderr, from rank 0 only (every rank fails alike) */
+#define fail(code, ...) (rank == 0 ? app_fail(prog, (code), __VA_ARGS__) : (code))
 
 typedef struct task_out {
     double obs[OBS_MAX];

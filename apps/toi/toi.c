@@ -3,7 +3,6 @@
  * and rc_toi_box(). Exit status: 0 contact or "miss", 2 bad input or overlapping
  * shapes (one line on stderr), 1 I/O error. */
 #include <math.h>
-#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -59,19 +58,8 @@ static void usage(FILE *f)
 "0 (one line on stderr naming the row, column or option and the reason); 1 I/O error.\n");
 }
 
-#if defined(__GNUC__)
-__attribute__((format(printf, 1, 2)))
-#endif
-static int fail(const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    fprintf(stderr, "%s: ", prog);
-    vfprintf(stderr, fmt, ap);
-    fputc('\n', stderr);
-    va_end(ap);
-    return EXIT_BAD_INPUT;
-}
+/* every input error: "relcol-toi: message" and exit status 2 */
+#define fail(...) app_fail(prog, EXIT_BAD_INPUT, __VA_ARGS__)
 
 typedef struct options {
     double c;
@@ -86,41 +74,24 @@ static int parse_options(int argc, char **argv, options *o)
     char err[APP_ERR_LEN], f1[APP_FMT_LEN], f2[APP_FMT_LEN];
     o->c = INFINITY;
     o->frame = &rc_toi_frame_table;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0)
+    static const char *const known[] = {"--c", "--frame", "--wall", NULL};
+    app_opts it;
+    app_opts_init(&it, prog, argc, argv, known, NULL, "input is read from stdin; see --help");
+    const char *name, *val;
+    for (int kind; (kind = app_opts_next(&it, &name, &val)) != APP_OPT_END;) {
+        if (kind == APP_OPT_HELP)
             return -1;
-        if (strncmp(a, "--", 2) != 0)
-            return fail("unexpected argument '%s' (input is read from stdin; see --help)", a);
-        char name[32];
-        const char *val, *eq = strchr(a, '=');
-        size_t len = eq ? (size_t)(eq - a) : strlen(a);
-        if (len >= sizeof name)
-            return fail("unknown option %.40s (see --help)", a);
-        memcpy(name, a, len);
-        name[len] = '\0';
-        if (strcmp(name, "--c") != 0 && strcmp(name, "--frame") != 0 &&
-            strcmp(name, "--wall") != 0)
-            return fail("unknown option %s (see --help)", name);
-        if (eq)
-            val = eq + 1;
-        else if (i + 1 < argc)
-            val = argv[++i];
-        else
-            return fail("%s: missing value", name);
+        if (kind == APP_OPT_ERROR)
+            return EXIT_BAD_INPUT;
         if (strcmp(name, "--c") == 0) {
             if (app_parse_double(val, 1, &o->c, err) != 0)
                 return fail("--c: %s", err);
         } else if (strcmp(name, "--frame") == 0) {
             o->frame = rc_toi_frame_find(val);
             if (!o->frame) {
-                char list[128] = "";
-                for (size_t k = 0; rc_toi_frames[k]; k++) {
-                    size_t l = strlen(list);
-                    snprintf(list + l, sizeof list - l, "%s%s", k ? ", " : "",
-                             rc_toi_frames[k]->name);
-                }
-                return fail("--frame: unknown frame '%s' (known: %s)", val, list);
+                char list[128];
+                return fail("--frame: unknown frame '%s' (known: %s)", val,
+                            app_toi_frame_list(list, sizeof list));
             }
         } else {
             if (app_parse_list(val, o->wall, 6, &o->n_wall, err) != 0)
@@ -135,12 +106,8 @@ static int parse_options(int argc, char **argv, options *o)
                                 app_fmt(o->wall[k + 1], f2));
         }
     }
-    if (!(o->c > 0.0))
-        return fail("--c: c = %s must be > 0", app_fmt(o->c, f1));
-    double k;
-    if (rc_inv_c2(o->c, &k) != RC_OK)
-        return fail("--c: c = %s is out of range (1/c^2 under- or overflows; use inf)",
-                    app_fmt(o->c, f1));
+    if (app_check_c(o->c, err) != 0)
+        return fail("--c: %s", err);
     return 0;
 }
 
@@ -169,10 +136,8 @@ int main(int argc, char **argv)
     options o;
     memset(&o, 0, sizeof o);
     int st = parse_options(argc, argv, &o);
-    if (st < 0) {
-        usage(stdout);
-        return fflush(stdout) == 0 ? 0 : 1;
-    }
+    if (st < 0)
+        return app_help(usage);
     if (st != 0)
         return st;
 

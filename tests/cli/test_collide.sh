@@ -5,61 +5,12 @@
 # conservation and JSON syntax. Usage: test_collide.sh PATH/relcol-collide [json_check.awk]
 C=${1:?usage: test_collide.sh relcol-collide [json_check.awk]}
 JSON_AWK=${2:-$(dirname "$0")/json_check.awk}
-T=$(mktemp -d) || exit 1
-trap 'rm -rf "$T"' EXIT
-pass=0
-fail=0
-
-ok() { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
-
-# run INPUT ARGS...: runs the app with INPUT (printf format) on stdin; sets $st, files out/err
-run() {
-    input=$1
-    shift
-    printf "$input" > "$T/in"
-    "$C" "$@" < "$T/in" > "$T/out" 2> "$T/err"
-    st=$?
-}
-
-# expect_bad NAME INPUT REGEX ARGS...: exit 2, empty stdout, exactly one stderr line that
-# matches the extended regex (which names the row and column, or the option, and the reason)
-expect_bad() {
-    name=$1 input=$2 re=$3
-    shift 3
-    run "$input" "$@"
-    lines=$(wc -l < "$T/err")
-    if [ "$st" -ne 2 ]; then
-        bad "$name: exit $st, want 2 (stderr: $(cat "$T/err"))"
-    elif [ -s "$T/out" ]; then
-        bad "$name: stdout not empty"
-    elif [ "$lines" -ne 1 ]; then
-        bad "$name: $lines stderr lines, want 1: $(cat "$T/err")"
-    elif ! grep -Eq -- "$re" "$T/err"; then
-        bad "$name: stderr '$(cat "$T/err")' does not match /$re/"
-    else
-        ok
-    fi
-}
+. "$(dirname "$0")/harness.sh"
 
 # field BALL COLUMN: value from the CSV on stdout (header names the columns)
 field() {
     awk -F, -v r="$1" -v col="$2" 'NR == 1 { for (i = 1; i <= NF; i++) h[$i] = i }
         NR == r + 2 { if (!(col in h)) { print "nocol"; exit } print $h[col] }' "$T/out"
-}
-
-# close NAME GOT WANT TOL: |got - want| <= tol * max(|want|, 1e-300) or, when want = 0,
-# |got| <= tol (the callers pass an absolute tolerance for zeros).
-close() {
-    if awk -v g="$2" -v w="$3" -v t="$4" 'BEGIN {
-            if (g == "" || g == "nocol") exit 1
-            d = g - w; if (d < 0) d = -d; s = w < 0 ? -w : w
-            if (s == 0) s = 1
-            exit !(d <= t * s) }'; then
-        ok
-    else
-        bad "$1: got '$2', want $3 (rel tol $4)"
-    fi
 }
 
 # The law's arithmetic is a few dozen roundings on numbers of order 1, so a correct result
@@ -79,11 +30,6 @@ same_csv() {
     else
         bad "$1: $(cat "$T/out") differs from $(cat "$2")"
     fi
-}
-
-expect_ok() {
-    if [ "$st" -ne 0 ]; then bad "$1: exit $st, stderr: $(cat "$T/err")"; else ok; fi
-    if [ -s "$T/err" ]; then bad "$1: success must print nothing on stderr: $(cat "$T/err")"; else ok; fi
 }
 
 # ---------------------------------------------------------------- published values (c = 1)
@@ -295,5 +241,4 @@ st=$?
 [ "$st" -eq 0 ] && grep -q 'kinetic energy p^2/2m' "$T/out" && grep -q 'cm-isotropic' "$T/out" &&
     ok || bad "--help (exit $st)"
 
-echo "$pass passed, $fail failed"
-[ "$fail" -eq 0 ] && [ "$pass" -gt 0 ]
+summary

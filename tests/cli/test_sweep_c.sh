@@ -5,12 +5,7 @@
 # is not required (gnuplot may be absent); without gnuplot on PATH it must still exit 0.
 # Usage: test_sweep_c.sh PATH/relcol-sweep-c
 S=${1:?usage: test_sweep_c.sh relcol-sweep-c}
-T=$(mktemp -d) || exit 1
-trap 'rm -rf "$T"' EXIT
-pass=0
-fail=0
-ok() { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
+. "$(dirname "$0")/harness.sh"
 
 # slope_ok NAME: the "slope NAME: X" line of $T/stdout has |X + 2| <= 0.05
 slope_ok() {
@@ -72,5 +67,4 @@ st=$?
 st=$?
 [ "$st" -eq 2 ] && grep -q -- "--from: 1 must be > 1" "$T/stderr" && ok || bad "--from 1: exit $st"
 
-echo "$pass passed, $fail failed"
-[ "$fail" -eq 0 ] && [ "$pass" -gt 0 ]
+summary

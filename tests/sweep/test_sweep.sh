@@ -24,7 +24,7 @@ cmp -s "$tmp/serial/sweep.csv" "$tmp/omp/sweep.csv" && ok "OpenMP (2 threads) = 
     || ko "OpenMP sweep differs from the serial one"
 
 if [ "$have_mpi" = "yes" ]; then
-    OMP_NUM_THREADS=1 ASAN_OPTIONS="detect_leaks=0" timeout 300 mpirun --allow-run-as-root --oversubscribe \
+    OMP_NUM_THREADS=1 timeout 300 mpirun --allow-run-as-root --oversubscribe \
         -np 2 "$sweep" $args --out "$tmp/mpi" > "$tmp/mpi.txt" 2> "$tmp/mpierr"
     cmp -s "$tmp/serial/sweep.csv" "$tmp/mpi/sweep.csv" && ok "MPI (2 ranks) = serial, bit for bit" \
         || ko "MPI sweep differs from the serial one: $(head -5 "$tmp/mpierr")"

@@ -5,55 +5,12 @@
 # row/column (or option) and the reason; overlapping shapes are an error.
 # Usage: test_toi_cli.sh PATH/relcol-toi
 C=${1:?usage: test_toi_cli.sh relcol-toi}
-T=$(mktemp -d) || exit 1
-trap 'rm -rf "$T"' EXIT
-pass=0
-fail=0
-ok() { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
-
-run() {
-    input=$1
-    shift
-    printf "$input" > "$T/in"
-    "$C" "$@" < "$T/in" > "$T/out" 2> "$T/err"
-    st=$?
-}
-
-expect_bad() {
-    name=$1 input=$2 re=$3
-    shift 3
-    run "$input" "$@"
-    lines=$(wc -l < "$T/err")
-    if [ "$st" -ne 2 ]; then
-        bad "$name: exit $st, want 2 (stderr: $(cat "$T/err"))"
-    elif [ -s "$T/out" ]; then
-        bad "$name: stdout not empty"
-    elif [ "$lines" -ne 1 ]; then
-        bad "$name: $lines stderr lines, want 1: $(cat "$T/err")"
-    elif ! grep -Eq -- "$re" "$T/err"; then
-        bad "$name: stderr '$(cat "$T/err")' does not match /$re/"
-    else
-        ok
-    fi
-}
+. "$(dirname "$0")/../cli/harness.sh"
 
 # field COLUMN: the value in the one data row of the CSV on stdout
 field() {
     awk -F, -v col="$1" 'NR == 1 { for (i = 1; i <= NF; i++) h[$i] = i }
         NR == 2 { if (!(col in h)) { print "nocol"; exit } print $h[col] }' "$T/out"
-}
-
-# close NAME GOT WANT RELTOL
-close() {
-    if awk -v g="$2" -v w="$3" -v t="$4" 'BEGIN { if (g == "" || g == "nocol") exit 1
-            d = g - w; if (d < 0) d = -d; s = w < 0 ? -w : w; if (s == 0) s = 1
-            exit !(d <= t * s) }'; then ok; else bad "$1: got '$2', want $3 (rel $4)"; fi
-}
-
-expect_ok() {
-    name=$1
-    if [ "$st" -ne 0 ]; then bad "$name: exit $st ($(cat "$T/err"))"; else ok; fi
 }
 
 # Head-on, c = 1, r = 1: contracted to 0.8 along x, they touch at 10 - 1.2 t = 1.6, t = 7.
@@ -143,5 +100,4 @@ expect_bad empty '' 'stdin'
 run '' --help
 [ "$st" -eq 0 ] && grep -q 'usage: relcol-toi' "$T/out" && ok || bad "--help"
 
-echo "cli-toi: $pass passed, $fail failed"
-[ "$fail" -eq 0 ]
+summary cli-toi

@@ -1,0 +1,142 @@
+/* cli.c — the apps' command-line plumbing, written once so that every app words its
+ * errors alike: "prog: message" on stderr, the "--name value" / "--name=value" option
+ * loop, --help, the check of --c, and the lists of names that unknown-name errors show. */
+#include <stdarg.h>
+#include <string.h>
+
+#include "app.h"
+
+int app_vfail(const char *prog, int code, const char *fmt, va_list ap)
+{
+    fprintf(stderr, "%s: ", prog);
+    vfprintf(stderr, fmt, ap);
+    fputc('\n', stderr);
+    return code;
+}
+
+int app_fail(const char *prog, int code, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    app_vfail(prog, code, fmt, ap);
+    va_end(ap);
+    return code;
+}
+
+int app_help(void (*usage)(FILE *))
+{
+    usage(stdout);
+    return fflush(stdout) == 0 ? 0 : 1;
+}
+
+void app_opts_init(app_opts *it, const char *prog, int argc, char **argv,
+                   const char *const *valued, const char *const *flags, const char *stray_hint)
+{
+    memset(it, 0, sizeof *it);
+    it->prog = prog;
+    it->argc = argc;
+    it->argv = argv;
+    it->i = 1;
+    it->valued = valued;
+    it->flags = flags;
+    it->stray_hint = stray_hint;
+}
+
+static int listed(const char *const *list, const char *s)
+{
+    int found = 0;
+    for (const char *const *k = list; k && *k; k++)
+        found |= strcmp(s, *k) == 0;
+    return found;
+}
+
+int app_opts_next(app_opts *it, const char **name, const char **value)
+{
+    *name = NULL;
+    *value = NULL;
+    if (it->i >= it->argc)
+        return APP_OPT_END;
+    const char *a = it->argv[it->i++];
+    if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0)
+        return APP_OPT_HELP;
+    if (listed(it->flags, a)) {
+        *name = a;
+        return APP_OPT_FLAG;
+    }
+    if (strncmp(a, "--", 2) != 0) {
+        app_fail(it->prog, 0, "unexpected argument '%s' (%s)", a, it->stray_hint);
+        return APP_OPT_ERROR;
+    }
+    const char *eq = strchr(a, '=');
+    size_t len = eq ? (size_t)(eq - a) : strlen(a);
+    if (len >= sizeof it->name) {
+        /* too long to be any option: show its start only */
+        app_fail(it->prog, 0, "unknown option %.40s (see --help)", a);
+        return APP_OPT_ERROR;
+    }
+    memcpy(it->name, a, len);
+    it->name[len] = '\0';
+    if (!listed(it->valued, it->name)) {
+        app_fail(it->prog, 0, "unknown option %s (see --help)", it->name);
+        return APP_OPT_ERROR;
+    }
+    if (eq)
+        *value = eq + 1;
+    else if (it->i < it->argc)
+        *value = it->argv[it->i++];
+    else {
+        app_fail(it->prog, 0, "%s: missing value", it->name);
+        return APP_OPT_ERROR;
+    }
+    *name = it->name;
+    return APP_OPT_VALUE;
+}
+
+int app_check_c(double c, char *err)
+{
+    char f[APP_FMT_LEN];
+    double k;
+    if (!(c > 0.0)) {
+        app_errf(err, "c = %s must be > 0", app_fmt(c, f));
+        return -1;
+    }
+    if (rc_inv_c2(c, &k) != RC_OK) {
+        app_errf(err, "c = %s is out of range (1/c^2 under- or overflows; use inf)",
+                 app_fmt(c, f));
+        return -1;
+    }
+    return 0;
+}
+
+/* "a, b, c" from name(0), name(1), ... up to the first NULL, truncated to n - 1 chars. */
+static const char *join_names(char *buf, size_t n, const char *(*name)(size_t))
+{
+    if (n == 0)
+        return buf;
+    buf[0] = '\0';
+    for (size_t k = 0; name(k); k++) {
+        size_t l = strlen(buf);
+        snprintf(buf + l, n - l, "%s%s", k ? ", " : "", name(k));
+    }
+    return buf;
+}
+
+static const char *law_name(size_t k)
+{
+    return rc_laws[k] ? rc_laws[k]->name : NULL;
+}
+
+static const char *toi_frame_name(size_t k)
+{
+    return rc_toi_frames[k] ? rc_toi_frames[k]->name : NULL;
+}
+
+const char *app_law_list(char *buf, size_t n)
+{
+    return join_names(buf, n, law_name);
+}
+
+const char *app_toi_frame_list(char *buf, size_t n)
+{
+    return join_names(buf, n, toi_frame_name);
+}
