@@ -1,7 +1,7 @@
 /* engine_core.c — the event loop: schedule each ball's earliest event (wall, ball, cell
  * crossing) from its own stored state, pop events in (time, ball) order, drop stale ones
- * by counters, and resolve each collision together with every contact simultaneous to it. */
-#include <float.h>
+ * by counters, and resolve each collision together with every contact simultaneous to it
+ * (papers/simultaneous-contacts.md). Creating and filling an engine: engine_setup.c. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -9,136 +9,8 @@
 #include "engine_private.h"
 #include "relcol/status.h"
 
-/* Cell edge margin over the largest bounding diameter (relative): keeps balls that can
- * touch (or be within sim_tol of touching) in adjacent cells despite round-off of the
- * cell boundaries. */
-#define CELL_MARGIN 1e-8
-
-rc_sim_def rc_sim_def_default(void)
-{
-    rc_sim_def d;
-    memset(&d, 0, sizeof d);
-    d.dim = 3;
-    d.box = rc_v3(1.0, 1.0, 1.0);
-    d.c = INFINITY;
-    d.eps_ball = 1.0;
-    d.eps_wall = 1.0;
-    d.t_c = 0.0;
-    d.law = &rc_law_zmf;
-    d.frame = NULL;
-    d.toi = rc_toi_params_default();
-    d.sim_tol = 1e-9;
-    d.approach_tol = 1e-10;
-    d.overlap_tol = 1e-9;
-    d.cell_size = 0.0;
-    d.density = 1.0;
-    return d;
-}
-
-static int check_def(const rc_sim_def *d)
-{
-    if (d->dim != 2 && d->dim != 3)
-        return RC_EDIM;
-    if (!rc_v3_isfinite(d->box) || !isfinite(d->eps_ball) || !isfinite(d->eps_wall) ||
-        !isfinite(d->t_c) || !isfinite(d->sim_tol) || !isfinite(d->approach_tol) ||
-        !isfinite(d->overlap_tol) || !isfinite(d->cell_size) || !isfinite(d->density))
-        return RC_ENONFINITE;
-    if (!(d->box.x > 0.0 && d->box.y > 0.0 && (d->dim == 2 || d->box.z > 0.0)))
-        return RC_EINVAL;
-    if (!(d->eps_ball >= 0.0 && d->eps_ball <= 1.0 && d->eps_wall >= 0.0 &&
-          d->eps_wall <= 1.0))
-        return RC_ERESTITUTION;
-    if (!(d->t_c >= 0.0 && d->sim_tol >= 0.0 && d->sim_tol < 1e-3 && d->approach_tol >= 0.0 &&
-          d->approach_tol < 1e-3 && d->overlap_tol >= 0.0 && d->cell_size >= 0.0 &&
-          d->density > 0.0))
-        return RC_EINVAL;
-    if (!d->law || !d->law->collide)
-        return RC_EINVAL;
-    if (d->frame) { /* the engine calls frame->toi directly: validate its settings once */
-        const rc_toi_params *t = &d->toi;
-        if (!d->frame->toi || !isfinite(t->touch_tol) || !isfinite(t->graze_tol) ||
-            !isfinite(t->lambda_tol) || !(t->touch_tol >= 0.0 && t->graze_tol >= 0.0 &&
-                                          t->lambda_tol > 0.0 && t->max_iter > 0))
-            return RC_EINVAL;
-    }
-    double k;
-    return rc_inv_c2(d->c, &k);
-}
-
-int rc_sim_create(const rc_sim_def *def, rc_sim **out)
-{
-    if (!def || !out)
-        return RC_EINVAL;
-    *out = NULL;
-    int st = check_def(def);
-    if (st != RC_OK)
-        return st;
-    rc_sim *s = calloc(1, sizeof *s);
-    if (!s)
-        return RC_ENOMEM;
-    s->def = *def;
-    if (def->dim == 2)
-        s->def.box.z = 0.0;
-    rc_inv_c2(def->c, &s->inv_c2);
-    s->L[0] = def->box.x;
-    s->L[1] = def->box.y;
-    s->L[2] = def->box.z;
-    s->prm = rc_collision_params_default();
-    s->prm.inv_c2 = s->inv_c2;
-    s->toi = def->toi;
-    s->toi.inv_c2 = s->inv_c2;
-    s->narrow = def->frame && strcmp(def->frame->name, "sphere") != 0;
-    s->wall_contracted = def->frame && def->frame->wall_contracted && s->inv_c2 > 0.0;
-    if (s->narrow) {
-        if (!def->frame->toi || !(s->ws = rc_toi_workspace_alloc())) {
-            free(s);
-            return def->frame->toi ? RC_ENOMEM : RC_EINVAL;
-        }
-    }
-    *out = s;
-    return RC_OK;
-}
-
-static void release_balls(rc_sim *s)
-{
-    free(s->b);
-    free(s->a);
-    free(s->id);
-    free(s->slot);
-    free(s->cnt);
-    s->cnt = NULL;
-    s->b = NULL;
-    s->a = NULL;
-    s->id = NULL;
-    s->slot = NULL;
-    rc_eng_heap_free(&s->q);
-    rc_eng_cells_free(&s->g);
-    s->n = 0;
-}
-
-void rc_sim_free(rc_sim **sp)
-{
-    if (!sp || !*sp)
-        return;
-    rc_sim *s = *sp;
-    release_balls(s);
-    free(s->grp_ball);
-    free(s->grp_part);
-    free(s->grp_con);
-    rc_toi_workspace_free(&s->ws);
-    free(s->cand);
-    free(s);
-    *sp = NULL;
-}
-
 /* ---- event prediction ------------------------------------------------------------ */
 
-static inline void cell_coords(const eng_cells *g, int32_t cell, int c[3])
-{
-    c[0] = cell % g->n[0];
-    c[1] = (cell / g->n[0]) % g->n[1];
-    c[2] = cell / (g->n[0] * g->n[1]);
-}
 
 /* Bounding-sphere (and, if plugged in, contracted) contact time of balls i and k, as an
  * absolute time >= now, INFINITY if none before `best`. It depends only on the two stored
@@ -191,17 +63,16 @@ __attribute__((always_inline)) static inline double pair_time_dx(
     const double dv2 = rc_v3_norm2(dv);
     const double disc = b * b - dv2 * dd;
     const double tol = s->def.approach_tol * sig;
-    /* Branch-free on purpose: whether a neighbour approaches, touches or misses is a coin
-     * toss for the branch predictor, and computing the root for every neighbour is cheaper
-     * than mispredicting. Hit: approaching (b < 0) and either already touching (dd <= 0,
-     * collide now if the approach is real) or the roots are real. The root is
-     * dd / (-b + sqrt(disc)), free of cancellation. */
-    const double root = dd / (sqrt(disc > 0.0 ? disc : 0.0) - b);
+    /* One combined, mostly-taken test rejects most neighbours before the sqrt and the
+     * division: not approaching (b >= 0); touching but not really approaching; roots not
+     * real; or not able to beat `best` (sqrt(disc) <= -b gives t >= dd / (-2 b)). The
+     * root itself is dd / (-b + sqrt(disc)), free of cancellation. */
     const int touching = dd <= 0.0;
-    const int hit = (b < 0.0) & (touching ? b * b > tol * tol * dv2 : disc > 0.0);
-    const double t = touching ? 0.0 : root;
+    const int hit = (b < 0.0) & (touching ? b * b > tol * tol * dv2
+                                          : (disc > 0.0) & (dd < -2.0 * b * (best - tref)));
     if (!hit)
         return INFINITY;
+    const double t = touching ? 0.0 : dd / (sqrt(disc) - b);
     double ta = tref + t;
     if (ta < s->now)
         ta = s->now;
@@ -282,23 +153,6 @@ static inline void test_list(const rc_sim *s, int32_t i, const int32_t *nb, size
     }
 }
 
-static inline void scan_cell(const rc_sim *s, int32_t i, int32_t cell, double *best,
-                             int32_t *bp)
-{
-    const eng_ball *bi = &s->b[i];
-    const int32_t *next = s->g.next;
-    for (int32_t k = s->g.head[cell]; k >= 0; k = next[k]) {
-        if (k == i)
-            continue;
-        double t = pair_time(s, bi, &s->b[k], *best);
-        if (t < *best) {
-            *best = t;
-            *bp = k;
-        }
-    }
-}
-
-/* Scan the cells around c with offsets lo[d]..hi[d] (clipped to the grid). */
 /* Contracted frames: the root finding is the cost, so first collect the neighbours whose
  * bounding spheres can touch before `best`, then ask the frame in order of sphere time and
  * stop as soon as the next sphere time is no earlier than the best contracted contact
@@ -359,6 +213,7 @@ static void scan_block_narrow(const rc_sim *cs, int32_t i, int x0, int x1, int y
     }
 }
 
+/* Scan the cells around c with offsets lo[d]..hi[d] (clipped to the grid). */
 static void scan_block(const rc_sim *s, int32_t i, const int c[3], const int lo[3],
                        const int hi[3], double *best, int32_t *bp)
 {
@@ -428,13 +283,9 @@ static inline void store_event(rc_sim *s, int32_t i, double best, int32_t bp)
     a->ev_pcount = bp >= 0 ? s->cnt[bp] : 0;
 }
 
-static inline double key_of(const eng_aux *a)
-{
-    return a->ev_t < a->cross_t ? a->ev_t : a->cross_t;
-}
 
 /* Full prediction for ball i: walls, the 3^d cells around it, its next cell crossing. */
-static void predict(rc_sim *s, int32_t i, int update_heap)
+void rc_eng_predict(rc_sim *s, int32_t i, int update_heap)
 {
     double best = INFINITY;
     int32_t bp = ENG_NONE;
@@ -447,145 +298,6 @@ static void predict(rc_sim *s, int32_t i, int update_heap)
     cross_event(s, i, c);
     if (update_heap)
         rc_eng_heap_update(&s->q, (uint32_t)i, key_of(&s->a[i]));
-}
-
-/* ---- setting up ------------------------------------------------------------------ */
-
-int rc_sim_set_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad)
-{
-    if (!s || (!in && n))
-        return RC_EINVAL;
-    if (n > (size_t)INT32_MAX)
-        return RC_EINVAL;
-    const int dim = s->def.dim;
-    double rmax = 0.0;
-    for (size_t i = 0; i < n; i++) {
-        const rc_sim_ball *b = &in[i];
-        if (bad)
-            *bad = i;
-        if (!rc_v3_isfinite(b->x) || !rc_v3_isfinite(b->p) || !isfinite(b->r) ||
-            !isfinite(b->m) || !isfinite(b->tau))
-            return RC_ENONFINITE;
-        if (!(b->r > 0.0))
-            return RC_ERADIUS;
-        if (dim == 2 && (b->x.z != 0.0 || b->p.z != 0.0))
-            return RC_EDIM;
-        for (int d = 0; d < dim; d++) {
-            double x = rc_v3_get(b->x, d);
-            if (!(x >= b->r && x <= s->L[d] - b->r))
-                return RC_EINVAL; /* bounding sphere not inside the box */
-        }
-        if (b->r > rmax)
-            rmax = b->r;
-    }
-    release_balls(s);
-    /* a new set of balls starts its bookkeeping afresh */
-    s->heat = s->heat_c = 0.0;
-    for (int d = 0; d < 3; d++)
-        s->wall[d] = s->wall_c[d] = 0.0;
-    s->overlaps = s->collisions = s->group_fallbacks = s->since_reorder = 0;
-    s->max_group = 0;
-    memset(s->events, 0, sizeof s->events);
-    int st = RC_ENOMEM;
-    s->b = malloc((n ? n : 1) * sizeof *s->b);
-    s->a = malloc((n ? n : 1) * sizeof *s->a);
-    if (!s->b || !s->a)
-        goto fail;
-    double edge = 2.0 * rmax * (1.0 + CELL_MARGIN + 2.0 * s->def.sim_tol);
-    if (s->def.cell_size > edge)
-        edge = s->def.cell_size;
-    if (!(edge > 0.0))
-        edge = 1.0;
-    if ((st = rc_eng_cells_init(&s->g, dim, s->def.box, edge, n)) != RC_OK)
-        goto fail;
-    if ((st = rc_eng_heap_init(&s->q, n)) != RC_OK)
-        goto fail;
-    s->n = n;
-    /* Store balls in cell order (stable): neighbours then share cache lines and the
-     * prefetcher, which matters more than anything else once N no longer fits in cache.
-     * id[] / slot[] translate to and from the caller's indices. */
-    s->cnt = calloc(n ? n : 1, sizeof *s->cnt);
-    s->id = malloc((n ? n : 1) * sizeof *s->id);
-    s->slot = malloc((n ? n : 1) * sizeof *s->slot);
-    int32_t *cellof = malloc((n ? n : 1) * sizeof *cellof);
-    size_t *start = calloc(s->g.ncells + 1, sizeof *start);
-    if (!s->id || !s->slot || !s->cnt || !cellof || !start) {
-        free(cellof);
-        free(start);
-        st = RC_ENOMEM;
-        goto fail;
-    }
-    for (size_t i = 0; i < n; i++) {
-        cellof[i] = rc_eng_cells_index_of(&s->g, dim, in[i].x);
-        start[cellof[i] + 1]++;
-    }
-    for (size_t c = 0; c < s->g.ncells; c++)
-        start[c + 1] += start[c];
-    for (size_t i = 0; i < n; i++) {
-        size_t k = start[cellof[i]]++;
-        s->id[k] = (uint32_t)i;
-        s->slot[i] = (uint32_t)k;
-    }
-    free(start);
-    for (size_t k = n; k-- > 0;) {
-        const rc_sim_ball *b = &in[s->id[k]];
-        eng_ball *e = &s->b[k];
-        eng_aux *a = &s->a[k];
-        memset(a, 0, sizeof *a);
-        a->m = b->m > 0.0 ? b->m : s->def.density * b->r * b->r * b->r;
-        a->p = b->p;
-        a->tau = b->tau;
-        a->tau_last = -INFINITY;
-        double M = eng_mass_rel(a->m, a->p, s->inv_c2);
-        e->x = b->x;
-        e->v = rc_v3_scale(1.0 / M, a->p);
-        e->t = s->now;
-        e->r = b->r;
-        rc_eng_cells_insert(&s->g, s->a, (int32_t)k, cellof[s->id[k]]);
-    }
-    free(cellof);
-    /* overlap check through the cells: each pair once */
-    for (size_t i = 0; i < n; i++) {
-        int c[3];
-        cell_coords(&s->g, s->a[i].cell, c);
-        for (int dz = (dim == 3 ? -1 : 0); dz <= (dim == 3 ? 1 : 0); dz++)
-            for (int dy = -1; dy <= 1; dy++)
-                for (int dx = -1; dx <= 1; dx++) {
-                    int x = c[0] + dx, y = c[1] + dy, z = c[2] + dz;
-                    if (x < 0 || y < 0 || z < 0 || x >= s->g.n[0] || y >= s->g.n[1] ||
-                        z >= s->g.n[2])
-                        continue;
-                    int32_t cell = (int32_t)(x + s->g.n[0] * (y + s->g.n[1] * z));
-                    for (int32_t k = s->g.head[cell]; k >= 0; k = s->g.next[k]) {
-                        if ((size_t)k <= i)
-                            continue;
-                        /* touching is allowed (a rack): only overlaps deeper than the
-                         * round-off of placed positions, overlap_tol, are rejected */
-                        double sig = (s->b[i].r + s->b[k].r) * (1.0 - s->def.overlap_tol);
-                        if (rc_v3_norm2(rc_v3_sub(s->b[k].x, s->b[i].x)) < sig * sig) {
-                            if (bad)
-                                *bad = s->id[k] > s->id[i] ? s->id[k] : s->id[i];
-                            st = RC_EOVERLAP;
-                            goto fail;
-                        }
-                    }
-                }
-    }
-    double *keys = malloc((n ? n : 1) * sizeof *keys);
-    if (!keys) {
-        st = RC_ENOMEM;
-        goto fail;
-    }
-    for (size_t i = 0; i < n; i++)
-        predict(s, (int32_t)i, 0);
-    for (size_t i = 0; i < n; i++)
-        keys[i] = key_of(&s->a[i]);
-    rc_eng_heap_build(&s->q, keys);
-    free(keys);
-    return RC_OK;
-fail:
-    release_balls(s);
-    return st;
 }
 
 /* ---- resolving events ------------------------------------------------------------ */
@@ -708,7 +420,15 @@ static int grow_group(rc_sim *s, size_t *nm, size_t *nc, double T)
                             continue;
                         rc_vec3 n = rc_v3_scale(1.0 / sqrt(d2), dx);
                         if (s->narrow) {
-                            /* contracted shapes: in contact within sim_tol of now? */
+                            /* contracted shapes: separated along the centre line (a
+                             * separating axis: gap beyond the two support distances)
+                             * means not touching, without asking the frame */
+                            double vin = rc_v3_dot(bi->v, n), vkn = rc_v3_dot(bk->v, n);
+                            double hsum = bi->r * sqrt(fmax(0.0, 1.0 - vin * vin * s->inv_c2)) +
+                                          bk->r * sqrt(fmax(0.0, 1.0 - vkn * vkn * s->inv_c2));
+                            if (d2 > hsum * hsum * (1.0 + stol) * (1.0 + stol) * (1.0 + 1e-12))
+                                continue;
+                            /* in contact within sim_tol of now? */
                             rc_toi_ball A = {rc_v3(0, 0, 0), bi->r, s->a[i].m, s->a[i].p};
                             rc_toi_ball B = {dx, bk->r, s->a[k].m, s->a[k].p};
                             rc_toi_contact out;
@@ -1048,7 +768,7 @@ static void finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int k
         if (single)
             rc_eng_heap_update(&s->q, (uint32_t)s->grp_ball[j], key_of(&s->a[s->grp_ball[j]]));
         else
-            predict(s, s->grp_ball[j], 1);
+            rc_eng_predict(s, s->grp_ball[j], 1);
     }
 }
 
@@ -1064,7 +784,7 @@ static void cross(rc_sim *s, int32_t i)
     rc_eng_cells_insert(&s->g, s->a, i, (int32_t)(c[0] + s->g.n[0] * (c[1] + s->g.n[1] * c[2])));
     s->events[RC_SIM_EV_CELL]++;
     if (a->ev_partner >= 0 && s->cnt[a->ev_partner] != a->ev_pcount) {
-        predict(s, i, 1); /* the kept event went stale: full scan */
+        rc_eng_predict(s, i, 1); /* the kept event went stale: full scan */
         return;
     }
     double best = a->ev_t;
@@ -1174,7 +894,7 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
             cross(s, i);
         } else if (a->ev_partner >= 0 && s->cnt[a->ev_partner] != a->ev_pcount) {
             s->events[RC_SIM_EV_STALE]++;
-            predict(s, i, 1);
+            rc_eng_predict(s, i, 1);
         } else {
             int st = collide(s, i, a->ev_partner, top.t);
             if (st != RC_OK)

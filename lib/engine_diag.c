@@ -20,6 +20,8 @@ static void ball_now(const rc_sim *s, size_t i, rc_sim_ball *o)
     o->r = b->r;
     o->m = a->m;
     o->tau = a->tau;
+    o->collided = isfinite(a->tau_last);
+    o->tau_last = o->collided ? a->tau_last : 0.0;
     if (h != 0.0)
         o->tau += s->inv_c2 == 0.0 ? h : h * (a->m / eng_mass_rel(a->m, a->p, s->inv_c2));
 }

@@ -37,7 +37,7 @@ typedef struct eng_aux {
     int32_t pad_;
 } eng_aux;
 
-/* Indexed binary heap of (time, ball), one entry per ball; ties by ball index.
+/* Indexed 4-ary heap of (time, ball), one entry per ball; ties by ball index.
  * (Functions shared between the engine files carry rc_eng_: exported, not public.) */
 typedef struct eng_heap_entry {
     double t;
@@ -124,5 +124,22 @@ static inline double eng_mass_rel(double m, rc_vec3 p, double inv_c2)
 {
     return inv_c2 == 0.0 ? m : sqrt(m * m + rc_v3_norm2(p) * inv_c2);
 }
+
+/* Cell coordinates of a cell index. */
+static inline void cell_coords(const eng_cells *g, int32_t cell, int c[3])
+{
+    c[0] = cell % g->n[0];
+    c[1] = (cell / g->n[0]) % g->n[1];
+    c[2] = cell / (g->n[0] * g->n[1]);
+}
+
+/* Heap key of a ball: its earliest event, collision or cell crossing. */
+static inline double key_of(const eng_aux *a)
+{
+    return a->ev_t < a->cross_t ? a->ev_t : a->cross_t;
+}
+
+/* Predict ball i's earliest events from scratch (and update its heap entry if asked). */
+void rc_eng_predict(rc_sim *s, int32_t i, int update_heap);
 
 #endif

@@ -1,10 +1,16 @@
-/* queue_heap.c — the event queue: an indexed binary min-heap with one entry per ball
+/* queue_heap.c — the event queue: an indexed 4-ary min-heap with one entry per ball
  * (its earliest event), keyed by (time, ball index) so that equal times pop in a fixed
- * order. The key is stored in the entry so sifting never leaves the heap array. */
+ * order. The key is stored in the entry so sifting never leaves the heap array; four
+ * children per node halve the depth and keep siblings in one or two cache lines
+ * (against a binary heap on the dev machine, 3-D packing 0.45: no change at N = 1e4,
+ * 1.8e5 -> 2.1e5 collisions/s at N = 1e5, single runs on a shared machine). */
 #include <stdlib.h>
 
 #include "engine_private.h"
 #include "relcol/status.h"
+
+/* Children per node. */
+#define ARITY 4
 
 static inline int less(const eng_heap_entry *a, const eng_heap_entry *b)
 {
@@ -36,7 +42,7 @@ static void sift_up(eng_heap *q, size_t k)
 {
     eng_heap_entry e = q->h[k];
     while (k > 0) {
-        size_t parent = (k - 1) / 2;
+        size_t parent = (k - 1) / ARITY;
         if (!less(&e, &q->h[parent]))
             break;
         q->h[k] = q->h[parent];
@@ -52,11 +58,13 @@ static void sift_down(eng_heap *q, size_t k)
     const size_t n = q->n;
     eng_heap_entry e = q->h[k];
     for (;;) {
-        size_t c = 2 * k + 1;
-        if (c >= n)
+        size_t c0 = ARITY * k + 1;
+        if (c0 >= n)
             break;
-        if (c + 1 < n && less(&q->h[c + 1], &q->h[c]))
-            c++;
+        size_t c = c0, end = c0 + ARITY < n ? c0 + ARITY : n;
+        for (size_t j = c0 + 1; j < end; j++)
+            if (less(&q->h[j], &q->h[c]))
+                c = j;
         if (!less(&q->h[c], &e))
             break;
         q->h[k] = q->h[c];
@@ -75,7 +83,7 @@ void rc_eng_heap_build(eng_heap *q, const double *keys)
         q->h[i].pad_ = 0;
         q->pos[i] = (uint32_t)i;
     }
-    for (size_t k = q->n / 2; k-- > 0;)
+    for (size_t k = q->n > 1 ? (q->n - 2) / ARITY + 1 : 0; k-- > 0;) /* parents */
         sift_down(q, k);
 }
 

@@ -109,6 +109,7 @@ static int cvode_integrate(rc_soft_sys *s)
             if (switched && CVodeReInit(mem, t, yv) != CV_SUCCESS)
                 goto out;
         }
+        rc_soft_shape_overlaps(s, s->y);
         rc_soft_observe(s, s->y);
     }
     s->t = t;

@@ -104,7 +104,7 @@ static int gsl_integrate(rc_soft_sys *s, const gsl_odeiv2_step_type *type)
 {
     const size_t ny = s->ny, np = s->npair;
     gsl_run g = {s, {gsl_rhs, NULL, ny, s}, NULL, NULL, NULL};
-    double *buf = malloc((6 * ny + 2 * np) * sizeof *buf);
+    double *buf = malloc((6 * ny + 3 * np) * sizeof *buf);
     g.step = gsl_odeiv2_step_alloc(type, ny);
     g.ctrl = gsl_odeiv2_control_scaled_new(s->rtol, s->rtol, 1.0, 0.0, s->abs_scale, ny);
     g.ev = gsl_odeiv2_evolve_alloc(ny);
@@ -112,7 +112,7 @@ static int gsl_integrate(rc_soft_sys *s, const gsl_odeiv2_step_type *type)
     if (!buf || !g.step || !g.ctrl || !g.ev)
         goto out;
     double *ya = buf, *yr = buf + ny, *ybest = buf + 2 * ny, *ybuf = buf + 3 * ny;
-    double *gb = buf + 5 * ny, *gtmp = gb + np;
+    double *gb = buf + 5 * ny, *gtmp = gb + np, *g0 = gtmp + np;
     double *y = s->y;
     const double t1 = isfinite(s->t_max) ? s->t_max : DBL_MAX;
     /* first step: a hundredth of the time the fastest ball takes to cross the smallest
@@ -134,6 +134,8 @@ static int gsl_integrate(rc_soft_sys *s, const gsl_odeiv2_step_type *type)
             goto out;
         const double ta = t;
         memcpy(ya, y, ny * sizeof *ya);
+        if (s->shape != RC_SOFT_SPHERE)
+            rc_soft_overlap(s, y, g0);
         /* cap the step as soft_cvode.c does, so no contact is stepped over unseen */
         const double tcap = fmin(t1, t + rc_soft_max_step(s, y));
         if (gsl_odeiv2_evolve_apply(g.ev, g.ctrl, g.step, &g.sys, &t, tcap, &h, y) !=
@@ -143,7 +145,11 @@ static int gsl_integrate(rc_soft_sys *s, const gsl_odeiv2_step_type *type)
         size_t qbest = np;
         double tbest = t;
         for (size_t q = 0; q < np; q++) {
-            const int crossed = s->on[q] ? gb[q] < 0.0 : gb[q] > 0.0;
+            /* contracted shapes: a pair out of contact that already overlapped at the
+             * step's start (a shape change made it: rc_soft_shape_overlaps) has no entry
+             * to locate (spheres keep their original test exactly) */
+            const int ghost = s->shape != RC_SOFT_SPHERE && g0[q] > 0.0;
+            const int crossed = s->on[q] ? gb[q] < 0.0 : gb[q] > 0.0 && !ghost;
             if (!crossed)
                 continue;
             double tr;
@@ -166,6 +172,7 @@ static int gsl_integrate(rc_soft_sys *s, const gsl_odeiv2_step_type *type)
             gsl_odeiv2_evolve_reset(g.ev);
             gsl_odeiv2_step_reset(g.step);
         }
+        rc_soft_shape_overlaps(s, y);
         rc_soft_observe(s, y);
     }
     s->t = t;

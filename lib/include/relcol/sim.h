@@ -8,11 +8,16 @@
  * Overlap policy (contracted shapes change shape when their speed changes, so a collision
  * can leave a ball overlapping a neighbour): a pair found overlapping (RC_EOVERLAP from
  * the frame, or spheres deeper than round-off) whose bounding spheres approach collides
- * at once along the frame's normal (or the centre line), and is counted in
- * rc_sim_diag.overlaps; an overlapping pair that separates is left to separate.
+ * at once along the centre line, and is counted in rc_sim_diag.overlaps; an overlapping
+ * pair that separates is left to separate.
+ *
+ * Event times are pure functions of the two balls' stored states (position at the ball's
+ * own clock, momentum, rest mass), never of when they were asked for; so a run can later
+ * be written out and continued bit-identically from those stored states (a raw-state
+ * getter/setter is still to be added: rc_sim_get_ball extrapolates to the engine time).
  *
  * Cost per event does not grow with N: balls are grouped in cells at least one bounding
- * diameter wide, each ball keeps only its own earliest event in an indexed binary heap,
+ * diameter wide, each ball keeps only its own earliest event in an indexed 4-ary heap,
  * events made stale by a partner's later collision are detected by per-ball collision
  * counters, and every ball keeps its own clock (its state is stored at the time it was
  * last touched and advanced lazily), so an event touches only its balls. */
@@ -76,6 +81,11 @@ typedef struct rc_sim_ball {
     double r;    /* rest radius > 0 */
     double m;    /* rest mass; <= 0 on input: density * r^3 */
     double tau;  /* proper time */
+    /* TC-model memory: collided != 0 means the ball's last collision happened at its
+     * proper time tau_last (a zero-initialised ball has not collided yet). Read back by
+     * rc_sim_get_ball so that a written state continues exactly. */
+    int collided;
+    double tau_last;
 } rc_sim_ball;
 
 /* Event kinds, for rc_sim_diag.events[]. */
@@ -114,11 +124,27 @@ int rc_sim_create(const rc_sim_def *def, rc_sim **out);
 /* Frees and sets *s to NULL (NULL and *s == NULL are fine). */
 void rc_sim_free(rc_sim **s);
 
+/* Set the engine's time (finite) before any balls are placed, e.g. to continue a run
+ * that stopped at t: RC_EINVAL once balls are set. The default is 0. */
+int rc_sim_set_time(rc_sim *s, double t);
+
 /* Place n balls at the engine's time (replaces any previous set). Rejects non-finite
- * input, r <= 0, |v| >= c (impossible from a finite p), a ball not inside the box
- * (RC_EINVAL) and balls overlapping by more than overlap_tol (RC_EOVERLAP; touching is
- * fine); *bad (may be NULL) gets the index. */
+ * input, r <= 0, |v| >= c (impossible from a finite p), a ball whose shape is not inside
+ * the box (RC_EINVAL) and balls overlapping by more than overlap_tol (RC_EOVERLAP;
+ * touching is fine), both judged in the contact frame's own geometry (contracted shapes
+ * for table and zmf at finite c). With contracted shapes an overlapping pair that is
+ * separating is accepted: shape change after a collision produces exactly such states
+ * (see the overlap policy above), and a restart must read them back. *bad (may be NULL)
+ * gets the index. */
 int rc_sim_set_balls(rc_sim *s, size_t n, const rc_sim_ball *balls, size_t *bad);
+
+/* Bring every ball to the engine's time and plan all events afresh from that state alone
+ * (diagnostic counters are kept). Afterwards the run's future depends only on what
+ * rc_sim_get_ball returns, so a state written now and loaded into a new engine with
+ * rc_sim_set_time + rc_sim_set_balls continues bit for bit as this engine does (that is
+ * how relcol-sim makes its final state a restart point). Without sync, advancing in
+ * pieces gives the same bits as advancing in one go. */
+int rc_sim_sync(rc_sim *s);
 
 /* Process events in time order until the next one would be later than t_end (then all
  * balls are at t_end) or max_events events were processed (0 = no limit). */

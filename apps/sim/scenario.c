@@ -1,0 +1,626 @@
+/* scenario.c — scenario JSON in and out (schema in apps/sim/SCENARIO.md). Every value is
+ * checked where it is read, and an error names its JSON path: "balls[3].v: |v| = 1.2 >=
+ * c = 1", "restitution.wall: must be in [0, 1]", "outputs.snapshot: unknown key". */
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cjson/cJSON.h>
+
+#include "app.h"
+#include "scenario.h"
+
+/* ---- small checked readers ------------------------------------------------------- */
+
+typedef struct ctx {
+    const char *name;
+    char *err;
+} ctx;
+
+#if defined(__GNUC__)
+__attribute__((format(printf, 3, 4)))
+#endif
+static int bad(const ctx *c, const char *path, const char *fmt, ...)
+{
+    char msg[APP_ERR_LEN];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    app_errf(c->err, "%s: %s: %s", c->name, path, msg);
+    return -1;
+}
+
+/* Reject keys of obj not in the NULL-terminated list. */
+static int only_keys(const ctx *c, const cJSON *obj, const char *path, const char *const *keys)
+{
+    for (const cJSON *it = obj->child; it; it = it->next) {
+        int ok = 0;
+        for (size_t i = 0; keys[i]; i++)
+            ok |= strcmp(it->string, keys[i]) == 0;
+        if (!ok) {
+            char list[256] = "";
+            for (size_t i = 0; keys[i]; i++) {
+                strncat(list, keys[i], sizeof list - strlen(list) - 1);
+                if (keys[i + 1])
+                    strncat(list, ", ", sizeof list - strlen(list) - 1);
+            }
+            char p[256];
+            snprintf(p, sizeof p, "%s%s%s", path, *path ? "." : "", it->string);
+            return bad(c, p, "unknown key (expected one of: %s)", list);
+        }
+    }
+    return 0;
+}
+
+static void subpath(char *out, size_t n, const char *path, const char *key)
+{
+    snprintf(out, n, "%s%s%s", path, *path ? "." : "", key);
+}
+
+/* Number at obj[key]; missing: *out = def (or error if required). allow_inf accepts the
+ * string "inf". */
+static int get_num(const ctx *c, const cJSON *obj, const char *path, const char *key,
+                   int required, double def, int allow_inf, double *out)
+{
+    char p[256];
+    subpath(p, sizeof p, path, key);
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
+    if (!v) {
+        if (required)
+            return bad(c, p, "missing (required)");
+        *out = def;
+        return 0;
+    }
+    if (allow_inf && cJSON_IsString(v) && strcmp(v->valuestring, "inf") == 0) {
+        *out = INFINITY;
+        return 0;
+    }
+    if (!cJSON_IsNumber(v))
+        return bad(c, p, "must be a number%s", allow_inf ? " or \"inf\"" : "");
+    if (!isfinite(v->valuedouble))
+        return bad(c, p, "not a finite number");
+    *out = v->valuedouble;
+    return 0;
+}
+
+static int get_bool(const ctx *c, const cJSON *obj, const char *path, const char *key, int def,
+                    int *out)
+{
+    char p[256];
+    subpath(p, sizeof p, path, key);
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
+    if (!v) {
+        *out = def;
+        return 0;
+    }
+    if (!cJSON_IsBool(v))
+        return bad(c, p, "must be true or false");
+    *out = cJSON_IsTrue(v);
+    return 0;
+}
+
+static int get_str(const ctx *c, const cJSON *obj, const char *path, const char *key,
+                   const char *def, const char **out)
+{
+    char p[256];
+    subpath(p, sizeof p, path, key);
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
+    if (!v) {
+        *out = def;
+        return 0;
+    }
+    if (!cJSON_IsString(v))
+        return bad(c, p, "must be a string");
+    *out = v->valuestring;
+    return 0;
+}
+
+/* A vector of exactly dim finite numbers. */
+static int get_vec(const ctx *c, const cJSON *v, const char *p, int dim, rc_vec3 *out)
+{
+    if (!cJSON_IsArray(v))
+        return bad(c, p, "must be an array of %d numbers", dim);
+    int n = cJSON_GetArraySize(v);
+    if (n != dim)
+        return bad(c, p, "has %d components, the scenario is %d-D", n, dim);
+    *out = rc_v3(0, 0, 0);
+    int i = 0;
+    for (const cJSON *e = v->child; e; e = e->next, i++) {
+        if (!cJSON_IsNumber(e) || !isfinite(e->valuedouble))
+            return bad(c, p, "component %d is not a finite number", i);
+        rc_v3_set(out, i, e->valuedouble);
+    }
+    return 0;
+}
+
+/* ---- sections -------------------------------------------------------------------- */
+
+static int parse_balls(const ctx *c, const cJSON *arr, scn_scenario *s)
+{
+    static const char *const keys[] = {"r", "m", "x", "v", "p", "tau", "tau_last", NULL};
+    if (!cJSON_IsArray(arr))
+        return bad(c, "balls", "must be an array of ball objects");
+    s->n = (size_t)cJSON_GetArraySize(arr);
+    if (s->n == 0)
+        return bad(c, "balls", "is empty");
+    s->balls = calloc(s->n, sizeof *s->balls);
+    if (!s->balls)
+        return bad(c, "balls", "out of memory");
+    double k = isinf(s->c) ? 0.0 : 1.0 / (s->c * s->c);
+    size_t i = 0;
+    char p[64], q[80];
+    for (const cJSON *b = arr->child; b; b = b->next, i++) {
+        snprintf(p, sizeof p, "balls[%zu]", i);
+        if (!cJSON_IsObject(b))
+            return bad(c, p, "must be an object");
+        if (only_keys(c, b, p, keys))
+            return -1;
+        rc_sim_ball *o = &s->balls[i];
+        if (get_num(c, b, p, "r", 1, 0, 0, &o->r) || get_num(c, b, p, "m", 0, 0, 0, &o->m) ||
+            get_num(c, b, p, "tau", 0, 0, 0, &o->tau))
+            return -1;
+        /* TC-model memory: the proper time of the ball's last collision, if any */
+        o->collided = cJSON_GetObjectItemCaseSensitive(b, "tau_last") != NULL;
+        if (get_num(c, b, p, "tau_last", 0, 0, 0, &o->tau_last))
+            return -1;
+        if (!(o->r > 0)) {
+            snprintf(q, sizeof q, "%s.r", p);
+            return bad(c, q, "radius must be > 0");
+        }
+        const cJSON *jm = cJSON_GetObjectItemCaseSensitive(b, "m");
+        if (jm && !(o->m > 0)) {
+            snprintf(q, sizeof q, "%s.m", p);
+            return bad(c, q, "rest mass must be > 0");
+        }
+        if (!jm)
+            o->m = o->r * o->r * o->r; /* equal density (DESIGN.md: m proportional to r^3) */
+        const cJSON *jx = cJSON_GetObjectItemCaseSensitive(b, "x");
+        snprintf(q, sizeof q, "%s.x", p);
+        if (!jx)
+            return bad(c, q, "missing (required)");
+        if (get_vec(c, jx, q, s->dim, &o->x))
+            return -1;
+        /* the centre in the box here; whether the whole (possibly contracted) shape is
+         * inside is the engine's check, in the contact frame's geometry */
+        for (int d = 0; d < s->dim; d++) {
+            double xd = rc_v3_get(o->x, d), L = rc_v3_get(s->box, d);
+            if (!(xd > 0 && xd < L))
+                return bad(c, q, "the centre is not inside the box along axis %d: %.17g not "
+                                 "in (0, %g)", d, xd, L);
+        }
+        const cJSON *jv = cJSON_GetObjectItemCaseSensitive(b, "v");
+        const cJSON *jp = cJSON_GetObjectItemCaseSensitive(b, "p");
+        if (jv && jp)
+            return bad(c, p, "give either v or p, not both");
+        if (!jv && !jp) {
+            o->p = rc_v3(0, 0, 0);
+        } else if (jp) {
+            snprintf(q, sizeof q, "%s.p", p);
+            if (get_vec(c, jp, q, s->dim, &o->p))
+                return -1;
+        } else {
+            snprintf(q, sizeof q, "%s.v", p);
+            rc_vec3 v;
+            if (get_vec(c, jv, q, s->dim, &v))
+                return -1;
+            if (rc_momentum_from_velocity(o->m, v, k, &o->p) != RC_OK)
+                return bad(c, q, "|v| = %.17g >= c = %g", rc_v3_norm(v), s->c);
+        }
+    }
+    return 0;
+}
+
+static int parse_generate(const ctx *c, const cJSON *g, const cJSON *jbox, scn_scenario *s)
+{
+    if (!cJSON_IsObject(g))
+        return bad(c, "generate", "must be an object");
+    const char *kind;
+    if (get_str(c, g, "generate", "kind", NULL, &kind))
+        return -1;
+    if (!kind)
+        return bad(c, "generate.kind", "missing (required: \"rack\" or \"gas\")");
+    if (strcmp(kind, "gas") == 0) {
+        static const char *const keys[] = {"kind", "n", "radius", "packing", "v_rms", "density", NULL};
+        if (only_keys(c, g, "generate", keys))
+            return -1;
+        if (jbox)
+            return bad(c, "box", "must not be given with generate.kind = gas (the box follows "
+                                 "from n and packing)");
+        double n, radius, packing, v_rms, density;
+        if (get_num(c, g, "generate", "n", 1, 0, 0, &n) ||
+            get_num(c, g, "generate", "radius", 0, 1.0, 0, &radius) ||
+            get_num(c, g, "generate", "packing", 1, 0, 0, &packing) ||
+            get_num(c, g, "generate", "v_rms", 1, 0, 0, &v_rms) ||
+            get_num(c, g, "generate", "density", 0, 1.0, 0, &density))
+            return -1;
+        if (!(n >= 1 && n <= 1e8 && n == floor(n)))
+            return bad(c, "generate.n", "must be a whole number in [1, 1e8]");
+        if (!(radius > 0))
+            return bad(c, "generate.radius", "must be > 0");
+        double pmax = s->dim == 2 ? 0.7 : 0.45;
+        if (!(packing > 0 && packing <= pmax))
+            return bad(c, "generate.packing", "must be in (0, %g] in %d-D", pmax, s->dim);
+        if (!(v_rms >= 0 && v_rms < s->c))
+            return bad(c, "generate.v_rms", "must be in [0, c) (c = %g)", s->c);
+        if (!(density > 0))
+            return bad(c, "generate.density", "must be > 0");
+        rc_sim_gas_def gd = {s->dim, (size_t)n, radius, packing, v_rms, s->c, density, s->seed};
+        s->n = (size_t)n;
+        s->balls = calloc(s->n, sizeof *s->balls);
+        if (!s->balls)
+            return bad(c, "generate.n", "out of memory for %zu balls", s->n);
+        int st = rc_sim_gas_init(&gd, &s->box, s->balls);
+        if (st != RC_OK)
+            return bad(c, "generate", "cannot make the gas: %s", rc_strerror(st));
+        snprintf(s->generator, sizeof s->generator, "gas");
+        return 0;
+    }
+    if (strcmp(kind, "rack") == 0) {
+        static const char *const keys[] = {"kind", "radius", "speed", "aim", "gap", NULL};
+        if (only_keys(c, g, "generate", keys))
+            return -1;
+        if (s->dim != 2)
+            return bad(c, "dim", "generate.kind = rack is a 2-D table");
+        double r, speed, aim, gap;
+        if (get_num(c, g, "generate", "radius", 0, 0.028575, 0, &r) ||
+            get_num(c, g, "generate", "speed", 0, 5.0, 0, &speed) ||
+            get_num(c, g, "generate", "aim", 0, 0.0, 0, &aim) ||
+            get_num(c, g, "generate", "gap", 0, 1e-6, 0, &gap))
+            return -1;
+        if (!(r > 0))
+            return bad(c, "generate.radius", "must be > 0");
+        if (!(speed >= 0 && speed < s->c))
+            return bad(c, "generate.speed", "must be in [0, c) (c = %g)", s->c);
+        if (!(gap >= 0))
+            return bad(c, "generate.gap", "must be >= 0");
+        double L = s->box.x, W = s->box.y;
+        double pitch = 2 * r * (1 + gap); /* centre spacing; gap in radii avoids touching */
+        double x0 = 0.75 * L, y0 = 0.5 * W;
+        if (x0 + 4 * pitch * sqrt(3) / 2 + r > L || 5 * pitch > W || 0.25 * L - r < 0)
+            return bad(c, "box", "too small for a rack of balls of radius %g", r);
+        s->n = 16;
+        s->balls = calloc(s->n, sizeof *s->balls);
+        if (!s->balls)
+            return bad(c, "generate", "out of memory");
+        double k = isinf(s->c) ? 0.0 : 1.0 / (s->c * s->c);
+        rc_sim_ball *b = s->balls;
+        b[0].r = r;
+        b[0].m = r * r * r;
+        b[0].x = rc_v3(0.25 * L, y0, 0);
+        rc_vec3 v = rc_v3(speed * cos(aim), speed * sin(aim), 0);
+        if (rc_momentum_from_velocity(b[0].m, v, k, &b[0].p) != RC_OK)
+            return bad(c, "generate.speed", "speed >= c");
+        size_t i = 1;
+        for (int row = 0; row < 5; row++)
+            for (int j = 0; j <= row; j++, i++) {
+                b[i].r = r;
+                b[i].m = r * r * r;
+                b[i].x = rc_v3(x0 + row * pitch * sqrt(3) / 2, y0 + (j - row / 2.0) * pitch, 0);
+            }
+        snprintf(s->generator, sizeof s->generator, "rack");
+        return 0;
+    }
+    return bad(c, "generate.kind", "unknown generator '%s' (expected rack or gas)", kind);
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static int parse_outputs(const ctx *c, const cJSON *o, scn_scenario *s)
+{
+    static const char *const keys[] = {"dir", "snapshots", "xyz_every", "plots", "gif",
+                                       "summary", NULL};
+    scn_outputs *out = &s->out;
+    out->plots = 1;
+    out->gif = s->dim == 2;
+    out->summary = 1;
+    const char *dir = "out/sim";
+    if (o) {
+        if (!cJSON_IsObject(o))
+            return bad(c, "outputs", "must be an object");
+        if (only_keys(c, o, "outputs", keys))
+            return -1;
+        if (get_str(c, o, "outputs", "dir", dir, &dir) ||
+            get_num(c, o, "outputs", "xyz_every", 0, 0, 0, &out->xyz_every) ||
+            get_bool(c, o, "outputs", "plots", 1, &out->plots) ||
+            get_bool(c, o, "outputs", "gif", s->dim == 2, &out->gif) ||
+            get_bool(c, o, "outputs", "summary", 1, &out->summary))
+            return -1;
+        if (!*dir)
+            return bad(c, "outputs.dir", "is empty");
+        if (out->xyz_every < 0)
+            return bad(c, "outputs.xyz_every", "must be >= 0 (0: no trajectory)");
+        if (out->gif && s->dim != 2)
+            return bad(c, "outputs.gif", "the animated table is for 2-D runs");
+        const cJSON *sn = cJSON_GetObjectItemCaseSensitive(o, "snapshots");
+        if (sn && cJSON_IsArray(sn)) {
+            int i = 0;
+            for (const cJSON *e = sn->child; e; e = e->next, i++) {
+                char p[64];
+                snprintf(p, sizeof p, "outputs.snapshots[%d]", i);
+                if (i >= SCN_MAX_SNAPSHOTS)
+                    return bad(c, p, "more than %d snapshots", SCN_MAX_SNAPSHOTS);
+                if (!cJSON_IsNumber(e) || !isfinite(e->valuedouble))
+                    return bad(c, p, "must be a finite number");
+                if (e->valuedouble < s->time || e->valuedouble > s->t_end)
+                    return bad(c, p, "time %g is outside the run [%g, %g]", e->valuedouble,
+                               s->time, s->t_end);
+                out->snap[out->n_snap++] = e->valuedouble;
+            }
+            qsort(out->snap, out->n_snap, sizeof out->snap[0], cmp_double);
+        } else if (sn && cJSON_IsObject(sn)) {
+            static const char *const ek[] = {"every", NULL};
+            if (only_keys(c, sn, "outputs.snapshots", ek))
+                return -1;
+            double every;
+            if (get_num(c, sn, "outputs.snapshots", "every", 1, 0, 0, &every))
+                return -1;
+            if (!(every > 0))
+                return bad(c, "outputs.snapshots.every", "must be > 0");
+            double span = s->t_end - s->time;
+            if (span / every > SCN_MAX_SNAPSHOTS)
+                return bad(c, "outputs.snapshots.every", "gives more than %d snapshots",
+                           SCN_MAX_SNAPSHOTS);
+            for (size_t k = 1; s->time + every * (double)k <= s->t_end * (1 + 1e-15); k++)
+                out->snap[out->n_snap++] = fmin(s->time + every * (double)k, s->t_end);
+        } else if (sn) {
+            return bad(c, "outputs.snapshots", "must be an array of times or {\"every\": dt}");
+        }
+    }
+    out->dir = strdup(dir);
+    return out->dir ? 0 : bad(c, "outputs.dir", "out of memory");
+}
+
+int scn_parse(const char *text, const char *name, scn_scenario *s, char *err)
+{
+    static const char *const keys[] = {"relcol", "dim", "box", "c", "law", "restitution",
+                                       "contact_frame", "tc", "seed", "time", "t_end",
+                                       "balls", "generate", "outputs", NULL};
+    memset(s, 0, sizeof *s);
+    ctx c = {name, err};
+    cJSON *root = cJSON_Parse(text);
+    int rc = -1;
+    if (!root) {
+        const char *where = cJSON_GetErrorPtr();
+        long line = 1;
+        for (const char *p = text; where && p < where; p++)
+            line += *p == '\n';
+        bad(&c, "(document)", "malformed JSON near line %ld", line);
+        goto done;
+    }
+    if (!cJSON_IsObject(root)) {
+        bad(&c, "(document)", "must be a JSON object");
+        goto done;
+    }
+    if (only_keys(&c, root, "", keys))
+        goto done;
+    double ver, dim, eps_b = 1, eps_w = 1, seed;
+    if (get_num(&c, root, "", "relcol", 0, 1, 0, &ver) || get_num(&c, root, "", "dim", 1, 0, 0, &dim))
+        goto done;
+    if (ver != 1) {
+        bad(&c, "relcol", "unsupported scenario format version %g (this relcol reads 1)", ver);
+        goto done;
+    }
+    if (dim != 2 && dim != 3) {
+        bad(&c, "dim", "must be 2 or 3");
+        goto done;
+    }
+    s->dim = (int)dim;
+    if (get_num(&c, root, "", "c", 0, INFINITY, 1, &s->c))
+        goto done;
+    if (!(s->c > 0)) {
+        bad(&c, "c", "must be > 0 (or \"inf\")");
+        goto done;
+    }
+    const char *law;
+    if (get_str(&c, root, "", "law", "zmf", &law))
+        goto done;
+    if (!(s->law = rc_law_find(law))) {
+        bad(&c, "law", "unknown collision law '%s'", law);
+        goto done;
+    }
+    const cJSON *rest = cJSON_GetObjectItemCaseSensitive(root, "restitution");
+    if (rest) {
+        static const char *const rk[] = {"ball", "wall", NULL};
+        if (!cJSON_IsObject(rest)) {
+            bad(&c, "restitution", "must be an object {\"ball\": e, \"wall\": e}");
+            goto done;
+        }
+        if (only_keys(&c, rest, "restitution", rk) ||
+            get_num(&c, rest, "restitution", "ball", 0, 1, 0, &eps_b) ||
+            get_num(&c, rest, "restitution", "wall", 0, 1, 0, &eps_w))
+            goto done;
+        if (!(eps_b >= 0 && eps_b <= 1)) {
+            bad(&c, "restitution.ball", "must be in [0, 1]");
+            goto done;
+        }
+        if (!(eps_w >= 0 && eps_w <= 1)) {
+            bad(&c, "restitution.wall", "must be in [0, 1]");
+            goto done;
+        }
+    }
+    s->eps_ball = eps_b;
+    s->eps_wall = eps_w;
+    const char *frame;
+    if (get_str(&c, root, "", "contact_frame", "table", &frame))
+        goto done;
+    if (strcmp(frame, "sphere") && strcmp(frame, "table") && strcmp(frame, "zmf")) {
+        bad(&c, "contact_frame", "unknown frame '%s' (expected table, zmf or sphere)", frame);
+        goto done;
+    }
+    snprintf(s->frame, sizeof s->frame, "%s", frame);
+    if (get_num(&c, root, "", "tc", 0, 0, 0, &s->t_c) || get_num(&c, root, "", "seed", 0, 1, 0, &seed) ||
+        get_num(&c, root, "", "time", 0, 0, 0, &s->time) ||
+        get_num(&c, root, "", "t_end", 1, 0, 0, &s->t_end))
+        goto done;
+    if (s->t_c < 0) {
+        bad(&c, "tc", "must be >= 0 (0: no collapse protection)");
+        goto done;
+    }
+    if (!(seed >= 0 && seed <= 9007199254740992.0 && seed == floor(seed))) {
+        bad(&c, "seed", "must be a whole number in [0, 2^53]");
+        goto done;
+    }
+    s->seed = (uint64_t)seed;
+    if (!(s->t_end > s->time)) {
+        bad(&c, "t_end", "must be later than the start time %g", s->time);
+        goto done;
+    }
+    const cJSON *jbox = cJSON_GetObjectItemCaseSensitive(root, "box");
+    const cJSON *jballs = cJSON_GetObjectItemCaseSensitive(root, "balls");
+    const cJSON *jgen = cJSON_GetObjectItemCaseSensitive(root, "generate");
+    if (jballs && jgen) {
+        bad(&c, "generate", "give either balls or generate, not both");
+        goto done;
+    }
+    if (!jballs && !jgen) {
+        bad(&c, "balls", "missing: give balls (a list) or generate (rack or gas)");
+        goto done;
+    }
+    int gas = jgen && cJSON_IsObject(jgen) &&
+              cJSON_IsString(cJSON_GetObjectItemCaseSensitive(jgen, "kind")) &&
+              strcmp(cJSON_GetObjectItemCaseSensitive(jgen, "kind")->valuestring, "gas") == 0;
+    if (!gas) {
+        if (!jbox) {
+            bad(&c, "box", "missing (required: %d edge lengths)", s->dim);
+            goto done;
+        }
+        if (get_vec(&c, jbox, "box", s->dim, &s->box))
+            goto done;
+        for (int d = 0; d < s->dim; d++)
+            if (!(rc_v3_get(s->box, d) > 0)) {
+                bad(&c, "box", "edge %d must be > 0", d);
+                goto done;
+            }
+    }
+    if (jballs ? parse_balls(&c, jballs, s) : parse_generate(&c, jgen, jbox, s))
+        goto done;
+    if (parse_outputs(&c, cJSON_GetObjectItemCaseSensitive(root, "outputs"), s))
+        goto done;
+    rc = 0;
+done:
+    cJSON_Delete(root);
+    if (rc)
+        scn_free(s);
+    return rc;
+}
+
+int scn_load(const char *path, scn_scenario *s, char *err)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        app_errf(err, "%s: cannot open: %s", path, strerror(errno));
+        return -1;
+    }
+    size_t cap = 1 << 16, n = 0;
+    char *buf = malloc(cap);
+    for (;;) {
+        if (!buf) {
+            fclose(f);
+            app_errf(err, "%s: out of memory", path);
+            return -1;
+        }
+        n += fread(buf + n, 1, cap - n - 1, f);
+        if (n < cap - 1)
+            break;
+        cap *= 2;
+        char *nb = realloc(buf, cap);
+        if (!nb)
+            free(buf);
+        buf = nb;
+    }
+    int rerr = ferror(f);
+    fclose(f);
+    if (rerr) {
+        free(buf);
+        app_errf(err, "%s: read error", path);
+        return -1;
+    }
+    buf[n] = '\0';
+    if (strlen(buf) != n) {
+        free(buf);
+        app_errf(err, "%s: (document): contains a NUL byte: not a JSON text file", path);
+        return -1;
+    }
+    int rc = scn_parse(buf, path, s, err);
+    free(buf);
+    return rc;
+}
+
+int scn_builtin(const char *name, scn_scenario *s, char *err)
+{
+    /* Keep these identical to data/scenarios/{rack,gas}.json (a test compares them). */
+    static const char rack[] =
+        "{\"relcol\": 1, \"dim\": 2, \"box\": [2.54, 1.27], \"c\": \"inf\",\n"
+        " \"restitution\": {\"ball\": 0.95, \"wall\": 0.8}, \"contact_frame\": \"table\",\n"
+        " \"seed\": 1, \"t_end\": 4,\n"
+        " \"generate\": {\"kind\": \"rack\", \"radius\": 0.028575, \"speed\": 5, \"aim\": 0.002},\n"
+        " \"outputs\": {\"dir\": \"out/rack\", \"snapshots\": {\"every\": 1}, \"xyz_every\": 0.02}}\n";
+    static const char gas[] =
+        "{\"relcol\": 1, \"dim\": 2, \"c\": 1, \"restitution\": {\"ball\": 1, \"wall\": 1},\n"
+        " \"contact_frame\": \"table\", \"seed\": 1, \"t_end\": 200,\n"
+        " \"generate\": {\"kind\": \"gas\", \"n\": 400, \"radius\": 1, \"packing\": 0.2,\n"
+        "              \"v_rms\": 0.5},\n"
+        " \"outputs\": {\"dir\": \"out/gas\", \"snapshots\": {\"every\": 50}, \"xyz_every\": 1}}\n";
+    if (strcmp(name, "rack") == 0)
+        return scn_parse(rack, "builtin rack", s, err);
+    if (strcmp(name, "gas") == 0)
+        return scn_parse(gas, "builtin gas", s, err);
+    app_errf(err, "unknown built-in scenario '%s' (expected rack or gas)", name);
+    return -1;
+}
+
+void scn_free(scn_scenario *s)
+{
+    free(s->balls);
+    free(s->out.dir);
+    memset(s, 0, sizeof *s);
+}
+
+static void put_vec(FILE *f, rc_vec3 v, int dim)
+{
+    fputc('[', f);
+    for (int d = 0; d < dim; d++)
+        fprintf(f, "%s%.17g", d ? ", " : "", rc_v3_get(v, d));
+    fputc(']', f);
+}
+
+int scn_write(FILE *f, const scn_scenario *s, double t, double t_end, size_t n,
+              const rc_sim_ball *balls)
+{
+    fprintf(f, "{\"relcol\": 1, \"dim\": %d, \"box\": ", s->dim);
+    put_vec(f, s->box, s->dim);
+    if (isinf(s->c))
+        fprintf(f, ",\n \"c\": \"inf\"");
+    else
+        fprintf(f, ",\n \"c\": %.17g", s->c);
+    fprintf(f, ", \"law\": \"%s\", \"restitution\": {\"ball\": %.17g, \"wall\": %.17g},\n",
+            s->law->name, s->eps_ball, s->eps_wall);
+    fprintf(f, " \"contact_frame\": \"%s\", \"tc\": %.17g, \"seed\": %llu,\n", s->frame, s->t_c,
+            (unsigned long long)s->seed);
+    fprintf(f, " \"time\": %.17g, \"t_end\": %.17g,\n", t, t_end);
+    fprintf(f, " \"outputs\": {\"dir\": \"%s\", \"xyz_every\": %.17g, \"plots\": %s, \"gif\": %s},\n",
+            s->out.dir, s->out.xyz_every, s->out.plots ? "true" : "false",
+            s->out.gif ? "true" : "false");
+    fprintf(f, " \"balls\": [\n");
+    for (size_t i = 0; i < n; i++) {
+        fprintf(f, "  {\"r\": %.17g, \"m\": %.17g, \"tau\": %.17g, ", balls[i].r, balls[i].m,
+                balls[i].tau);
+        if (balls[i].collided)
+            fprintf(f, "\"tau_last\": %.17g, ", balls[i].tau_last);
+        fprintf(f, "\"x\": ");
+        put_vec(f, balls[i].x, s->dim);
+        fprintf(f, ", \"p\": ");
+        put_vec(f, balls[i].p, s->dim);
+        fprintf(f, "}%s\n", i + 1 < n ? "," : "");
+    }
+    fprintf(f, " ]}\n");
+    return ferror(f) ? -1 : 0;
+}

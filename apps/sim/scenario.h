@@ -1,0 +1,58 @@
+/* scenario.h — relcol-sim's scenario files (JSON): what a run is — box, balls or a
+ * generator, c, restitutions, law, contact frame, seed, end time, outputs — read with
+ * every malformed or impossible value rejected by its JSON path and the reason, and
+ * written back (a run's final state is itself a scenario). Schema: apps/sim/SCENARIO.md. */
+#ifndef RELCOL_SIM_SCENARIO_H
+#define RELCOL_SIM_SCENARIO_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "relcol/relcol.h"
+
+#define SCN_MAX_SNAPSHOTS 4096
+
+typedef struct scn_outputs {
+    char *dir;                 /* output folder */
+    size_t n_snap;             /* snapshot times (CSV), ascending */
+    double snap[SCN_MAX_SNAPSHOTS];
+    double xyz_every;          /* extended-XYZ frame interval; 0 = no trajectory */
+    int plots;                 /* trajectory PNG (and GIF for 2-D) when gnuplot exists */
+    int gif;                   /* animated GIF for 2-D runs */
+    int summary;               /* summary.txt */
+} scn_outputs;
+
+typedef struct scn_scenario {
+    int dim;                   /* 2 or 3 */
+    rc_vec3 box;               /* edge lengths */
+    double c;                  /* INFINITY classical */
+    const rc_law *law;
+    double eps_ball, eps_wall;
+    char frame[16];            /* contact frame: sphere | table | zmf */
+    double t_c;                /* TC model, proper time; 0 off */
+    uint64_t seed;
+    double time;               /* start time (a restart carries the time it stopped at) */
+    double t_end;
+    size_t n;                  /* balls */
+    rc_sim_ball *balls;        /* n balls (momentum, rest mass resolved) */
+    char generator[16];        /* "" (explicit balls), "rack" or "gas": how balls were made */
+    scn_outputs out;
+} scn_scenario;
+
+/* Parse JSON text (name is used in messages). On failure returns -1 with
+ * "NAME: PATH: reason" in err (APP_ERR_LEN) and leaves *s empty. */
+int scn_parse(const char *text, const char *name, scn_scenario *s, char *err);
+/* Read and parse a file. */
+int scn_load(const char *path, scn_scenario *s, char *err);
+/* A built-in scenario: "rack" or "gas" with its defaults (the same as the files in
+ * data/scenarios/). */
+int scn_builtin(const char *name, scn_scenario *s, char *err);
+void scn_free(scn_scenario *s);
+
+/* Write s with the given balls at time t, to be run until t_end, as a scenario to f,
+ * numbers in %.17g so that reading it back gives the same bits. */
+int scn_write(FILE *f, const scn_scenario *s, double t, double t_end, size_t n,
+              const rc_sim_ball *balls);
+
+#endif

@@ -1,0 +1,380 @@
+/* simout.c — relcol-sim's files. Snapshots (CSV), the extended-XYZ trajectory and the
+ * figure data are streamed into temporary files and renamed into place when complete;
+ * final.json and summary.txt are written whole at the end (or at Ctrl-C). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "simout.h"
+
+static const char *const axes = "xyz";
+
+int simout_open(sim_output *o, const scn_scenario *s, const char *prog, char *err)
+{
+    memset(o, 0, sizeof *o);
+    o->s = s;
+    o->prog = prog;
+    o->next_frame = s->out.xyz_every > 0 ? s->time : INFINITY;
+    if (app_mkdir_p(s->out.dir, err))
+        return -1;
+    if (s->out.n_snap) {
+        char *d = app_path_join(s->out.dir, "snapshots");
+        int r = d ? app_mkdir_p(d, err) : -1;
+        free(d);
+        if (r)
+            return -1;
+    }
+    if (s->out.xyz_every > 0) {
+        char *p = app_path_join(s->out.dir, "trajectory.xyz");
+        char *q = app_path_join(s->out.dir, "frames.dat");
+        int r = (!p || !q) ? -1 : app_atomic_open(&o->xyz, p, err);
+        if (!r) {
+            r = app_atomic_open(&o->frames, q, err);
+            if (r)
+                app_atomic_abort(&o->xyz);
+        }
+        free(p);
+        free(q);
+        if (r)
+            return -1;
+        o->have_xyz = 1;
+        double nframes = (s->t_end - s->time) / s->out.xyz_every + 1;
+        o->gif_stride = nframes > 300 ? (size_t)ceil(nframes / 300) : 1;
+    }
+    return 0;
+}
+
+double simout_next_time(const sim_output *o, double t)
+{
+    double next = o->s->t_end;
+    if (o->next_snap < o->s->out.n_snap)
+        next = fmin(next, o->s->out.snap[o->next_snap]);
+    next = fmin(next, o->next_frame);
+    return next > t ? next : fmin(o->s->t_end, nextafter(t, INFINITY));
+}
+
+static int write_snapshot(const sim_output *o, const rc_sim *sim, size_t k, char *err)
+{
+    const scn_scenario *s = o->s;
+    char name[64];
+    snprintf(name, sizeof name, "snapshots/snap-%04zu.csv", k);
+    char *path = app_path_join(s->out.dir, name);
+    app_atomic a;
+    if (!path || app_atomic_open(&a, path, err)) {
+        free(path);
+        return -1;
+    }
+    free(path);
+    double k2 = isinf(s->c) ? 0.0 : 1.0 / (s->c * s->c);
+    fprintf(a.f, "# relcol-sim snapshot at t = %.17g\nball,t", rc_sim_time(sim));
+    for (int d = 0; d < s->dim; d++)
+        fprintf(a.f, ",%c", axes[d]);
+    for (int d = 0; d < s->dim; d++)
+        fprintf(a.f, ",p%c", axes[d]);
+    for (int d = 0; d < s->dim; d++)
+        fprintf(a.f, ",v%c", axes[d]);
+    fprintf(a.f, ",m,r,tau,gamma\n");
+    size_t n = rc_sim_count(sim);
+    for (size_t i = 0; i < n; i++) {
+        rc_sim_ball b;
+        rc_sim_get_ball(sim, i, &b);
+        rc_vec3 v = rc_velocity(b.m, b.p, k2);
+        fprintf(a.f, "%zu,%.17g", i, rc_sim_time(sim));
+        for (int d = 0; d < s->dim; d++)
+            fprintf(a.f, ",%.17g", rc_v3_get(b.x, d));
+        for (int d = 0; d < s->dim; d++)
+            fprintf(a.f, ",%.17g", rc_v3_get(b.p, d));
+        for (int d = 0; d < s->dim; d++)
+            fprintf(a.f, ",%.17g", rc_v3_get(v, d));
+        fprintf(a.f, ",%.17g,%.17g,%.17g,%.17g\n", b.m, b.r, b.tau, rc_gamma(b.m, b.p, k2));
+    }
+    return app_atomic_commit(&a, err);
+}
+
+static void write_frame(sim_output *o, const rc_sim *sim)
+{
+    const scn_scenario *s = o->s;
+    size_t n = rc_sim_count(sim);
+    double k2 = isinf(s->c) ? 0.0 : 1.0 / (s->c * s->c);
+    double Lz = s->dim == 3 ? s->box.z : 0.0;
+    fprintf(o->xyz.f, "%zu\nLattice=\"%.17g 0 0 0 %.17g 0 0 0 %.17g\" Origin=\"0 0 0\" "
+                      "Properties=species:S:1:pos:R:3:velo:R:3:radius:R:1:mass:R:1:gamma:R:1 "
+                      "Time=%.17g pbc=\"F F F\"\n",
+            n, s->box.x, s->box.y, Lz, rc_sim_time(sim));
+    int in_gif = o->frame_no % o->gif_stride == 0;
+    for (size_t i = 0; i < n; i++) {
+        rc_sim_ball b;
+        rc_sim_get_ball(sim, i, &b);
+        rc_vec3 v = rc_velocity(b.m, b.p, k2);
+        fprintf(o->xyz.f, "B %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g\n", b.x.x, b.x.y,
+                b.x.z, v.x, v.y, v.z, b.r, b.m, rc_gamma(b.m, b.p, k2));
+        /* figure data: ball, x, y, radius, contracted semi-axis along v, angle of v */
+        if (in_gif) {
+            double g = rc_gamma(b.m, b.p, k2);
+            fprintf(o->frames.f, "%zu %.8g %.8g %.8g %.8g %.8g\n", i, b.x.x, b.x.y, b.r, b.r / g,
+                    atan2(v.y, v.x) * 180 / M_PI);
+        }
+    }
+    if (in_gif) {
+        fprintf(o->frames.f, "\n\n");
+        o->gif_frames++;
+    }
+    o->frame_no++;
+}
+
+int simout_at(sim_output *o, const rc_sim *sim, char *err)
+{
+    double t = rc_sim_time(sim);
+    const scn_scenario *s = o->s;
+    if (!o->have_d0) {
+        rc_sim_diagnostics(sim, &o->d0);
+        o->have_d0 = 1;
+    }
+    while (o->next_snap < s->out.n_snap && s->out.snap[o->next_snap] <= t) {
+        if (write_snapshot(o, sim, o->next_snap, err))
+            return -1;
+        o->next_snap++;
+    }
+    if (o->have_xyz && o->next_frame <= t) {
+        write_frame(o, sim);
+        o->next_frame = s->time + s->out.xyz_every * (double)o->frame_no;
+        if (o->next_frame > s->t_end)
+            o->next_frame = INFINITY;
+    }
+    return 0;
+}
+
+static int write_final(const sim_output *o, const rc_sim *sim, int interrupted, char *err)
+{
+    const scn_scenario *s = o->s;
+    size_t n = rc_sim_count(sim);
+    rc_sim_ball *b = malloc((n ? n : 1) * sizeof *b);
+    char *path = app_path_join(s->out.dir, "final.json");
+    app_atomic a;
+    int r = -1;
+    if (!b || !path) {
+        app_errf(err, "out of memory");
+        goto done;
+    }
+    for (size_t i = 0; i < n; i++)
+        rc_sim_get_ball(sim, i, &b[i]);
+    if (app_atomic_open(&a, path, err))
+        goto done;
+    double t = rc_sim_time(sim);
+    /* interrupted: continue to the same end; finished: continue for as long again */
+    double t_end = interrupted ? s->t_end : t + (s->t_end - s->time);
+    if (scn_write(a.f, s, t, t_end, n, b)) {
+        app_atomic_abort(&a);
+        app_errf(err, "cannot write %s", path);
+        goto done;
+    }
+    r = app_atomic_commit(&a, err);
+done:
+    free(b);
+    free(path);
+    return r;
+}
+
+static int write_summary(sim_output *o, const rc_sim *sim, double wall, int interrupted,
+                         char *err)
+{
+    const scn_scenario *s = o->s;
+    rc_sim_diag d;
+    rc_sim_diagnostics(sim, &d);
+    const rc_sim_diag *d0 = &o->d0;
+    double dE = (d.energy - d0->energy) / d0->energy;
+    rc_vec3 dP = rc_v3_sub(rc_v3_add(d.momentum, d.wall_impulse),
+                           rc_v3_add(d0->momentum, d0->wall_impulse));
+    double pscale = fmax(d.momentum_scale, d0->momentum_scale);
+    double dPrel = pscale > 0 ? rc_v3_norm(dP) / pscale : 0.0;
+    size_t n = rc_sim_count(sim);
+    double tau_min = INFINITY, tau_max = -INFINITY, tau_sum = 0;
+    for (size_t i = 0; i < n; i++) {
+        rc_sim_ball b;
+        rc_sim_get_ball(sim, i, &b);
+        tau_min = fmin(tau_min, b.tau);
+        tau_max = fmax(tau_max, b.tau);
+        tau_sum += b.tau;
+    }
+    uint64_t coll = d.collisions - d0->collisions;
+    snprintf(o->line, sizeof o->line, "%llu collisions, energy error %.2g, momentum error %.2g%s",
+             (unsigned long long)coll, dE, dPrel, interrupted ? " (interrupted)" : "");
+    if (!s->out.summary)
+        return 0;
+    char *path = app_path_join(s->out.dir, "summary.txt");
+    app_atomic a;
+    if (!path || app_atomic_open(&a, path, err)) {
+        free(path);
+        return -1;
+    }
+    free(path);
+    FILE *f = a.f;
+    fprintf(f, "relcol-sim summary%s\n", interrupted ? " (interrupted: final.json continues the run)" : "");
+    fprintf(f, "balls            %zu (%d-D, box", n, s->dim);
+    for (int k = 0; k < s->dim; k++)
+        fprintf(f, " %g", rc_v3_get(s->box, k));
+    fprintf(f, ")%s%s\n", *s->generator ? ", generated: " : "", s->generator);
+    if (isinf(s->c))
+        fprintf(f, "c                inf (classical)\n");
+    else
+        fprintf(f, "c                %.17g\n", s->c);
+    fprintf(f, "law              %s, restitution ball %g wall %g, contact frame %s, t_c %g\n",
+            s->law->name, s->eps_ball, s->eps_wall, s->frame, s->t_c);
+    fprintf(f, "time             %.17g -> %.17g\n", s->time, rc_sim_time(sim));
+    fprintf(f, "collisions       %llu (largest simultaneous group %zu)\n", (unsigned long long)coll,
+            d.max_group);
+    static const char *const kinds[RC_SIM_EV_NKINDS] = {"ball", "wall", "multi", "cell", "stale", "tc"};
+    fprintf(f, "events           ");
+    for (int k = 0; k < RC_SIM_EV_NKINDS; k++)
+        fprintf(f, "%s %llu%s", kinds[k], (unsigned long long)(d.events[k] - d0->events[k]),
+                k + 1 < RC_SIM_EV_NKINDS ? ", " : "\n");
+    fprintf(f, "energy           kinetic + heat %.17g, relative change %.3g\n", d.energy, dE);
+    fprintf(f, "kinetic energy   %.17g (heat made so far %.17g)\n", d.kinetic, d.heat);
+    if (!isinf(s->c))
+        fprintf(f, "sum E/c^2        %.17g (start %.17g)\n", d.mass_rel, d0->mass_rel);
+    fprintf(f, "rest mass        %.17g (start %.17g)\n", d.rest_mass, d0->rest_mass);
+    fprintf(f, "momentum         balls + walls, relative change %.3g (wall impulse %.9g %.9g %.9g)\n",
+            dPrel, d.wall_impulse.x, d.wall_impulse.y, d.wall_impulse.z);
+    if (isnan(d.max_overlap))
+        fprintf(f, "overlaps         %llu found (contracted shapes: bounding spheres may overlap)\n",
+                (unsigned long long)d.overlaps);
+    else
+        fprintf(f, "overlaps         %llu found (deepest now %.3g of ri + rj)\n",
+                (unsigned long long)d.overlaps, d.max_overlap);
+    fprintf(f, "proper time      min %.9g, mean %.9g, max %.9g\n", tau_min, tau_sum / (double)n, tau_max);
+    fprintf(f, "wall clock       %.3f s, %.4g collisions/s\n", wall, wall > 0 ? (double)coll / wall : 0.0);
+    return app_atomic_commit(&a, err);
+}
+
+/* paths.dat: frames.dat regrouped by ball (one block per ball), for the trajectory lines. */
+static int write_paths(const sim_output *o, char *err)
+{
+    const scn_scenario *s = o->s;
+    size_t n = o->n_balls, nf = o->gif_frames;
+    char *fp = app_path_join(s->out.dir, "frames.dat"), *pp = app_path_join(s->out.dir, "paths.dat");
+    double *xy = (n && nf && n * nf < 50000000) ? malloc(2 * n * nf * sizeof *xy) : NULL;
+    FILE *in = fp ? fopen(fp, "r") : NULL;
+    app_atomic a;
+    int r = -1;
+    if (!fp || !pp || !in || !xy) {
+        app_errf(err, "cannot regroup %s into paths.dat (%s)", fp ? fp : "frames.dat",
+                 !xy ? "too many balls x frames" : "cannot read it");
+        goto done;
+    }
+    size_t i, f = 0, k = 0;
+    double x, y, rr, ra, ang;
+    while (fscanf(in, "%zu %lf %lf %lf %lf %lf", &i, &x, &y, &rr, &ra, &ang) == 6) {
+        if (i < n && f < nf) {
+            xy[2 * (i * nf + f)] = x;
+            xy[2 * (i * nf + f) + 1] = y;
+        }
+        if (++k == n) {
+            k = 0;
+            f++;
+        }
+    }
+    if (f != nf) {
+        app_errf(err, "%s: %zu frames read, %zu written", fp, f, nf);
+        goto done;
+    }
+    if (app_atomic_open(&a, pp, err))
+        goto done;
+    for (i = 0; i < n; i++) {
+        for (f = 0; f < nf; f++)
+            fprintf(a.f, "%.8g %.8g\n", xy[2 * (i * nf + f)], xy[2 * (i * nf + f) + 1]);
+        fprintf(a.f, "\n\n");
+    }
+    r = app_atomic_commit(&a, err);
+done:
+    if (in)
+        fclose(in);
+    free(xy);
+    free(fp);
+    free(pp);
+    return r;
+}
+
+static int write_figures(sim_output *o, char *err)
+{
+    const scn_scenario *s = o->s;
+    if (!s->out.plots || !o->have_xyz)
+        return 0;
+    char *gp = app_path_join(s->out.dir, "trajectories.gp");
+    app_atomic a;
+    if (!gp || app_atomic_open(&a, gp, err)) {
+        free(gp);
+        return -1;
+    }
+    free(gp);
+    char cbuf[APP_FMT_LEN];
+    /* each ball's path: the frames of one ball are every N-th line of frames.dat; gnuplot
+     * draws them as one line per ball with `every`, and the last frame as the balls */
+    size_t n = o->n_balls;
+    fprintf(a.f,
+            "# relcol-sim: ball trajectories (x-y%s), one colour per ball; the balls at the end\n"
+            "if (!exists(\"outfile\")) outfile = 'trajectories.png'\n"
+            "set terminal pngcairo size 1000,%d enhanced font ',11'\n"
+            "set output outfile\nset size ratio -1\nunset key\n"
+            "set xrange [0:%.17g]\nset yrange [0:%.17g]\n"
+            "set xlabel 'x'\nset ylabel 'y'\n"
+            "set title 'relcol-sim: %zu balls, t = %g to %g, c = %s, restitution %g'\n"
+            "set palette rgbformulae 33,13,10\nunset colorbox\n"
+            "plot for [i=0:%zu] 'paths.dat' index i u 1:2:(i) w l lw 1.2 lc palette, \\\n"
+            "     'frames.dat' index %zu u 2:3:(2*$5):(2*$4):6 w ellipses lc rgb 'black' "
+            "fs transparent solid 0.25\n",
+            s->dim == 3 ? " projection" : "", (int)(1000 * s->box.y / s->box.x) + 80, s->box.x,
+            s->box.y, n, s->time, s->t_end, isinf(s->c) ? "inf" : app_fmt(s->c, cbuf), s->eps_ball,
+            n ? n - 1 : 0, o->gif_frames ? o->gif_frames - 1 : 0);
+    if (app_atomic_commit(&a, err))
+        return -1;
+    int made = 0;
+    if (write_paths(o, err) ||
+        app_gnuplot_run(o->prog, s->out.dir, "trajectories.gp", "trajectories.png", &made, err))
+        return -1;
+    if (!s->out.gif || s->dim != 2)
+        return 0;
+    char *gg = app_path_join(s->out.dir, "table.gp");
+    if (!gg || app_atomic_open(&a, gg, err)) {
+        free(gg);
+        return -1;
+    }
+    free(gg);
+    fprintf(a.f,
+            "# relcol-sim: animation of the table; each ball drawn as its Lorentz-contracted\n"
+            "# ellipse (semi-axis r/gamma along v, r across)\n"
+            "if (!exists(\"outfile\")) outfile = 'table.gif'\n"
+            "set terminal gif animate delay 4 size 800,%d\n"
+            "set output outfile\nset size ratio -1\nunset key\nunset colorbox\n"
+            "set xrange [0:%.17g]\nset yrange [0:%.17g]\n"
+            "set palette rgbformulae 33,13,10\n"
+            "do for [i=0:%zu] {\n"
+            "  plot 'frames.dat' index i u 2:3:(2*$5):(2*$4):6:1 w ellipses lc palette fs solid 0.8\n"
+            "}\n",
+            (int)(800 * s->box.y / s->box.x) + 40, s->box.x, s->box.y,
+            o->gif_frames ? o->gif_frames - 1 : 0);
+    if (app_atomic_commit(&a, err))
+        return -1;
+    return app_gnuplot_run(o->prog, s->out.dir, "table.gp", "table.gif", &made, err);
+}
+
+int simout_close(sim_output *o, const rc_sim *sim, double wall, int interrupted, char *err)
+{
+    int r = 0;
+    if (!o->have_d0) {
+        rc_sim_diagnostics(sim, &o->d0);
+        o->have_d0 = 1;
+    }
+    o->n_balls = rc_sim_count(sim);
+    if (o->have_xyz) {
+        if (app_atomic_commit(&o->xyz, err) || app_atomic_commit(&o->frames, err))
+            r = -1;
+        o->have_xyz = r == 0;
+    }
+    if (!r)
+        r = write_final(o, sim, interrupted, err);
+    if (!r)
+        r = write_summary(o, sim, wall, interrupted, err);
+    if (!r)
+        r = write_figures(o, err);
+    return r;
+}

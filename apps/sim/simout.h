@@ -1,0 +1,35 @@
+/* simout.h — relcol-sim's outputs: snapshots, extended XYZ, summary, final state, figures.
+ * Written atomically: each file appears whole or not at all. */
+#ifndef RELCOL_SIM_SIMOUT_H
+#define RELCOL_SIM_SIMOUT_H
+
+#include "app.h"
+#include "scenario.h"
+
+typedef struct sim_output {
+    const scn_scenario *s;
+    const char *prog;
+    size_t next_snap;     /* index of the next snapshot time */
+    double next_frame;    /* time of the next XYZ frame (INFINITY if none) */
+    size_t frame_no;
+    app_atomic xyz;       /* trajectory.xyz, committed at the end */
+    app_atomic frames;    /* frames.dat (x y r per ball, one block per frame) for figures */
+    int have_xyz;
+    size_t gif_stride;    /* keep every k-th frame in the GIF */
+    size_t gif_frames;    /* frames written to frames.dat */
+    size_t n_balls;
+    rc_sim_diag d0;       /* diagnostics at the start */
+    int have_d0;
+    char line[256];       /* one-line result for stdout */
+} sim_output;
+
+int simout_open(sim_output *o, const scn_scenario *s, const char *prog, char *err);
+/* The next time at which something is due (a snapshot, a frame, or t_end), > t. */
+double simout_next_time(const sim_output *o, double t);
+/* Write whatever is due at the engine's current time. */
+int simout_at(sim_output *o, const rc_sim *sim, char *err);
+/* Finish: final.json, summary.txt, trajectory.xyz, figures. */
+int simout_close(sim_output *o, const rc_sim *sim, double wall_seconds, int interrupted,
+                 char *err);
+
+#endif

@@ -1,0 +1,360 @@
+/* engine_setup.c — making an engine: the definition's defaults and checks, create/free,
+ * and placing balls (validated, stored in cell order, first events predicted). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "engine_private.h"
+#include "relcol/status.h"
+
+/* Cell edge margin over the largest bounding diameter (relative): keeps balls that can
+ * touch (or be within sim_tol of touching) in adjacent cells despite round-off of the
+ * cell boundaries. */
+#define CELL_MARGIN 1e-8
+
+rc_sim_def rc_sim_def_default(void)
+{
+    rc_sim_def d;
+    memset(&d, 0, sizeof d);
+    d.dim = 3;
+    d.box = rc_v3(1.0, 1.0, 1.0);
+    d.c = INFINITY;
+    d.eps_ball = 1.0;
+    d.eps_wall = 1.0;
+    d.t_c = 0.0;
+    d.law = &rc_law_zmf;
+    d.frame = NULL;
+    d.toi = rc_toi_params_default();
+    d.sim_tol = 1e-9;
+    d.approach_tol = 1e-10;
+    d.overlap_tol = 1e-9;
+    d.cell_size = 0.0;
+    d.density = 1.0;
+    return d;
+}
+
+static int check_def(const rc_sim_def *d)
+{
+    if (d->dim != 2 && d->dim != 3)
+        return RC_EDIM;
+    if (!rc_v3_isfinite(d->box) || !isfinite(d->eps_ball) || !isfinite(d->eps_wall) ||
+        !isfinite(d->t_c) || !isfinite(d->sim_tol) || !isfinite(d->approach_tol) ||
+        !isfinite(d->overlap_tol) || !isfinite(d->cell_size) || !isfinite(d->density))
+        return RC_ENONFINITE;
+    if (!(d->box.x > 0.0 && d->box.y > 0.0 && (d->dim == 2 || d->box.z > 0.0)))
+        return RC_EINVAL;
+    if (!(d->eps_ball >= 0.0 && d->eps_ball <= 1.0 && d->eps_wall >= 0.0 &&
+          d->eps_wall <= 1.0))
+        return RC_ERESTITUTION;
+    if (!(d->t_c >= 0.0 && d->sim_tol >= 0.0 && d->sim_tol < 1e-3 && d->approach_tol >= 0.0 &&
+          d->approach_tol < 1e-3 && d->overlap_tol >= 0.0 && d->cell_size >= 0.0 &&
+          d->density > 0.0))
+        return RC_EINVAL;
+    if (!d->law || !d->law->collide)
+        return RC_EINVAL;
+    if (d->frame) { /* the engine calls frame->toi directly: validate its settings once */
+        const rc_toi_params *t = &d->toi;
+        if (!d->frame->toi || !isfinite(t->touch_tol) || !isfinite(t->graze_tol) ||
+            !isfinite(t->lambda_tol) || !(t->touch_tol >= 0.0 && t->graze_tol >= 0.0 &&
+                                          t->lambda_tol > 0.0 && t->max_iter > 0))
+            return RC_EINVAL;
+    }
+    double k;
+    return rc_inv_c2(d->c, &k);
+}
+
+int rc_sim_create(const rc_sim_def *def, rc_sim **out)
+{
+    if (!def || !out)
+        return RC_EINVAL;
+    *out = NULL;
+    int st = check_def(def);
+    if (st != RC_OK)
+        return st;
+    rc_sim *s = calloc(1, sizeof *s);
+    if (!s)
+        return RC_ENOMEM;
+    s->def = *def;
+    if (def->dim == 2)
+        s->def.box.z = 0.0;
+    rc_inv_c2(def->c, &s->inv_c2);
+    s->L[0] = def->box.x;
+    s->L[1] = def->box.y;
+    s->L[2] = def->box.z;
+    s->prm = rc_collision_params_default();
+    s->prm.inv_c2 = s->inv_c2;
+    s->toi = def->toi;
+    s->toi.inv_c2 = s->inv_c2;
+    s->narrow = def->frame && strcmp(def->frame->name, "sphere") != 0;
+    s->wall_contracted = def->frame && def->frame->wall_contracted && s->inv_c2 > 0.0;
+    if (s->narrow) {
+        if (!def->frame->toi || !(s->ws = rc_toi_workspace_alloc())) {
+            free(s);
+            return def->frame->toi ? RC_ENOMEM : RC_EINVAL;
+        }
+    }
+    *out = s;
+    return RC_OK;
+}
+
+static void release_balls(rc_sim *s)
+{
+    free(s->b);
+    free(s->a);
+    free(s->id);
+    free(s->slot);
+    free(s->cnt);
+    s->cnt = NULL;
+    s->b = NULL;
+    s->a = NULL;
+    s->id = NULL;
+    s->slot = NULL;
+    rc_eng_heap_free(&s->q);
+    rc_eng_cells_free(&s->g);
+    s->n = 0;
+}
+
+void rc_sim_free(rc_sim **sp)
+{
+    if (!sp || !*sp)
+        return;
+    rc_sim *s = *sp;
+    release_balls(s);
+    free(s->grp_ball);
+    free(s->grp_part);
+    free(s->grp_con);
+    rc_toi_workspace_free(&s->ws);
+    free(s->cand);
+    free(s);
+    *sp = NULL;
+}
+
+/* ---- setting up ------------------------------------------------------------------ */
+
+int rc_sim_set_time(rc_sim *s, double t)
+{
+    if (!s || s->n > 0)
+        return RC_EINVAL;
+    if (!isfinite(t))
+        return RC_ENONFINITE;
+    s->now = t;
+    return RC_OK;
+}
+
+/* Does the contact frame see contracted shapes (walls and pairs)? */
+static int contracted(const rc_sim *s)
+{
+    return s->inv_c2 > 0.0 && s->def.frame && s->def.frame != &rc_toi_frame_sphere;
+}
+
+/* Do balls i and k (storage slots, states at s->now) overlap by more than overlap_tol in
+ * the frame's geometry? The sphere test decides unless the frame contracts the shapes,
+ * which only ever brings the surfaces closer to the centres. */
+static int overlapping(rc_sim *s, size_t i, size_t k)
+{
+    const eng_ball *bi = &s->b[i], *bk = &s->b[k];
+    double sig = (bi->r + bk->r) * (1.0 - s->def.overlap_tol);
+    if (!(rc_v3_norm2(rc_v3_sub(bk->x, bi->x)) < sig * sig))
+        return 0;
+    if (!contracted(s))
+        return 1;
+    rc_toi_params prm = s->toi;
+    if (prm.touch_tol < s->def.overlap_tol)
+        prm.touch_tol = s->def.overlap_tol;
+    rc_toi_ball A = {bi->x, bi->r, s->a[i].m, s->a[i].p};
+    rc_toi_ball B = {bk->x, bk->r, s->a[k].m, s->a[k].p};
+    rc_toi_contact out;
+    if (s->def.frame->toi(&prm, &A, &B, s->ws, &out) != RC_EOVERLAP)
+        return 0;
+    /* A ball whose speed changes changes its contracted shape at once, which can leave a
+     * separating pair overlapping (the engine counts it and lets it part): such a state is
+     * one the engine itself produces, so it is accepted; an approaching overlap is not. */
+    rc_vec3 dx = rc_v3_sub(bk->x, bi->x), dv = rc_v3_sub(bk->v, bi->v);
+    return !(rc_v3_dot(dx, dv) > 0.0);
+}
+
+static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, int validate);
+
+int rc_sim_set_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad)
+{
+    return load_balls(s, n, in, bad, 1);
+}
+
+int rc_sim_sync(rc_sim *s)
+{
+    if (!s)
+        return RC_EINVAL;
+    size_t n = s->n;
+    rc_sim_ball *b = malloc((n ? n : 1) * sizeof *b);
+    if (!b)
+        return RC_ENOMEM;
+    for (size_t i = 0; i < n; i++)
+        rc_sim_get_ball(s, i, &b[i]);
+    /* the run's accumulated diagnostics survive the re-planning */
+    double heat = s->heat, heat_c = s->heat_c, wall[3], wall_c[3];
+    memcpy(wall, s->wall, sizeof wall);
+    memcpy(wall_c, s->wall_c, sizeof wall_c);
+    uint64_t overlaps = s->overlaps, collisions = s->collisions, fallbacks = s->group_fallbacks;
+    size_t max_group = s->max_group;
+    uint64_t events[RC_SIM_EV_NKINDS];
+    memcpy(events, s->events, sizeof events);
+    int st = load_balls(s, n, b, NULL, 0);
+    free(b);
+    if (st != RC_OK)
+        return st;
+    s->heat = heat;
+    s->heat_c = heat_c;
+    memcpy(s->wall, wall, sizeof wall);
+    memcpy(s->wall_c, wall_c, sizeof wall_c);
+    s->overlaps = overlaps;
+    s->collisions = collisions;
+    s->group_fallbacks = fallbacks;
+    s->max_group = max_group;
+    memcpy(s->events, events, sizeof events);
+    return RC_OK;
+}
+
+static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, int validate)
+{
+    if (!s || (!in && n))
+        return RC_EINVAL;
+    if (n > (size_t)INT32_MAX)
+        return RC_EINVAL;
+    const int dim = s->def.dim;
+    double rmax = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        const rc_sim_ball *b = &in[i];
+        if (bad)
+            *bad = i;
+        if (!rc_v3_isfinite(b->x) || !rc_v3_isfinite(b->p) || !isfinite(b->r) ||
+            !isfinite(b->m) || !isfinite(b->tau) || (b->collided && !isfinite(b->tau_last)))
+            return RC_ENONFINITE;
+        if (!(b->r > 0.0))
+            return RC_ERADIUS;
+        if (dim == 2 && (b->x.z != 0.0 || b->p.z != 0.0))
+            return RC_EDIM;
+        /* the shape inside the box: its support distance along each axis (r, or
+         * r sqrt(1 - v_d^2/c^2) when the walls see the contracted shape), to within
+         * overlap_tol r (a wall contact's position carries round-off) */
+        double m = b->m > 0.0 ? b->m : s->def.density * b->r * b->r * b->r;
+        rc_toi_shape sh = rc_toi_shape_of(b->r, m, b->p, s->inv_c2);
+        int wc = contracted(s) && s->def.frame->wall_contracted;
+        for (int d = 0; validate && d < dim; d++) {
+            rc_vec3 e = rc_v3(d == 0, d == 1, d == 2);
+            double h = wc ? rc_toi_support(&sh, e) : b->r, tol = s->def.overlap_tol * b->r;
+            double x = rc_v3_get(b->x, d);
+            if (!(x >= h - tol && x <= s->L[d] - h + tol))
+                return RC_EINVAL; /* the shape crosses a wall */
+        }
+        if (b->r > rmax)
+            rmax = b->r;
+    }
+    release_balls(s);
+    /* a new set of balls starts its bookkeeping afresh */
+    s->heat = s->heat_c = 0.0;
+    for (int d = 0; d < 3; d++)
+        s->wall[d] = s->wall_c[d] = 0.0;
+    s->overlaps = s->collisions = s->group_fallbacks = s->since_reorder = 0;
+    s->max_group = 0;
+    memset(s->events, 0, sizeof s->events);
+    int st = RC_ENOMEM;
+    s->b = malloc((n ? n : 1) * sizeof *s->b);
+    s->a = malloc((n ? n : 1) * sizeof *s->a);
+    if (!s->b || !s->a)
+        goto fail;
+    double edge = 2.0 * rmax * (1.0 + CELL_MARGIN + 2.0 * s->def.sim_tol);
+    if (s->def.cell_size > edge)
+        edge = s->def.cell_size;
+    if (!(edge > 0.0))
+        edge = 1.0;
+    if ((st = rc_eng_cells_init(&s->g, dim, s->def.box, edge, n)) != RC_OK)
+        goto fail;
+    if ((st = rc_eng_heap_init(&s->q, n)) != RC_OK)
+        goto fail;
+    s->n = n;
+    /* Store balls in cell order (stable): neighbours then share cache lines and the
+     * prefetcher, which matters more than anything else once N no longer fits in cache.
+     * id[] / slot[] translate to and from the caller's indices. */
+    s->cnt = calloc(n ? n : 1, sizeof *s->cnt);
+    s->id = malloc((n ? n : 1) * sizeof *s->id);
+    s->slot = malloc((n ? n : 1) * sizeof *s->slot);
+    int32_t *cellof = malloc((n ? n : 1) * sizeof *cellof);
+    size_t *start = calloc(s->g.ncells + 1, sizeof *start);
+    if (!s->id || !s->slot || !s->cnt || !cellof || !start) {
+        free(cellof);
+        free(start);
+        st = RC_ENOMEM;
+        goto fail;
+    }
+    for (size_t i = 0; i < n; i++) {
+        cellof[i] = rc_eng_cells_index_of(&s->g, dim, in[i].x);
+        start[cellof[i] + 1]++;
+    }
+    for (size_t c = 0; c < s->g.ncells; c++)
+        start[c + 1] += start[c];
+    for (size_t i = 0; i < n; i++) {
+        size_t k = start[cellof[i]]++;
+        s->id[k] = (uint32_t)i;
+        s->slot[i] = (uint32_t)k;
+    }
+    free(start);
+    for (size_t k = n; k-- > 0;) {
+        const rc_sim_ball *b = &in[s->id[k]];
+        eng_ball *e = &s->b[k];
+        eng_aux *a = &s->a[k];
+        memset(a, 0, sizeof *a);
+        a->m = b->m > 0.0 ? b->m : s->def.density * b->r * b->r * b->r;
+        a->p = b->p;
+        a->tau = b->tau;
+        a->tau_last = b->collided ? b->tau_last : -INFINITY;
+        double M = eng_mass_rel(a->m, a->p, s->inv_c2);
+        e->x = b->x;
+        e->v = rc_v3_scale(1.0 / M, a->p);
+        e->t = s->now;
+        e->r = b->r;
+        rc_eng_cells_insert(&s->g, s->a, (int32_t)k, cellof[s->id[k]]);
+    }
+    free(cellof);
+    /* overlap check through the cells: each pair once */
+    for (size_t i = 0; validate && i < n; i++) {
+        int c[3];
+        cell_coords(&s->g, s->a[i].cell, c);
+        for (int dz = (dim == 3 ? -1 : 0); dz <= (dim == 3 ? 1 : 0); dz++)
+            for (int dy = -1; dy <= 1; dy++)
+                for (int dx = -1; dx <= 1; dx++) {
+                    int x = c[0] + dx, y = c[1] + dy, z = c[2] + dz;
+                    if (x < 0 || y < 0 || z < 0 || x >= s->g.n[0] || y >= s->g.n[1] ||
+                        z >= s->g.n[2])
+                        continue;
+                    int32_t cell = (int32_t)(x + s->g.n[0] * (y + s->g.n[1] * z));
+                    for (int32_t k = s->g.head[cell]; k >= 0; k = s->g.next[k]) {
+                        if ((size_t)k <= i)
+                            continue;
+                        /* touching is allowed (a rack): only overlaps deeper than the
+                         * round-off of placed positions, overlap_tol, are rejected */
+                        if (overlapping(s, i, (size_t)k)) {
+                            if (bad)
+                                *bad = s->id[k] > s->id[i] ? s->id[k] : s->id[i];
+                            st = RC_EOVERLAP;
+                            goto fail;
+                        }
+                    }
+                }
+    }
+    double *keys = malloc((n ? n : 1) * sizeof *keys);
+    if (!keys) {
+        st = RC_ENOMEM;
+        goto fail;
+    }
+    for (size_t i = 0; i < n; i++)
+        rc_eng_predict(s, (int32_t)i, 0);
+    for (size_t i = 0; i < n; i++)
+        keys[i] = key_of(&s->a[i]);
+    rc_eng_heap_build(&s->q, keys);
+    free(keys);
+    return RC_OK;
+fail:
+    release_balls(s);
+    return st;
+}
+

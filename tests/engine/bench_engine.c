@@ -1,0 +1,181 @@
+/* bench_engine.c — engine throughput (meson benchmark): classical hard spheres at packing
+ * 0.45 (N = 1e4, 1e5), discs at 0.7 (N = 1e4), a relativistic gas (rms speed 0.5 c) as a
+ * cost ratio to the classical run of the same N and density measured in this process,
+ * and bytes per ball. Each run melts the lattice start first (not timed).
+ * Usage: bench_engine [quick|full|N3d]; full adds N = 1e6; a number runs only that N.
+ * Figures are CPU time of this process (the wall clock on a shared machine is noisier). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "relcol/relcol.h"
+
+static double cpu_s(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+typedef struct result {
+    double rate;  /* collisions per CPU second */
+    double bytes; /* per ball */
+    double ok;
+} result;
+
+static result run(int dim, size_t n, double packing, double c, const char *frame,
+                  double melt_per_ball, double measure_per_ball)
+{
+    result res = {0, 0, 0};
+    rc_sim_gas_def g = {dim, n, 0.5, packing, isinf(c) ? 1.0 : 0.5 * c, c, 1.0, 2024};
+    rc_sim_ball *b = malloc(n * sizeof *b);
+    rc_sim_def d = rc_sim_def_default();
+    d.dim = dim;
+    d.c = c;
+    if (frame)
+        d.frame = rc_toi_frame_find(frame);
+    rc_sim *s = NULL;
+    int st = b ? rc_sim_gas_init(&g, &d.box, b) : RC_ENOMEM;
+    if (st == RC_OK)
+        st = rc_sim_create(&d, &s);
+    if (st == RC_OK)
+        st = rc_sim_set_balls(s, n, b, NULL);
+    free(b);
+    if (st != RC_OK) {
+        fprintf(stderr, "setup failed: %s\n", rc_strerror(st));
+        rc_sim_free(&s);
+        return res;
+    }
+    rc_sim_diag d0, d1;
+    /* melt: collisions per ball (events include crossings and stale entries: ~1.5x) */
+    uint64_t melt = (uint64_t)(melt_per_ball * (double)n * 1.5);
+    rc_sim_advance(s, INFINITY, melt);
+    rc_sim_diagnostics(s, &d0);
+    double t0 = cpu_s();
+    rc_sim_advance(s, INFINITY, (uint64_t)(measure_per_ball * (double)n * 1.5));
+    double t1 = cpu_s();
+    rc_sim_diagnostics(s, &d1);
+    res.rate = (double)(d1.collisions - d0.collisions) / (t1 - t0);
+    res.bytes = (double)rc_sim_bytes(s) / (double)n;
+    res.ok = 1;
+    printf("  %dD N=%-8zu phi=%.2f c=%-5g frame=%-6s %10.0f collisions/s  %.3g s  %.1f B/ball "
+           "(events: ball %llu wall %llu multi %llu cell %llu stale %llu; overlaps %llu)\n",
+           dim, n, packing, c, frame ? frame : "sphere", res.rate, t1 - t0, res.bytes,
+           (unsigned long long)(d1.events[RC_SIM_EV_BALL] - d0.events[RC_SIM_EV_BALL]),
+           (unsigned long long)(d1.events[RC_SIM_EV_WALL] - d0.events[RC_SIM_EV_WALL]),
+           (unsigned long long)(d1.events[RC_SIM_EV_MULTI] - d0.events[RC_SIM_EV_MULTI]),
+           (unsigned long long)(d1.events[RC_SIM_EV_CELL] - d0.events[RC_SIM_EV_CELL]),
+           (unsigned long long)(d1.events[RC_SIM_EV_STALE] - d0.events[RC_SIM_EV_STALE]),
+           (unsigned long long)(d1.overlaps - d0.overlaps));
+    fflush(stdout);
+    rc_sim_free(&s);
+    return res;
+}
+
+/* Cost ratio of run B to run A per collision, measured interleaved: both engines advance
+ * in alternating chunks of events, so both see the same load on a shared machine. */
+static rc_sim *make(int dim, size_t n, double packing, double c, const char *frame)
+{
+    rc_sim_gas_def g = {dim, n, 0.5, packing, isinf(c) ? 1.0 : 0.5 * c, c, 1.0, 2024};
+    rc_sim_ball *b = malloc(n * sizeof *b);
+    rc_sim_def d = rc_sim_def_default();
+    d.dim = dim;
+    d.c = c;
+    if (frame)
+        d.frame = rc_toi_frame_find(frame);
+    rc_sim *s = NULL;
+    int st = b ? rc_sim_gas_init(&g, &d.box, b) : RC_ENOMEM;
+    if (st == RC_OK)
+        st = rc_sim_create(&d, &s);
+    if (st == RC_OK)
+        st = rc_sim_set_balls(s, n, b, NULL);
+    free(b);
+    if (st != RC_OK) {
+        fprintf(stderr, "setup failed: %s\n", rc_strerror(st));
+        rc_sim_free(&s);
+        return NULL;
+    }
+    rc_sim_advance(s, INFINITY, (uint64_t)(15 * n)); /* melt */
+    return s;
+}
+
+static double interleaved_ratio(rc_sim *a, rc_sim *b, uint64_t chunk_a, uint64_t chunk_b,
+                                int rounds)
+{
+    double ta = 0, tb = 0;
+    uint64_t ca = 0, cb = 0;
+    for (int r = 0; r < rounds; r++) {
+        rc_sim_diag d0, d1;
+        rc_sim_diagnostics(a, &d0);
+        double t0 = cpu_s();
+        rc_sim_advance(a, INFINITY, chunk_a);
+        ta += cpu_s() - t0;
+        rc_sim_diagnostics(a, &d1);
+        ca += d1.collisions - d0.collisions;
+        rc_sim_diagnostics(b, &d0);
+        t0 = cpu_s();
+        rc_sim_advance(b, INFINITY, chunk_b);
+        tb += cpu_s() - t0;
+        rc_sim_diagnostics(b, &d1);
+        cb += d1.collisions - d0.collisions;
+    }
+    printf("  interleaved: A %.0f collisions/s, B %.0f collisions/s\n", (double)ca / ta,
+           (double)cb / tb);
+    return (tb / (double)cb) / (ta / (double)ca);
+}
+
+int main(int argc, char **argv)
+{
+    const char *mode = argc > 1 ? argv[1] : "quick";
+    if (strcmp(mode, "quick") && strcmp(mode, "full")) {
+        size_t n = (size_t)atof(mode);
+        run(3, n, 0.45, INFINITY, NULL, 5, 20);
+        return 0;
+    }
+    printf("relcol engine benchmark (CPU time; targets from issue 4)\n");
+    result a = run(3, 10000, 0.45, INFINITY, NULL, 10, 100);
+    result b = run(3, 100000, 0.45, INFINITY, NULL, 5, 20);
+    result c2 = run(2, 10000, 0.70, INFINITY, NULL, 10, 100);
+    /* relativistic: rms speed 0.5 c, same N and density as run a */
+    result r = run(3, 10000, 0.45, 2.0, NULL, 10, 50);
+    result rt = run(3, 10000, 0.45, 2.0, "table", 2, 5);
+    printf("3-D phi 0.45 N 1e4: %.3g M/s (target >= 1.35)\n", a.rate / 1e6);
+    printf("3-D phi 0.45 N 1e5: %.3g M/s (target >= 0.87)\n", b.rate / 1e6);
+    printf("2-D phi 0.70 N 1e4: %.3g M/s (target >= 1.05)\n", c2.rate / 1e6);
+    printf("relativistic 0.5c, uncontracted spheres: cost per collision %.2f x classical "
+           "(sequential runs)\n", a.rate / r.rate);
+    printf("relativistic 0.5c, contracted (table frame): cost per collision %.2f x classical "
+           "(sequential runs; target <= 3)\n", a.rate / rt.rate);
+    {
+        rc_sim *ca = make(3, 10000, 0.45, INFINITY, NULL);
+        rc_sim *cr = make(3, 10000, 0.45, 2.0, NULL);
+        rc_sim *ct = make(3, 10000, 0.45, 2.0, "table");
+        if (ca && cr && ct) {
+            printf("relativistic 0.5c, uncontracted: %.2f x classical (interleaved)\n",
+                   interleaved_ratio(ca, cr, 30000, 30000, 20));
+            printf("relativistic 0.5c, contracted (table frame): %.2f x classical "
+                   "(interleaved; target <= 3)\n", interleaved_ratio(ca, ct, 30000, 8000, 20));
+        }
+        rc_sim_free(&ca);
+        rc_sim_free(&cr);
+        rc_sim_free(&ct);
+    }
+    printf("bytes per ball: %.1f (target <= 200)\n", a.bytes);
+    printf("time per collision N 1e5 / N 1e4: %.2f (sequential runs)\n", a.rate / b.rate);
+    {
+        rc_sim *s4 = make(3, 10000, 0.45, INFINITY, NULL);
+        rc_sim *s5 = make(3, 100000, 0.45, INFINITY, NULL);
+        if (s4 && s5)
+            printf("time per collision N 1e5 / N 1e4: %.2f (interleaved)\n",
+                   interleaved_ratio(s4, s5, 50000, 50000, 20));
+        rc_sim_free(&s4);
+        rc_sim_free(&s5);
+    }
+    if (!strcmp(mode, "full")) {
+        result m = run(3, 1000000, 0.45, INFINITY, NULL, 2, 5);
+        printf("time per collision N 1e6 / N 1e4: %.2f (target <= 1.5)\n", a.rate / m.rate);
+    }
+    return 0;
+}

@@ -1,0 +1,48 @@
+/* engine_util.h — helpers shared by the engine tests: build a gas run, step it. */
+#ifndef ENGINE_UTIL_H
+#define ENGINE_UTIL_H
+
+#include <stdlib.h>
+
+#include "rc_test.h"
+#include "relcol/relcol.h"
+
+/* A gas of n balls (radius 0.5) from rc_sim_gas_init in an engine made from d (box,
+ * dim and c are set from the gas). Returns NULL on failure (recorded as a check). */
+static inline rc_sim *util_gas(rc_sim_def d, size_t n, double packing, double v_rms, uint64_t seed)
+{
+    rc_sim_gas_def g = {d.dim, n, 0.5, packing, v_rms, d.c, 1.0, seed};
+    rc_sim_ball *b = malloc(n * sizeof *b);
+    rc_sim *s = NULL;
+    int st = b ? rc_sim_gas_init(&g, &d.box, b) : RC_ENOMEM;
+    ENSURE_MSG(st == RC_OK, "gas: %s", rc_strerror(st));
+    if (st == RC_OK) {
+        st = rc_sim_create(&d, &s);
+        ENSURE_MSG(st == RC_OK, "create: %s", rc_strerror(st));
+    }
+    if (st == RC_OK) {
+        st = rc_sim_set_balls(s, n, b, NULL);
+        ENSURE_MSG(st == RC_OK, "set: %s", rc_strerror(st));
+        if (st != RC_OK)
+            rc_sim_free(&s);
+    }
+    free(b);
+    return s;
+}
+
+/* Run until at least `target` contacts were resolved (events in chunks, no time limit). */
+static inline void util_run_collisions(rc_sim *s, uint64_t target)
+{
+    rc_sim_diag d;
+    rc_sim_diagnostics(s, &d);
+    uint64_t start = d.collisions;
+    for (int guard = 0; guard < 100000; guard++) {
+        int st = rc_sim_advance(s, INFINITY, 20000);
+        ENSURE_MSG(st == RC_OK, "advance: %s", rc_strerror(st));
+        rc_sim_diagnostics(s, &d);
+        if (st != RC_OK || d.collisions - start >= target)
+            return;
+    }
+}
+
+#endif

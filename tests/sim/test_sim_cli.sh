@@ -1,0 +1,102 @@
+#!/bin/sh
+# test_sim_cli.sh RELCOL_SIM DATA_DIR — relcol-sim's contract: every malformed or impossible
+# scenario is rejected (exit 2) with the JSON path of the offending value and the reason;
+# a run writes its files; continuing from final.json is bit-identical to not stopping.
+sim="$1"; data="$2"
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+fails=0; n=0
+ok() { n=$((n + 1)); echo "ok: $1"; }
+ko() { n=$((n + 1)); fails=$((fails + 1)); echo "FAILED: $1"; }
+
+# reject NAME JSON EXPECTED-SUBSTRING
+reject() {
+    printf '%s\n' "$2" > "$tmp/$1.json"
+    "$sim" "$tmp/$1.json" --out "$tmp/o-$1" > "$tmp/out" 2> "$tmp/err"; st=$?
+    if [ $st -eq 2 ] && grep -qF -- "$3" "$tmp/err" && [ "$(wc -l < "$tmp/err")" -eq 1 ]; then
+        ok "$1 -> exit 2: $(cat "$tmp/err")"
+    else
+        ko "$1: exit $st, stderr: $(cat "$tmp/err") (wanted: $3)"
+    fi
+}
+
+B='"dim": 2, "box": [10, 10], "t_end": 1'
+ball='{"r": 1, "x": [5, 5], "v": [0.1, 0]}'
+reject malformed '{"dim": 2, "box": [10, 10],' 'malformed JSON'
+reject notobject '[1, 2]' 'must be a JSON object'
+reject unknownkey "{$B, \"balls\": [$ball], \"colour\": 3}" 'colour: unknown key'
+reject wrongtype "{\"dim\": \"two\", \"box\": [10, 10], \"t_end\": 1, \"balls\": [$ball]}" 'dim: must be a number'
+reject baddim "{\"dim\": 4, \"box\": [10, 10], \"t_end\": 1, \"balls\": [$ball]}" 'dim: must be 2 or 3'
+reject boxcomp "{\"dim\": 2, \"box\": [10, 10, 10], \"t_end\": 1, \"balls\": [$ball]}" 'box: has 3 components'
+reject negc "{$B, \"c\": -1, \"balls\": [$ball]}" 'c: must be > 0'
+reject epsw "{$B, \"restitution\": {\"wall\": 1.5}, \"balls\": [$ball]}" 'restitution.wall: must be in [0, 1]'
+reject frame "{$B, \"contact_frame\": \"lab\", \"balls\": [$ball]}" "contact_frame: unknown frame 'lab'"
+reject law "{$B, \"law\": \"sticky\", \"balls\": [$ball]}" "law: unknown collision law 'sticky'"
+reject noballs "{$B}" 'balls: missing'
+reject both "{$B, \"balls\": [$ball], \"generate\": {\"kind\": \"rack\"}}" 'give either balls or generate'
+reject outside "{$B, \"balls\": [{\"r\": 1, \"x\": [9.5, 5]}]}" "balls[0]: the ball's shape is not inside the box"
+reject centre "{$B, \"balls\": [{\"r\": 1, \"x\": [12, 5]}]}" 'balls[0].x: the centre is not inside the box along axis 0'
+reject speed "{$B, \"c\": 1, \"balls\": [{\"r\": 1, \"x\": [5, 5], \"v\": [1.2, 0]}]}" 'balls[0].v: |v| = 1.2'
+reject radius "{$B, \"balls\": [{\"r\": 0, \"x\": [5, 5]}]}" 'balls[0].r: radius must be > 0'
+reject mass "{$B, \"balls\": [{\"r\": 1, \"m\": -2, \"x\": [5, 5]}]}" 'balls[0].m: rest mass must be > 0'
+reject ballkey "{$B, \"balls\": [{\"r\": 1, \"x\": [5, 5], \"spin\": 1}]}" 'balls[0].spin: unknown key'
+reject vandp "{$B, \"balls\": [{\"r\": 1, \"x\": [5, 5], \"v\": [0, 0], \"p\": [0, 0]}]}" 'balls[0]: give either v or p'
+reject overlap "{$B, \"balls\": [$ball, {\"r\": 1, \"x\": [6, 5]}]}" 'balls[1]: overlaps another ball'
+reject tend "{\"dim\": 2, \"box\": [10, 10], \"t_end\": 0, \"balls\": [$ball]}" 't_end: must be later'
+reject packing '{"dim": 3, "t_end": 1, "generate": {"kind": "gas", "n": 10, "packing": 0.6, "v_rms": 0.1}}' 'generate.packing: must be in (0, 0.45]'
+reject snaps "{$B, \"balls\": [$ball], \"outputs\": {\"snapshots\": [0.5, 7]}}" 'outputs.snapshots[1]: time 7 is outside'
+reject outkey "{$B, \"balls\": [$ball], \"outputs\": {\"snapshot\": 1}}" 'outputs.snapshot: unknown key'
+reject nan "{$B, \"balls\": [{\"r\": 1, \"x\": [5, NaN]}]}" 'malformed JSON'
+
+# the shipped scenario files are the built-ins
+for b in rack gas; do
+    "$sim" --builtin $b --dump > "$tmp/$b-builtin.json" 2>/dev/null
+    "$sim" "$data/scenarios/$b.json" --dump > "$tmp/$b-file.json" 2>/dev/null
+    if cmp -s "$tmp/$b-builtin.json" "$tmp/$b-file.json" && [ -s "$tmp/$b-file.json" ]; then
+        ok "data/scenarios/$b.json reads as --builtin $b"
+    else
+        ko "data/scenarios/$b.json differs from --builtin $b"
+    fi
+done
+
+# a small run writes its files
+cat > "$tmp/run.json" <<JSON
+{"relcol": 1, "dim": 2, "c": 2, "restitution": {"ball": 0.9, "wall": 1},
+ "contact_frame": "table", "seed": 3, "t_end": 40,
+ "generate": {"kind": "gas", "n": 60, "radius": 1, "packing": 0.15, "v_rms": 0.5},
+ "outputs": {"snapshots": [10, 20], "xyz_every": 5, "plots": false, "gif": false}}
+JSON
+if "$sim" "$tmp/run.json" --out "$tmp/full" > "$tmp/out" 2> "$tmp/err"; then
+    ok "run: $(cat "$tmp/out")"
+else
+    ko "run failed: $(cat "$tmp/err")"
+fi
+for f in summary.txt final.json trajectory.xyz snapshots/snap-0000.csv snapshots/snap-0001.csv; do
+    [ -s "$tmp/full/$f" ] && ok "wrote $f" || ko "missing $f"
+done
+ls "$tmp/full" | grep -q '\.tmp' && ko "temporary files left behind" || ok "no temporary files left"
+frames=$(grep -c '^Lattice=' "$tmp/full/trajectory.xyz")
+[ "$frames" -eq 9 ] && ok "trajectory.xyz has 9 frames (t = 0, 5, ..., 40)" || ko "trajectory.xyz has $frames frames, want 9"
+head -2 "$tmp/full/trajectory.xyz" | tail -1 | grep -q 'Properties=species:S:1:pos:R:3' \
+    && ok "extended-XYZ header" || ko "extended-XYZ header"
+grep -q 'overlaps         0 found' "$tmp/full/summary.txt" && ok "no overlaps" || ko "overlaps: $(grep overlaps "$tmp/full/summary.txt")"
+
+# restart identity: 0 -> 20 -> (final.json) -> 40 equals 0 -> 40 with a stop at 20
+sed 's/"t_end": 40/"t_end": 20/' "$tmp/run.json" > "$tmp/half.json"
+"$sim" "$tmp/half.json" --out "$tmp/half" > /dev/null 2>&1
+sed 's/"t_end": [0-9.e+-]*/"t_end": 40/' "$tmp/half/final.json" > "$tmp/cont.json"
+"$sim" "$tmp/cont.json" --out "$tmp/cont" > /dev/null 2> "$tmp/err"
+sed -n '/"balls"/,$p' "$tmp/full/final.json" > "$tmp/a"
+sed -n '/"balls"/,$p' "$tmp/cont/final.json" > "$tmp/b"
+if [ -s "$tmp/a" ] && cmp -s "$tmp/a" "$tmp/b"; then
+    ok "restart from final.json at t = 20 is bit-identical at t = 40"
+else
+    ko "restart differs: $(cat "$tmp/err") $(cmp "$tmp/a" "$tmp/b" 2>&1 | head -1)"
+fi
+# determinism: the same scenario twice
+"$sim" "$tmp/run.json" --out "$tmp/again" > /dev/null 2>&1
+sed -n '/"balls"/,$p' "$tmp/again/final.json" > "$tmp/c"
+cmp -s "$tmp/a" "$tmp/c" && ok "same scenario twice -> identical final state" \
+    || ko "two runs of one scenario differ"
+
+echo "$((n - fails)) passed, $fails failed"
+[ $fails -eq 0 ]
