@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # main-job.sh — README command 1: install what is missing, build, and run the main job:
 # the classical-limit sweeps over c — the headline sweep (collision law, time of impact,
-# soft reference: relcol-sweep) and the collision law's own sweep
+# soft reference, a small engine run: relcol-sweep) and the collision law's own sweep
 # (relcol-sweep-c) — writing CSV, gnuplot scripts and PNGs into out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -7,7 +7,7 @@
 
 #include "relcol/relcol.h"
 
-#define OBS_MAX 8
+#define OBS_MAX 12
 
 /* The two-ball set-up shared by the scenarios (table units). */
 typedef struct sweep_setup {

@@ -300,7 +300,7 @@ static int run(int argc, char **argv)
             "set output outfile\nset datafile separator ','\n"
             "set logscale xy\nset format x '10^{%%L}'\nset format y '10^{%%L}'\n"
             "set xlabel 'c / |v|_{max}'\nset ylabel 'relative deviation from c = ∞'\n"
-            "set title \"Classical-limit convergence: collision law, time of impact, soft reference\\n"
+            "set title \"Classical-limit convergence: collision law, time of impact, soft reference, engine run\\n"
             "{/*0.8 ε = %g, soft stiffness %g; dashed: (|v|_{max}/c)^2}\"\n"
             "set grid\nset key bottom left font ',10'\n",
             su.eps, su.stiffness);

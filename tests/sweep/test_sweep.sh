@@ -13,7 +13,7 @@ OMP_NUM_THREADS=1 "$sweep" $args --out "$tmp/serial" > "$tmp/serial.txt" 2> "$tm
     && ok "serial sweep ran" || ko "serial sweep failed: $(cat "$tmp/err")"
 cat "$tmp/serial.txt"
 orders=$(grep -c '^order' "$tmp/serial.txt")
-[ "$orders" -eq 6 ] && ok "6 fitted orders printed" || ko "$orders fitted orders printed, want 6"
+[ "$orders" -eq 8 ] && ok "8 fitted orders printed" || ko "$orders fitted orders printed, want 8"
 bad=$(awk '/^order/ { d = $4 + 2; if (d < 0) d = -d; if (!(d < 0.05)) print }' "$tmp/serial.txt")
 [ -z "$bad" ] && ok "every order within 0.05 of -2" || ko "orders off: $bad"
 rows=$(wc -l < "$tmp/serial/sweep.csv")
@@ -28,7 +28,7 @@ if [ "$have_mpi" = "yes" ]; then
         -np 2 "$sweep" $args --out "$tmp/mpi" > "$tmp/mpi.txt" 2> "$tmp/mpierr"
     cmp -s "$tmp/serial/sweep.csv" "$tmp/mpi/sweep.csv" && ok "MPI (2 ranks) = serial, bit for bit" \
         || ko "MPI sweep differs from the serial one: $(head -5 "$tmp/mpierr")"
-    grep -q '^order' "$tmp/mpi.txt" && [ "$(grep -c '^order' "$tmp/mpi.txt")" -eq 6 ] \
+    grep -q '^order' "$tmp/mpi.txt" && [ "$(grep -c '^order' "$tmp/mpi.txt")" -eq 8 ] \
         && ok "only rank 0 prints" || ko "MPI output: $(cat "$tmp/mpi.txt")"
 else
     echo "note: not an MPI build: the MPI identity check does not apply"
