@@ -8,6 +8,13 @@ fails=0; n=0
 ok() { n=$((n + 1)); echo "ok: $1"; }
 ko() { n=$((n + 1)); fails=$((fails + 1)); echo "FAILED: $1"; }
 args="--points 13 --no-plot"
+# In an MPI build every run calls MPI_Init, and Open MPI keeps allocations in plugins it
+# dlopens and unloads (LeakSanitizer then sees "unknown module" frames that no
+# suppression can name): leak checking of this program is meaningless there. Address and
+# undefined-behaviour checks stay on.
+if [ "$have_mpi" = "yes" ]; then
+    export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
+fi
 
 OMP_NUM_THREADS=1 "$sweep" $args --out "$tmp/serial" > "$tmp/serial.txt" 2> "$tmp/err" \
     && ok "serial sweep ran" || ko "serial sweep failed: $(cat "$tmp/err")"

@@ -9,5 +9,6 @@
 #include "relcol/toi.h"
 #include "relcol/sim.h"
 #include "relcol/soft.h"
+#include "relcol/gas1d.h"
 
 #endif
