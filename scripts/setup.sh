@@ -4,8 +4,10 @@
 # test.sh; safe to run again (it does nothing that is already done).
 set -euo pipefail
 
+# mpi-default-dev and openmpi-bin come with libsundials-dev already; they are named
+# because relcol-sweep's MPI build and its mpirun test use them directly.
 RELCOL_PACKAGES=(gcc libc6-dev meson ninja-build pkg-config libgsl-dev libsundials-dev
-                 gnuplot-nox libcjson-dev)
+                 gnuplot-nox libcjson-dev mpi-default-dev openmpi-bin)
 
 relcol_install_packages() {
     local missing=()
