@@ -98,5 +98,17 @@ sed -n '/"balls"/,$p' "$tmp/again/final.json" > "$tmp/c"
 cmp -s "$tmp/a" "$tmp/c" && ok "same scenario twice -> identical final state" \
     || ko "two runs of one scenario differ"
 
+# Ctrl-C: a long run interrupted writes a restart state that reads back, and exits 130
+sed 's/"t_end": 40/"t_end": 1e9/; s/"snapshots": \[10, 20\], //' "$tmp/run.json" > "$tmp/long.json"
+"$sim" "$tmp/long.json" --out "$tmp/long" > /dev/null 2> "$tmp/err" &
+pid=$!
+sleep 1
+kill -INT $pid
+wait $pid; st=$?
+[ $st -eq 130 ] && grep -q 'interrupted' "$tmp/err" && ok "Ctrl-C: exit 130, says so" || ko "Ctrl-C: exit $st: $(cat "$tmp/err")"
+"$sim" "$tmp/long/final.json" --dump > /dev/null 2> "$tmp/err" && ok "Ctrl-C: final.json reads back as a scenario" \
+    || ko "Ctrl-C: final.json does not read back: $(cat "$tmp/err")"
+grep -q 'interrupted' "$tmp/long/summary.txt" && ok "Ctrl-C: summary written" || ko "Ctrl-C: no summary"
+
 echo "$((n - fails)) passed, $fails failed"
 [ $fails -eq 0 ]
