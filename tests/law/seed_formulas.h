@@ -1,6 +1,7 @@
 /* seed_formulas.h — the seeds' collision formulas transcribed literally, in one place, for
  * tests/law/test_law_seeds.c and notebooks-c/02-classical-2d.c: seed 000's relativistic
- * 1-D (U), (V), (M); seed 000 part 3's classical `collide`; seed 001's equal-mass elastic
+ * 1-D (U), (V), (M); seed 000 part 3's classical `collide` and part 8's double collision
+ * `collide2` (also notebooks-c/03-double-collision.c); seed 001's equal-mass elastic
  * `collision`; seed 002's eqs (7)-(13) then (22)-(27). Functions are `static inline` so a
  * user that needs only some of them gets no unused-function warnings. */
 #ifndef RC_SEED_FORMULAS_H
@@ -66,6 +67,37 @@ static inline void seed000_collide(Ball *this, Ball *otherBall, double restituti
     otherBall->v = m1 * a * cosAlpha + otherBall->v;
     otherBall->w = m1 * a * sinAlpha + otherBall->w;
 } /* collide */
+
+/* ---- seed 000 part 8, `collide2`: ball `this` hits otherBall1 and otherBall2 at the same
+ * instant (positions at contact), transcribed from its TypeScript; masses radius^3 ---- */
+static inline void seed000_collide2(Ball *this, Ball *otherBall1, Ball *otherBall2, double restitution)
+{
+    double m0 = pow(this->radius, 3);
+    double m1 = pow(otherBall1->radius, 3);
+    double m2 = pow(otherBall2->radius, 3);
+    double x01 = otherBall1->x - this->x;
+    double y01 = otherBall1->y - this->y;
+    double x02 = otherBall2->x - this->x;
+    double y02 = otherBall2->y - this->y;
+    double p = x01 * x02 + y01 * y02;
+    double s01 = x01 * x01 + y01 * y01;
+    double s02 = x02 * x02 + y02 * y02;
+    double delta = (m0 + m1) * (m0 + m2) * s01 * s02 - m1 * m2 * p * p;
+    double v01 = otherBall1->v - this->v;
+    double w01 = otherBall1->w - this->w;
+    double b01 = (1 + restitution) * (x01 * v01 + y01 * w01);
+    double v02 = otherBall2->v - this->v;
+    double w02 = otherBall2->w - this->w;
+    double b02 = (1 + restitution) * (x02 * v02 + y02 * w02);
+    this->v = -(b01 * m1 * (x02 * m2 * p - x01 * (m0 + m2) * s02) + b02 * m2 * (x01 * m1 * p - x02 * (m0 + m1) * s01)) / delta + this->v;
+    this->w = -(b01 * m1 * (y02 * m2 * p - y01 * (m0 + m2) * s02) + b02 * m2 * (y01 * m1 * p - y02 * (m0 + m1) * s01)) / delta + this->w;
+    double r1 = m0 * (b02 * m2 * p - b01 * (m0 + m2) * s02) / delta;
+    otherBall1->v = x01 * r1 + otherBall1->v;
+    otherBall1->w = y01 * r1 + otherBall1->w;
+    double r2 = m0 * (b01 * m1 * p - b02 * (m0 + m1) * s01) / delta;
+    otherBall2->v = x02 * r2 + otherBall2->v;
+    otherBall2->w = y02 * r2 + otherBall2->w;
+} /* collide2 */
 
 /* ---- seed 001, equal-mass elastic `collision(i, j)`, transcribed from its JavaScript ----
  * (the seed's globals `particles` and `diameter2` are the caller's to set) */
