@@ -1,0 +1,760 @@
+/* gas.c — relcol-gas: run a relativistic gas from a far-from-equilibrium start (every
+ * speed equal) to equilibrium and read its temperature theta = kT/(m c^2) two ways, from
+ * <gamma> through the Jüttner law and from equipartition <p.v> = d kT; histogram gamma
+ * from snapshots at common table times against Jüttner and Maxwell–Boltzmann. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <gsl/gsl_errno.h>
+
+#include "app.h"
+#include "juttner.h"
+
+static const char *const prog = "relcol-gas";
+
+enum { EXIT_BAD_INPUT = 2 };
+/* Statistics: the snapshots are cut into NBLOCK consecutive blocks; the error bars are
+ * the standard errors of the block means (see usage). NCELL equiprobable cells for the
+ * chi-square, NHIST bins for the figure. */
+enum { NBLOCK = 10, NCELL = 20, NHIST = 60, MAXSPEC = 2 };
+/* Memory cap on the stored samples (balls x snapshots doubles, 400 MB). */
+#define MAX_SAMPLES 5e7
+/* The figure spans gamma - 1 up to where Jüttner's survival falls below this. */
+#define HIST_TAIL 2e-4
+/* 1-D mixture (see data/reproductions/cubero2007.md: equal masses only swap momenta and
+ * never thermalise): rest masses 1 and 2, each particle heavy with probability 1/2. */
+static const double mix_mass[MAXSPEC] = {1.0, 2.0};
+
+static void usage(FILE *f)
+{
+    fprintf(f,
+"usage: relcol-gas [--dim 1|2|3] [--n N] [--c C] [--theta-start T | --v-rms V]\n"
+"                  [--packing P] [--t-equil T] [--t-sample T] [--snapshots K]\n"
+"                  [--seed S] [--frame NAME] [--out DIR]\n"
+"\n"
+"Run a relativistic gas from a far-from-equilibrium start (every speed equal, random\n"
+"directions) to equilibrium, and read its temperature theta = kT/(m c^2) two ways:\n"
+"  from <gamma>, inverting Jüttner's <gamma>(theta) = K_(d-1)/2(1/theta)/K_(d+1)/2(1/theta)\n"
+"    + d theta  (2-D: (1 + 2 theta + 2 theta^2)/(1 + theta));\n"
+"  from equipartition, <p.v> = d kT (holds for any law of energy E(p): it presumes\n"
+"    nothing about the shape of the distribution).\n"
+"Then histogram gamma from snapshots of all balls at common table times and compare it\n"
+"with the Jüttner and Maxwell–Boltzmann laws at the equipartition temperature.\n"
+"\n"
+"gases:\n"
+"  --dim 2|3   discs / balls of rest radius 1/2, rest mass 1, in a square / cubic box\n"
+"              with elastic walls: the event-driven engine (relcol/sim.h), elastic\n"
+"              collisions, contact geometry --frame (default table: contracted shapes)\n"
+"  --dim 1     the exact 1-D point gas (relcol/gas1d.h) on [0, N] with elastic walls, a\n"
+"              mixture of rest masses 1 and 2 (one species would never thermalise: equal\n"
+"              masses only swap momenta); theta_start and reported theta are per species,\n"
+"              kT = m theta is common\n"
+"options:\n"
+"  --dim D          1, 2 or 3 (default 2)\n"
+"  --n N            number of balls (default 1000)\n"
+"  --c C            speed of light, finite (default 1); lengths in ball diameters\n"
+"  --theta-start T  start with every speed equal and the energy of Jüttner's <gamma> at\n"
+"                   theta = T (1-D: of the light species), so the gas settles at T\n"
+"                   (default 0.75)\n"
+"  --v-rms V        instead: every starting speed is V (0 < V < c)\n"
+"  --packing P      area / volume fraction (default 0.25 in 2-D, 0.2 in 3-D; not 1-D)\n"
+"  --t-equil T      table time run before sampling (default 50/c; 1-D 500/c)\n"
+"  --t-sample T     table time sampled after it (default 400/c; 1-D 1000/c)\n"
+"  --snapshots K    snapshots spread evenly over the sample, >= %d (default 100)\n"
+"  --seed S         random seed of positions, species and directions (default 1)\n"
+"  --frame NAME     contact frame (2-D/3-D; default table):\n",
+            2 * NBLOCK);
+    for (size_t i = 0; rc_toi_frames[i]; i++)
+        fprintf(f, "                     %-7s %s\n", rc_toi_frames[i]->name,
+                rc_toi_frames[i]->summary);
+    fprintf(f,
+"  --out DIR        output folder, created if missing (default out/gas)\n"
+"\n"
+"error bars: the K snapshots are cut into %d consecutive blocks and each figure is the\n"
+"mean of the block means +- their standard error. Blocks are independent when they are\n"
+"much longer than the snapshots' correlation time: the app measures that time (the\n"
+"integrated autocorrelation time of the per-snapshot <p.v>) and prints it, with a\n"
+"warning when a block is shorter than 4 of them. In 2-D and 3-D one species' <gamma> is\n"
+"fixed by the conserved energy, so its error bar is round-off; the <p.v> one is not.\n"
+"The chi-square per species uses %d cells equiprobable under Jüttner, divided by the\n"
+"variance inflation phi measured from the block-to-block scatter of the cell counts.\n"
+"\n"
+"writes, atomically, DIR/gas.csv (the gamma histogram per species: density +- block\n"
+"error, Jüttner and Maxwell–Boltzmann bin averages), DIR/gas.gp and, if gnuplot is\n"
+"installed, DIR/gas.png (linear and log scale).\n"
+"exit status: 0 ok; 2 bad input; 1 I/O or engine error.\n",
+            NBLOCK, NCELL);
+}
+
+#define fail(...) app_fail(prog, EXIT_BAD_INPUT, __VA_ARGS__)
+
+typedef struct options {
+    int dim;
+    long n, snapshots;
+    double c, theta_start, v_start, packing, t_equil, t_sample;
+    int theta_given, v_given, packing_given, frame_given, tequil_given, tsample_given;
+    uint64_t seed;
+    const rc_toi_frame *frame;
+    const char *out;
+} options;
+
+static int parse_options(int argc, char **argv, options *o)
+{
+    char err[APP_ERR_LEN], f1[APP_FMT_LEN];
+    o->dim = 2;
+    o->n = 1000;
+    o->snapshots = 100;
+    o->c = 1.0;
+    o->theta_start = 0.75;
+    o->seed = 1;
+    o->frame = rc_toi_frame_find("table");
+    o->out = "out/gas";
+    static const char *const known[] = {"--dim", "--n", "--c", "--theta-start", "--v-rms",
+                                        "--packing", "--t-equil", "--t-sample", "--snapshots",
+                                        "--seed", "--out", "--frame", NULL};
+    app_opts it;
+    app_opts_init(&it, prog, argc, argv, known, NULL, "see --help");
+    const char *name, *val;
+    for (int kind; (kind = app_opts_next(&it, &name, &val)) != APP_OPT_END;) {
+        if (kind == APP_OPT_HELP)
+            return -1;
+        if (kind == APP_OPT_ERROR)
+            return EXIT_BAD_INPUT;
+        long l;
+        if (strcmp(name, "--dim") == 0) {
+            if (app_parse_long(val, 1, 3, &l, err) != 0)
+                return fail("--dim: %s", err);
+            o->dim = (int)l;
+        } else if (strcmp(name, "--n") == 0) {
+            if (app_parse_long(val, 2, 10000000, &o->n, err) != 0)
+                return fail("--n: %s", err);
+        } else if (strcmp(name, "--snapshots") == 0) {
+            if (app_parse_long(val, 2 * NBLOCK, 100000000, &o->snapshots, err) != 0)
+                return fail("--snapshots: %s", err);
+        } else if (strcmp(name, "--seed") == 0) {
+            if (app_parse_u64(val, &o->seed, err) != 0)
+                return fail("--seed: %s", err);
+        } else if (strcmp(name, "--out") == 0) {
+            if (!*val)
+                return fail("--out: empty folder name");
+            o->out = val;
+        } else if (strcmp(name, "--frame") == 0) {
+            o->frame = rc_toi_frame_find(val);
+            if (!o->frame) {
+                char list[256];
+                return fail("--frame: unknown frame '%s' (known: %s)", val,
+                            app_toi_frame_list(list, sizeof list));
+            }
+            o->frame_given = 1;
+        } else {
+            double x;
+            if (app_parse_double(val, strcmp(name, "--c") == 0, &x, err) != 0)
+                return fail("%s: %s", name, err);
+            if (strcmp(name, "--c") == 0) {
+                if (app_check_c(x, err) != 0)
+                    return fail("--c: %s", err);
+                if (isinf(x))
+                    return fail("--c: must be finite (theta = kT/(m c^2) is 0 at c = inf)");
+                o->c = x;
+            } else if (strcmp(name, "--theta-start") == 0) {
+                if (!(x > 0.0 && x <= 1e4))
+                    return fail("--theta-start: %s must be in (0, 1e4]", app_fmt(x, f1));
+                o->theta_start = x;
+                o->theta_given = 1;
+            } else if (strcmp(name, "--v-rms") == 0) {
+                if (!(x > 0.0))
+                    return fail("--v-rms: %s must be > 0", app_fmt(x, f1));
+                o->v_start = x;
+                o->v_given = 1;
+            } else if (strcmp(name, "--packing") == 0) {
+                if (!(x > 0.0))
+                    return fail("--packing: %s must be > 0", app_fmt(x, f1));
+                o->packing = x;
+                o->packing_given = 1;
+            } else if (strcmp(name, "--t-equil") == 0) {
+                if (!(x >= 0.0))
+                    return fail("--t-equil: %s must be >= 0", app_fmt(x, f1));
+                o->t_equil = x;
+                o->tequil_given = 1;
+            } else if (strcmp(name, "--t-sample") == 0) {
+                if (!(x > 0.0))
+                    return fail("--t-sample: %s must be > 0", app_fmt(x, f1));
+                o->t_sample = x;
+                o->tsample_given = 1;
+            }
+        }
+    }
+    if (o->theta_given && o->v_given)
+        return fail("--v-rms: conflicts with --theta-start (give one)");
+    if (o->v_given && !(o->v_start < o->c))
+        return fail("--v-rms: %s must be below c = %s", app_fmt(o->v_start, f1),
+                    app_fmt(o->c, err));
+    if (o->dim == 1 && o->packing_given)
+        return fail("--packing: not used with --dim 1 (point particles at unit density)");
+    if (o->dim == 1 && o->frame_given)
+        return fail("--frame: not used with --dim 1 (point particles have no shape)");
+    const double pmax = o->dim == 3 ? 0.52 : 0.78; /* rc_sim_gas_init's lattice start */
+    if (!o->packing_given)
+        o->packing = o->dim == 3 ? 0.2 : 0.25;
+    else if (o->dim >= 2 && !(o->packing < pmax))
+        return fail("--packing: %s must be below %g in %d-D (lattice start)",
+                    app_fmt(o->packing, f1), pmax, o->dim);
+    if (!o->tequil_given)
+        o->t_equil = (o->dim == 1 ? 500.0 : 50.0) / o->c;
+    if (!o->tsample_given)
+        o->t_sample = (o->dim == 1 ? 1000.0 : 400.0) / o->c;
+    if ((double)o->n * (double)o->snapshots > MAX_SAMPLES)
+        return fail("--snapshots: n x snapshots = %.3g exceeds %.3g stored samples",
+                    (double)o->n * (double)o->snapshots, MAX_SAMPLES);
+    return 0;
+}
+
+/* ---- the gases -------------------------------------------------------------------- */
+
+typedef struct rng {
+    uint64_t s;
+} rng;
+
+static double rng_uniform(rng *r) /* splitmix64 */
+{
+    uint64_t z = (r->s += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return (double)((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+}
+
+/* A unit vector uniform on the circle / sphere. */
+static rc_vec3 random_direction(int dim, rng *r)
+{
+    if (dim == 2) {
+        const double a = 2.0 * M_PI * rng_uniform(r);
+        return rc_v3(cos(a), sin(a), 0.0);
+    }
+    const double z = 2.0 * rng_uniform(r) - 1.0, a = 2.0 * M_PI * rng_uniform(r);
+    const double s = sqrt((1.0 - z) * (1.0 + z));
+    return rc_v3(s * cos(a), s * sin(a), z);
+}
+
+/* What the run gives back: per snapshot and ball, the species and u = gamma^2 - 1
+ * = |p|^2/(m c)^2 (gamma - 1 = u/(gamma + 1) then has no cancellation). */
+typedef struct samples {
+    size_t n, ns;
+    unsigned char *spec; /* n species (1-D: by position order, which never changes) */
+    double *u;           /* ns * n */
+    double gamma0;       /* the common starting gamma of the light species */
+    double mass_drift, energy_drift;
+    uint64_t events, overlaps;
+    double box;          /* box edge */
+} samples;
+
+/* Starting gamma: from --v-rms, or the canonical energy at theta_start (1-D: for a
+ * mixture, the common gamma whose total energy is the canonical one at kT = theta_start
+ * x the light mass, so that the gas settles there up to O(1/N)). */
+static double start_gamma(const options *o)
+{
+    if (o->v_given) {
+        const double b = o->v_start / o->c;
+        return 1.0 / sqrt((1.0 - b) * (1.0 + b));
+    }
+    if (o->dim != 1)
+        return jt_mean_gamma(o->dim, o->theta_start);
+    const double kT = o->theta_start * mix_mass[0];
+    double e = 0.0, msum = 0.0;
+    for (int s = 0; s < MAXSPEC; s++) {
+        msum += 0.5 * mix_mass[s];
+        e += 0.5 * mix_mass[s] * jt_mean_gamma(1, kT / mix_mass[s]);
+    }
+    return e / msum;
+}
+
+static int run_sim(const options *o, samples *S, char *err)
+{
+    const size_t n = S->n;
+    rc_sim_ball *b = malloc(n * sizeof *b);
+    if (!b) {
+        app_errf(err, "out of memory");
+        return -1;
+    }
+    rc_sim_gas_def g = {o->dim, n, 0.5, o->packing, 0.0, o->c, 8.0, o->seed};
+    rc_vec3 box;
+    int st = rc_sim_gas_init(&g, &box, b);
+    if (st != RC_OK) {
+        app_errf(err, "--packing: cannot place %zu balls at packing %g: %s", n, o->packing,
+                 rc_strerror(st));
+        free(b);
+        return -1;
+    }
+    S->box = box.x;
+    /* every ball m = 1 (density 8 x r^3), |p| = m c sqrt(gamma0^2 - 1), random direction */
+    const double p0 = o->c * sqrt((S->gamma0 - 1.0) * (S->gamma0 + 1.0));
+    rng R = {o->seed ^ 0x6a5ULL};
+    for (size_t i = 0; i < n; i++) {
+        b[i].p = rc_v3_scale(p0, random_direction(o->dim, &R));
+        b[i].m = 1.0;
+        S->spec[i] = 0;
+    }
+    rc_sim_def d = rc_sim_def_default();
+    d.dim = o->dim;
+    d.box = box;
+    d.c = o->c;
+    d.frame = o->frame;
+    rc_sim *s = NULL;
+    st = rc_sim_create(&d, &s);
+    if (st == RC_OK)
+        st = rc_sim_set_balls(s, n, b, NULL);
+    free(b);
+    const double inv_c2 = 1.0 / (o->c * o->c);
+    double e0 = 0.0;
+    app_progress bar;
+    app_progress_init(&bar, prog, S->ns);
+    for (size_t j = 0; j <= S->ns && st == RC_OK; j++) {
+        const double t = o->t_equil + o->t_sample * (double)j / (double)S->ns;
+        st = rc_sim_advance(s, t, 0);
+        double e = 0.0;
+        for (size_t i = 0; i < n && st == RC_OK; i++) {
+            rc_sim_ball q;
+            st = rc_sim_get_ball(s, i, &q);
+            const double u = rc_v3_norm2(q.p) * inv_c2 / (q.m * q.m);
+            e += q.m * sqrt(1.0 + u);
+            S->mass_drift = fmax(S->mass_drift, fabs(q.m - 1.0));
+            if (j > 0)
+                S->u[(j - 1) * n + i] = u;
+        }
+        if (j == 0) /* the energy at the end of the equilibration (exact since t = 0) */
+            e0 = e;
+        S->energy_drift = fmax(S->energy_drift, fabs(e - e0) / e0);
+        app_progress_update(&bar, j);
+    }
+    app_progress_done(&bar);
+    rc_sim_diag dg;
+    if (st == RC_OK && (st = rc_sim_diagnostics(s, &dg)) == RC_OK) {
+        S->events = dg.collisions;
+        S->overlaps = dg.overlaps;
+        /* the energy at t = 0 is n m gamma0 exactly: compare with the end too */
+        const double e_start = (double)n * S->gamma0;
+        S->energy_drift = fmax(S->energy_drift, fabs(dg.mass_rel - e_start) / e_start);
+    }
+    rc_sim_free(&s);
+    if (st != RC_OK) {
+        app_errf(err, "engine: %s", rc_strerror(st));
+        return -1;
+    }
+    return 0;
+}
+
+/* 1-D: n points on [0, n], one per unit cell in its middle 80 %, species at random, every
+ * |v| equal (gamma0) with a random sign (the set-up of tests/gas/, Cubero et al. 2007). */
+static int run_gas1d(const options *o, samples *S, char *err)
+{
+    const size_t n = S->n;
+    double *x = malloc(n * sizeof *x), *m = malloc(n * sizeof *m), *p = malloc(n * sizeof *p);
+    int rc = -1;
+    rc_gas1d *g = NULL;
+    if (!x || !m || !p) {
+        app_errf(err, "out of memory");
+        goto out;
+    }
+    rng R = {o->seed};
+    const double beta = sqrt((S->gamma0 - 1.0) * (S->gamma0 + 1.0)) / S->gamma0;
+    double e0 = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        x[i] = (double)i + 0.1 + 0.8 * rng_uniform(&R);
+        S->spec[i] = rng_uniform(&R) < 0.5;
+        m[i] = mix_mass[S->spec[i]];
+        /* p = m gamma v */
+        p[i] = (rng_uniform(&R) < 0.5 ? -1.0 : 1.0) * m[i] * S->gamma0 * beta * o->c;
+        e0 += m[i] * S->gamma0;
+    }
+    rc_gas1d_def d = rc_gas1d_def_default();
+    d.n = n;
+    d.length = (double)n;
+    d.inv_c2 = 1.0 / (o->c * o->c);
+    d.x = x;
+    d.m = m;
+    d.p = p;
+    int st = rc_gas1d_create(&d, &g, NULL);
+    S->box = (double)n;
+    app_progress bar;
+    app_progress_init(&bar, prog, S->ns);
+    for (size_t j = 1; j <= S->ns && st == RC_OK; j++) {
+        st = rc_gas1d_advance(g, o->t_equil + o->t_sample * (double)j / (double)S->ns, 0);
+        if (st == RC_OK)
+            st = rc_gas1d_get(g, NULL, m, p);
+        double e = 0.0;
+        for (size_t i = 0; i < n && st == RC_OK; i++) {
+            const double u = p[i] * p[i] * d.inv_c2 / (m[i] * m[i]);
+            S->u[(j - 1) * n + i] = u;
+            e += m[i] * sqrt(1.0 + u);
+            S->mass_drift = fmax(S->mass_drift, fabs(m[i] - mix_mass[S->spec[i]]) /
+                                                    mix_mass[S->spec[i]]);
+        }
+        S->energy_drift = fmax(S->energy_drift, fabs(e - e0) / e0);
+        app_progress_update(&bar, j);
+    }
+    app_progress_done(&bar);
+    rc_gas1d_stats gs;
+    if (st == RC_OK && (st = rc_gas1d_stats_get(g, &gs)) == RC_OK)
+        S->events = gs.pair_events + gs.wall_events[0] + gs.wall_events[1];
+    if (st != RC_OK)
+        app_errf(err, "1-D gas: %s", rc_strerror(st));
+    else
+        rc = 0;
+out:
+    rc_gas1d_free(&g);
+    free(x), free(m), free(p);
+    return rc;
+}
+
+/* ---- statistics ------------------------------------------------------------------- */
+
+static double mean_se(const double *b, int nb, double *se)
+{
+    double s = 0.0, s2 = 0.0;
+    for (int k = 0; k < nb; k++)
+        s += b[k];
+    const double mean = s / nb;
+    for (int k = 0; k < nb; k++)
+        s2 += (b[k] - mean) * (b[k] - mean);
+    *se = sqrt(s2 / (nb - 1) / nb);
+    return mean;
+}
+
+/* Integrated autocorrelation time (in snapshot intervals) of a series: 1/2 + sum of the
+ * autocorrelations up to the first that is not positive (or lag K/4). */
+static double tau_int(const double *x, size_t k)
+{
+    double mean = 0.0, var = 0.0;
+    for (size_t i = 0; i < k; i++)
+        mean += x[i];
+    mean /= (double)k;
+    for (size_t i = 0; i < k; i++)
+        var += (x[i] - mean) * (x[i] - mean);
+    if (!(var > 0.0))
+        return 0.5;
+    double tau = 0.5;
+    for (size_t lag = 1; lag < k / 4; lag++) {
+        double c = 0.0;
+        for (size_t i = 0; i + lag < k; i++)
+            c += (x[i] - mean) * (x[i + lag] - mean);
+        const double rho = c / var;
+        if (!(rho > 0.0))
+            break;
+        tau += rho;
+    }
+    return tau;
+}
+
+typedef struct species_stats {
+    double mass;
+    size_t count;                          /* balls of this species */
+    double th_g, se_g, th_pv, se_pv, se_diff;
+    double chi2_j, chi2_mb, phi, dof;
+    double hist_lo[NHIST + 1];             /* bin edges in gamma */
+    double dens[NHIST], dens_se[NHIST], pj[NHIST], pmb[NHIST];
+} species_stats;
+
+static void gamma_edges_equiprobable(int d, double theta, double *edge,
+                                     gsl_integration_workspace *ws)
+{
+    edge[0] = 1.0;
+    edge[NCELL] = INFINITY;
+    for (int c = 1; c < NCELL; c++)
+        edge[c] = jt_quantile_upper(d, theta, 1.0 - (double)c / NCELL, ws);
+}
+
+static int find_cell(const double *edge, int ncell, double g)
+{
+    int lo = 0, hi = ncell; /* edge[lo] <= g < edge[hi] */
+    while (hi - lo > 1) {
+        const int mid = (lo + hi) / 2;
+        if (g >= edge[mid])
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+/* Thermometers, chi-squares and histogram of species q. */
+static void analyse(int d, const samples *S, int q, species_stats *ss, double *tau,
+                    gsl_integration_workspace *ws)
+{
+    const size_t n = S->n, ns = S->ns, per = ns / NBLOCK;
+    double bg[NBLOCK], bpv[NBLOCK], bd[NBLOCK];
+    double *series = malloc(ns * sizeof *series);
+    ss->count = 0;
+    for (size_t i = 0; i < n; i++)
+        ss->count += S->spec[i] == q;
+    for (int k = 0; k < NBLOCK; k++) {
+        double sg = 0.0, spv = 0.0, cnt = 0.0;
+        for (size_t j = (size_t)k * per; j < (size_t)(k + 1) * per; j++) {
+            double sj = 0.0;
+            for (size_t i = 0; i < n; i++) {
+                if (S->spec[i] != q)
+                    continue;
+                const double u = S->u[j * n + i], g = sqrt(1.0 + u);
+                sg += g;
+                sj += u / g; /* p.v / (m c^2) = (gamma^2 - 1)/gamma */
+                cnt += 1.0;
+            }
+            spv += sj;
+            if (series)
+                series[j] = sj;
+        }
+        bg[k] = jt_theta_from_gamma(d, sg / cnt);
+        bpv[k] = spv / cnt / d;
+        bd[k] = bpv[k] - bg[k];
+    }
+    *tau = series ? tau_int(series, per * NBLOCK) : NAN;
+    free(series);
+    ss->th_g = mean_se(bg, NBLOCK, &ss->se_g);
+    ss->th_pv = mean_se(bpv, NBLOCK, &ss->se_pv);
+    mean_se(bd, NBLOCK, &ss->se_diff);
+
+    /* chi-square in NCELL cells equiprobable under Jüttner at the <p.v> theta */
+    const double th = ss->th_pv;
+    double edge[NCELL + 1], pj[NCELL], pmb[NCELL];
+    gamma_edges_equiprobable(d, th, edge, ws);
+    for (int c = 0; c < NCELL; c++) {
+        const double hi_j = c == NCELL - 1 ? 0.0 : jt_sf(d, th, edge[c + 1], ws);
+        const double hi_mb = c == NCELL - 1 ? 0.0 : mb_sf(d, th, edge[c + 1]);
+        pj[c] = jt_sf(d, th, edge[c], ws) - hi_j;
+        pmb[c] = mb_sf(d, th, edge[c]) - hi_mb;
+    }
+    /* figure bins: uniform in gamma - 1 up to Jüttner's HIST_TAIL quantile */
+    const double gmax = jt_quantile_upper(d, th, HIST_TAIL, ws);
+    for (int h = 0; h <= NHIST; h++)
+        ss->hist_lo[h] = 1.0 + (gmax - 1.0) * h / NHIST;
+    double cc[NBLOCK][NCELL], hc[NBLOCK][NHIST];
+    memset(cc, 0, sizeof cc);
+    memset(hc, 0, sizeof hc);
+    double nsamp = 0.0;
+    for (int k = 0; k < NBLOCK; k++)
+        for (size_t j = (size_t)k * per; j < (size_t)(k + 1) * per; j++)
+            for (size_t i = 0; i < n; i++) {
+                if (S->spec[i] != q)
+                    continue;
+                const double u = S->u[j * n + i], g = sqrt(1.0 + u);
+                cc[k][find_cell(edge, NCELL, g)] += 1.0;
+                const double gm1 = u / (g + 1.0);
+                const int h = (int)floor(gm1 / (gmax - 1.0) * NHIST);
+                if (h >= 0 && h < NHIST)
+                    hc[k][h] += 1.0;
+                nsamp += 1.0;
+            }
+    const double nb = nsamp / NBLOCK;
+    double phi = 0.0;
+    ss->chi2_j = ss->chi2_mb = 0.0;
+    for (int c = 0; c < NCELL; c++) {
+        double tot = 0.0, var = 0.0;
+        for (int k = 0; k < NBLOCK; k++)
+            tot += cc[k][c];
+        for (int k = 0; k < NBLOCK; k++)
+            var += (cc[k][c] - tot / NBLOCK) * (cc[k][c] - tot / NBLOCK);
+        var /= NBLOCK - 1;
+        phi += var / (nb * pj[c] * (1.0 - pj[c]));
+        ss->chi2_j += (tot - nsamp * pj[c]) * (tot - nsamp * pj[c]) / (nsamp * pj[c]);
+        ss->chi2_mb += (tot - nsamp * pmb[c]) * (tot - nsamp * pmb[c]) / (nsamp * pmb[c]);
+    }
+    ss->phi = phi / NCELL;
+    ss->dof = NCELL - 2; /* total fixed, theta fitted */
+    for (int h = 0; h < NHIST; h++) {
+        const double w = ss->hist_lo[h + 1] - ss->hist_lo[h];
+        double bd2[NBLOCK];
+        for (int k = 0; k < NBLOCK; k++)
+            bd2[k] = hc[k][h] / nb / w;
+        ss->dens[h] = mean_se(bd2, NBLOCK, &ss->dens_se[h]);
+        /* model bin averages (exact for every d, also where the 1-D density diverges) */
+        ss->pj[h] = (jt_sf(d, th, ss->hist_lo[h], ws) - jt_sf(d, th, ss->hist_lo[h + 1], ws)) / w;
+        ss->pmb[h] = (mb_sf(d, th, ss->hist_lo[h]) - mb_sf(d, th, ss->hist_lo[h + 1])) / w;
+    }
+}
+
+/* ---- output ----------------------------------------------------------------------- */
+
+static int write_csv(const char *path, int nspec, const species_stats *ss, char *err)
+{
+    app_atomic a;
+    if (app_atomic_open(&a, path, err) != 0)
+        return -1;
+    fprintf(a.f, "species,mass,gamma_lo,gamma_hi,gamma_mid,density,density_err,juttner,"
+                 "maxwell_boltzmann\n");
+    for (int q = 0; q < nspec; q++)
+        for (int h = 0; h < NHIST; h++)
+            fprintf(a.f, "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", q,
+                    ss[q].mass, ss[q].hist_lo[h], ss[q].hist_lo[h + 1],
+                    0.5 * (ss[q].hist_lo[h] + ss[q].hist_lo[h + 1]), ss[q].dens[h],
+                    ss[q].dens_se[h], ss[q].pj[h], ss[q].pmb[h]);
+    return app_atomic_commit(&a, err);
+}
+
+static int write_script(const char *path, const options *o, int nspec,
+                        const species_stats *ss, char *err)
+{
+    app_atomic a;
+    if (app_atomic_open(&a, path, err) != 0)
+        return -1;
+    FILE *f = a.f;
+    char fc[APP_FMT_LEN];
+    fprintf(f,
+"# gas.gp — written by relcol-gas; run `gnuplot gas.gp` in this folder.\n"
+"# Histogram of gamma (density per unit gamma, from snapshots at common table times,\n"
+"# error bars from independent blocks) against the Jüttner and Maxwell–Boltzmann laws at\n"
+"# the equipartition temperature; left linear, right logarithmic.\n");
+    app_gnuplot_head(f, "gas.png", "size 1400,620 enhanced font 'Sans,12' linewidth 1.4", 0);
+    char sub[256];
+    if (o->dim == 1)
+        snprintf(sub, sizeof sub, "1-D mixture, m = 1 and 2, N = %ld, c = %s; θ_{⟨p·v⟩} = "
+                 "%.4f (m = 1), %.4f (m = 2)", o->n, app_fmt(o->c, fc), ss[0].th_pv,
+                 ss[1].th_pv);
+    else
+        snprintf(sub, sizeof sub, "%d-D, N = %ld, packing %g, c = %s, frame %s; "
+                 "θ_{⟨p·v⟩} = %.4f, θ_{⟨γ⟩} = %.4f", o->dim, o->n, o->packing,
+                 app_fmt(o->c, fc), o->frame->name, ss[0].th_pv, ss[0].th_g);
+    fprintf(f,
+"set multiplot layout 1,2 title \"Relativistic gas: γ histogram against Jüttner and "
+"Maxwell–Boltzmann\\n{/*0.8 %s}\"\n"
+"set xlabel 'γ'\n"
+"set ylabel 'probability density per unit γ'\n"
+"set grid lc rgb '#dddddd'\n"
+"set key top right box opaque\n",
+            sub);
+    double ymin = INFINITY;
+    for (int q = 0; q < nspec; q++)
+        ymin = fmin(ymin, ss[q].pj[NHIST - 1]);
+    static const char *const col[MAXSPEC][3] = {{"#1f77b4", "#d62728", "#2ca02c"},
+                                                {"#9467bd", "#ff7f0e", "#17becf"}};
+    for (int panel = 0; panel < 2; panel++) {
+        if (panel == 0)
+            fprintf(f, "set yrange [0:*]\n");
+        else /* down to a tenth of Jüttner's last bin: Maxwell–Boltzmann's tail is far lower */
+            fprintf(f, "set logscale y\nset format y '10^{%%T}'\nset yrange [%.3g:*]\n"
+                       "set key bottom left box opaque\n", 0.1 * ymin);
+        fprintf(f, "plot ");
+        for (int q = 0; q < nspec; q++) {
+            char lab[32] = "";
+            if (nspec > 1)
+                snprintf(lab, sizeof lab, " m = %g", ss[q].mass);
+            fprintf(f,
+"%s'gas.csv' skip 1 using ($1 == %d && $6 > 0 ? $5 : 1/0):6:7 with yerrorbars pt 7 ps 0.5 "
+"lc rgb '%s' title 'simulation%s', \\\n"
+"     '' skip 1 using ($1 == %d ? $5 : 1/0):8 with lines lw 2 lc rgb '%s' "
+"title 'Jüttner%s', \\\n"
+"     '' skip 1 using ($1 == %d ? $5 : 1/0):9 with lines lw 2 dt 2 lc rgb '%s' "
+"title 'Maxwell–Boltzmann%s'%s\n",
+                    q == 0 ? "" : "     ", q, col[q][0], lab, q, col[q][1], lab, q, col[q][2],
+                    lab, q + 1 < nspec ? ", \\" : "");
+        }
+    }
+    fprintf(f, "unset multiplot\n");
+    return app_atomic_commit(&a, err);
+}
+
+int main(int argc, char **argv)
+{
+    options o;
+    memset(&o, 0, sizeof o);
+    int st = parse_options(argc, argv, &o);
+    if (st < 0)
+        return app_help(usage);
+    if (st != 0)
+        return st;
+    gsl_set_error_handler_off();
+
+    char err[APP_ERR_LEN];
+    int rc = 1;
+    samples S;
+    memset(&S, 0, sizeof S);
+    S.n = (size_t)o.n;
+    S.ns = (size_t)o.snapshots / NBLOCK * NBLOCK; /* whole blocks */
+    S.gamma0 = start_gamma(&o);
+    S.spec = malloc(S.n);
+    S.u = malloc(S.n * S.ns * sizeof *S.u);
+    species_stats ss[MAXSPEC];
+    double tau[MAXSPEC];
+    gsl_integration_workspace *ws = gsl_integration_workspace_alloc(200);
+    char *csv = app_path_join(o.out, "gas.csv"), *gp = app_path_join(o.out, "gas.gp");
+    if (!S.spec || !S.u || !ws || !csv || !gp) {
+        fprintf(stderr, "%s: out of memory\n", prog);
+        goto out;
+    }
+    if (app_mkdir_p(o.out, err) != 0) {
+        fail("--out: %s", err);
+        rc = EXIT_BAD_INPUT;
+        goto out;
+    }
+    if ((o.dim == 1 ? run_gas1d(&o, &S, err) : run_sim(&o, &S, err)) != 0) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        rc = strncmp(err, "--", 2) == 0 ? EXIT_BAD_INPUT : 1;
+        goto out;
+    }
+    const int nspec = o.dim == 1 ? 2 : 1;
+    for (int q = 0; q < nspec; q++) {
+        ss[q].mass = o.dim == 1 ? mix_mass[q] : 1.0;
+        analyse(o.dim, &S, q, &ss[q], &tau[q], ws);
+    }
+    if (write_csv(csv, nspec, ss, err) != 0 || write_script(gp, &o, nspec, ss, err) != 0) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        goto out;
+    }
+    int made = 0;
+    if (app_gnuplot_run(prog, o.out, "gas.gp", "gas.png", &made, err) != 0) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        goto out;
+    }
+
+    char f1[APP_FMT_LEN];
+    const double dsnap = o.t_sample / (double)S.ns;
+    if (o.dim == 1)
+        printf("%s: 1-D mixture (m = 1, 2), N = %ld on [0, %ld], c = %s; start: every "
+               "gamma = %.6g\n", prog, o.n, o.n, app_fmt(o.c, f1), S.gamma0);
+    else
+        printf("%s: %d-D, N = %ld, packing %g (box %.4g), c = %s, frame %s; start: every "
+               "gamma = %.6g\n", prog, o.dim, o.n, o.packing, S.box, app_fmt(o.c, f1),
+               o.frame->name, S.gamma0);
+    printf("equilibration to t = %g, then %zu snapshots every %g (%d blocks of %zu); "
+           "%llu collisions%s",
+           o.t_equil, S.ns, dsnap, NBLOCK, S.ns / NBLOCK, (unsigned long long)S.events,
+           o.dim == 1 ? "\n" : "");
+    if (o.dim != 1)
+        printf(", %llu overlaps (shape change)\n", (unsigned long long)S.overlaps);
+    printf("conservation: max rest-mass drift %.2g (relative), energy drift %.2g\n",
+           S.mass_drift, S.energy_drift);
+    for (int q = 0; q < nspec; q++) {
+        const species_stats *s = &ss[q];
+        if (nspec > 1)
+            printf("species m = %g (%zu particles): kT = m theta\n", s->mass, s->count);
+        printf("theta from <gamma>  (Jüttner)       = %.5f +- %.5f%s\n", s->th_g, s->se_g,
+               o.dim != 1 ? "  (fixed by the conserved energy)" : "");
+        printf("theta from <p.v>/%d (equipartition) = %.5f +- %.5f\n", o.dim, s->th_pv,
+               s->se_pv);
+        printf("difference <p.v> - <gamma>          = %+.5f +- %.5f (%.1f sigma)\n",
+               s->th_pv - s->th_g, s->se_diff, (s->th_pv - s->th_g) / s->se_diff);
+        if (o.dim == 2 && s->count <= 1000000) { /* an O(N) sum of log-gammas */
+            printf("theta microcanonical (exact for uncontracted discs at this energy) = %.5f\n",
+                   jt_theta_micro_2d((double)s->count, S.gamma0));
+        }
+        printf("chi2/phi of the gamma histogram (%d cells, dof %g, phi %.2f): Jüttner %.1f, "
+               "Maxwell–Boltzmann %.4g (5 sigma bound %.1f)\n",
+               NCELL, s->dof, s->phi, s->chi2_j / s->phi, s->chi2_mb / s->phi,
+               s->dof + 5.0 * sqrt(2.0 * s->dof));
+        printf("block check: <p.v> snapshot correlation time %.2f snapshots, blocks of %zu\n",
+               tau[q], S.ns / NBLOCK);
+        if ((double)(S.ns / NBLOCK) < 4.0 * tau[q])
+            fprintf(stderr, "%s: warning: blocks are shorter than 4 correlation times: error "
+                            "bars may be understated (raise --t-sample)\n", prog);
+    }
+    if (made)
+        printf("wrote %s, %s, %s/gas.png\n", csv, gp, o.out);
+    else
+        printf("wrote %s, %s\n", csv, gp);
+    rc = fflush(stdout) == 0 ? 0 : 1;
+out:
+    free(S.spec);
+    free(S.u);
+    free(csv);
+    free(gp);
+    gsl_integration_workspace_free(ws);
+    return rc;
+}
