@@ -113,28 +113,28 @@ static inline double wall_support(const rc_sim *s, int32_t i, int d)
     return r / M * sqrt(a->m * a->m + pp * s->inv_c2);
 }
 
+/* Walls and cell crossings below are written without branches on the direction of
+ * motion (a coin toss per dimension for the branch predictor); the times are the same
+ * expressions, so the same bits. */
 static void wall_event(const rc_sim *s, int32_t i, double *best, int32_t *bp)
 {
     const eng_ball *bi = &s->b[i];
+    double bt = *best;
+    int32_t bw = *bp;
     for (int d = 0; d < s->def.dim; d++) {
-        double v = rc_v3_get(bi->v, d), x = rc_v3_get(bi->x, d), t;
-        int w;
-        if (v > 0.0) {
-            t = bi->t + (s->L[d] - wall_support(s, i, d) - x) / v;
-            w = 2 * d + 1;
-        } else if (v < 0.0) {
-            t = bi->t + (x - wall_support(s, i, d)) / (-v);
-            w = 2 * d;
-        } else {
-            continue;
-        }
-        if (t < s->now)
-            t = s->now;
-        if (t < *best) {
-            *best = t;
-            *bp = ENG_WALL(w);
-        }
+        const double v = rc_v3_get(bi->v, d), x = rc_v3_get(bi->x, d);
+        const double h = wall_support(s, i, d);
+        const int up = v > 0.0, moving = v != 0.0;
+        const double num = up ? s->L[d] - h - x : x - h;
+        const double den = up ? v : (moving ? -v : 1.0);
+        double t = bi->t + num / den;
+        t = t < s->now ? s->now : t;
+        const int take = moving & (t < bt);
+        bt = take ? t : bt;
+        bw = take ? ENG_WALL(2 * d + up) : bw;
     }
+    *best = bt;
+    *bp = bw;
 }
 
 /* Neighbours gathered per scan before testing (stack buffer; more are done in chunks). */
@@ -151,6 +151,54 @@ static inline void test_list(const rc_sim *s, int32_t i, const int32_t *nb, size
             *bp = nb[j];
         }
     }
+}
+
+/* Gap along unit axis u between table-frame shapes (contracted along their velocities,
+ * support r sqrt(1 - (v.u)^2/c^2)) at separation dx, and its closing speed. */
+static inline void axis_gap(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
+                            rc_vec3 dx, rc_vec3 dv, rc_vec3 u, double *gap, double *close)
+{
+    const double vin = rc_v3_dot(bi->v, u), vkn = rc_v3_dot(bk->v, u), dn = rc_v3_dot(dx, u);
+    const double h = bi->r * sqrt(fmax(0.0, 1.0 - vin * vin * s->inv_c2)) +
+                     bk->r * sqrt(fmax(0.0, 1.0 - vkn * vkn * s->inv_c2));
+    *gap = fabs(dn) - h;
+    *close = dn >= 0.0 ? -rc_v3_dot(dv, u) : rc_v3_dot(dv, u);
+}
+
+/* Separating axes for the table frame's shapes: separated along a fixed axis u by a gap g
+ * closing at speed w (the shapes keep their form between collisions), they cannot touch
+ * before g / w (never, if w <= 0). 1 if that is no earlier than `best` along the centre
+ * line or either ball's direction of motion -- so the root finder need not be asked. The
+ * margin AXIS_MARGIN (relative to ri + rk, far above the frame's touch_tol of 1e-12 and
+ * round-off) keeps every pair the frame could still call touching. */
+#define AXIS_MARGIN 1e-9
+
+static int axes_rule_out(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, double best)
+{
+    rc_vec3 dx;
+    double tref;
+    if (bi->t >= bk->t) {
+        tref = bi->t;
+        dx = rc_v3_sub(rc_v3_axpy(bk->x, bi->t - bk->t, bk->v), bi->x);
+    } else {
+        tref = bk->t;
+        dx = rc_v3_sub(bk->x, rc_v3_axpy(bi->x, bk->t - bi->t, bi->v));
+    }
+    const rc_vec3 dv = rc_v3_sub(bk->v, bi->v);
+    const double margin = AXIS_MARGIN * (bi->r + bk->r), horizon = best - tref;
+    for (int q = 0; q < 3; q++) {
+        const rc_vec3 u = q == 0 ? dx : (q == 1 ? bi->v : bk->v);
+        const double u2 = rc_v3_norm2(u);
+        if (!(u2 > 0.0))
+            continue;
+        double gap, close;
+        axis_gap(s, bi, bk, dx, dv, rc_v3_scale(1.0 / sqrt(u2), u), &gap, &close);
+        gap -= margin;
+        /* gap > close * horizon, written so that horizon = inf and close <= 0 behave */
+        if (gap > 0.0 && (close <= 0.0 || gap > close * horizon))
+            return 1;
+    }
+    return 0;
 }
 
 /* Contracted frames: the root finding is the cost, so first collect the neighbours whose
@@ -202,9 +250,12 @@ static void scan_block_narrow(const rc_sim *cs, int32_t i, int x0, int x1, int y
         }
         s->cand[b] = c;
     }
+    const int table = s->def.frame == &rc_toi_frame_table;
     for (size_t a = 0; a < nc; a++) {
         if (!(s->cand[a].t < *best))
             break;
+        if (table && axes_rule_out(s, bi, &s->b[s->cand[a].k], *best))
+            continue;
         double t = pair_time(s, bi, &s->b[s->cand[a].k], *best);
         if (t < *best) {
             *best = t;
@@ -257,19 +308,16 @@ static void cross_event(rc_sim *s, int32_t i, const int c[3])
     double best = INFINITY;
     int32_t code = -1;
     for (int d = 0; d < s->def.dim; d++) {
-        double v = rc_v3_get(bi->v, d), x = rc_v3_get(bi->x, d), t;
-        if (v > 0.0 && c[d] < s->g.n[d] - 1)
-            t = bi->t + ((c[d] + 1) * s->g.w[d] - x) / v;
-        else if (v < 0.0 && c[d] > 0)
-            t = bi->t + (c[d] * s->g.w[d] - x) / v;
-        else
-            continue;
-        if (t < s->now)
-            t = s->now;
-        if (t < best) {
-            best = t;
-            code = 2 * d + (v > 0.0);
-        }
+        const double v = rc_v3_get(bi->v, d), x = rc_v3_get(bi->x, d);
+        const int up = v > 0.0;
+        /* a boundary to cross: not the box's own wall */
+        const int valid = up ? c[d] < s->g.n[d] - 1 : (v < 0.0) & (c[d] > 0);
+        const double edge = (double)(c[d] + up) * s->g.w[d];
+        double t = bi->t + (edge - x) / (valid ? v : 1.0);
+        t = t < s->now ? s->now : t;
+        const int take = valid & (t < best);
+        best = take ? t : best;
+        code = take ? 2 * d + up : code;
     }
     s->a[i].cross_t = best;
     s->a[i].cross_code = code;
@@ -418,6 +466,13 @@ static int grow_group(rc_sim *s, size_t *nm, size_t *nc, double T)
                         double bb = rc_v3_dot(dx, dv);
                         if (!(bb < 0.0 && bb * bb > atol * atol * sig * sig * rc_v3_norm2(dv)))
                             continue;
+                        /* a contact the group already has (the event's own pair is met
+                         * from both its balls): skip it before any costly test */
+                        int known = 0;
+                        for (size_t j = 0; j < *nm && !known; j++)
+                            known = s->grp_ball[j] == k && have_contact(s, *nc, (int)mi, (int)j);
+                        if (known)
+                            continue;
                         rc_vec3 n = rc_v3_scale(1.0 / sqrt(d2), dx);
                         if (s->narrow) {
                             /* contracted shapes: separated along the centre line (a
@@ -534,7 +589,8 @@ static int predict_checked(rc_sim *s, int32_t i, rc_vec3 vold, int32_t partner, 
             rc_vec3 dx = rc_v3_sub(rc_v3_axpy(bk->x, T - bk->t, bk->v), bi->x);
             double d2 = rc_v3_norm2(dx), sig = bi->r + bk->r;
             double lim = sig * (1.0 + stol);
-            if (check && d2 <= lim * lim && kk != partner) {
+            /* one rarely taken branch (&, not &&: the parts are cheap) */
+            if (check & (d2 <= lim * lim) & (kk != partner)) {
                 rc_vec3 dv = rc_v3_sub(bk->v, vold);
                 double bb = rc_v3_dot(dx, dv);
                 if (bb < 0.0 && bb * bb > atol * atol * sig * sig * rc_v3_norm2(dv))

@@ -49,6 +49,7 @@ typedef struct eng_heap {
     eng_heap_entry *h;
     uint32_t *pos;
     size_t n;
+    eng_heap_entry *mem; /* the allocation h points into (h is offset so siblings share a line) */
 } eng_heap;
 
 /* Allocate for n balls; then rc_eng_heap_build with every ball's key. */

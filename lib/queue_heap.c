@@ -11,6 +11,10 @@
 
 /* Children per node. */
 #define ARITY 4
+/* Cache line (bytes), and the entries h starts past a line boundary (ARITY - 1 with
+ * 16-byte entries, so that children 4k+1.. start a line). */
+#define LINE 64
+#define SIBLING_SHIFT (ARITY - 1)
 
 static inline int less(const eng_heap_entry *a, const eng_heap_entry *b)
 {
@@ -19,7 +23,13 @@ static inline int less(const eng_heap_entry *a, const eng_heap_entry *b)
 
 int rc_eng_heap_init(eng_heap *q, size_t n)
 {
-    q->h = malloc((n ? n : 1) * sizeof *q->h);
+    /* The four children of node k are entries 4k+1..4k+4: with h three entries past a
+     * cache-line boundary they fill exactly one 64-byte line, so each level of a sift
+     * touches one line, not two (it matters once the heap outgrows the caches). */
+    size_t bytes = (n + SIBLING_SHIFT + 1) * sizeof *q->h;
+    bytes = (bytes + LINE - 1) / LINE * LINE;
+    q->mem = aligned_alloc(LINE, bytes);
+    q->h = q->mem ? q->mem + SIBLING_SHIFT : NULL;
     q->pos = malloc((n ? n : 1) * sizeof *q->pos);
     q->n = n;
     if (!q->h || !q->pos) {
@@ -31,8 +41,9 @@ int rc_eng_heap_init(eng_heap *q, size_t n)
 
 void rc_eng_heap_free(eng_heap *q)
 {
-    free(q->h);
+    free(q->mem);
     free(q->pos);
+    q->mem = NULL;
     q->h = NULL;
     q->pos = NULL;
     q->n = 0;
@@ -53,25 +64,38 @@ static void sift_up(eng_heap *q, size_t k)
     q->pos[e.ball] = (uint32_t)k;
 }
 
+/* Index (a or b) of the smaller entry, without a branch: which child is smallest is a
+ * coin toss, and a mispredicted branch per level cost more than the comparisons. */
+static inline size_t min_of(const eng_heap_entry *h, size_t a, size_t b)
+{
+    const int lt = (h[b].t < h[a].t) | ((h[b].t == h[a].t) & (h[b].ball < h[a].ball));
+    return a ^ ((a ^ b) & ((size_t)0 - (size_t)lt)); /* select by mask: no branch */
+}
+
 static void sift_down(eng_heap *q, size_t k)
 {
     const size_t n = q->n;
-    eng_heap_entry e = q->h[k];
+    eng_heap_entry *h = q->h;
+    eng_heap_entry e = h[k];
     for (;;) {
         size_t c0 = ARITY * k + 1;
         if (c0 >= n)
             break;
-        size_t c = c0, end = c0 + ARITY < n ? c0 + ARITY : n;
-        for (size_t j = c0 + 1; j < end; j++)
-            if (less(&q->h[j], &q->h[c]))
-                c = j;
-        if (!less(&q->h[c], &e))
+        size_t c;
+        if (c0 + ARITY <= n) { /* a full node: a tournament of two pairs */
+            c = min_of(h, min_of(h, c0, c0 + 1), min_of(h, c0 + 2, c0 + 3));
+        } else {
+            c = c0;
+            for (size_t j = c0 + 1; j < n; j++)
+                c = min_of(h, c, j);
+        }
+        if (!less(&h[c], &e))
             break;
-        q->h[k] = q->h[c];
-        q->pos[q->h[k].ball] = (uint32_t)k;
+        h[k] = h[c];
+        q->pos[h[k].ball] = (uint32_t)k;
         k = c;
     }
-    q->h[k] = e;
+    h[k] = e;
     q->pos[e.ball] = (uint32_t)k;
 }
 

@@ -97,6 +97,8 @@ int rc_sim_gas_init(const rc_sim_gas_def *g, rc_vec3 *box, rc_sim_ball *balls)
         balls[i].r = r;
         balls[i].m = m;
         balls[i].tau = 0.0;
+        balls[i].collided = 0; /* no collision yet: the TC model starts with no memory */
+        balls[i].tau_last = 0.0;
         ptot = rc_v3_add(ptot, balls[i].p);
     }
     free(perm);

@@ -218,7 +218,7 @@ static int parse_generate(const ctx *c, const cJSON *g, const cJSON *jbox, scn_s
 {
     if (!cJSON_IsObject(g))
         return bad(c, "generate", "must be an object");
-    const char *kind;
+    const char *kind = NULL;
     if (get_str(c, g, "generate", "kind", NULL, &kind))
         return -1;
     if (!kind)
@@ -230,7 +230,7 @@ static int parse_generate(const ctx *c, const cJSON *g, const cJSON *jbox, scn_s
         if (jbox)
             return bad(c, "box", "must not be given with generate.kind = gas (the box follows "
                                  "from n and packing)");
-        double n, radius, packing, v_rms, density;
+        double n = 0, radius = 0, packing = 0, v_rms = 0, density = 0;
         if (get_num(c, g, "generate", "n", 1, 0, 0, &n) ||
             get_num(c, g, "generate", "radius", 0, 1.0, 0, &radius) ||
             get_num(c, g, "generate", "packing", 1, 0, 0, &packing) ||
@@ -265,7 +265,7 @@ static int parse_generate(const ctx *c, const cJSON *g, const cJSON *jbox, scn_s
             return -1;
         if (s->dim != 2)
             return bad(c, "dim", "generate.kind = rack is a 2-D table");
-        double r, speed, aim, gap;
+        double r = 0, speed = 0, aim = 0, gap = 0;
         if (get_num(c, g, "generate", "radius", 0, 0.028575, 0, &r) ||
             get_num(c, g, "generate", "speed", 0, 5.0, 0, &speed) ||
             get_num(c, g, "generate", "aim", 0, 0.0, 0, &aim) ||
@@ -359,7 +359,7 @@ static int parse_outputs(const ctx *c, const cJSON *o, scn_scenario *s)
             static const char *const ek[] = {"every", NULL};
             if (only_keys(c, sn, "outputs.snapshots", ek))
                 return -1;
-            double every;
+            double every = 0;
             if (get_num(c, sn, "outputs.snapshots", "every", 1, 0, 0, &every))
                 return -1;
             if (!(every > 0))
@@ -382,7 +382,7 @@ int scn_parse(const char *text, const char *name, scn_scenario *s, char *err)
 {
     static const char *const keys[] = {"relcol", "dim", "box", "c", "law", "restitution",
                                        "contact_frame", "tc", "seed", "time", "t_end",
-                                       "balls", "generate", "outputs", NULL};
+                                       "restart", "balls", "generate", "outputs", NULL};
     memset(s, 0, sizeof *s);
     ctx c = {name, err};
     cJSON *root = cJSON_Parse(text);
@@ -401,7 +401,7 @@ int scn_parse(const char *text, const char *name, scn_scenario *s, char *err)
     }
     if (only_keys(&c, root, "", keys))
         goto done;
-    double ver, dim, eps_b = 1, eps_w = 1, seed;
+    double ver = 1, dim = 0, eps_b = 1, eps_w = 1, seed = 1;
     if (get_num(&c, root, "", "relcol", 0, 1, 0, &ver) || get_num(&c, root, "", "dim", 1, 0, 0, &dim))
         goto done;
     if (ver != 1) {
@@ -419,7 +419,7 @@ int scn_parse(const char *text, const char *name, scn_scenario *s, char *err)
         bad(&c, "c", "must be > 0 (or \"inf\")");
         goto done;
     }
-    const char *law;
+    const char *law = NULL;
     if (get_str(&c, root, "", "law", "zmf", &law))
         goto done;
     if (!(s->law = rc_law_find(law))) {
@@ -448,7 +448,7 @@ int scn_parse(const char *text, const char *name, scn_scenario *s, char *err)
     }
     s->eps_ball = eps_b;
     s->eps_wall = eps_w;
-    const char *frame;
+    const char *frame = NULL;
     if (get_str(&c, root, "", "contact_frame", "table", &frame))
         goto done;
     if (strcmp(frame, "sphere") && strcmp(frame, "table") && strcmp(frame, "zmf")) {
@@ -469,6 +469,8 @@ int scn_parse(const char *text, const char *name, scn_scenario *s, char *err)
         goto done;
     }
     s->seed = (uint64_t)seed;
+    if (get_bool(&c, root, "", "restart", 0, &s->restart))
+        goto done;
     if (!(s->t_end > s->time)) {
         bad(&c, "t_end", "must be later than the start time %g", s->time);
         goto done;
@@ -605,7 +607,7 @@ int scn_write(FILE *f, const scn_scenario *s, double t, double t_end, size_t n,
             s->law->name, s->eps_ball, s->eps_wall);
     fprintf(f, " \"contact_frame\": \"%s\", \"tc\": %.17g, \"seed\": %llu,\n", s->frame, s->t_c,
             (unsigned long long)s->seed);
-    fprintf(f, " \"time\": %.17g, \"t_end\": %.17g,\n", t, t_end);
+    fprintf(f, " \"time\": %.17g, \"t_end\": %.17g, \"restart\": true,\n", t, t_end);
     fprintf(f, " \"outputs\": {\"dir\": \"%s\", \"xyz_every\": %.17g, \"plots\": %s, \"gif\": %s},\n",
             s->out.dir, s->out.xyz_every, s->out.plots ? "true" : "false",
             s->out.gif ? "true" : "false");

@@ -34,6 +34,7 @@ typedef struct scn_scenario {
     uint64_t seed;
     double time;               /* start time (a restart carries the time it stopped at) */
     double t_end;
+    int restart;               /* the balls are a state relcol-sim wrote (final.json) */
     size_t n;                  /* balls */
     rc_sim_ball *balls;        /* n balls (momentum, rest mass resolved) */
     char generator[16];        /* "" (explicit balls), "rack" or "gas": how balls were made */

@@ -127,6 +127,7 @@ int main(int argc, char **argv)
     def.eps_wall = s.eps_wall;
     def.t_c = s.t_c;
     def.law = s.law;
+    def.restart = s.restart;
     if (sim_frame_apply(s.frame, &def, err)) {
         scn_free(&s);
         return fail(2, "contact_frame: %s", err);

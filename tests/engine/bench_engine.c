@@ -30,7 +30,7 @@ static result run(int dim, size_t n, double packing, double c, const char *frame
 {
     result res = {0, 0, 0};
     rc_sim_gas_def g = {dim, n, 0.5, packing, isinf(c) ? 1.0 : 0.5 * c, c, 1.0, 2024};
-    rc_sim_ball *b = malloc(n * sizeof *b);
+    rc_sim_ball *b = calloc(n, sizeof *b); /* zeroed: rc_sim_gas_init leaves collided, tau_last */
     rc_sim_def d = rc_sim_def_default();
     d.dim = dim;
     d.c = c;
@@ -79,7 +79,7 @@ static result run(int dim, size_t n, double packing, double c, const char *frame
 static rc_sim *make(int dim, size_t n, double packing, double c, const char *frame)
 {
     rc_sim_gas_def g = {dim, n, 0.5, packing, isinf(c) ? 1.0 : 0.5 * c, c, 1.0, 2024};
-    rc_sim_ball *b = malloc(n * sizeof *b);
+    rc_sim_ball *b = calloc(n, sizeof *b); /* zeroed: rc_sim_gas_init leaves collided, tau_last */
     rc_sim_def d = rc_sim_def_default();
     d.dim = dim;
     d.c = c;

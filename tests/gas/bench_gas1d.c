@@ -41,7 +41,7 @@ int main(void)
     (void)rc_test_checks; /* the harness is included for its generator only */
     (void)rc_test_failures;
     const uint64_t events = 5000000;
-    double sc, sr;
+    double sc = 0, sr = 0;
     /* alternate, best of 3 each, so a neighbour's load hits both alike */
     double rc = 0.0, rr = 0.0;
     for (int k = 0; k < 3; k++) {

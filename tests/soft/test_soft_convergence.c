@@ -45,7 +45,7 @@ static void test_head_on_exact_at_any_stiffness(void)
         for (int ie = 0; ie < 3; ie++)
             for (int ik = 0; ik < 3; ik++) {
                 rc_soft_params prm = params(cs[ic], epss[ie], kappas[ik]);
-                rc_particle p[2], out[2];
+                rc_particle p[2], out[2] = {{0, {0, 0, 0}}, {0, {0, 0, 0}}};
                 rc_vec3 x[2];
                 ENSURE(soft_case(prm.inv_c2, beta(cs[ic], 0.7, 0.3, -0.2),
                                  beta(cs[ic], -0.5, 0.1, 0.4), 0.0, p, x) == 0);

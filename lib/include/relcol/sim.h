@@ -70,6 +70,13 @@ typedef struct rc_sim_def {
     double overlap_tol;
     double cell_size;   /* cell edge, >= the largest ball diameter; 0 = automatic */
     double density;     /* rest mass of a ball given with m <= 0: density * r^3 (default 1) */
+    /* restart != 0: the balls given to rc_sim_set_balls are a state an engine wrote
+     * (rc_sim_get_ball after rc_sim_sync), to be continued. Such a state may hold shapes
+     * that overlap by the frame's own geometry — shape change after a collision, and in
+     * the zmf frame shapes judged at one table time — which the engine itself produced
+     * and handles (see the overlap policy above), so the overlap check is skipped; every
+     * other check stays. Default 0: overlapping input is rejected. */
+    int restart;
 } rc_sim_def;
 
 rc_sim_def rc_sim_def_default(void);
