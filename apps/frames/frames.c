@@ -125,17 +125,6 @@ typedef struct outcome {
     double q[2];    /* heat (m' - m) c^2 per ball */
 } outcome;
 
-/* (m'^2 - m^2) c^2 = |pbar|^2 - |pbar'|^2 (ZMF momenta; the zmf law keeps each ball's ZMF
- * energy), so Q = (m' - m) c^2 = (|pbar|^2 - |pbar'|^2) / (m' + m): no cancellation. At
- * c = inf this is the classical kinetic energy lost per ball in the ZMF. */
-static double heat(const rc_particle *in, const rc_particle *out, rc_vec3 u, double k)
-{
-    rc_four a = rc_particle_four(in, k), b = rc_particle_four(out, k);
-    rc_boost(u, k, &a);
-    rc_boost(u, k, &b);
-    return (rc_v3_norm2(a.x) - rc_v3_norm2(b.x)) / (out->m + in->m);
-}
-
 static int run_one(const rc_toi_frame *fr, double c, double bR, double eps,
                    rc_toi_workspace *ws, outcome *res, char *err)
 {
@@ -163,12 +152,10 @@ static int run_one(const rc_toi_frame *fr, double c, double bR, double eps,
         app_errf(err, "frame %s, c = %g, b/R = %g: law: %s", fr->name, c, bR, rc_strerror(st));
         return -1;
     }
-    rc_vec3 u;
-    rc_zmf(in, 2, k, &u, NULL);
-    for (int i = 0; i < 2; i++) {
+    /* the zmf law keeps each ball's ZMF energy, so rc_pair_heat's formula holds */
+    rc_pair_heat(in, outp, k, res->q);
+    for (int i = 0; i < 2; i++)
         res->v[i] = rc_velocity(outp[i].m, outp[i].p, k);
-        res->q[i] = heat(&in[i], &outp[i], u, k);
-    }
     res->theta = atan2(res->v[0].y, res->v[0].x);
     return 0;
 }

@@ -9,6 +9,7 @@
 #include <gsl/gsl_errno.h>
 
 #include "app.h"
+#include "gas_stats.h"
 #include "juttner.h"
 
 static const char *const prog = "relcol-gas";
@@ -408,18 +409,6 @@ out:
 
 /* ---- statistics ------------------------------------------------------------------- */
 
-static double mean_se(const double *b, int nb, double *se)
-{
-    double s = 0.0, s2 = 0.0;
-    for (int k = 0; k < nb; k++)
-        s += b[k];
-    const double mean = s / nb;
-    for (int k = 0; k < nb; k++)
-        s2 += (b[k] - mean) * (b[k] - mean);
-    *se = sqrt(s2 / (nb - 1) / nb);
-    return mean;
-}
-
 /* Integrated autocorrelation time (in snapshot intervals) of a series: 1/2 + sum of the
  * autocorrelations up to the first that is not positive (or lag K/4). */
 static double tau_int(const double *x, size_t k)
@@ -463,19 +452,6 @@ static void gamma_edges_equiprobable(int d, double theta, double *edge,
         edge[c] = jt_quantile_upper(d, theta, 1.0 - (double)c / NCELL, ws);
 }
 
-static int find_cell(const double *edge, int ncell, double g)
-{
-    int lo = 0, hi = ncell; /* edge[lo] <= g < edge[hi] */
-    while (hi - lo > 1) {
-        const int mid = (lo + hi) / 2;
-        if (g >= edge[mid])
-            lo = mid;
-        else
-            hi = mid;
-    }
-    return lo;
-}
-
 /* Thermometers, chi-squares and histogram of species q. */
 static void analyse(int d, const samples *S, int q, species_stats *ss, double *tau,
                     gsl_integration_workspace *ws)
@@ -508,9 +484,9 @@ static void analyse(int d, const samples *S, int q, species_stats *ss, double *t
     }
     *tau = series ? tau_int(series, per * NBLOCK) : NAN;
     free(series);
-    ss->th_g = mean_se(bg, NBLOCK, &ss->se_g);
-    ss->th_pv = mean_se(bpv, NBLOCK, &ss->se_pv);
-    mean_se(bd, NBLOCK, &ss->se_diff);
+    ss->th_g = gs_mean_se(bg, NBLOCK, &ss->se_g);
+    ss->th_pv = gs_mean_se(bpv, NBLOCK, &ss->se_pv);
+    gs_mean_se(bd, NBLOCK, &ss->se_diff);
 
     /* chi-square in NCELL cells equiprobable under Jüttner at the <p.v> theta */
     const double th = ss->th_pv;
@@ -536,7 +512,7 @@ static void analyse(int d, const samples *S, int q, species_stats *ss, double *t
                 if (S->spec[i] != q)
                     continue;
                 const double u = S->u[j * n + i], g = sqrt(1.0 + u);
-                cc[k][find_cell(edge, NCELL, g)] += 1.0;
+                cc[k][gs_find_cell(edge, NCELL, g)] += 1.0;
                 const double gm1 = u / (g + 1.0);
                 const int h = (int)floor(gm1 / (gmax - 1.0) * NHIST);
                 if (h >= 0 && h < NHIST)
@@ -544,27 +520,15 @@ static void analyse(int d, const samples *S, int q, species_stats *ss, double *t
                 nsamp += 1.0;
             }
     const double nb = nsamp / NBLOCK;
-    double phi = 0.0;
-    ss->chi2_j = ss->chi2_mb = 0.0;
-    for (int c = 0; c < NCELL; c++) {
-        double tot = 0.0, var = 0.0;
-        for (int k = 0; k < NBLOCK; k++)
-            tot += cc[k][c];
-        for (int k = 0; k < NBLOCK; k++)
-            var += (cc[k][c] - tot / NBLOCK) * (cc[k][c] - tot / NBLOCK);
-        var /= NBLOCK - 1;
-        phi += var / (nb * pj[c] * (1.0 - pj[c]));
-        ss->chi2_j += (tot - nsamp * pj[c]) * (tot - nsamp * pj[c]) / (nsamp * pj[c]);
-        ss->chi2_mb += (tot - nsamp * pmb[c]) * (tot - nsamp * pmb[c]) / (nsamp * pmb[c]);
-    }
-    ss->phi = phi / NCELL;
+    ss->phi = gs_chi2_two_models(&cc[0][0], NBLOCK, NCELL, nsamp, pj, pmb, &ss->chi2_j,
+                                 &ss->chi2_mb);
     ss->dof = NCELL - 2; /* total fixed, theta fitted */
     for (int h = 0; h < NHIST; h++) {
         const double w = ss->hist_lo[h + 1] - ss->hist_lo[h];
         double bd2[NBLOCK];
         for (int k = 0; k < NBLOCK; k++)
             bd2[k] = hc[k][h] / nb / w;
-        ss->dens[h] = mean_se(bd2, NBLOCK, &ss->dens_se[h]);
+        ss->dens[h] = gs_mean_se(bd2, NBLOCK, &ss->dens_se[h]);
         /* model bin averages (exact for every d, also where the 1-D density diverges) */
         ss->pj[h] = (jt_sf(d, th, ss->hist_lo[h], ws) - jt_sf(d, th, ss->hist_lo[h + 1], ws)) / w;
         ss->pmb[h] = (mb_sf(d, th, ss->hist_lo[h]) - mb_sf(d, th, ss->hist_lo[h + 1])) / w;

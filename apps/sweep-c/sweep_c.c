@@ -143,21 +143,6 @@ static int collide_at(const options *o, const app_balls *b, rc_vec3 n, double c,
     return st;
 }
 
-/* Heat sum (m' - m) c^2 over both balls without cancellation, from ZMF momenta. */
-static double heat(const rc_particle in[2], const rc_particle out[2], double inv_c2)
-{
-    rc_vec3 u;
-    rc_zmf(in, 2, inv_c2, &u, NULL);
-    double q = 0.0;
-    for (int i = 0; i < 2; i++) {
-        rc_four a = rc_particle_four(&in[i], inv_c2), b = rc_particle_four(&out[i], inv_c2);
-        rc_boost(u, inv_c2, &a);
-        rc_boost(u, inv_c2, &b);
-        q += (rc_v3_norm2(a.x) - rc_v3_norm2(b.x)) / (out[i].m + in[i].m);
-    }
-    return q;
-}
-
 static int write_script(const char *path, const options *o, const app_balls *b,
                         double vmax, int have_heat, double s_v, double s_q, char *err)
 {
@@ -312,7 +297,7 @@ int main(int argc, char **argv)
             d = fmax(d, rc_v3_norm(rc_v3_sub(v, vr)));
         }
         dv[j] = d / vscale;
-        q[j] = heat(pin, pout, k);
+        q[j] = rc_pair_heat(pin, pout, k, NULL);
         qd[j] = ((pout[0].m - pin[0].m) + (pout[1].m - pin[1].m)) * cs[j] * cs[j];
         dq[j] = have_heat ? fabs(q[j] - dK) / dK : NAN;
         app_progress_update(&bar, j + 1);

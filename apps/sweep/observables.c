@@ -44,31 +44,6 @@ static int sphere_normal(const sweep_setup *s, rc_vec3 *n, char *err)
     return 0;
 }
 
-/* Heat (m'-m)c^2 summed, cancellation-free: in the ZMF each ball keeps its energy, so
- * m'^2 - m^2 = (|pbar|^2 - |pbar'|^2)/c^2, and (m'-m)c^2 = (|pbar|^2 - |pbar'|^2)/(m'+m).
- * Classically it is the kinetic energy lost. */
-static double heat(const rc_particle before[2], const rc_particle after[2], double k)
-{
-    if (k == 0.0) {
-        double K0 = 0, K1 = 0;
-        for (int i = 0; i < 2; i++) {
-            K0 += rc_kinetic_energy(before[i].m, before[i].p, 0);
-            K1 += rc_kinetic_energy(after[i].m, after[i].p, 0);
-        }
-        return K0 - K1;
-    }
-    rc_vec3 u;
-    rc_zmf(before, 2, k, &u, NULL);
-    double q = 0;
-    for (int i = 0; i < 2; i++) {
-        rc_four a = rc_particle_four(&before[i], k), b = rc_particle_four(&after[i], k);
-        rc_boost(u, k, &a);
-        rc_boost(u, k, &b);
-        q += (rc_v3_norm2(a.x) - rc_v3_norm2(b.x)) / (after[i].m + before[i].m);
-    }
-    return q;
-}
-
 static int eval_collide(const sweep_setup *s, double k, double *out, char *err)
 {
     rc_particle b[2], a[2];
@@ -90,7 +65,7 @@ static int eval_collide(const sweep_setup *s, double k, double *out, char *err)
         out[2 * i] = v.x;
         out[2 * i + 1] = v.y;
     }
-    out[4] = heat(b, a, k);
+    out[4] = rc_pair_heat(b, a, k, NULL); /* zmf keeps ZMF energies */
     return 0;
 }
 

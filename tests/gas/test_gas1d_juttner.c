@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "gas1d_util.h"
+#include "gas_stats.h"
 
 /* ================================================================ 1-D Juttner (c = 1)
  * f(p) = exp(-E/kT) / (2 m K1(m/kT)), E = sqrt(m^2 + p^2); theta = kT/m. With
@@ -184,18 +185,6 @@ typedef struct {
     uint64_t events;
 } gas_run;
 
-static double mean_se(const double *b, int nb, double *se)
-{
-    double s = 0.0, s2 = 0.0;
-    for (int k = 0; k < nb; k++)
-        s += b[k];
-    const double mean = s / nb;
-    for (int k = 0; k < nb; k++)
-        s2 += (b[k] - mean) * (b[k] - mean);
-    *se = sqrt(s2 / (nb - 1) / nb);
-    return mean;
-}
-
 /* Initial |v|: equal speeds whose total energy is the canonical one at kT_target, so the
  * gas should settle at kT_target (to O(1/N), the microcanonical correction). */
 static double start_speed(const gas_run *r)
@@ -287,12 +276,12 @@ static int run_gas(gas_run *r)
     }
     double se_all;
     for (int q = 0; q < NSPEC; q++) {
-        r->kT_pv[q] = mean_se(bpv[q], NBLOCK, &r->se_pv[q]);
-        r->kT_g[q] = mean_se(bg[q], NBLOCK, &r->se_g[q]);
-        mean_se(bd[q], NBLOCK, &r->se_g_minus_pv[q]);
+        r->kT_pv[q] = gs_mean_se(bpv[q], NBLOCK, &r->se_pv[q]);
+        r->kT_g[q] = gs_mean_se(bg[q], NBLOCK, &r->se_g[q]);
+        gs_mean_se(bd[q], NBLOCK, &r->se_g_minus_pv[q]);
     }
-    mean_se(blh, NBLOCK, &r->se_l_minus_h);
-    r->kT_fit = mean_se(ball, NBLOCK, &se_all);
+    gs_mean_se(blh, NBLOCK, &r->se_l_minus_h);
+    r->kT_fit = gs_mean_se(ball, NBLOCK, &se_all);
 
     /* histograms: NBIN equiprobable cells per species under the model tested first
      * (Juttner at c = 1, Maxwell-Boltzmann classically) at kT_fit */
@@ -317,16 +306,7 @@ static int run_gas(gas_run *r)
             for (size_t i = 0; i < n; i++) {
                 const int q = spec[b * n + i];
                 const double p = ps[(b * ns + k) * n + i];
-                const double *e = edge[q];
-                int lo = 0, hi = NBIN; /* e[lo] <= p < e[hi] */
-                while (hi - lo > 1) {
-                    const int mid = (lo + hi) / 2;
-                    if (p >= e[mid])
-                        lo = mid;
-                    else
-                        hi = mid;
-                }
-                cnt[b][q][lo] += 1.0;
+                cnt[b][q][gs_find_cell(edge[q], NBIN, p)] += 1.0;
                 ntot[q] += 1.0;
             }
     /* Pearson chi-square of the pooled counts, and the variance inflation phi: the
@@ -341,18 +321,12 @@ static int run_gas(gas_run *r)
         nspec++;
         const double nb = ntot[q] / NBLOCK;
         for (int k = 0; k < NBIN; k++) {
-            double tot = 0.0, var = 0.0;
-            for (int b = 0; b < NBLOCK; b++)
-                tot += cnt[b][q][k];
-            for (int b = 0; b < NBLOCK; b++)
-                var += (cnt[b][q][k] - tot / NBLOCK) * (cnt[b][q][k] - tot / NBLOCK);
-            var /= NBLOCK - 1;
-            const double pi0 = prob[model0][q][k];
-            phi_sum += var / (nb * pi0 * (1.0 - pi0));
-            for (int md = 0; md < 2; md++) {
-                const double ex = ntot[q] * prob[md][q][k];
-                r->chi2[md] += (tot - ex) * (tot - ex) / ex;
-            }
+            double var;
+            const double tot = gs_pooled_count((const double *)cnt + q * NBIN + k, NBLOCK,
+                                                NSPEC * NBIN, &var);
+            phi_sum += gs_phi_term(var, nb, prob[model0][q][k]);
+            for (int md = 0; md < 2; md++)
+                r->chi2[md] += gs_pearson_term(tot, ntot[q] * prob[md][q][k]);
         }
     }
     r->phi = phi_sum / (nspec * NBIN);
@@ -381,11 +355,6 @@ static void print_run(const char *name, const gas_run *r)
            r->dof, r->phi);
 }
 
-/* Pass bound of a chi-square with dof degrees of freedom: mean + 4.5 standard
- * deviations (Wilson-Hilferty: p ~ 1e-4 at dof = 37, so a fixed-seed pass is not luck
- * while a real misfit of the shape, which grows like the sample size, cannot hide). */
-static double chi2_bound(double dof) { return dof + 4.5 * sqrt(2.0 * dof); }
-
 /* The reproduction: binary mixture m = 1 and 2 (equal numbers), c = 1, every |v| equal
  * at the start, hot (theta = 1 for the light species, 0.5 for the heavy one). */
 static void test_relaxes_to_juttner(void)
@@ -410,8 +379,8 @@ static void test_relaxes_to_juttner(void)
     /* both species give the same temperature */
     ENSURE_CLOSE(r.kT_pv[0], r.kT_pv[1], 4.0, r.se_l_minus_h);
     /* the histogram fits Juttner and rejects Maxwell-Boltzmann at the same kT */
-    ENSURE_MSG(r.chi2[0] / r.phi <= chi2_bound(r.dof), "chi2 %g", r.chi2[0] / r.phi);
-    ENSURE_MSG(r.chi2[1] / r.phi >= 100.0 * chi2_bound(r.dof), "chi2 MB %g",
+    ENSURE_MSG(r.chi2[0] / r.phi <= gs_chi2_bound(r.dof), "chi2 %g", r.chi2[0] / r.phi);
+    ENSURE_MSG(r.chi2[1] / r.phi >= 100.0 * gs_chi2_bound(r.dof), "chi2 MB %g",
                r.chi2[1] / r.phi);
     /* phi is an honest correction, not a fudge that swallows misfits: the effective
      * sample n/phi stays > 1e5, so a misfit of ~2 % in a cell would still show */
@@ -427,7 +396,7 @@ static void test_equal_masses_do_not_relax(void)
     ENSURE(run_gas(&r) == RC_OK);
     printf("  equal masses: chi2/phi vs Juttner = %.4g (phi %.2f), kT from <p v> %.4f, "
            "from <gamma> %.4f\n", r.chi2[0] / r.phi, r.phi, r.kT_pv[0], r.kT_g[0]);
-    ENSURE(r.chi2[0] > 100.0 * chi2_bound(r.dof));
+    ENSURE(r.chi2[0] > 100.0 * gs_chi2_bound(r.dof));
     /* all |v| equal: <p v> = gamma m v^2 while <gamma>-theta follows Juttner: they differ */
     ENSURE(fabs(r.kT_pv[0] - r.kT_g[0]) > 0.05);
 }
@@ -441,8 +410,8 @@ static void test_classical_relaxes_to_mb(void)
     ENSURE(run_gas(&r) == RC_OK);
     print_run("c = inf mixture", &r);
     ENSURE_CLOSE(r.kT_pv[0], r.kT_pv[1], 4.0, r.se_l_minus_h);
-    ENSURE_MSG(r.chi2[1] / r.phi <= chi2_bound(r.dof), "chi2 %g", r.chi2[1] / r.phi);
-    ENSURE(r.chi2[0] / r.phi >= 100.0 * chi2_bound(r.dof));
+    ENSURE_MSG(r.chi2[1] / r.phi <= gs_chi2_bound(r.dof), "chi2 %g", r.chi2[1] / r.phi);
+    ENSURE(r.chi2[0] / r.phi >= 100.0 * gs_chi2_bound(r.dof));
 }
 
 int main(int argc, char **argv)

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gas_stats.h"
 #include "juttner.h"
 #include "rc_test.h"
 #include "relcol/relcol.h"
@@ -184,18 +185,6 @@ typedef struct {
     uint64_t overlaps;
 } gas_run;
 
-static double mean_se(const double *b, int nb, double *se)
-{
-    double s = 0.0, s2 = 0.0;
-    for (int k = 0; k < nb; k++)
-        s += b[k];
-    const double mean = s / nb;
-    for (int k = 0; k < nb; k++)
-        s2 += (b[k] - mean) * (b[k] - mean);
-    *se = sqrt(s2 / (nb - 1) / nb);
-    return mean;
-}
-
 /* N discs of rest radius 1/2 and rest mass 1 (c = 1) on random lattice sites
  * (rc_sim_gas_init), every speed equal (gamma0 = Jüttner's <gamma> at theta, so the
  * energy is the canonical one at theta) in random directions: far from equilibrium. */
@@ -289,9 +278,9 @@ static int run_gas(gas_run *r)
         bpv[k] = 0.5 * spv / (double)(ns * n);
         bd[k] = bpv[k] - bg[k];
     }
-    r->th_g = mean_se(bg, NREP, &se);
-    r->th_pv = mean_se(bpv, NREP, &r->se_pv);
-    mean_se(bd, NREP, &r->se_diff);
+    r->th_g = gs_mean_se(bg, NREP, &se);
+    r->th_pv = gs_mean_se(bpv, NREP, &r->se_pv);
+    gs_mean_se(bd, NREP, &r->se_diff);
     r->th_micro = jt_theta_micro_2d((double)n, jt_mean_gamma(2, r->theta));
 
     /* chi-square: NBIN cells in gamma, equiprobable under Jüttner at the fitted theta
@@ -310,34 +299,13 @@ static int run_gas(gas_run *r)
     for (int k = 0; k < NREP; k++)
         for (size_t j = 0; j < ns * n; j++) {
             const double g = sqrt(1.0 + q[k * ns * n + j]);
-            int lo = 0, hi = NBIN; /* edge[lo] <= g < edge[hi] */
-            while (hi - lo > 1) {
-                const int mid = (lo + hi) / 2;
-                if (g >= edge[mid])
-                    lo = mid;
-                else
-                    hi = mid;
-            }
-            cnt[k][lo] += 1.0;
+            cnt[k][gs_find_cell(edge, NBIN, g)] += 1.0;
         }
     /* Pearson chi-square of the pooled counts, divided by the variance inflation phi:
      * the replica-to-replica variance of the counts over the multinomial one (1 for
      * independent samples; snapshots of one replica are correlated, so phi > 1) */
-    const double ntot = (double)(NREP * ns * n), nb = ntot / NREP;
-    double phi = 0.0;
-    r->chi2_j = r->chi2_mb = 0.0;
-    for (int c = 0; c < NBIN; c++) {
-        double tot = 0.0, var = 0.0;
-        for (int k = 0; k < NREP; k++)
-            tot += cnt[k][c];
-        for (int k = 0; k < NREP; k++)
-            var += (cnt[k][c] - tot / NREP) * (cnt[k][c] - tot / NREP);
-        var /= NREP - 1;
-        phi += var / (nb * pj[c] * (1.0 - pj[c]));
-        r->chi2_j += (tot - ntot * pj[c]) * (tot - ntot * pj[c]) / (ntot * pj[c]);
-        r->chi2_mb += (tot - ntot * pmb[c]) * (tot - ntot * pmb[c]) / (ntot * pmb[c]);
-    }
-    r->phi = phi / NBIN;
+    r->phi = gs_chi2_two_models(&cnt[0][0], NREP, NBIN, (double)(NREP * ns * n), pj, pmb,
+                                &r->chi2_j, &r->chi2_mb);
     r->dof = NBIN - 2; /* total fixed, theta fitted */
     free(q);
     return RC_OK;
@@ -358,11 +326,6 @@ static void print_run(const gas_run *r)
            r->chi2_j / r->phi, r->chi2_mb / r->phi, r->dof, r->phi, r->mass_drift,
            r->energy_drift);
 }
-
-/* Pass bound of a chi-square with dof degrees of freedom: mean + 4.5 standard deviations
- * (p ~ 1e-4 at dof 18: a fixed-seed pass is not luck, while a real misfit of the shape,
- * which grows like the sample size, cannot hide). */
-static double chi2_bound(double dof) { return dof + 4.5 * sqrt(2.0 * dof); }
 
 /* Elastic collisions keep rest masses and the total energy (any frame). Round-off: each
  * collision changes M by a few ulp; 1e-10 is far above ~1e3 collisions per ball x 1e-16
@@ -390,8 +353,8 @@ static void test_discs_relax_to_juttner(void)
      * (<gamma> - 1 = theta) would give theta = 0.857, a 14 % shift */
     ENSURE(r.se_pv < 0.002);
     /* the histogram fits Jüttner and rejects Maxwell–Boltzmann at the same theta */
-    ENSURE_MSG(r.chi2_j / r.phi <= chi2_bound(r.dof), "chi2 %g", r.chi2_j / r.phi);
-    ENSURE_MSG(r.chi2_mb / r.phi >= 100.0 * chi2_bound(r.dof), "chi2 MB %g", r.chi2_mb / r.phi);
+    ENSURE_MSG(r.chi2_j / r.phi <= gs_chi2_bound(r.dof), "chi2 %g", r.chi2_j / r.phi);
+    ENSURE_MSG(r.chi2_mb / r.phi >= 100.0 * gs_chi2_bound(r.dof), "chi2 MB %g", r.chi2_mb / r.phi);
     /* phi is an honest correction, not a fudge that swallows misfits */
     ENSURE(r.phi > 0.5 && r.phi < 20.0);
 }
@@ -410,7 +373,7 @@ static void test_table_frame(void)
     print_run(&r);
     ENSURE(r.mass_drift < CONSERVATION_TOL && r.energy_drift < CONSERVATION_TOL);
     ENSURE_REL(r.th_pv, r.th_g, 0.03);
-    ENSURE_MSG(r.chi2_mb / r.phi >= 100.0 * chi2_bound(r.dof), "chi2 MB %g", r.chi2_mb / r.phi);
+    ENSURE_MSG(r.chi2_mb / r.phi >= 100.0 * gs_chi2_bound(r.dof), "chi2 MB %g", r.chi2_mb / r.phi);
 }
 
 int main(int argc, char **argv)

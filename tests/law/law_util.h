@@ -53,4 +53,34 @@ static inline void lu_boost_ref(rc_vec3 u, double inv_c2, double M, rc_vec3 p, d
     *pbar = rc_v3((double)(px + f * ux), (double)(py + f * uy), (double)(pz + f * uz));
 }
 
+/* A random pair: masses log-uniform in [0.2, 5], speeds below 1 in `dim` dimensions, a
+ * contact normal along which the balls approach at >= 0.1 of the faster speed (so heat
+ * and deviations stay away from accidental zeros), restitution in [0.1, 0.9]. The
+ * momenta b[].p are left for the caller to set at its c. */
+typedef struct {
+    rc_particle b[2];
+    rc_vec3 v[2], n;
+    double eps, vmax;
+} lu_pair;
+
+static inline void lu_random_pair(rc_test_rng *r, lu_pair *p, int dim)
+{
+    for (;;) {
+        p->vmax = 0.0;
+        for (int j = 0; j < 2; j++) {
+            p->b[j].m = lu_logu(r, 0.2, 5.0);
+            p->v[j] = lu_vec(r, dim, 1.0);
+            p->vmax = lu_max(p->vmax, rc_v3_norm(p->v[j]));
+        }
+        p->n = lu_unit(r, dim);
+        double dvn = rc_v3_dot(rc_v3_sub(p->v[0], p->v[1]), p->n);
+        if (fabs(dvn) < 0.1 * p->vmax)
+            continue; /* keep the heat and the deviations well away from accidental zeros */
+        if (dvn < 0.0)
+            p->n = rc_v3_scale(-1.0, p->n);
+        p->eps = rc_test_range(r, 0.1, 0.9);
+        return;
+    }
+}
+
 #endif

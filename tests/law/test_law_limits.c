@@ -18,39 +18,13 @@
  * well below 0.05; round-off (~1e-16) stays 4 decades under the k = 6 deviation 1e-12. */
 #define TOL_SLOPE 0.05
 
-typedef struct {
-    rc_particle b[2];
-    rc_vec3 v[2], n;
-    double eps, vmax;
-} pair_cfg;
-
-static void random_pair(rc_test_rng *r, pair_cfg *p, int dim)
-{
-    for (;;) {
-        p->vmax = 0.0;
-        for (int j = 0; j < 2; j++) {
-            p->b[j].m = lu_logu(r, 0.2, 5.0);
-            p->v[j] = lu_vec(r, dim, 1.0);
-            p->vmax = lu_max(p->vmax, rc_v3_norm(p->v[j]));
-        }
-        p->n = lu_unit(r, dim);
-        double dvn = rc_v3_dot(rc_v3_sub(p->v[0], p->v[1]), p->n);
-        if (fabs(dvn) < 0.1 * p->vmax)
-            continue; /* keep the heat and the deviations well away from accidental zeros */
-        if (dvn < 0.0)
-            p->n = rc_v3_scale(-1.0, p->n);
-        p->eps = rc_test_range(r, 0.1, 0.9);
-        return;
-    }
-}
-
 /* Outcome at speed of light c (velocities; kinetic energy lost; sum (m' - m) c^2). */
 typedef struct {
     rc_vec3 v[2];
     double heat_K, heat_m;
 } outcome;
 
-static outcome run(const rc_law *law, const pair_cfg *p, double c)
+static outcome run(const rc_law *law, const lu_pair *p, double c)
 {
     double k;
     ENSURE(rc_inv_c2(c, &k) == RC_OK);
@@ -95,8 +69,8 @@ static void test_classical_limit(void)
     double worst = 0.0;
     for (size_t l = 0; rc_laws[l]; l++) {
         for (int cfg = 0; cfg < N_CONFIG; cfg++) {
-            pair_cfg p;
-            random_pair(&r, &p, 1 + cfg % 3);
+            lu_pair p;
+            lu_random_pair(&r, &p, 1 + cfg % 3);
             outcome o_inf = run(rc_laws[l], &p, INFINITY);
             /* classical heat from the seed-000 formula for zmf, or cm-isotropic's
              * (1 - R^2) mu |v0 - v1|^2 / 2 */

@@ -72,6 +72,16 @@ size_t rc_collide_batch(const rc_law *law, const rc_collision_params *prm, size_
  * m'^2 = m^2 + (1 - eps_w^2) p_n^2 / c^2. RC_NO_COLLISION if p.n <= 0. */
 int rc_collide_wall(double inv_c2, double eps_w, rc_particle *a, rc_vec3 n);
 
+/* Heat of a two-ball collision, sum over both balls of (m' - m) c^2, computed without
+ * cancellation as sum (|pbar|^2 - |pbar'|^2) / (m' + m) from the momenta pbar, pbar' in the
+ * zero-momentum frame of `before`. Valid only for laws that keep each ball's ZMF energy
+ * (zmf, cm-isotropic): then m'^2 - m^2 = (|pbar|^2 - |pbar'|^2) / c^2. At inv_c2 = 0 it
+ * is the classical kinetic energy lost.
+ * q_ball (may be NULL) receives the two per-ball terms. NAN (and NAN in q_ball) for
+ * invalid input: non-finite or negative inv_c2, or a particle failing rc_particle_check. */
+double rc_pair_heat(const rc_particle before[2], const rc_particle after[2], double inv_c2,
+                    double q_ball[2]);
+
 /* Draw a cm-isotropic impact angle for uniformly distributed impact parameters:
  * 2-D sin(alpha) uniform in [-1, 1]; 3-D sin^2(alpha) uniform in [0, 1] and azimuth
  * uniform. u1, u2 are uniform deviates in [0, 1) (the caller owns the generator). */
