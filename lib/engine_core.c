@@ -20,18 +20,23 @@ static inline double pair_time_dx(const rc_sim *s, const eng_ball *bi, const eng
                                   rc_vec3 dx, double d2, double tref, double best,
                                   int use_narrow);
 
+/* Separation bk - bi at the later of the two balls' clocks, *tref: the earlier ball is
+ * advanced, so the result depends only on the two stored states. */
+static inline rc_vec3 pair_sep(const eng_ball *bi, const eng_ball *bk, double *tref)
+{
+    if (bi->t >= bk->t) {
+        *tref = bi->t;
+        return rc_v3_sub(rc_v3_axpy(bk->x, bi->t - bk->t, bk->v), bi->x);
+    }
+    *tref = bk->t;
+    return rc_v3_sub(bk->x, rc_v3_axpy(bi->x, bk->t - bi->t, bi->v));
+}
+
 static inline double pair_time(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
                                double best)
 {
-    rc_vec3 dx;
     double tref;
-    if (bi->t >= bk->t) {
-        tref = bi->t;
-        dx = rc_v3_sub(rc_v3_axpy(bk->x, bi->t - bk->t, bk->v), bi->x);
-    } else {
-        tref = bk->t;
-        dx = rc_v3_sub(bk->x, rc_v3_axpy(bi->x, bk->t - bi->t, bi->v));
-    }
+    rc_vec3 dx = pair_sep(bi, bk, &tref);
     return pair_time_dx(s, bi, bk, dx, rc_v3_norm2(dx), tref, best, s->narrow);
 }
 
@@ -39,15 +44,8 @@ static inline double pair_time(const rc_sim *s, const eng_ball *bi, const eng_ba
 static inline double sphere_time(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
                                  double best)
 {
-    rc_vec3 dx;
     double tref;
-    if (bi->t >= bk->t) {
-        tref = bi->t;
-        dx = rc_v3_sub(rc_v3_axpy(bk->x, bi->t - bk->t, bk->v), bi->x);
-    } else {
-        tref = bk->t;
-        dx = rc_v3_sub(bk->x, rc_v3_axpy(bi->x, bk->t - bi->t, bi->v));
-    }
+    rc_vec3 dx = pair_sep(bi, bk, &tref);
     return pair_time_dx(s, bi, bk, dx, rc_v3_norm2(dx), tref, best, 0);
 }
 
@@ -175,15 +173,8 @@ static inline void axis_gap(const rc_sim *s, const eng_ball *bi, const eng_ball 
 
 static int axes_rule_out(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, double best)
 {
-    rc_vec3 dx;
     double tref;
-    if (bi->t >= bk->t) {
-        tref = bi->t;
-        dx = rc_v3_sub(rc_v3_axpy(bk->x, bi->t - bk->t, bk->v), bi->x);
-    } else {
-        tref = bk->t;
-        dx = rc_v3_sub(bk->x, rc_v3_axpy(bi->x, bk->t - bi->t, bi->v));
-    }
+    const rc_vec3 dx = pair_sep(bi, bk, &tref);
     const rc_vec3 dv = rc_v3_sub(bk->v, bi->v);
     const double margin = AXIS_MARGIN * (bi->r + bk->r), horizon = best - tref;
     for (int q = 0; q < 3; q++) {
@@ -682,11 +673,8 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
          * (zmf) whose contact is not simultaneous in the table frame. RC_EOVERLAP: the
          * shape-change policy, resolved along the centre line and counted. */
         const eng_ball *bi = &s->b[i], *bk = &s->b[bp];
-        rc_vec3 dx;
-        if (bi->t >= bk->t)
-            dx = rc_v3_sub(rc_v3_axpy(bk->x, bi->t - bk->t, bk->v), bi->x);
-        else
-            dx = rc_v3_sub(bk->x, rc_v3_axpy(bi->x, bk->t - bi->t, bi->v));
+        double tref;
+        const rc_vec3 dx = pair_sep(bi, bk, &tref);
         rc_toi_ball A = {rc_v3(0, 0, 0), bi->r, s->a[i].m, s->a[i].p};
         rc_toi_ball B = {dx, bk->r, s->a[bp].m, s->a[bp].p};
         rc_toi_contact out;
