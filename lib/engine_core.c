@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine_pairs.h"
 #include "engine_private.h"
 #include "relcol/status.h"
 
@@ -114,12 +115,26 @@ static inline double wall_support(const rc_sim *s, int32_t i, int d)
 /* Walls and cell crossings below are written without branches on the direction of
  * motion (a coin toss per dimension for the branch predictor); the times are the same
  * expressions, so the same bits. */
-static void wall_event(const rc_sim *s, int32_t i, double *best, int32_t *bp)
+/* Dimensions in which cell c touches the box (bit d): only there can a ball reach a wall
+ * before it leaves its cell, since cells are at least one bounding diameter wide and a
+ * wall is touched with the centre at most r from it. Elsewhere the wall test is skipped;
+ * the crossing into a boundary cell computes it (cross). */
+static inline unsigned boundary_dims(const rc_sim *s, const int c[3])
+{
+    unsigned m = 0;
+    for (int d = 0; d < s->def.dim; d++)
+        m |= (unsigned)((c[d] == 0) | (c[d] == s->g.n[d] - 1)) << d;
+    return m;
+}
+
+static void wall_event(const rc_sim *s, int32_t i, unsigned dims, double *best, int32_t *bp)
 {
     const eng_ball *bi = &s->b[i];
     double bt = *best;
     int32_t bw = *bp;
     for (int d = 0; d < s->def.dim; d++) {
+        if (!(dims >> d & 1u))
+            continue;
         const double v = rc_v3_get(bi->v, d), x = rc_v3_get(bi->x, d);
         const double h = wall_support(s, i, d);
         const int up = v > 0.0, moving = v != 0.0;
@@ -138,17 +153,112 @@ static void wall_event(const rc_sim *s, int32_t i, double *best, int32_t *bp)
 /* Neighbours gathered per scan before testing (stack buffer; more are done in chunks). */
 #define GATHER_MAX 128
 
-static inline void test_list(const rc_sim *s, int32_t i, const int32_t *nb, size_t m,
-                             double *best, int32_t *bp)
+/* Simultaneity check of predict_checked for neighbour k of ball i (at time T, velocity
+ * before the collision vold): approaching within approach_tol, so in contact now. */
+static int approaching_with(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, double T,
+                            rc_vec3 vold)
+{
+    const double atol = s->def.approach_tol, sig = bi->r + bk->r;
+    const rc_vec3 dx = rc_v3_sub(rc_v3_axpy(bk->x, T - bk->t, bk->v), bi->x);
+    const rc_vec3 dv = rc_v3_sub(bk->v, vold);
+    const double bb = rc_v3_dot(dx, dv);
+    return bb < 0.0 && bb * bb > atol * atol * sig * sig * rc_v3_norm2(dv);
+}
+
+/* One neighbour's verdict, in scan order: 1 if it is a simultaneous contact (see
+ * test_list), else keep it if it is the earliest so far (ties: the first). */
+static inline int visit(const rc_sim *s, const eng_ball *bi, int32_t k, double t, int near,
+                        int check, int32_t partner, const rc_vec3 *vold, double T, double *bt,
+                        int32_t *bk)
+{
+    /* one rarely taken branch (&, not &&: the parts are cheap) */
+    if (check & near & (k != partner) && approaching_with(s, bi, &s->b[k], T, *vold))
+        return 1;
+    const int take = t < *bt;
+    *bt = take ? t : *bt;
+    *bk = take ? k : *bk;
+    return 0;
+}
+
+/* The neighbours test_list leaves after its lanes, one by one. */
+static inline int test_tail(const rc_sim *s, const eng_ball *bi, const int32_t *nb, size_t j,
+                            size_t m, int check, int32_t partner, const rc_vec3 *vold, double T,
+                            double *bt, int32_t *bk)
+{
+    for (; j < m; j++) {
+        int near;
+        const double t = pair_sphere_scalar(s, bi, &s->b[nb[j]], *bt, s->def.sim_tol, &near);
+        if (visit(s, bi, nb[j], t, near, check, partner, vold, T, bt, bk))
+            return 1;
+    }
+    return 0;
+}
+
+#ifdef ENG_HAVE_AVX2
+__attribute__((target("avx2"))) static int test_list_avx2(const rc_sim *s, int32_t i,
+                                                          const int32_t *nb, size_t m,
+                                                          double *best, int32_t *bp,
+                                                          const rc_vec3 *vold, int32_t partner,
+                                                          double T)
 {
     const eng_ball *bi = &s->b[i];
-    for (size_t j = 0; j < m; j++) {
-        double t = pair_time(s, bi, &s->b[nb[j]], *best);
-        if (t < *best) {
-            *best = t;
-            *bp = nb[j];
-        }
+    const int check = vold && s->def.sim_tol > 0.0;
+    double bt = *best;
+    int32_t bk = *bp;
+    size_t j = 0;
+    for (; j + 4 <= m; j += 4) {
+        const eng_ball *const k[4] = {&s->b[nb[j]], &s->b[nb[j + 1]], &s->b[nb[j + 2]],
+                                      &s->b[nb[j + 3]]};
+        double t[4];
+        int nears;
+        pair_sphere_x4(s, bi, k, bt, s->def.sim_tol, t, &nears);
+        for (int l = 0; l < 4; l++)
+            if (visit(s, bi, nb[j + (size_t)l], t[l], nears >> l & 1, check, partner, vold, T,
+                      &bt, &bk))
+                return 1;
     }
+    if (test_tail(s, bi, nb, j, m, check, partner, vold, T, &bt, &bk))
+        return 1;
+    *best = bt;
+    *bp = bk;
+    return 0;
+}
+#endif
+
+/* Sphere contact of ball i with each of the m gathered neighbours nb (uncontracted
+ * frames), keeping the earliest below *best (ties: the first in nb order). With vold
+ * (ball i just collided at T = t_i, every other clock <= T) it also looks for another
+ * contact simultaneous with the resolved one -- gap <= sim_tol, approaching with the old
+ * velocity, not the partner -- and returns 1 at the first, else 0. The lanes (s->simd)
+ * give the same bits as the scalar loop. */
+static int test_list(const rc_sim *s, int32_t i, const int32_t *nb, size_t m, double *best,
+                     int32_t *bp, const rc_vec3 *vold, int32_t partner, double T)
+{
+#ifdef ENG_HAVE_AVX2
+    if (s->simd == ENG_SIMD_AVX2)
+        return test_list_avx2(s, i, nb, m, best, bp, vold, partner, T);
+#endif
+    const eng_ball *bi = &s->b[i];
+    const int check = vold && s->def.sim_tol > 0.0;
+    double bt = *best;
+    int32_t bk = *bp;
+    size_t j = 0;
+#if defined(__SSE2__)
+    for (; s->simd != ENG_SIMD_NONE && j + 2 <= m; j += 2) {
+        double t[2];
+        int near[2];
+        pair_sphere_x2(s, bi, &s->b[nb[j]], &s->b[nb[j + 1]], bt, s->def.sim_tol, t, near);
+        for (int l = 0; l < 2; l++)
+            if (visit(s, bi, nb[j + (size_t)l], t[l], near[l], check, partner, vold, T, &bt,
+                      &bk))
+                return 1;
+    }
+#endif
+    if (test_tail(s, bi, nb, j, m, check, partner, vold, T, &bt, &bk))
+        return 1;
+    *best = bt;
+    *bp = bk;
+    return 0;
 }
 
 /* Gap along unit axis u between table-frame shapes (contracted along their velocities,
@@ -286,11 +396,11 @@ static void scan_block(const rc_sim *s, int32_t i, const int c[3], const int lo[
                     __builtin_prefetch(&s->b[k]);
                     nb[m++] = k;
                     if (m == GATHER_MAX) {
-                        test_list(s, i, nb, m, best, bp);
+                        test_list(s, i, nb, m, best, bp, NULL, ENG_NONE, 0.0);
                         m = 0;
                     }
                 }
-    test_list(s, i, nb, m, best, bp);
+    test_list(s, i, nb, m, best, bp, NULL, ENG_NONE, 0.0);
 }
 
 static void cross_event(rc_sim *s, int32_t i, const int c[3])
@@ -329,8 +439,8 @@ void rc_eng_predict(rc_sim *s, int32_t i, int update_heap)
     double best = INFINITY;
     int32_t bp = ENG_NONE;
     int c[3];
-    wall_event(s, i, &best, &bp);
     cell_coords(&s->g, s->a[i].cell, c);
+    wall_event(s, i, boundary_dims(s, c), &best, &bp);
     static const int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
     scan_block(s, i, c, lo, hi, &best, &bp);
     store_event(s, i, best, bp);
@@ -518,11 +628,14 @@ static double kinetic(const rc_particle *b, double inv_c2)
  * caller then undoes and resolves the whole group), else stores the event and returns 0. */
 static int predict_checked(rc_sim *s, int32_t i, rc_vec3 vold, int32_t partner, double T)
 {
-    const double stol = s->def.sim_tol, atol = s->def.approach_tol;
+    const double stol = s->def.sim_tol;
     const eng_ball *bi = &s->b[i];
     /* sim_tol = 0: no grouping asked for, no check */
     const int check = stol > 0.0;
-    for (int d = 0; d < s->def.dim && check; d++) {
+    int c[3];
+    cell_coords(&s->g, s->a[i].cell, c);
+    const unsigned walls = boundary_dims(s, c);
+    for (int d = 0; d < s->def.dim && check && walls; d++) {
         double v = rc_v3_get(vold, d), x = rc_v3_get(bi->x, d);
         if (v == 0.0)
             continue;
@@ -536,9 +649,7 @@ static int predict_checked(rc_sim *s, int32_t i, rc_vec3 vold, int32_t partner, 
     }
     double best = INFINITY;
     int32_t bp = ENG_NONE;
-    wall_event(s, i, &best, &bp);
-    int c[3];
-    cell_coords(&s->g, s->a[i].cell, c);
+    wall_event(s, i, walls, &best, &bp);
     const eng_cells *g = &s->g;
     const int32_t *next = g->next;
     int z0 = c[2] > 0 ? c[2] - 1 : 0, z1 = c[2] + 1 < g->n[2] ? c[2] + 1 : g->n[2] - 1;
@@ -573,26 +684,8 @@ static int predict_checked(rc_sim *s, int32_t i, rc_vec3 vold, int32_t partner, 
             k = next[k];
         }
         more = m == GATHER_MAX;
-        for (size_t j = 0; j < m; j++) {
-            const int32_t kk = nb[j];
-            const eng_ball *bk = &s->b[kk];
-            /* t_k <= T = t_i: the reference time is T, as in pair_time */
-            rc_vec3 dx = rc_v3_sub(rc_v3_axpy(bk->x, T - bk->t, bk->v), bi->x);
-            double d2 = rc_v3_norm2(dx), sig = bi->r + bk->r;
-            double lim = sig * (1.0 + stol);
-            /* one rarely taken branch (&, not &&: the parts are cheap) */
-            if (check & (d2 <= lim * lim) & (kk != partner)) {
-                rc_vec3 dv = rc_v3_sub(bk->v, vold);
-                double bb = rc_v3_dot(dx, dv);
-                if (bb < 0.0 && bb * bb > atol * atol * sig * sig * rc_v3_norm2(dv))
-                    return 1;
-            }
-            double t = pair_time_dx(s, bi, bk, dx, d2, T, best, 0);
-            if (t < best) {
-                best = t;
-                bp = kk;
-            }
-        }
+        if (test_list(s, i, nb, m, &best, &bp, check ? &vold : NULL, partner, T))
+            return 1;
     }
     store_event(s, i, best, bp);
     cross_event(s, i, c);
@@ -838,6 +931,8 @@ static void cross(rc_sim *s, int32_t i)
     if (s->def.dim == 2)
         lo[2] = hi[2] = 0;
     scan_block(s, i, c, lo, hi, &best, &bp);
+    if (c[d] == 0 || c[d] == s->g.n[d] - 1) /* a boundary cell: its wall is now in reach */
+        wall_event(s, i, 1u << d, &best, &bp);
     if (bp != a->ev_partner || best != a->ev_t)
         store_event(s, i, best, bp);
     cross_event(s, i, c);

@@ -81,8 +81,13 @@ typedef struct eng_cand {
     int32_t k;
 } eng_cand;
 
+/* Lanes of the neighbour test (engine_pairs.h): chosen once per engine from the CPU, or
+ * from RELCOL_SIMD=scalar|sse2|avx2 in the environment (to compare the paths: same bits). */
+enum { ENG_SIMD_NONE = 0, ENG_SIMD_SSE2 = 1, ENG_SIMD_AVX2 = 2 };
+
 struct rc_sim {
     rc_sim_def def;
+    int simd;
     double inv_c2;
     double L[3];
     double now;

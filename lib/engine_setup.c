@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine_pairs.h"
 #include "engine_private.h"
 #include "relcol/status.h"
 
@@ -63,6 +64,26 @@ static int check_def(const rc_sim_def *d)
     return rc_inv_c2(d->c, &k);
 }
 
+/* The widest lanes this CPU runs for the neighbour test, unless RELCOL_SIMD narrows
+ * them (the paths give the same bits; the variable exists to show it and to time them). */
+static int choose_simd(void)
+{
+    int best = ENG_SIMD_NONE;
+#if defined(__SSE2__)
+    best = ENG_SIMD_SSE2;
+#endif
+#ifdef ENG_HAVE_AVX2
+    if (__builtin_cpu_supports("avx2"))
+        best = ENG_SIMD_AVX2;
+#endif
+    const char *want = getenv("RELCOL_SIMD");
+    if (want && !strcmp(want, "scalar"))
+        return ENG_SIMD_NONE;
+    if (want && !strcmp(want, "sse2") && best > ENG_SIMD_SSE2)
+        return ENG_SIMD_SSE2;
+    return best;
+}
+
 int rc_sim_create(const rc_sim_def *def, rc_sim **out)
 {
     if (!def || !out)
@@ -85,6 +106,7 @@ int rc_sim_create(const rc_sim_def *def, rc_sim **out)
     s->prm.inv_c2 = s->inv_c2;
     s->toi = def->toi;
     s->toi.inv_c2 = s->inv_c2;
+    s->simd = choose_simd();
     s->narrow = def->frame && strcmp(def->frame->name, "sphere") != 0;
     s->wall_contracted = def->frame && def->frame->wall_contracted && s->inv_c2 > 0.0;
     if (s->narrow) {

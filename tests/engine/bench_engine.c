@@ -2,7 +2,7 @@
  * 0.45 (N = 1e4, 1e5), discs at 0.7 (N = 1e4), a relativistic gas (rms speed 0.5 c) as a
  * cost ratio to the classical run of the same N and density measured in this process,
  * and bytes per ball. Each run melts the lattice start first (not timed).
- * Usage: bench_engine [quick|full|N3d]; full adds N = 1e6; a number runs only that N.
+ * Usage: bench_engine [quick|full|N|2d:N|rel:N]; full adds N = 1e6; N, 2d:N, rel:N run one case.
  * Figures are CPU time of this process (the wall clock on a shared machine is noisier). */
 #include <math.h>
 #include <stdio.h>
@@ -130,8 +130,14 @@ int main(int argc, char **argv)
 {
     const char *mode = argc > 1 ? argv[1] : "quick";
     if (strcmp(mode, "quick") && strcmp(mode, "full")) {
-        size_t n = (size_t)atof(mode);
-        run(3, n, 0.45, INFINITY, NULL, 5, 20);
+        /* one run: N (3-D, packing 0.45), 2d:N (2-D, 0.7) or rel:N (3-D, contracted
+         * table frame at rms speed 0.5 c) */
+        if (!strncmp(mode, "2d:", 3))
+            run(2, (size_t)atof(mode + 3), 0.70, INFINITY, NULL, 5, 20);
+        else if (!strncmp(mode, "rel:", 4))
+            run(3, (size_t)atof(mode + 4), 0.45, 2.0, "table", 2, 5);
+        else
+            run(3, (size_t)atof(mode), 0.45, INFINITY, NULL, 5, 20);
         return 0;
     }
     printf("relcol engine benchmark (CPU time; targets from issue 4)\n");

@@ -1,0 +1,220 @@
+/* engine_pairs.h — the sphere contact test of ball i against its gathered neighbours, two
+ * neighbours per step in SSE2 lanes (baseline x86-64; other machines take the scalar loop).
+ * Every lane does exactly the scalar operations of pair_sep / pair_time_dx in the same
+ * order, so the times are the same bits; only the instruction count changes (the neighbour
+ * test was ~100 scalar instructions, the engine's largest cost). Included by engine_core.c. */
+#ifndef RELCOL_ENGINE_PAIRS_H
+#define RELCOL_ENGINE_PAIRS_H
+
+#include <math.h>
+#include <stdint.h>
+
+#include "engine_private.h"
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+/* Contact time of bi with bk (both uncontracted spheres) as pair_time_dx(..., use_narrow = 0)
+ * computes it from pair_sep's separation, INFINITY on a miss or when it cannot beat
+ * `best`; *near (if asked) says whether the centres are within lim of each other at the
+ * later clock (d2 <= lim^2 with lim = (ri + rk) (1 + stol)), for the simultaneity check. */
+static inline double pair_sphere_scalar(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
+                                        double best, double stol, int *near)
+{
+    double tref;
+    rc_vec3 dx;
+    if (bi->t >= bk->t) {
+        tref = bi->t;
+        dx = rc_v3_sub(rc_v3_axpy(bk->x, bi->t - bk->t, bk->v), bi->x);
+    } else {
+        tref = bk->t;
+        dx = rc_v3_sub(bk->x, rc_v3_axpy(bi->x, bk->t - bi->t, bi->v));
+    }
+    const double d2 = rc_v3_norm2(dx);
+    const rc_vec3 dv = rc_v3_sub(bk->v, bi->v);
+    const double b = rc_v3_dot(dx, dv);
+    const double sig = bi->r + bk->r;
+    const double dd = d2 - sig * sig;
+    const double dv2 = rc_v3_norm2(dv);
+    const double disc = b * b - dv2 * dd;
+    const double tol = s->def.approach_tol * sig;
+    const double lim = sig * (1.0 + stol);
+    *near = d2 <= lim * lim;
+    const int touching = dd <= 0.0;
+    const int hit = (b < 0.0) & (touching ? b * b > tol * tol * dv2
+                                          : (disc > 0.0) & (dd < -2.0 * b * (best - tref)));
+    if (!hit)
+        return INFINITY;
+    const double t = touching ? 0.0 : dd / (sqrt(disc) - b);
+    double ta = tref + t;
+    if (ta < s->now)
+        ta = s->now;
+    return ta < best ? ta : INFINITY;
+}
+
+#if defined(__SSE2__)
+/* Select a where mask is all ones, else b. */
+static inline __m128d pairs_sel(__m128d mask, __m128d a, __m128d b)
+{
+    return _mm_or_pd(_mm_and_pd(mask, a), _mm_andnot_pd(mask, b));
+}
+
+/* Lanes 0 and 1: the times of bi against k0 and k1 (INFINITY: no contact able to beat
+ * `best`), and in near[] the simultaneity proximity flags of pair_sphere_scalar. */
+static inline void pair_sphere_x2(const rc_sim *s, const eng_ball *bi, const eng_ball *k0,
+                                  const eng_ball *k1, double best, double stol, double out[2],
+                                  int near[2])
+{
+    /* transpose the two 64-byte records (x, v, t, r) into lanes */
+    const double *p0 = &k0->x.x, *p1 = &k1->x.x;
+    const __m128d a01 = _mm_loadu_pd(p0), b01 = _mm_loadu_pd(p1);
+    const __m128d a23 = _mm_loadu_pd(p0 + 2), b23 = _mm_loadu_pd(p1 + 2);
+    const __m128d a45 = _mm_loadu_pd(p0 + 4), b45 = _mm_loadu_pd(p1 + 4);
+    const __m128d a67 = _mm_loadu_pd(p0 + 6), b67 = _mm_loadu_pd(p1 + 6);
+    const __m128d xkx = _mm_unpacklo_pd(a01, b01), xky = _mm_unpackhi_pd(a01, b01);
+    const __m128d xkz = _mm_unpacklo_pd(a23, b23), vkx = _mm_unpackhi_pd(a23, b23);
+    const __m128d vky = _mm_unpacklo_pd(a45, b45), vkz = _mm_unpackhi_pd(a45, b45);
+    const __m128d tk = _mm_unpacklo_pd(a67, b67), rk = _mm_unpackhi_pd(a67, b67);
+    const __m128d xix = _mm_set1_pd(bi->x.x), xiy = _mm_set1_pd(bi->x.y);
+    const __m128d xiz = _mm_set1_pd(bi->x.z), vix = _mm_set1_pd(bi->v.x);
+    const __m128d viy = _mm_set1_pd(bi->v.y), viz = _mm_set1_pd(bi->v.z);
+    const __m128d ti = _mm_set1_pd(bi->t), ri = _mm_set1_pd(bi->r);
+    /* pair_sep: advance the earlier ball to the later clock */
+    const __m128d ge = _mm_cmpge_pd(ti, tk);
+    const __m128d hk = _mm_sub_pd(ti, tk), hi = _mm_sub_pd(tk, ti);
+    const __m128d ax = _mm_sub_pd(_mm_add_pd(xkx, _mm_mul_pd(hk, vkx)), xix);
+    const __m128d ay = _mm_sub_pd(_mm_add_pd(xky, _mm_mul_pd(hk, vky)), xiy);
+    const __m128d az = _mm_sub_pd(_mm_add_pd(xkz, _mm_mul_pd(hk, vkz)), xiz);
+    const __m128d bx = _mm_sub_pd(xkx, _mm_add_pd(xix, _mm_mul_pd(hi, vix)));
+    const __m128d by = _mm_sub_pd(xky, _mm_add_pd(xiy, _mm_mul_pd(hi, viy)));
+    const __m128d bz = _mm_sub_pd(xkz, _mm_add_pd(xiz, _mm_mul_pd(hi, viz)));
+    const __m128d dx = pairs_sel(ge, ax, bx), dy = pairs_sel(ge, ay, by);
+    const __m128d dz = pairs_sel(ge, az, bz), tref = pairs_sel(ge, ti, tk);
+    /* rc_v3_norm2 and rc_v3_dot sum left to right */
+    const __m128d d2 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)),
+                                  _mm_mul_pd(dz, dz));
+    const __m128d dvx = _mm_sub_pd(vkx, vix), dvy = _mm_sub_pd(vky, viy);
+    const __m128d dvz = _mm_sub_pd(vkz, viz);
+    const __m128d b = _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dvx), _mm_mul_pd(dy, dvy)),
+                                 _mm_mul_pd(dz, dvz));
+    const __m128d sig = _mm_add_pd(ri, rk);
+    const __m128d dd = _mm_sub_pd(d2, _mm_mul_pd(sig, sig));
+    const __m128d dv2 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(dvx, dvx), _mm_mul_pd(dvy, dvy)),
+                                   _mm_mul_pd(dvz, dvz));
+    const __m128d disc = _mm_sub_pd(_mm_mul_pd(b, b), _mm_mul_pd(dv2, dd));
+    const __m128d tol = _mm_mul_pd(_mm_set1_pd(s->def.approach_tol), sig);
+    const __m128d lim = _mm_mul_pd(sig, _mm_set1_pd(1.0 + stol));
+    const __m128d zero = _mm_setzero_pd();
+    const __m128d touching = _mm_cmple_pd(dd, zero);
+    const __m128d slow = _mm_cmpgt_pd(_mm_mul_pd(b, b), _mm_mul_pd(_mm_mul_pd(tol, tol), dv2));
+    const __m128d bound = _mm_mul_pd(_mm_mul_pd(_mm_set1_pd(-2.0), b),
+                                     _mm_sub_pd(_mm_set1_pd(best), tref));
+    const __m128d flying = _mm_and_pd(_mm_cmpgt_pd(disc, zero), _mm_cmplt_pd(dd, bound));
+    const __m128d hit = _mm_and_pd(_mm_cmplt_pd(b, zero), pairs_sel(touching, slow, flying));
+    const int hits = _mm_movemask_pd(hit);
+    const int nears = _mm_movemask_pd(_mm_cmple_pd(d2, _mm_mul_pd(lim, lim)));
+    near[0] = nears & 1;
+    near[1] = nears >> 1;
+    if (!hits) { /* the common case in a dense gas: no square root */
+        out[0] = out[1] = INFINITY;
+        return;
+    }
+    /* misses take sqrt(1): the lane is discarded, but must not raise a NaN */
+    const __m128d root = _mm_div_pd(dd, _mm_sub_pd(_mm_sqrt_pd(pairs_sel(hit, disc,
+                                                                         _mm_set1_pd(1.0))),
+                                                   b));
+    __m128d ta = _mm_add_pd(tref, pairs_sel(touching, zero, root));
+    const __m128d now = _mm_set1_pd(s->now);
+    ta = pairs_sel(_mm_cmplt_pd(ta, now), now, ta);
+    ta = pairs_sel(_mm_and_pd(hit, _mm_cmplt_pd(ta, _mm_set1_pd(best))), ta,
+                   _mm_set1_pd(INFINITY));
+    _mm_storeu_pd(out, ta);
+}
+#endif
+
+#if defined(__x86_64__) && defined(__GNUC__)
+#define ENG_HAVE_AVX2 1
+#include <immintrin.h>
+
+/* Four lanes: the same operations as pair_sphere_x2 on 256-bit registers (AVX2 machines;
+ * rc_sim_create asks the CPU once). No FMA: the target adds AVX2 only, so the bits stay. */
+__attribute__((target("avx2"), always_inline)) static inline void pair_sphere_x4(
+    const rc_sim *s, const eng_ball *bi, const eng_ball *const k[4], double best, double stol,
+    double out[4], int *nears)
+{
+    /* transpose four 64-byte records (x, v, t, r): low halves x.x x.y x.z v.x, high halves
+     * v.y v.z t r */
+    __m256d lo[4], hi[4];
+    for (int l = 0; l < 4; l++) {
+        lo[l] = _mm256_loadu_pd(&k[l]->x.x);
+        hi[l] = _mm256_loadu_pd(&k[l]->x.x + 4);
+    }
+    __m256d t0 = _mm256_unpacklo_pd(lo[0], lo[1]), t1 = _mm256_unpackhi_pd(lo[0], lo[1]);
+    __m256d t2 = _mm256_unpacklo_pd(lo[2], lo[3]), t3 = _mm256_unpackhi_pd(lo[2], lo[3]);
+    const __m256d xkx = _mm256_permute2f128_pd(t0, t2, 0x20);
+    const __m256d xky = _mm256_permute2f128_pd(t1, t3, 0x20);
+    const __m256d xkz = _mm256_permute2f128_pd(t0, t2, 0x31);
+    const __m256d vkx = _mm256_permute2f128_pd(t1, t3, 0x31);
+    t0 = _mm256_unpacklo_pd(hi[0], hi[1]);
+    t1 = _mm256_unpackhi_pd(hi[0], hi[1]);
+    t2 = _mm256_unpacklo_pd(hi[2], hi[3]);
+    t3 = _mm256_unpackhi_pd(hi[2], hi[3]);
+    const __m256d vky = _mm256_permute2f128_pd(t0, t2, 0x20);
+    const __m256d vkz = _mm256_permute2f128_pd(t1, t3, 0x20);
+    const __m256d tk = _mm256_permute2f128_pd(t0, t2, 0x31);
+    const __m256d rk = _mm256_permute2f128_pd(t1, t3, 0x31);
+    const __m256d xix = _mm256_set1_pd(bi->x.x), xiy = _mm256_set1_pd(bi->x.y);
+    const __m256d xiz = _mm256_set1_pd(bi->x.z), vix = _mm256_set1_pd(bi->v.x);
+    const __m256d viy = _mm256_set1_pd(bi->v.y), viz = _mm256_set1_pd(bi->v.z);
+    const __m256d ti = _mm256_set1_pd(bi->t), ri = _mm256_set1_pd(bi->r);
+    const __m256d ge = _mm256_cmp_pd(ti, tk, _CMP_GE_OQ);
+    const __m256d hk = _mm256_sub_pd(ti, tk), hi_ = _mm256_sub_pd(tk, ti);
+    const __m256d ax = _mm256_sub_pd(_mm256_add_pd(xkx, _mm256_mul_pd(hk, vkx)), xix);
+    const __m256d ay = _mm256_sub_pd(_mm256_add_pd(xky, _mm256_mul_pd(hk, vky)), xiy);
+    const __m256d az = _mm256_sub_pd(_mm256_add_pd(xkz, _mm256_mul_pd(hk, vkz)), xiz);
+    const __m256d bx = _mm256_sub_pd(xkx, _mm256_add_pd(xix, _mm256_mul_pd(hi_, vix)));
+    const __m256d by = _mm256_sub_pd(xky, _mm256_add_pd(xiy, _mm256_mul_pd(hi_, viy)));
+    const __m256d bz = _mm256_sub_pd(xkz, _mm256_add_pd(xiz, _mm256_mul_pd(hi_, viz)));
+    const __m256d dx = _mm256_blendv_pd(bx, ax, ge), dy = _mm256_blendv_pd(by, ay, ge);
+    const __m256d dz = _mm256_blendv_pd(bz, az, ge), tref = _mm256_blendv_pd(tk, ti, ge);
+    const __m256d d2 = _mm256_add_pd(
+        _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz));
+    const __m256d dvx = _mm256_sub_pd(vkx, vix), dvy = _mm256_sub_pd(vky, viy);
+    const __m256d dvz = _mm256_sub_pd(vkz, viz);
+    const __m256d b = _mm256_add_pd(
+        _mm256_add_pd(_mm256_mul_pd(dx, dvx), _mm256_mul_pd(dy, dvy)), _mm256_mul_pd(dz, dvz));
+    const __m256d sig = _mm256_add_pd(ri, rk);
+    const __m256d dd = _mm256_sub_pd(d2, _mm256_mul_pd(sig, sig));
+    const __m256d dv2 = _mm256_add_pd(
+        _mm256_add_pd(_mm256_mul_pd(dvx, dvx), _mm256_mul_pd(dvy, dvy)), _mm256_mul_pd(dvz, dvz));
+    const __m256d disc = _mm256_sub_pd(_mm256_mul_pd(b, b), _mm256_mul_pd(dv2, dd));
+    const __m256d tol = _mm256_mul_pd(_mm256_set1_pd(s->def.approach_tol), sig);
+    const __m256d lim = _mm256_mul_pd(sig, _mm256_set1_pd(1.0 + stol));
+    const __m256d zero = _mm256_setzero_pd();
+    const __m256d touching = _mm256_cmp_pd(dd, zero, _CMP_LE_OQ);
+    const __m256d slow = _mm256_cmp_pd(_mm256_mul_pd(b, b),
+                                       _mm256_mul_pd(_mm256_mul_pd(tol, tol), dv2), _CMP_GT_OQ);
+    const __m256d bound = _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(-2.0), b),
+                                        _mm256_sub_pd(_mm256_set1_pd(best), tref));
+    const __m256d flying = _mm256_and_pd(_mm256_cmp_pd(disc, zero, _CMP_GT_OQ),
+                                         _mm256_cmp_pd(dd, bound, _CMP_LT_OQ));
+    const __m256d hit = _mm256_and_pd(_mm256_cmp_pd(b, zero, _CMP_LT_OQ),
+                                      _mm256_blendv_pd(flying, slow, touching));
+    *nears = _mm256_movemask_pd(_mm256_cmp_pd(d2, _mm256_mul_pd(lim, lim), _CMP_LE_OQ));
+    if (!_mm256_movemask_pd(hit)) {
+        const __m256d inf = _mm256_set1_pd(INFINITY);
+        _mm256_storeu_pd(out, inf);
+        return;
+    }
+    const __m256d safe = _mm256_blendv_pd(_mm256_set1_pd(1.0), disc, hit);
+    const __m256d root = _mm256_div_pd(dd, _mm256_sub_pd(_mm256_sqrt_pd(safe), b));
+    __m256d ta = _mm256_add_pd(tref, _mm256_blendv_pd(root, zero, touching));
+    const __m256d now = _mm256_set1_pd(s->now);
+    ta = _mm256_blendv_pd(ta, now, _mm256_cmp_pd(ta, now, _CMP_LT_OQ));
+    const __m256d keep = _mm256_and_pd(hit, _mm256_cmp_pd(ta, _mm256_set1_pd(best), _CMP_LT_OQ));
+    _mm256_storeu_pd(out, _mm256_blendv_pd(_mm256_set1_pd(INFINITY), ta, keep));
+}
+#endif
+
+#endif
