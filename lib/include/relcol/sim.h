@@ -74,7 +74,8 @@ typedef struct rc_sim_def {
      * (rc_sim_get_ball after rc_sim_sync), to be continued. Such a state may hold shapes
      * that overlap by the frame's own geometry — shape change after a collision, and in
      * the zmf frame shapes judged at one table time — which the engine itself produced
-     * and handles (see the overlap policy above), so the overlap check is skipped; every
+     * and handles (see the overlap policy above), so the overlap check is skipped and a
+     * contracted shape may cross a wall as long as its centre is inside the box; every
      * other check stays. Default 0: overlapping input is rejected. */
     int restart;
 } rc_sim_def;
@@ -185,8 +186,13 @@ typedef struct rc_contact {
  * pair's post-group ZMF-normal approach a_j' = -eps_j a_j. Classically (inv_c2 = 0) this
  * is the k x k linear system, solved exactly in one step; k = 1 is the zmf law itself.
  * A contact whose impulse comes out pulling (J < 0) is dropped and the rest re-solved.
- * jout (may be NULL, k entries) receives the impulses. prm->eps is not used.
- * RC_ENOCONVERGE if Newton fails, RC_EMASS if a rest mass would become imaginary. */
+ * Then, relativistically with two or more contacts, the rest masses: the balls that took
+ * an impulse have their momenta scaled by one factor in their common zero-momentum frame,
+ * total energy kept, so that a ball whose contacts were all elastic keeps its rest mass
+ * and no rest mass falls (no negative heat).
+ * jout (may be NULL, k entries) receives the impulses of the first step. prm->eps is not
+ * used. RC_ENOCONVERGE if Newton fails or no such scaling exists (the caller may then
+ * resolve the contacts one at a time), RC_EMASS if a rest mass would become imaginary. */
 int rc_contacts_resolve(double inv_c2, size_t nballs, rc_particle *balls, size_t k,
                         const rc_contact *contacts, double *jout);
 

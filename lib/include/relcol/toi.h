@@ -63,7 +63,7 @@ typedef struct rc_toi_params {
      * ~eps/theta relative, so below ~1e-9 the hit/miss decision is round-off. */
     double graze_tol;
     /* Root finding on the Perram-Wertheim parameter lambda in (0, 1) (dimensionless):
-     * stop when the GSL Brent bracket is narrower than lambda_tol. The time is
+     * stop when the Brent bracket is narrower than lambda_tol. The time is
      * stationary in lambda, so its error is O(lambda_tol^2); the normal's is
      * O(lambda_tol). Default 1e-14. */
     double lambda_tol;
@@ -80,7 +80,8 @@ typedef struct rc_toi_contact {
     rc_vec3 n;
 } rc_toi_contact;
 
-/* Workspace of the contracted root finder (owns a GSL Brent solver). */
+/* Workspace of the contracted root finder (kept for the API; the hand-written Brent
+ * needs no state). */
 typedef struct rc_toi_workspace rc_toi_workspace;
 rc_toi_workspace *rc_toi_workspace_alloc(void); /* NULL when out of memory */
 void rc_toi_workspace_free(rc_toi_workspace **ws); /* frees and sets *ws = NULL */
@@ -102,7 +103,7 @@ int rc_toi_sphere_rel(double R, rc_vec3 d, rc_vec3 w, const rc_toi_params *prm,
 /* Two contracted shapes, centre separation d at t = 0 (ball 1 minus ball 0) moving
  * apart at w: first contact time *t, contact point relative to ball 0's centre at that
  * time *y0, and the common unit normal *n (outward from shape 0). Root finding with
- * GSL Brent on the Perram-Wertheim parameter; shapes that are exact spheres (inv_c2 =
+ * Brent's method on the Perram-Wertheim parameter; shapes that are exact spheres (inv_c2 =
  * 0 or both at rest) give rc_toi_sphere_rel's result bit for bit. Trusted input. */
 int rc_toi_shapes_rel(const rc_toi_shape *s0, const rc_toi_shape *s1, rc_vec3 d,
                       rc_vec3 w, const rc_toi_params *prm, rc_toi_workspace *ws,
