@@ -122,7 +122,8 @@ static inline double wall_support(const rc_sim *s, int32_t i, int d)
 static inline unsigned boundary_dims(const rc_sim *s, const int c[3])
 {
     unsigned m = 0;
-    for (int d = 0; d < s->def.dim; d++)
+    const int dim = s->def.dim < 3 ? s->def.dim : 3; /* (says so to the compiler) */
+    for (int d = 0; d < dim; d++)
         m |= (unsigned)((c[d] == 0) | (c[d] == s->g.n[d] - 1)) << d;
     return m;
 }
@@ -446,7 +447,7 @@ void rc_eng_predict(rc_sim *s, int32_t i, int update_heap)
     store_event(s, i, best, bp);
     cross_event(s, i, c);
     if (update_heap)
-        rc_eng_heap_update(&s->q, (uint32_t)i, key_of(&s->a[i]));
+        rc_eng_queue_update(&s->q, (uint32_t)i, key_of(&s->a[i]));
 }
 
 /* ---- resolving events ------------------------------------------------------------ */
@@ -851,6 +852,17 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
             }
             nm = bp >= 0 ? 2 : 1;
             nc = 1;
+            kind = bp >= 0 ? RC_SIM_EV_BALL : RC_SIM_EV_WALL;
+            /* the books before the event cover only the balls that take part now (the
+             * others' momentum would otherwise pass for a wall impulse, their energy
+             * for heat) */
+            k0 = 0.0;
+            p0 = rc_v3(0, 0, 0);
+            for (size_t j = 0; j < nm; j++) {
+                const rc_particle before = {s->a[s->grp_ball[j]].m, s->a[s->grp_ball[j]].p};
+                k0 += kinetic(&before, s->inv_c2);
+                p0 = rc_v3_add(p0, before.p);
+            }
         }
     }
     finish(s, nm, nc, k0, p0, kind, 0);
@@ -903,7 +915,7 @@ static void finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int k
     kahan(&s->wall[2], &s->wall_c[2], p0.z - p1.z);
     for (size_t j = 0; j < nm; j++) {
         if (single)
-            rc_eng_heap_update(&s->q, (uint32_t)s->grp_ball[j], key_of(&s->a[s->grp_ball[j]]));
+            rc_eng_queue_update(&s->q, (uint32_t)s->grp_ball[j], key_of(&s->a[s->grp_ball[j]]));
         else
             rc_eng_predict(s, s->grp_ball[j], 1);
     }
@@ -936,7 +948,7 @@ static void cross(rc_sim *s, int32_t i)
     if (bp != a->ev_partner || best != a->ev_t)
         store_event(s, i, best, bp);
     cross_event(s, i, c);
-    rc_eng_heap_update(&s->q, (uint32_t)i, key_of(a));
+    rc_eng_queue_update(&s->q, (uint32_t)i, key_of(a));
 }
 
 /* Every REORDER_EVERY x N events the balls are renumbered in cell order again: they
@@ -968,7 +980,6 @@ static void reorder(rc_sim *s)
     for (size_t i = 0; i < n; i++) {
         if (s->a[i].ev_partner >= 0)
             s->a[i].ev_partner = (int32_t)np[s->a[i].ev_partner];
-        s->q.h[i].ball = np[s->q.h[i].ball];
         s->slot[i] = np[s->slot[i]];
     }
     for (size_t i = 0; i < n; i++) {
@@ -976,22 +987,20 @@ static void reorder(rc_sim *s)
             continue;
         eng_ball cb = s->b[i];
         eng_aux ca = s->a[i];
-        uint32_t cid = s->id[i], cpos = s->q.pos[i], ccnt = s->cnt[i];
+        uint32_t cid = s->id[i], ccnt = s->cnt[i];
         size_t o = i;
         do {
             size_t to = np[o];
             eng_ball tb = s->b[to];
             eng_aux ta = s->a[to];
-            uint32_t tid = s->id[to], tpos = s->q.pos[to], tcnt = s->cnt[to];
+            uint32_t tid = s->id[to], tcnt = s->cnt[to];
             s->b[to] = cb;
             s->a[to] = ca;
             s->id[to] = cid;
-            s->q.pos[to] = cpos;
             s->cnt[to] = ccnt;
             cb = tb;
             ca = ta;
             cid = tid;
-            cpos = tpos;
             ccnt = tcnt;
             done[o] = 1;
             o = to;
@@ -1003,6 +1012,10 @@ static void reorder(rc_sim *s)
         s->g.head[c] = -1;
     for (size_t k = n; k-- > 0;)
         rc_eng_cells_insert(&s->g, s->a, (int32_t)k, s->a[k].cell);
+    /* the queue under the new numbers (and a bucket width fitted to the gas as it is now) */
+    for (size_t k = 0; k < n; k++)
+        s->q.key[k] = key_of(&s->a[k]);
+    rc_eng_queue_build(&s->q, s->q.key, s->now);
 }
 
 int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
@@ -1019,15 +1032,18 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
             s->since_reorder = 0;
             reorder(s);
         }
-        const eng_heap_entry top = s->q.h[0];
-        if (!(top.t <= t_end))
+        double top_t;
+        uint32_t top_ball;
+        rc_eng_queue_top(&s->q, &top_t, &top_ball);
+        /* nothing will ever happen again (every ball at rest or alone): done */
+        if (!(top_t <= t_end) || top_t == INFINITY)
             break;
         if (max_events && done >= max_events)
             return RC_OK;
         s->since_reorder++;
-        const int32_t i = (int32_t)top.ball;
+        const int32_t i = (int32_t)top_ball;
         eng_aux *a = &s->a[i];
-        s->now = top.t;
+        s->now = top_t;
         done++;
         if (a->cross_t <= a->ev_t) {
             cross(s, i);
@@ -1035,7 +1051,7 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
             s->events[RC_SIM_EV_STALE]++;
             rc_eng_predict(s, i, 1);
         } else {
-            int st = collide(s, i, a->ev_partner, top.t);
+            int st = collide(s, i, a->ev_partner, top_t);
             if (st != RC_OK)
                 return st;
         }

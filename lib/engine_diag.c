@@ -132,8 +132,9 @@ size_t rc_sim_bytes(const rc_sim *s)
 {
     if (!s)
         return 0;
-    return sizeof *s + s->n * (sizeof *s->b + sizeof *s->a + sizeof *s->q.h + sizeof *s->q.pos +
-                               sizeof *s->g.next + sizeof *s->id + sizeof *s->slot + sizeof *s->cnt) +
+    return sizeof *s + s->n * (sizeof *s->b + sizeof *s->a + sizeof *s->g.next + sizeof *s->id +
+                               sizeof *s->slot + sizeof *s->cnt) +
+           rc_eng_queue_bytes(&s->q) +
            s->g.ncells * sizeof *s->g.head +
            s->grp_ball_cap * (sizeof *s->grp_ball + sizeof *s->grp_part) +
            s->grp_con_cap * sizeof *s->grp_con;

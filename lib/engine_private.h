@@ -1,4 +1,4 @@
-/* engine_private.h — the engine's internal state, shared by engine_*.c, queue_heap.c and
+/* engine_private.h — the engine's internal state, shared by engine_*.c, queue_cal.c and
  * cells_grid.c. Everything that defines a run lives in plain arrays so that a state can
  * later be written out and continued bit-identically. */
 #ifndef RELCOL_ENGINE_PRIVATE_H
@@ -37,27 +37,33 @@ typedef struct eng_aux {
     int32_t pad_;
 } eng_aux;
 
-/* Indexed 4-ary heap of (time, ball), one entry per ball; ties by ball index.
+/* The event queue (queue_cal.c): one entry per ball, popped in (time, ball) order.
  * (Functions shared between the engine files carry rc_eng_: exported, not public.) */
-typedef struct eng_heap_entry {
-    double t;
-    uint32_t ball;
-    uint32_t pad_;
-} eng_heap_entry;
-
-typedef struct eng_heap {
-    eng_heap_entry *h;
-    uint32_t *pos;
+typedef struct eng_queue {
     size_t n;
-    eng_heap_entry *mem; /* the allocation h points into (h is offset so siblings share a line) */
-} eng_heap;
+    double *key;          /* per ball: its entry's time */
+    int32_t *next, *prev; /* per ball: links of the bucket list it is in */
+    int32_t *where;       /* per ball: >= 0 position in heap, else -1 - its list */
+    uint32_t *heap;       /* the bucket being drained: a binary heap (capacity n) */
+    size_t hn;
+    int32_t *head;        /* nb calendar lists, then overflow, then never */
+    uint32_t nb;          /* buckets in the span, a power of two */
+    double inv_w;         /* 1 / bucket width */
+    int64_t cur;          /* number of the bucket being drained */
+    int64_t redist;       /* the overflow list is spread again when cur reaches this */
+    size_t in_cal;        /* entries in the calendar lists */
+} eng_queue;
 
-/* Allocate for n balls; then rc_eng_heap_build with every ball's key. */
-int rc_eng_heap_init(eng_heap *q, size_t n);
-void rc_eng_heap_free(eng_heap *q);
-void rc_eng_heap_build(eng_heap *q, const double *keys);
-/* Change ball's key and restore heap order (up or down). */
-void rc_eng_heap_update(eng_heap *q, uint32_t ball, double t);
+/* Allocate for n balls; then rc_eng_queue_build with every ball's key. */
+int rc_eng_queue_init(eng_queue *q, size_t n);
+void rc_eng_queue_free(eng_queue *q);
+/* Refile every ball under keys[] (all >= now), choosing the bucket width afresh. */
+void rc_eng_queue_build(eng_queue *q, const double *keys, double now);
+/* Change ball's key (>= the time last popped). */
+void rc_eng_queue_update(eng_queue *q, uint32_t ball, double t);
+/* The earliest entry (time, ball); 0 if the queue is empty. */
+int rc_eng_queue_top(eng_queue *q, double *t, uint32_t *ball);
+size_t rc_eng_queue_bytes(const eng_queue *q);
 
 /* Uniform cell grid over the box, doubly linked lists per cell. */
 typedef struct eng_cells {
@@ -99,7 +105,7 @@ struct rc_sim {
     /* collisions per ball so far: an event naming a ball whose counter moved is stale.
      * Its own compact array: read for every popped event, it stays in cache. */
     uint32_t *cnt;
-    eng_heap q;
+    eng_queue q;
     eng_cells g;
     rc_collision_params prm;
     /* contact geometry: narrow != 0 calls def.frame after the sphere test */

@@ -131,7 +131,7 @@ static void release_balls(rc_sim *s)
     s->a = NULL;
     s->id = NULL;
     s->slot = NULL;
-    rc_eng_heap_free(&s->q);
+    rc_eng_queue_free(&s->q);
     rc_eng_cells_free(&s->g);
     s->n = 0;
 }
@@ -296,7 +296,7 @@ static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, i
         edge = 1.0;
     if ((st = rc_eng_cells_init(&s->g, dim, s->def.box, edge, n)) != RC_OK)
         goto fail;
-    if ((st = rc_eng_heap_init(&s->q, n)) != RC_OK)
+    if ((st = rc_eng_queue_init(&s->q, n)) != RC_OK)
         goto fail;
     s->n = n;
     /* Store balls in cell order (stable): neighbours then share cache lines and the
@@ -377,7 +377,7 @@ static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, i
         rc_eng_predict(s, (int32_t)i, 0);
     for (size_t i = 0; i < n; i++)
         keys[i] = key_of(&s->a[i]);
-    rc_eng_heap_build(&s->q, keys);
+    rc_eng_queue_build(&s->q, keys, s->now);
     free(keys);
     return RC_OK;
 fail:

@@ -2,6 +2,7 @@
  * (papers/simultaneous-contacts.md): one four-impulse J_j q_j per contact, the J_j found
  * by Newton's method on the k restitution conditions of the zmf law (a k x k linear
  * system each step, GSL LU); classically the conditions are linear and one step is exact. */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 
@@ -10,6 +11,7 @@
 #include <gsl/gsl_permutation.h>
 #include <gsl/gsl_vector.h>
 
+#include "relcol/kinematics.h"
 #include "relcol/sim.h"
 #include "relcol/status.h"
 
@@ -134,6 +136,104 @@ static int newton(cwork *w, size_t nb, double *J, double *A, double *rhs, size_t
     return RC_ENOCONVERGE;
 }
 
+/* Rest masses after the group, restored (papers/simultaneous-contacts.md, "Rest masses"):
+ * the normal four-impulses keep four-momentum and the restitution conditions but can move
+ * rest mass between the balls of an elastic group, by O((v/c)^2) and far more in rare
+ * grazing geometries. The balls that took an impulse are taken to their common
+ * zero-momentum frame, where their momenta are scaled by one factor lam >= 0 so that each
+ * gets its target rest mass m* -- its own m if all its contacts were elastic, else the
+ * larger of m and the Newton value (heat is never negative) -- with their total energy
+ * unchanged; then back. Total four-momentum is kept (to round-off), the order of the
+ * contacts still does not matter, and lam - 1 = O((v/c)^2). RC_ENOCONVERGE when no lam
+ * exists (the targets need more than the invariant mass): the caller resolves the
+ * contacts one at a time instead. Relativistic groups of two or more contacts only. */
+/* lam is done when the energy sum matches W to a few roundings of its terms */
+#define LAM_ROUNDOFF (8.0 * DBL_EPSILON)
+#define LAM_MAX_ITER 60
+
+static int keep_rest_masses(double inv_c2, size_t nb, const rc_particle *b0, size_t k,
+                            const rc_contact *c, const int *active, double *Mp, rc_vec3 *pp,
+                            double *mstar)
+{
+    /* mstar[i]: 0 untouched, -1 touched elastically only, -2 touched inelastically */
+    for (size_t i = 0; i < nb; i++)
+        mstar[i] = 0.0;
+    for (size_t j = 0; j < k; j++) {
+        if (!active[j])
+            continue;
+        const double tag = c[j].eps == 1.0 ? -1.0 : -2.0;
+        mstar[c[j].a] = fmin(mstar[c[j].a], tag);
+        if (c[j].b >= 0)
+            mstar[c[j].b] = fmin(mstar[c[j].b], tag);
+    }
+    double Mt = 0.0;
+    rc_vec3 Pt = rc_v3(0, 0, 0);
+    for (size_t i = 0; i < nb; i++) {
+        if (mstar[i] == 0.0)
+            continue;
+        Mt += Mp[i];
+        Pt = rc_v3_add(Pt, pp[i]);
+        const double m2 = Mp[i] * Mp[i] - rc_v3_norm2(pp[i]) * inv_c2;
+        const double mnew = m2 > 0.0 && Mp[i] > 0.0 ? sqrt(m2) : 0.0; /* not timelike: m */
+        mstar[i] = mstar[i] == -1.0 ? b0[i].m : fmax(b0[i].m, mnew);
+    }
+    const rc_vec3 u = rc_v3_scale(1.0 / Mt, Pt);
+    /* ZMF states of the touched balls (kept in Mp, pp); W their total energy there */
+    double W = 0.0, W0 = 0.0;
+    for (size_t i = 0; i < nb; i++) {
+        if (mstar[i] == 0.0)
+            continue;
+        rc_four f = {Mp[i], pp[i]};
+        if (rc_boost(u, inv_c2, &f) != RC_OK)
+            return RC_ENOCONVERGE;
+        Mp[i] = f.t;
+        pp[i] = f.x;
+        W += f.t;
+        W0 += mstar[i];
+    }
+    if (!(W0 < W))
+        return RC_ENOCONVERGE;
+    /* sum_i sqrt(m*_i^2 + lam^2 |p_i|^2/c^2) = W: increasing and convex in lam, so Newton
+     * from lam = 1 steps past the root at most once, then descends to it monotonically */
+    double lam = 1.0;
+    int it = 0;
+    for (; it < LAM_MAX_ITER; it++) {
+        double f = -W, df = 0.0, scale = W;
+        for (size_t i = 0; i < nb; i++) {
+            if (mstar[i] == 0.0)
+                continue;
+            const double s2 = rc_v3_norm2(pp[i]) * inv_c2;
+            const double e = sqrt(mstar[i] * mstar[i] + lam * lam * s2);
+            f += e;
+            scale += e;
+            df += lam * s2 / e;
+        }
+        /* energy matched to round-off of the sum */
+        if (fabs(f) <= LAM_ROUNDOFF * scale)
+            break;
+        if (!(df > 0.0))
+            return RC_ENOCONVERGE;
+        double next = lam - f / df;
+        if (next < 0.0)
+            next = 0.5 * lam;
+        lam = next;
+    }
+    if (it == LAM_MAX_ITER || !isfinite(lam))
+        return RC_ENOCONVERGE;
+    const rc_vec3 back = rc_v3_scale(-1.0, u);
+    for (size_t i = 0; i < nb; i++) {
+        if (mstar[i] == 0.0)
+            continue;
+        const rc_vec3 p = rc_v3_scale(lam, pp[i]);
+        rc_four f = {sqrt(mstar[i] * mstar[i] + rc_v3_norm2(p) * inv_c2), p};
+        if (rc_boost(back, inv_c2, &f) != RC_OK)
+            return RC_ENOCONVERGE;
+        Mp[i] = f.t;
+        pp[i] = f.x;
+    }
+    return RC_OK;
+}
+
 int rc_contacts_resolve(double inv_c2, size_t nballs, rc_particle *balls, size_t k,
                         const rc_contact *contacts, double *jout)
 {
@@ -202,17 +302,39 @@ int rc_contacts_resolve(double inv_c2, size_t nballs, rc_particle *balls, size_t
         active[worst] = 0;
     }
     post_states(&w, nballs, J);
-    for (size_t i = 0; i < nballs; i++) {
-        double m2 = Mp[i] * Mp[i] - rc_v3_norm2(pp[i]) * inv_c2;
-        if (!(m2 > 0.0) || !(Mp[i] > 0.0)) {
-            st = RC_EMASS;
+    size_t nactive = 0;
+    for (size_t j = 0; j < k; j++)
+        nactive += active[j] != 0;
+    if (inv_c2 != 0.0 && nactive >= 2) {
+        /* the rest masses come from the targets (an impulse-only outcome may even be
+         * spacelike for a ball; the step below takes it back to its rest mass) */
+        double *mstar = malloc(nballs * sizeof *mstar);
+        if (!mstar) {
+            st = RC_ENOMEM;
             goto done;
         }
-    }
-    for (size_t i = 0; i < nballs; i++) {
-        if (inv_c2 != 0.0)
-            balls[i].m = sqrt(Mp[i] * Mp[i] - rc_v3_norm2(pp[i]) * inv_c2);
-        balls[i].p = pp[i];
+        st = keep_rest_masses(inv_c2, nballs, balls, k, contacts, active, Mp, pp, mstar);
+        for (size_t i = 0; i < nballs && st == RC_OK; i++)
+            if (mstar[i] != 0.0) {
+                balls[i].m = mstar[i];
+                balls[i].p = pp[i];
+            }
+        free(mstar);
+        if (st != RC_OK)
+            goto done;
+    } else {
+        for (size_t i = 0; i < nballs; i++) {
+            double m2 = Mp[i] * Mp[i] - rc_v3_norm2(pp[i]) * inv_c2;
+            if (!(m2 > 0.0) || !(Mp[i] > 0.0)) {
+                st = RC_EMASS;
+                goto done;
+            }
+        }
+        for (size_t i = 0; i < nballs; i++) {
+            if (inv_c2 != 0.0)
+                balls[i].m = sqrt(Mp[i] * Mp[i] - rc_v3_norm2(pp[i]) * inv_c2);
+            balls[i].p = pp[i];
+        }
     }
     if (jout)
         for (size_t j = 0; j < k; j++)

@@ -60,9 +60,10 @@ static void run(int dim, double c, double eps, double eps_w, double packing, siz
     }
     if (isfinite(c))
         ENSURE(slow == rc_sim_count(s));
-    printf("  dim %d c %g eps %g/%g: %llu collisions, %llu groups (max %zu), TC %llu, "
-           "dE/E %.2g\n", dim, c, eps, eps_w, (unsigned long long)d1.collisions,
-           (unsigned long long)d1.events[RC_SIM_EV_MULTI], d1.max_group,
+    printf("  dim %d c %g eps %g/%g: %llu collisions, %llu groups (max %zu, %llu resolved "
+           "one contact at a time), TC %llu, dE/E %.2g\n", dim, c, eps, eps_w,
+           (unsigned long long)d1.collisions, (unsigned long long)d1.events[RC_SIM_EV_MULTI],
+           d1.max_group, (unsigned long long)d1.group_fallbacks,
            (unsigned long long)d1.events[RC_SIM_EV_TC], (d1.energy - d0.energy) / d0.energy);
     rc_sim_free(&s);
 }
