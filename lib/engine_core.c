@@ -41,15 +41,6 @@ static inline double pair_time(const rc_sim *s, const eng_ball *bi, const eng_ba
     return pair_time_dx(s, bi, bk, dx, rc_v3_norm2(dx), tref, best, s->narrow);
 }
 
-/* The bounding-sphere time only (the broad phase of a contracted frame). */
-static inline double sphere_time(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
-                                 double best)
-{
-    double tref;
-    rc_vec3 dx = pair_sep(bi, bk, &tref);
-    return pair_time_dx(s, bi, bk, dx, rc_v3_norm2(dx), tref, best, 0);
-}
-
 /* The same from the separation dx (and its square d2) at time tref. */
 __attribute__((always_inline)) static inline double pair_time_dx(
     const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx, double d2, double tref,
@@ -303,12 +294,51 @@ static int axes_rule_out(const rc_sim *s, const eng_ball *bi, const eng_ball *bk
     return 0;
 }
 
+/* What a contracted-frame prediction for a ball that has just collided (at T, its clock)
+ * also looks for: another contact simultaneous with the one resolved -- as grow_group
+ * judges it, on the states before the collision (old momentum, old velocity), the event's
+ * own partner excepted. */
+typedef struct eng_check {
+    rc_particle old;
+    rc_vec3 vold;
+    int32_t partner;
+} eng_check;
+
+/* 1 if neighbour bk of bi is in contact with bi's old shape within sim_tol and approaching
+ * it: bounding spheres within sim_tol, approaching, not separated along the centre line,
+ * and the frame's contact time within sim_tol of now (grow_group's tests, in its order).
+ * dx, d2: pair_sep's separation and its square. */
+static int narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
+                           double d2, const eng_check *chk)
+{
+    const double stol = s->def.sim_tol, atol = s->def.approach_tol;
+    const double sig = bi->r + bk->r, lim = sig * (1.0 + stol);
+    if (!(d2 <= lim * lim))
+        return 0;
+    const rc_vec3 dv = rc_v3_sub(bk->v, chk->vold);
+    const double bb = rc_v3_dot(dx, dv);
+    if (!(bb < 0.0 && bb * bb > atol * atol * sig * sig * rc_v3_norm2(dv)))
+        return 0;
+    const rc_vec3 n = rc_v3_scale(1.0 / sqrt(d2), dx);
+    const double vin = rc_v3_dot(chk->vold, n), vkn = rc_v3_dot(bk->v, n);
+    const double hsum = bi->r * sqrt(fmax(0.0, 1.0 - vin * vin * s->inv_c2)) +
+                        bk->r * sqrt(fmax(0.0, 1.0 - vkn * vkn * s->inv_c2));
+    if (d2 > hsum * hsum * (1.0 + stol) * (1.0 + stol) * (1.0 + 1e-12))
+        return 0;
+    const eng_aux *ak = &s->a[bk - s->b];
+    rc_toi_ball A = {rc_v3(0, 0, 0), bi->r, chk->old.m, chk->old.p};
+    rc_toi_ball B = {dx, bk->r, ak->m, ak->p};
+    rc_toi_contact out;
+    const int st = s->def.frame->toi(&s->toi, &A, &B, s->ws, &out);
+    return st == RC_OK && out.t * out.t * rc_v3_norm2(dv) <= stol * stol * sig * sig;
+}
+
 /* Contracted frames: the root finding is the cost, so first collect the neighbours whose
  * bounding spheres can touch before `best`, then ask the frame in order of sphere time and
  * stop as soon as the next sphere time is no earlier than the best contracted contact
  * (the contracted contact is never earlier than the bounding spheres'). */
-static void scan_block_narrow(const rc_sim *cs, int32_t i, int x0, int x1, int y0, int y1,
-                              int z0, int z1, double *best, int32_t *bp)
+static int scan_block_narrow(const rc_sim *cs, int32_t i, int x0, int x1, int y0, int y1,
+                             int z0, int z1, double *best, int32_t *bp, const eng_check *chk)
 {
     rc_sim *s = (rc_sim *)cs; /* the candidate buffer is scratch */
     const eng_cells *g = &s->g;
@@ -321,7 +351,13 @@ static void scan_block_narrow(const rc_sim *cs, int32_t i, int x0, int x1, int y
                      k = g->next[k]) {
                     if (k == i)
                         continue;
-                    double t = sphere_time(s, bi, &s->b[k], *best);
+                    const eng_ball *bk = &s->b[k];
+                    double tref;
+                    const rc_vec3 dx = pair_sep(bi, bk, &tref);
+                    const double d2 = rc_v3_norm2(dx);
+                    if (chk && k != chk->partner && narrow_conflict(s, bi, bk, dx, d2, chk))
+                        return 1;
+                    const double t = pair_time_dx(s, bi, bk, dx, d2, tref, *best, 0);
                     if (!(t < *best))
                         continue;
                     if (nc == s->cand_cap) {
@@ -364,11 +400,12 @@ static void scan_block_narrow(const rc_sim *cs, int32_t i, int x0, int x1, int y
             *bp = s->cand[a].k;
         }
     }
+    return 0;
 }
 
 /* Scan the cells around c with offsets lo[d]..hi[d] (clipped to the grid). */
-static void scan_block(const rc_sim *s, int32_t i, const int c[3], const int lo[3],
-                       const int hi[3], double *best, int32_t *bp)
+static int scan_block(const rc_sim *s, int32_t i, const int c[3], const int lo[3],
+                      const int hi[3], double *best, int32_t *bp, const eng_check *chk)
 {
     const eng_cells *g = &s->g;
     int z0 = c[2] + lo[2], z1 = c[2] + hi[2], y0 = c[1] + lo[1], y1 = c[1] + hi[1];
@@ -379,10 +416,8 @@ static void scan_block(const rc_sim *s, int32_t i, const int c[3], const int lo[
     if (y1 >= g->n[1]) y1 = g->n[1] - 1;
     if (x0 < 0) x0 = 0;
     if (x1 >= g->n[0]) x1 = g->n[0] - 1;
-    if (s->narrow) {
-        scan_block_narrow(s, i, x0, x1, y0, y1, z0, z1, best, bp);
-        return;
-    }
+    if (s->narrow)
+        return scan_block_narrow(s, i, x0, x1, y0, y1, z0, z1, best, bp, chk);
     /* Gather the neighbours first, prefetching each, then test them: walking the lists
      * and loading the balls overlap instead of waiting on each other. */
     int32_t nb[GATHER_MAX];
@@ -402,6 +437,7 @@ static void scan_block(const rc_sim *s, int32_t i, const int c[3], const int lo[
                     }
                 }
     test_list(s, i, nb, m, best, bp, NULL, ENG_NONE, 0.0);
+    return 0;
 }
 
 static void cross_event(rc_sim *s, int32_t i, const int c[3])
@@ -443,11 +479,49 @@ void rc_eng_predict(rc_sim *s, int32_t i, int update_heap)
     cell_coords(&s->g, s->a[i].cell, c);
     wall_event(s, i, boundary_dims(s, c), &best, &bp);
     static const int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
-    scan_block(s, i, c, lo, hi, &best, &bp);
+    scan_block(s, i, c, lo, hi, &best, &bp, NULL);
     store_event(s, i, best, bp);
     cross_event(s, i, c);
     if (update_heap)
         rc_eng_queue_update(&s->q, (uint32_t)i, key_of(&s->a[i]));
+}
+
+/* rc_eng_predict for a ball of a contracted frame that has just collided, looking for
+ * another simultaneous contact as it scans (walls too, with its old shape): 1 on one
+ * (nothing stored: the caller resolves the whole group), else the events are stored
+ * (the heap is not updated) and 0. */
+static int predict_checked_narrow(rc_sim *s, int32_t i, const eng_check *chk)
+{
+    const eng_ball *bi = &s->b[i];
+    int c[3];
+    cell_coords(&s->g, s->a[i].cell, c);
+    const unsigned walls = boundary_dims(s, c);
+    const int check = s->def.sim_tol > 0.0;
+    for (int d = 0; d < s->def.dim && check && walls; d++) {
+        const double v = rc_v3_get(chk->vold, d), x = rc_v3_get(bi->x, d);
+        const int w = 2 * d + (v > 0.0);
+        if (v == 0.0 || ENG_WALL(w) == chk->partner)
+            continue;
+        double h = bi->r; /* the old shape's support along e_d, as wall_support */
+        if (s->wall_contracted) {
+            const double pd = rc_v3_get(chk->old.p, d);
+            const double pp = fmax(0.0, rc_v3_norm2(chk->old.p) - pd * pd);
+            h = bi->r / eng_mass_rel(chk->old.m, chk->old.p, s->inv_c2) *
+                sqrt(chk->old.m * chk->old.m + pp * s->inv_c2);
+        }
+        const double gap = v > 0.0 ? s->L[d] - h - x : x - h;
+        if (gap <= s->def.sim_tol * bi->r)
+            return 1;
+    }
+    double best = INFINITY;
+    int32_t bp = ENG_NONE;
+    wall_event(s, i, walls, &best, &bp);
+    static const int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
+    if (scan_block(s, i, c, lo, hi, &best, &bp, check ? chk : NULL))
+        return 1;
+    store_event(s, i, best, bp);
+    cross_event(s, i, c);
+    return 0;
 }
 
 /* ---- resolving events ------------------------------------------------------------ */
@@ -734,7 +808,12 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T)
     for (size_t j = 0; j < nm && !conflict; j++) {
         int32_t b = s->grp_ball[j];
         int32_t partner = nm > 1 ? s->grp_ball[1 - j] : bp;
-        conflict = predict_checked(s, b, vold[j], partner, T);
+        if (s->narrow) {
+            const eng_check chk = {P[j], vold[j], partner};
+            conflict = predict_checked_narrow(s, b, &chk);
+        } else {
+            conflict = predict_checked(s, b, vold[j], partner, T);
+        }
     }
     if (conflict) {
         for (size_t j = 0; j < nm; j++) {
@@ -800,7 +879,7 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
         if (add_contact(s, &nc, 0, bp, n0) != RC_OK)
             return RC_ENOMEM;
     }
-    if (!s->narrow && try_single(s, nm, bp, T))
+    if (try_single(s, nm, bp, T))
         return RC_OK;
     if (s->def.sim_tol > 0.0) {
         int st = grow_group(s, &nm, &nc, T);
@@ -942,7 +1021,7 @@ static void cross(rc_sim *s, int32_t i)
     lo[d] = hi[d] = dir;
     if (s->def.dim == 2)
         lo[2] = hi[2] = 0;
-    scan_block(s, i, c, lo, hi, &best, &bp);
+    scan_block(s, i, c, lo, hi, &best, &bp, NULL);
     if (c[d] == 0 || c[d] == s->g.n[d] - 1) /* a boundary cell: its wall is now in reach */
         wall_event(s, i, 1u << d, &best, &bp);
     if (bp != a->ev_partner || best != a->ev_t)
