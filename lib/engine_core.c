@@ -187,11 +187,10 @@ static inline int test_tail(const rc_sim *s, const eng_ball *bi, const int32_t *
 }
 
 #ifdef ENG_HAVE_AVX2
-__attribute__((target("avx2"))) static int test_list_avx2(const rc_sim *s, int32_t i,
-                                                          const int32_t *nb, size_t m,
-                                                          double *best, int32_t *bp,
-                                                          const rc_vec3 *vold, int32_t partner,
-                                                          double T)
+/* (three: a compile-time constant at each call, so 2-D gets its own loop without z) */
+__attribute__((target("avx2"), always_inline)) static inline int test_list_avx2_dim(
+    const rc_sim *s, int32_t i, const int32_t *nb, size_t m, double *best, int32_t *bp,
+    const rc_vec3 *vold, int32_t partner, double T, const int three)
 {
     const eng_ball *bi = &s->b[i];
     const int check = vold && s->def.sim_tol > 0.0;
@@ -203,7 +202,7 @@ __attribute__((target("avx2"))) static int test_list_avx2(const rc_sim *s, int32
                                       &s->b[nb[j + 3]]};
         double t[4];
         int nears;
-        pair_sphere_x4(s, bi, k, bt, s->def.sim_tol, t, &nears);
+        pair_sphere_x4(s, bi, k, bt, s->def.sim_tol, t, &nears, three);
         for (int l = 0; l < 4; l++)
             if (visit(s, bi, nb[j + (size_t)l], t[l], nears >> l & 1, check, partner, vold, T,
                       &bt, &bk))
@@ -214,6 +213,17 @@ __attribute__((target("avx2"))) static int test_list_avx2(const rc_sim *s, int32
     *best = bt;
     *bp = bk;
     return 0;
+}
+
+__attribute__((target("avx2"))) static int test_list_avx2(const rc_sim *s, int32_t i,
+                                                          const int32_t *nb, size_t m,
+                                                          double *best, int32_t *bp,
+                                                          const rc_vec3 *vold, int32_t partner,
+                                                          double T)
+{
+    if (s->def.dim == 3)
+        return test_list_avx2_dim(s, i, nb, m, best, bp, vold, partner, T, 1);
+    return test_list_avx2_dim(s, i, nb, m, best, bp, vold, partner, T, 0);
 }
 #endif
 

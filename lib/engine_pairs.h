@@ -141,7 +141,7 @@ static inline void pair_sphere_x2(const rc_sim *s, const eng_ball *bi, const eng
  * rc_sim_create asks the CPU once). No FMA: the target adds AVX2 only, so the bits stay. */
 __attribute__((target("avx2"), always_inline)) static inline void pair_sphere_x4(
     const rc_sim *s, const eng_ball *bi, const eng_ball *const k[4], double best, double stol,
-    double out[4], int *nears)
+    double out[4], int *nears, const int three)
 {
     /* transpose four 64-byte records (x, v, t, r): low halves x.x x.y x.z v.x, high halves
      * v.y v.z t r */
@@ -178,16 +178,20 @@ __attribute__((target("avx2"), always_inline)) static inline void pair_sphere_x4
     const __m256d bz = _mm256_sub_pd(xkz, _mm256_add_pd(xiz, _mm256_mul_pd(hi_, viz)));
     const __m256d dx = _mm256_blendv_pd(bx, ax, ge), dy = _mm256_blendv_pd(by, ay, ge);
     const __m256d dz = _mm256_blendv_pd(bz, az, ge), tref = _mm256_blendv_pd(tk, ti, ge);
-    const __m256d d2 = _mm256_add_pd(
-        _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz));
+    /* three == 0 (2-D, every z component 0): the z terms add +0 and are left out (the sums
+     * are the same bits unless one is -0, which no comparison below can tell from +0) */
+    __m256d d2 = _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy));
     const __m256d dvx = _mm256_sub_pd(vkx, vix), dvy = _mm256_sub_pd(vky, viy);
-    const __m256d dvz = _mm256_sub_pd(vkz, viz);
-    const __m256d b = _mm256_add_pd(
-        _mm256_add_pd(_mm256_mul_pd(dx, dvx), _mm256_mul_pd(dy, dvy)), _mm256_mul_pd(dz, dvz));
+    __m256d b = _mm256_add_pd(_mm256_mul_pd(dx, dvx), _mm256_mul_pd(dy, dvy));
+    __m256d dv2 = _mm256_add_pd(_mm256_mul_pd(dvx, dvx), _mm256_mul_pd(dvy, dvy));
+    if (three) {
+        const __m256d dvz = _mm256_sub_pd(vkz, viz);
+        d2 = _mm256_add_pd(d2, _mm256_mul_pd(dz, dz));
+        b = _mm256_add_pd(b, _mm256_mul_pd(dz, dvz));
+        dv2 = _mm256_add_pd(dv2, _mm256_mul_pd(dvz, dvz));
+    }
     const __m256d sig = _mm256_add_pd(ri, rk);
     const __m256d dd = _mm256_sub_pd(d2, _mm256_mul_pd(sig, sig));
-    const __m256d dv2 = _mm256_add_pd(
-        _mm256_add_pd(_mm256_mul_pd(dvx, dvx), _mm256_mul_pd(dvy, dvy)), _mm256_mul_pd(dvz, dvz));
     const __m256d disc = _mm256_sub_pd(_mm256_mul_pd(b, b), _mm256_mul_pd(dv2, dd));
     const __m256d tol = _mm256_mul_pd(_mm256_set1_pd(s->def.approach_tol), sig);
     const __m256d lim = _mm256_mul_pd(sig, _mm256_set1_pd(1.0 + stol));
