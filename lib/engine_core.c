@@ -21,18 +21,6 @@ static inline double pair_time_dx(const rc_sim *s, const eng_ball *bi, const eng
                                   rc_vec3 dx, double d2, double tref, double best,
                                   int use_narrow);
 
-/* Separation bk - bi at the later of the two balls' clocks, *tref: the earlier ball is
- * advanced, so the result depends only on the two stored states. */
-static inline rc_vec3 pair_sep(const eng_ball *bi, const eng_ball *bk, double *tref)
-{
-    if (bi->t >= bk->t) {
-        *tref = bi->t;
-        return rc_v3_sub(rc_v3_axpy(bk->x, bi->t - bk->t, bk->v), bi->x);
-    }
-    *tref = bk->t;
-    return rc_v3_sub(bk->x, rc_v3_axpy(bi->x, bk->t - bi->t, bi->v));
-}
-
 static inline double pair_time(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
                                double best)
 {
@@ -46,26 +34,7 @@ __attribute__((always_inline)) static inline double pair_time_dx(
     const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx, double d2, double tref,
     double best, int use_narrow)
 {
-    const rc_vec3 dv = rc_v3_sub(bk->v, bi->v);
-    const double b = rc_v3_dot(dx, dv);
-    const double sig = bi->r + bk->r;
-    const double dd = d2 - sig * sig;
-    const double dv2 = rc_v3_norm2(dv);
-    const double disc = b * b - dv2 * dd;
-    const double tol = s->def.approach_tol * sig;
-    /* One combined, mostly-taken test rejects most neighbours before the sqrt and the
-     * division: not approaching (b >= 0); touching but not really approaching; roots not
-     * real; or not able to beat `best` (sqrt(disc) <= -b gives t >= dd / (-2 b)). The
-     * root itself is dd / (-b + sqrt(disc)), free of cancellation. */
-    const int touching = dd <= 0.0;
-    const int hit = (b < 0.0) & (touching ? b * b > tol * tol * dv2
-                                          : (disc > 0.0) & (dd < -2.0 * b * (best - tref)));
-    if (!hit)
-        return INFINITY;
-    const double t = touching ? 0.0 : dd / (sqrt(disc) - b);
-    double ta = tref + t;
-    if (ta < s->now)
-        ta = s->now;
+    double ta = sphere_time_dx(s, bi, bk, dx, d2, tref, best);
     if (!(ta < best))
         return INFINITY;
     if (use_narrow) {
@@ -317,9 +286,9 @@ typedef struct eng_check {
 /* 1 if neighbour bk of bi is in contact with bi's old shape within sim_tol and approaching
  * it: bounding spheres within sim_tol, approaching, not separated along the centre line,
  * and the frame's contact time within sim_tol of now (grow_group's tests, in its order).
- * dx, d2: pair_sep's separation and its square. */
+ * dx, d2: pair_sep's separation and its square; *normal (if asked): the frame's normal. */
 static int narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
-                           double d2, const eng_check *chk)
+                           double d2, const eng_check *chk, rc_vec3 *normal)
 {
     const double stol = s->def.sim_tol, atol = s->def.approach_tol;
     const double sig = bi->r + bk->r, lim = sig * (1.0 + stol);
@@ -340,7 +309,11 @@ static int narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc
     rc_toi_ball B = {dx, bk->r, ak->m, ak->p};
     rc_toi_contact out;
     const int st = s->def.frame->toi(&s->toi, &A, &B, s->ws, &out);
-    return st == RC_OK && out.t * out.t * rc_v3_norm2(dv) <= stol * stol * sig * sig;
+    if (!(st == RC_OK && out.t * out.t * rc_v3_norm2(dv) <= stol * stol * sig * sig))
+        return 0;
+    if (normal)
+        *normal = out.n;
+    return 1;
 }
 
 /* Contracted frames: the root finding is the cost, so first collect the neighbours whose
@@ -365,7 +338,7 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, int x0, int x1, int y0
                     double tref;
                     const rc_vec3 dx = pair_sep(bi, bk, &tref);
                     const double d2 = rc_v3_norm2(dx);
-                    if (chk && k != chk->partner && narrow_conflict(s, bi, bk, dx, d2, chk))
+                    if (chk && k != chk->partner && narrow_conflict(s, bi, bk, dx, d2, chk, NULL))
                         return 1;
                     const double t = pair_time_dx(s, bi, bk, dx, d2, tref, *best, 0);
                     if (!(t < *best))
@@ -661,23 +634,11 @@ static int grow_group(rc_sim *s, size_t *nm, size_t *nc, double T)
                             continue;
                         rc_vec3 n = rc_v3_scale(1.0 / sqrt(d2), dx);
                         if (s->narrow) {
-                            /* contracted shapes: separated along the centre line (a
-                             * separating axis: gap beyond the two support distances)
-                             * means not touching, without asking the frame */
-                            double vin = rc_v3_dot(bi->v, n), vkn = rc_v3_dot(bk->v, n);
-                            double hsum = bi->r * sqrt(fmax(0.0, 1.0 - vin * vin * s->inv_c2)) +
-                                          bk->r * sqrt(fmax(0.0, 1.0 - vkn * vkn * s->inv_c2));
-                            if (d2 > hsum * hsum * (1.0 + stol) * (1.0 + stol) * (1.0 + 1e-12))
+                            /* contracted shapes: the same contact test as the
+                             * single-contact path's, on the states as they are */
+                            const eng_check now = {{s->a[i].m, s->a[i].p}, bi->v, ENG_NONE};
+                            if (!narrow_conflict(s, bi, bk, dx, d2, &now, &n))
                                 continue;
-                            /* in contact within sim_tol of now? */
-                            rc_toi_ball A = {rc_v3(0, 0, 0), bi->r, s->a[i].m, s->a[i].p};
-                            rc_toi_ball B = {dx, bk->r, s->a[k].m, s->a[k].p};
-                            rc_toi_contact out;
-                            int st = s->def.frame->toi(&s->toi, &A, &B, s->ws, &out);
-                            if (st != RC_OK ||
-                                !(out.t * out.t * rc_v3_norm2(dv) <= stol * stol * sig * sig))
-                                continue;
-                            n = out.n;
                         }
                         int mk = member_of(s, nm, k, T);
                         if (mk < 0)

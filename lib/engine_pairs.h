@@ -15,23 +15,24 @@
 #include <emmintrin.h>
 #endif
 
-/* Contact time of bi with bk (both uncontracted spheres) as pair_time_dx(..., use_narrow = 0)
- * computes it from pair_sep's separation, INFINITY on a miss or when it cannot beat
- * `best`; *near (if asked) says whether the centres are within lim of each other at the
- * later clock (d2 <= lim^2 with lim = (ri + rk) (1 + stol)), for the simultaneity check. */
-static inline double pair_sphere_scalar(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
-                                        double best, double stol, int *near)
+/* Separation bk - bi at the later of the two balls' clocks, *tref: the earlier ball is
+ * advanced, so the result depends only on the two stored states. */
+static inline rc_vec3 pair_sep(const eng_ball *bi, const eng_ball *bk, double *tref)
 {
-    double tref;
-    rc_vec3 dx;
     if (bi->t >= bk->t) {
-        tref = bi->t;
-        dx = rc_v3_sub(rc_v3_axpy(bk->x, bi->t - bk->t, bk->v), bi->x);
-    } else {
-        tref = bk->t;
-        dx = rc_v3_sub(bk->x, rc_v3_axpy(bi->x, bk->t - bi->t, bi->v));
+        *tref = bi->t;
+        return rc_v3_sub(rc_v3_axpy(bk->x, bi->t - bk->t, bk->v), bi->x);
     }
-    const double d2 = rc_v3_norm2(dx);
+    *tref = bk->t;
+    return rc_v3_sub(bk->x, rc_v3_axpy(bi->x, bk->t - bi->t, bi->v));
+}
+
+/* Contact time of the bounding spheres of bi and bk, from their separation dx (d2 = |dx|^2)
+ * at time tref, as an absolute time >= now; INFINITY on a miss or when it cannot beat
+ * `best`. It depends only on the two stored states (the same bits whichever ball asks). */
+static inline double sphere_time_dx(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
+                                    rc_vec3 dx, double d2, double tref, double best)
+{
     const rc_vec3 dv = rc_v3_sub(bk->v, bi->v);
     const double b = rc_v3_dot(dx, dv);
     const double sig = bi->r + bk->r;
@@ -39,8 +40,10 @@ static inline double pair_sphere_scalar(const rc_sim *s, const eng_ball *bi, con
     const double dv2 = rc_v3_norm2(dv);
     const double disc = b * b - dv2 * dd;
     const double tol = s->def.approach_tol * sig;
-    const double lim = sig * (1.0 + stol);
-    *near = d2 <= lim * lim;
+    /* One combined, mostly-taken test rejects most neighbours before the sqrt and the
+     * division: not approaching (b >= 0); touching but not really approaching; roots not
+     * real; or not able to beat `best` (sqrt(disc) <= -b gives t >= dd / (-2 b)). The
+     * root itself is dd / (-b + sqrt(disc)), free of cancellation. */
     const int touching = dd <= 0.0;
     const int hit = (b < 0.0) & (touching ? b * b > tol * tol * dv2
                                           : (disc > 0.0) & (dd < -2.0 * b * (best - tref)));
@@ -51,6 +54,19 @@ static inline double pair_sphere_scalar(const rc_sim *s, const eng_ball *bi, con
     if (ta < s->now)
         ta = s->now;
     return ta < best ? ta : INFINITY;
+}
+
+/* The same from the two balls, with *near: whether the centres are within lim of each
+ * other at the later clock (d2 <= lim^2, lim = (ri + rk)(1 + stol)), for the simultaneity
+ * check -- the scalar form of the lanes below. */
+static inline double pair_sphere_scalar(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
+                                        double best, double stol, int *near)
+{
+    double tref;
+    const rc_vec3 dx = pair_sep(bi, bk, &tref);
+    const double d2 = rc_v3_norm2(dx), lim = (bi->r + bk->r) * (1.0 + stol);
+    *near = d2 <= lim * lim;
+    return sphere_time_dx(s, bi, bk, dx, d2, tref, best);
 }
 
 #if defined(__SSE2__)
