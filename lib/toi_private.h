@@ -24,6 +24,13 @@ static inline rc_vec3 rc_toi_point_(rc_vec3 x0, rc_vec3 v0, double t, rc_vec3 y0
     return rc_v3_add(rc_v3_axpy(x0, t, v0), y0);
 }
 
+/* Support distance along unit n (rc_toi_support's body, inline for the contracted solver,
+ * which takes four per call): 1 - (beta.n)^2 = g2 + |beta x n|^2, non-negative terms. */
+static inline double rc_toi_support_(const rc_toi_shape *s, rc_vec3 n)
+{
+    return s->r * sqrt(s->g2 + rc_v3_norm2(rc_v3_cross(s->beta, n)));
+}
+
 /* Support point of a shape along unit n, relative to its centre: P n / h(n). */
 static inline rc_vec3 rc_toi_support_point_(const rc_toi_shape *s, rc_vec3 n, double h)
 {

@@ -14,5 +14,5 @@ double rc_toi_support(const rc_toi_shape *s, rc_vec3 n)
 {
     /* 1 - (beta.n)^2 = (1 - beta^2) + (beta^2 - (beta.n)^2) = g2 + |beta x n|^2 for unit
      * n: both terms are non-negative, so a fast ball's thin side keeps full precision. */
-    return s->r * sqrt(s->g2 + rc_v3_norm2(rc_v3_cross(s->beta, n)));
+    return rc_toi_support_(s, n);
 }
