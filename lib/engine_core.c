@@ -114,6 +114,68 @@ static void wall_event(const rc_sim *s, int32_t i, unsigned dims, double *best, 
 /* Neighbours gathered per scan before testing (stack buffer; more are done in chunks). */
 #define GATHER_MAX 128
 
+/* The balls of a block of cells (offsets lo..hi around cell c, clipped to the grid), in
+ * chunks: cell by cell (x fastest), each cell's list in order, ball `skip` left out. Each
+ * index is prefetched as it is gathered, so walking the lists and loading the balls
+ * overlap instead of waiting on each other. */
+typedef struct eng_walk {
+    const rc_sim *s;
+    int x0, x1, y0, y1, z0, z1, x, y, z;
+    int32_t k, skip;
+} eng_walk;
+
+static void walk_init(eng_walk *w, const rc_sim *s, int32_t skip, const int c[3],
+                      const int lo[3], const int hi[3])
+{
+    const eng_cells *g = &s->g;
+    w->s = s;
+    w->skip = skip;
+    w->x0 = c[0] + lo[0] > 0 ? c[0] + lo[0] : 0;
+    w->y0 = c[1] + lo[1] > 0 ? c[1] + lo[1] : 0;
+    w->z0 = c[2] + lo[2] > 0 ? c[2] + lo[2] : 0;
+    w->x1 = c[0] + hi[0] < g->n[0] ? c[0] + hi[0] : g->n[0] - 1;
+    w->y1 = c[1] + hi[1] < g->n[1] ? c[1] + hi[1] : g->n[1] - 1;
+    w->z1 = c[2] + hi[2] < g->n[2] ? c[2] + hi[2] : g->n[2] - 1;
+    w->x = w->x0;
+    w->y = w->y0;
+    w->z = w->z0;
+    /* an empty block (a crossing into a boundary cell has no slab beyond it) */
+    const int empty = w->x0 > w->x1 || w->y0 > w->y1 || w->z0 > w->z1;
+    w->k = empty ? -1 : g->head[w->x + g->n[0] * (w->y + g->n[1] * w->z)];
+    if (empty)
+        w->z = w->z1 + 1;
+}
+
+/* Up to GATHER_MAX more balls into nb; fewer means the block is done. */
+static size_t walk_gather(eng_walk *w, int32_t *nb)
+{
+    const eng_cells *g = &w->s->g;
+    size_t m = 0;
+    int32_t k = w->k;
+    while (m < GATHER_MAX) {
+        while (k < 0 && w->z <= w->z1) {
+            if (++w->x > w->x1) {
+                w->x = w->x0;
+                if (++w->y > w->y1) {
+                    w->y = w->y0;
+                    if (++w->z > w->z1)
+                        break;
+                }
+            }
+            k = g->head[w->x + g->n[0] * (w->y + g->n[1] * w->z)];
+        }
+        if (k < 0)
+            break;
+        if (k != w->skip) {
+            __builtin_prefetch(&w->s->b[k]);
+            nb[m++] = k;
+        }
+        k = g->next[k];
+    }
+    w->k = k;
+    return m;
+}
+
 /* Simultaneity check of predict_checked for neighbour k of ball i (at time T, velocity
  * before the collision vold): approaching within approach_tol, so in contact now. */
 static int approaching_with(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, double T,
@@ -232,6 +294,63 @@ static int test_list(const rc_sim *s, int32_t i, const int32_t *nb, size_t m, do
     return 0;
 }
 
+/* Bounding-sphere times of ball i with the m <= GATHER_MAX gathered neighbours nb (t[j]:
+ * INFINITY unless it can beat `best`) and the proximity flags near[j] of
+ * pair_sphere_scalar, in lanes where the CPU has them (the same bits every way): the
+ * broad phase of a contracted frame. */
+#ifdef ENG_HAVE_AVX2
+__attribute__((target("avx2"), always_inline)) static inline size_t sphere_lanes_avx2_dim(
+    const rc_sim *s, const eng_ball *bi, const int32_t *nb, size_t m, double best, double *t,
+    unsigned char *near, const int three)
+{
+    size_t j = 0;
+    for (; j + 4 <= m; j += 4) {
+        const eng_ball *const k[4] = {&s->b[nb[j]], &s->b[nb[j + 1]], &s->b[nb[j + 2]],
+                                      &s->b[nb[j + 3]]};
+        int nears;
+        pair_sphere_x4(s, bi, k, best, s->def.sim_tol, &t[j], &nears, three);
+        for (int l = 0; l < 4; l++)
+            near[j + (size_t)l] = (unsigned char)(nears >> l & 1);
+    }
+    return j;
+}
+
+__attribute__((target("avx2"))) static size_t sphere_lanes_avx2(const rc_sim *s,
+                                                               const eng_ball *bi,
+                                                               const int32_t *nb, size_t m,
+                                                               double best, double *t,
+                                                               unsigned char *near)
+{
+    if (s->def.dim == 3)
+        return sphere_lanes_avx2_dim(s, bi, nb, m, best, t, near, 1);
+    return sphere_lanes_avx2_dim(s, bi, nb, m, best, t, near, 0);
+}
+#endif
+
+static void sphere_lanes(const rc_sim *s, int32_t i, const int32_t *nb, size_t m, double best,
+                         double *t, unsigned char *near)
+{
+    const eng_ball *bi = &s->b[i];
+    size_t j = 0;
+#ifdef ENG_HAVE_AVX2
+    if (s->simd == ENG_SIMD_AVX2)
+        j = sphere_lanes_avx2(s, bi, nb, m, best, t, near);
+#endif
+#if defined(__SSE2__)
+    for (; s->simd != ENG_SIMD_NONE && j + 2 <= m; j += 2) {
+        int nr[2];
+        pair_sphere_x2(s, bi, &s->b[nb[j]], &s->b[nb[j + 1]], best, s->def.sim_tol, &t[j], nr);
+        near[j] = (unsigned char)nr[0];
+        near[j + 1] = (unsigned char)nr[1];
+    }
+#endif
+    for (; j < m; j++) {
+        int nr;
+        t[j] = pair_sphere_scalar(s, bi, &s->b[nb[j]], best, s->def.sim_tol, &nr);
+        near[j] = (unsigned char)nr;
+    }
+}
+
 /* Gap along unit axis u between table-frame shapes (contracted along their velocities,
  * support r sqrt(1 - (v.u)^2/c^2)) at separation dx, and its closing speed. */
 static inline void axis_gap(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
@@ -320,47 +439,50 @@ static int narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc
  * bounding spheres can touch before `best`, then ask the frame in order of sphere time and
  * stop as soon as the next sphere time is no earlier than the best contracted contact
  * (the contracted contact is never earlier than the bounding spheres'). */
-static int scan_block_narrow(const rc_sim *cs, int32_t i, int x0, int x1, int y0, int y1,
-                             int z0, int z1, double *best, int32_t *bp, const eng_check *chk)
+static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *best,
+                             int32_t *bp, const eng_check *chk)
 {
     rc_sim *s = (rc_sim *)cs; /* the candidate buffer is scratch */
-    const eng_cells *g = &s->g;
     const eng_ball *bi = &s->b[i];
     size_t nc = 0;
-    for (int z = z0; z <= z1; z++)
-        for (int y = y0; y <= y1; y++)
-            for (int x = x0; x <= x1; x++)
-                for (int32_t k = g->head[x + g->n[0] * (y + g->n[1] * z)]; k >= 0;
-                     k = g->next[k]) {
-                    if (k == i)
-                        continue;
-                    const eng_ball *bk = &s->b[k];
-                    double tref;
-                    const rc_vec3 dx = pair_sep(bi, bk, &tref);
-                    const double d2 = rc_v3_norm2(dx);
-                    if (chk && k != chk->partner && narrow_conflict(s, bi, bk, dx, d2, chk, NULL))
-                        return 1;
-                    const double t = pair_time_dx(s, bi, bk, dx, d2, tref, *best, 0);
-                    if (!(t < *best))
-                        continue;
-                    if (nc == s->cand_cap) {
-                        size_t cap = s->cand_cap ? 2 * s->cand_cap : 64;
-                        eng_cand *c = realloc(s->cand, cap * sizeof *c);
-                        if (!c) { /* no memory: ask the frame at once */
-                            double tn = pair_time(s, bi, &s->b[k], *best);
-                            if (tn < *best) {
-                                *best = tn;
-                                *bp = k;
-                            }
-                            continue;
-                        }
-                        s->cand = c;
-                        s->cand_cap = cap;
+    int32_t nb[GATHER_MAX];
+    double t[GATHER_MAX];
+    unsigned char near[GATHER_MAX];
+    for (int more = 1; more;) {
+        /* gather a chunk of neighbours ... */
+        const size_t m = walk_gather(w, nb);
+        more = m == GATHER_MAX;
+        /* ... then the bounding spheres in lanes, and the candidates that can beat best */
+        sphere_lanes(s, i, nb, m, *best, t, near);
+        for (size_t j = 0; j < m; j++) {
+            const int32_t kk = nb[j];
+            if (chk && near[j] && kk != chk->partner) {
+                double tref;
+                const rc_vec3 dx = pair_sep(bi, &s->b[kk], &tref);
+                if (narrow_conflict(s, bi, &s->b[kk], dx, rc_v3_norm2(dx), chk, NULL))
+                    return 1;
+            }
+            if (!(t[j] < *best))
+                continue;
+            if (nc == s->cand_cap) {
+                size_t cap = s->cand_cap ? 2 * s->cand_cap : 64;
+                eng_cand *c = realloc(s->cand, cap * sizeof *c);
+                if (!c) { /* no memory: ask the frame at once */
+                    double tn = pair_time(s, bi, &s->b[kk], *best);
+                    if (tn < *best) {
+                        *best = tn;
+                        *bp = kk;
                     }
-                    s->cand[nc].t = t;
-                    s->cand[nc].k = k;
-                    nc++;
+                    continue;
                 }
+                s->cand = c;
+                s->cand_cap = cap;
+            }
+            s->cand[nc].t = t[j];
+            s->cand[nc].k = kk;
+            nc++;
+        }
+    }
     for (size_t a = 1; a < nc; a++) { /* insertion sort by (t, k): lists are short */
         eng_cand c = s->cand[a];
         size_t b = a;
@@ -390,36 +512,16 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, int x0, int x1, int y0
 static int scan_block(const rc_sim *s, int32_t i, const int c[3], const int lo[3],
                       const int hi[3], double *best, int32_t *bp, const eng_check *chk)
 {
-    const eng_cells *g = &s->g;
-    int z0 = c[2] + lo[2], z1 = c[2] + hi[2], y0 = c[1] + lo[1], y1 = c[1] + hi[1];
-    int x0 = c[0] + lo[0], x1 = c[0] + hi[0];
-    if (z0 < 0) z0 = 0;
-    if (z1 >= g->n[2]) z1 = g->n[2] - 1;
-    if (y0 < 0) y0 = 0;
-    if (y1 >= g->n[1]) y1 = g->n[1] - 1;
-    if (x0 < 0) x0 = 0;
-    if (x1 >= g->n[0]) x1 = g->n[0] - 1;
+    eng_walk w;
+    walk_init(&w, s, i, c, lo, hi);
     if (s->narrow)
-        return scan_block_narrow(s, i, x0, x1, y0, y1, z0, z1, best, bp, chk);
-    /* Gather the neighbours first, prefetching each, then test them: walking the lists
-     * and loading the balls overlap instead of waiting on each other. */
+        return scan_block_narrow(s, i, &w, best, bp, chk);
     int32_t nb[GATHER_MAX];
-    size_t m = 0;
-    for (int z = z0; z <= z1; z++)
-        for (int y = y0; y <= y1; y++)
-            for (int x = x0; x <= x1; x++)
-                for (int32_t k = g->head[x + g->n[0] * (y + g->n[1] * z)]; k >= 0;
-                     k = g->next[k]) {
-                    if (k == i)
-                        continue;
-                    __builtin_prefetch(&s->b[k]);
-                    nb[m++] = k;
-                    if (m == GATHER_MAX) {
-                        test_list(s, i, nb, m, best, bp, NULL, ENG_NONE, 0.0);
-                        m = 0;
-                    }
-                }
-    test_list(s, i, nb, m, best, bp, NULL, ENG_NONE, 0.0);
+    size_t m;
+    do {
+        m = walk_gather(&w, nb);
+        test_list(s, i, nb, m, best, bp, NULL, ENG_NONE, 0.0);
+    } while (m == GATHER_MAX);
     return 0;
 }
 
@@ -696,43 +798,16 @@ static int predict_checked(rc_sim *s, int32_t i, rc_vec3 vold, int32_t partner, 
     double best = INFINITY;
     int32_t bp = ENG_NONE;
     wall_event(s, i, walls, &best, &bp);
-    const eng_cells *g = &s->g;
-    const int32_t *next = g->next;
-    int z0 = c[2] > 0 ? c[2] - 1 : 0, z1 = c[2] + 1 < g->n[2] ? c[2] + 1 : g->n[2] - 1;
-    int y0 = c[1] > 0 ? c[1] - 1 : 0, y1 = c[1] + 1 < g->n[1] ? c[1] + 1 : g->n[1] - 1;
-    int x0 = c[0] > 0 ? c[0] - 1 : 0, x1 = c[0] + 1 < g->n[0] ? c[0] + 1 : g->n[0] - 1;
+    static const int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
+    eng_walk w;
+    walk_init(&w, s, i, c, lo, hi);
     int32_t nb[GATHER_MAX];
-    size_t m = 0;
-    int more = 1;
-    int z = z0, y = y0, x = x0;
-    int32_t k = g->head[x + g->n[0] * (y + g->n[1] * z)];
-    while (more) {
-        /* gather a chunk of neighbours (prefetching them), then test the chunk */
-        m = 0;
-        while (m < GATHER_MAX) {
-            while (k < 0) {
-                if (++x > x1) {
-                    x = x0;
-                    if (++y > y1) {
-                        y = y0;
-                        if (++z > z1)
-                            break;
-                    }
-                }
-                k = g->head[x + g->n[0] * (y + g->n[1] * z)];
-            }
-            if (k < 0)
-                break;
-            if (k != i) {
-                __builtin_prefetch(&s->b[k]);
-                nb[m++] = k;
-            }
-            k = next[k];
-        }
-        more = m == GATHER_MAX;
+    size_t m;
+    do {
+        m = walk_gather(&w, nb);
         if (test_list(s, i, nb, m, &best, &bp, check ? &vold : NULL, partner, T))
             return 1;
-    }
+    } while (m == GATHER_MAX);
     store_event(s, i, best, bp);
     cross_event(s, i, c);
     return 0;
