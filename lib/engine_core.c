@@ -1170,6 +1170,12 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
         eng_aux *a = &s->a[i];
         s->now = top_t;
         done++;
+        if (a->ev_partner >= 0) {
+            /* the partner's state is needed next (stale check, then the collision): load
+             * it alongside its counter rather than after it (+0-6 % measured) */
+            __builtin_prefetch(&s->b[a->ev_partner]);
+            __builtin_prefetch(&s->a[a->ev_partner]);
+        }
         if (a->cross_t <= a->ev_t) {
             cross(s, i);
         } else if (a->ev_partner >= 0 && s->cnt[a->ev_partner] != a->ev_pcount) {

@@ -124,10 +124,14 @@ typedef struct rc_sim_diag {
     uint64_t collisions;    /* contacts resolved (each contact of a group counts) */
     uint64_t events[RC_SIM_EV_NKINDS];
     size_t max_group;       /* most contacts resolved together */
-    uint64_t group_fallbacks; /* groups whose joint solve failed (singular normals): only
-                                 the event's own contact was resolved, the rest follow */
+    uint64_t group_fallbacks; /* groups whose joint solve failed (singular normals, or no
+                                 rest-mass-keeping outcome): only the event's own contact
+                                 was resolved, the rest follow as events of their own */
 } rc_sim_diag;
 
+/* A new engine. Its neighbour test runs in the widest SIMD lanes the CPU has (AVX2, SSE2);
+ * the environment variable RELCOL_SIMD=scalar|sse2|avx2, read here, narrows the choice.
+ * Every path gives the same bits (the lanes do the scalar operations in the same order). */
 int rc_sim_create(const rc_sim_def *def, rc_sim **out);
 /* Frees and sets *s to NULL (NULL and *s == NULL are fine). */
 void rc_sim_free(rc_sim **s);
