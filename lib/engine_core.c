@@ -275,19 +275,7 @@ static int test_list(const rc_sim *s, int32_t i, const int32_t *nb, size_t m, do
     const int check = vold && s->def.sim_tol > 0.0;
     double bt = *best;
     int32_t bk = *bp;
-    size_t j = 0;
-#if defined(__SSE2__)
-    for (; s->simd != ENG_SIMD_NONE && j + 2 <= m; j += 2) {
-        double t[2];
-        int near[2];
-        pair_sphere_x2(s, bi, &s->b[nb[j]], &s->b[nb[j + 1]], bt, s->def.sim_tol, t, near);
-        for (int l = 0; l < 2; l++)
-            if (visit(s, bi, nb[j + (size_t)l], t[l], near[l], check, partner, vold, T, &bt,
-                      &bk))
-                return 1;
-    }
-#endif
-    if (test_tail(s, bi, nb, j, m, check, partner, vold, T, &bt, &bk))
+    if (test_tail(s, bi, nb, 0, m, check, partner, vold, T, &bt, &bk))
         return 1;
     *best = bt;
     *bp = bk;
@@ -335,14 +323,6 @@ static void sphere_lanes(const rc_sim *s, int32_t i, const int32_t *nb, size_t m
 #ifdef ENG_HAVE_AVX2
     if (s->simd == ENG_SIMD_AVX2)
         j = sphere_lanes_avx2(s, bi, nb, m, best, t, near);
-#endif
-#if defined(__SSE2__)
-    for (; s->simd != ENG_SIMD_NONE && j + 2 <= m; j += 2) {
-        int nr[2];
-        pair_sphere_x2(s, bi, &s->b[nb[j]], &s->b[nb[j + 1]], best, s->def.sim_tol, &t[j], nr);
-        near[j] = (unsigned char)nr[0];
-        near[j + 1] = (unsigned char)nr[1];
-    }
 #endif
     for (; j < m; j++) {
         int nr;

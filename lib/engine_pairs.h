@@ -1,6 +1,6 @@
-/* engine_pairs.h — the sphere contact test of ball i against its gathered neighbours, two
- * neighbours per step in SSE2 lanes (baseline x86-64; other machines take the scalar loop).
- * Every lane does exactly the scalar operations of pair_sep / pair_time_dx in the same
+/* engine_pairs.h — the sphere contact test of ball i against its gathered neighbours: the
+ * scalar form, and four neighbours per step in AVX2 lanes (x86-64 machines that have AVX2;
+ * others take the scalar loop). Every lane does exactly the scalar operations in the same
  * order, so the times are the same bits; only the instruction count changes (the neighbour
  * test was ~100 scalar instructions, the engine's largest cost). Included by engine_core.c. */
 #ifndef RELCOL_ENGINE_PAIRS_H
@@ -10,10 +10,6 @@
 #include <stdint.h>
 
 #include "engine_private.h"
-
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 /* Separation bk - bi at the later of the two balls' clocks, *tref: the earlier ball is
  * advanced, so the result depends only on the two stored states. */
@@ -69,92 +65,14 @@ static inline double pair_sphere_scalar(const rc_sim *s, const eng_ball *bi, con
     return sphere_time_dx(s, bi, bk, dx, d2, tref, best);
 }
 
-#if defined(__SSE2__)
-/* Select a where mask is all ones, else b. */
-static inline __m128d pairs_sel(__m128d mask, __m128d a, __m128d b)
-{
-    return _mm_or_pd(_mm_and_pd(mask, a), _mm_andnot_pd(mask, b));
-}
-
-/* Lanes 0 and 1: the times of bi against k0 and k1 (INFINITY: no contact able to beat
- * `best`), and in near[] the simultaneity proximity flags of pair_sphere_scalar. */
-static inline void pair_sphere_x2(const rc_sim *s, const eng_ball *bi, const eng_ball *k0,
-                                  const eng_ball *k1, double best, double stol, double out[2],
-                                  int near[2])
-{
-    /* transpose the two 64-byte records (x, v, t, r) into lanes */
-    const double *p0 = &k0->x.x, *p1 = &k1->x.x;
-    const __m128d a01 = _mm_loadu_pd(p0), b01 = _mm_loadu_pd(p1);
-    const __m128d a23 = _mm_loadu_pd(p0 + 2), b23 = _mm_loadu_pd(p1 + 2);
-    const __m128d a45 = _mm_loadu_pd(p0 + 4), b45 = _mm_loadu_pd(p1 + 4);
-    const __m128d a67 = _mm_loadu_pd(p0 + 6), b67 = _mm_loadu_pd(p1 + 6);
-    const __m128d xkx = _mm_unpacklo_pd(a01, b01), xky = _mm_unpackhi_pd(a01, b01);
-    const __m128d xkz = _mm_unpacklo_pd(a23, b23), vkx = _mm_unpackhi_pd(a23, b23);
-    const __m128d vky = _mm_unpacklo_pd(a45, b45), vkz = _mm_unpackhi_pd(a45, b45);
-    const __m128d tk = _mm_unpacklo_pd(a67, b67), rk = _mm_unpackhi_pd(a67, b67);
-    const __m128d xix = _mm_set1_pd(bi->x.x), xiy = _mm_set1_pd(bi->x.y);
-    const __m128d xiz = _mm_set1_pd(bi->x.z), vix = _mm_set1_pd(bi->v.x);
-    const __m128d viy = _mm_set1_pd(bi->v.y), viz = _mm_set1_pd(bi->v.z);
-    const __m128d ti = _mm_set1_pd(bi->t), ri = _mm_set1_pd(bi->r);
-    /* pair_sep: advance the earlier ball to the later clock */
-    const __m128d ge = _mm_cmpge_pd(ti, tk);
-    const __m128d hk = _mm_sub_pd(ti, tk), hi = _mm_sub_pd(tk, ti);
-    const __m128d ax = _mm_sub_pd(_mm_add_pd(xkx, _mm_mul_pd(hk, vkx)), xix);
-    const __m128d ay = _mm_sub_pd(_mm_add_pd(xky, _mm_mul_pd(hk, vky)), xiy);
-    const __m128d az = _mm_sub_pd(_mm_add_pd(xkz, _mm_mul_pd(hk, vkz)), xiz);
-    const __m128d bx = _mm_sub_pd(xkx, _mm_add_pd(xix, _mm_mul_pd(hi, vix)));
-    const __m128d by = _mm_sub_pd(xky, _mm_add_pd(xiy, _mm_mul_pd(hi, viy)));
-    const __m128d bz = _mm_sub_pd(xkz, _mm_add_pd(xiz, _mm_mul_pd(hi, viz)));
-    const __m128d dx = pairs_sel(ge, ax, bx), dy = pairs_sel(ge, ay, by);
-    const __m128d dz = pairs_sel(ge, az, bz), tref = pairs_sel(ge, ti, tk);
-    /* rc_v3_norm2 and rc_v3_dot sum left to right */
-    const __m128d d2 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)),
-                                  _mm_mul_pd(dz, dz));
-    const __m128d dvx = _mm_sub_pd(vkx, vix), dvy = _mm_sub_pd(vky, viy);
-    const __m128d dvz = _mm_sub_pd(vkz, viz);
-    const __m128d b = _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dvx), _mm_mul_pd(dy, dvy)),
-                                 _mm_mul_pd(dz, dvz));
-    const __m128d sig = _mm_add_pd(ri, rk);
-    const __m128d dd = _mm_sub_pd(d2, _mm_mul_pd(sig, sig));
-    const __m128d dv2 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(dvx, dvx), _mm_mul_pd(dvy, dvy)),
-                                   _mm_mul_pd(dvz, dvz));
-    const __m128d disc = _mm_sub_pd(_mm_mul_pd(b, b), _mm_mul_pd(dv2, dd));
-    const __m128d tol = _mm_mul_pd(_mm_set1_pd(s->def.approach_tol), sig);
-    const __m128d lim = _mm_mul_pd(sig, _mm_set1_pd(1.0 + stol));
-    const __m128d zero = _mm_setzero_pd();
-    const __m128d touching = _mm_cmple_pd(dd, zero);
-    const __m128d slow = _mm_cmpgt_pd(_mm_mul_pd(b, b), _mm_mul_pd(_mm_mul_pd(tol, tol), dv2));
-    const __m128d bound = _mm_mul_pd(_mm_mul_pd(_mm_set1_pd(-2.0), b),
-                                     _mm_sub_pd(_mm_set1_pd(best), tref));
-    const __m128d flying = _mm_and_pd(_mm_cmpgt_pd(disc, zero), _mm_cmplt_pd(dd, bound));
-    const __m128d hit = _mm_and_pd(_mm_cmplt_pd(b, zero), pairs_sel(touching, slow, flying));
-    const int hits = _mm_movemask_pd(hit);
-    const int nears = _mm_movemask_pd(_mm_cmple_pd(d2, _mm_mul_pd(lim, lim)));
-    near[0] = nears & 1;
-    near[1] = nears >> 1;
-    if (!hits) { /* the common case in a dense gas: no square root */
-        out[0] = out[1] = INFINITY;
-        return;
-    }
-    /* misses take sqrt(1): the lane is discarded, but must not raise a NaN */
-    const __m128d root = _mm_div_pd(dd, _mm_sub_pd(_mm_sqrt_pd(pairs_sel(hit, disc,
-                                                                         _mm_set1_pd(1.0))),
-                                                   b));
-    __m128d ta = _mm_add_pd(tref, pairs_sel(touching, zero, root));
-    const __m128d now = _mm_set1_pd(s->now);
-    ta = pairs_sel(_mm_cmplt_pd(ta, now), now, ta);
-    ta = pairs_sel(_mm_and_pd(hit, _mm_cmplt_pd(ta, _mm_set1_pd(best))), ta,
-                   _mm_set1_pd(INFINITY));
-    _mm_storeu_pd(out, ta);
-}
-#endif
-
 #if defined(__x86_64__) && defined(__GNUC__)
 #define ENG_HAVE_AVX2 1
 #include <immintrin.h>
 
-/* Four lanes: the same operations as pair_sphere_x2 on 256-bit registers (AVX2 machines;
- * rc_sim_create asks the CPU once). No FMA: the target adds AVX2 only, so the bits stay. */
+/* Four lanes: pair_sphere_scalar's operations on 256-bit registers (AVX2 machines;
+ * rc_sim_create asks the CPU once): lanes 0..3 get the times of bi against k[0..3]
+ * (INFINITY: no contact able to beat `best`) and bit l of *nears the proximity flag of
+ * k[l]. No FMA: the target adds AVX2 only, so the bits stay. */
 __attribute__((target("avx2"), always_inline)) static inline void pair_sphere_x4(
     const rc_sim *s, const eng_ball *bi, const eng_ball *const k[4], double best, double stol,
     double out[4], int *nears, const int three)

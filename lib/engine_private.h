@@ -88,8 +88,8 @@ typedef struct eng_cand {
 } eng_cand;
 
 /* Lanes of the neighbour test (engine_pairs.h): chosen once per engine from the CPU, or
- * from RELCOL_SIMD=scalar|sse2|avx2 in the environment (to compare the paths: same bits). */
-enum { ENG_SIMD_NONE = 0, ENG_SIMD_SSE2 = 1, ENG_SIMD_AVX2 = 2 };
+ * scalar with RELCOL_SIMD=scalar in the environment (to compare the paths: same bits). */
+enum { ENG_SIMD_NONE = 0, ENG_SIMD_AVX2 = 2 };
 
 struct rc_sim {
     rc_sim_def def;

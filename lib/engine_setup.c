@@ -64,14 +64,12 @@ static int check_def(const rc_sim_def *d)
     return rc_inv_c2(d->c, &k);
 }
 
-/* The widest lanes this CPU runs for the neighbour test, unless RELCOL_SIMD narrows
- * them (the paths give the same bits; the variable exists to show it and to time them). */
+/* AVX2 lanes for the neighbour test if this CPU has them, unless RELCOL_SIMD=scalar asks
+ * for the scalar loop (the paths give the same bits; the variable exists to show it and
+ * to time them). */
 static int choose_simd(void)
 {
     int best = ENG_SIMD_NONE;
-#if defined(__SSE2__)
-    best = ENG_SIMD_SSE2;
-#endif
 #ifdef ENG_HAVE_AVX2
     if (__builtin_cpu_supports("avx2"))
         best = ENG_SIMD_AVX2;
@@ -79,8 +77,6 @@ static int choose_simd(void)
     const char *want = getenv("RELCOL_SIMD");
     if (want && !strcmp(want, "scalar"))
         return ENG_SIMD_NONE;
-    if (want && !strcmp(want, "sse2") && best > ENG_SIMD_SSE2)
-        return ENG_SIMD_SSE2;
     return best;
 }
 

@@ -129,9 +129,9 @@ typedef struct rc_sim_diag {
                                  was resolved, the rest follow as events of their own */
 } rc_sim_diag;
 
-/* A new engine. Its neighbour test runs in the widest SIMD lanes the CPU has (AVX2, SSE2);
- * the environment variable RELCOL_SIMD=scalar|sse2|avx2, read here, narrows the choice.
- * Every path gives the same bits (the lanes do the scalar operations in the same order). */
+/* A new engine. Its neighbour test runs in AVX2 lanes if the CPU has them; the
+ * environment variable RELCOL_SIMD=scalar, read here, asks for the scalar loop instead.
+ * Both give the same bits (the lanes do the scalar operations in the same order). */
 int rc_sim_create(const rc_sim_def *def, rc_sim **out);
 /* Frees and sets *s to NULL (NULL and *s == NULL are fine). */
 void rc_sim_free(rc_sim **s);
