@@ -37,7 +37,8 @@ int rc_eng_cells_init(eng_cells *g, int dim, rc_vec3 box, double min_edge, size_
     }
     g->head = malloc(g->ncells * sizeof *g->head);
     g->next = malloc((nballs ? nballs : 1) * sizeof *g->next);
-    if (!g->head || !g->next) {
+    g->prev = malloc((nballs ? nballs : 1) * sizeof *g->prev);
+    if (!g->head || !g->next || !g->prev) {
         rc_eng_cells_free(g);
         return RC_ENOMEM;
     }
@@ -50,8 +51,10 @@ void rc_eng_cells_free(eng_cells *g)
 {
     free(g->head);
     free(g->next);
+    free(g->prev);
     g->head = NULL;
     g->next = NULL;
+    g->prev = NULL;
 }
 
 int32_t rc_eng_cells_index_of(const eng_cells *g, int dim, rc_vec3 x)
@@ -69,20 +72,20 @@ void rc_eng_cells_insert(eng_cells *g, eng_aux *a, int32_t i, int32_t cell)
 {
     int32_t h = g->head[cell];
     a[i].cell = cell;
-    a[i].prev = -1;
+    g->prev[i] = -1;
     g->next[i] = h;
     if (h >= 0)
-        a[h].prev = i;
+        g->prev[h] = i;
     g->head[cell] = i;
 }
 
-void rc_eng_cells_remove(eng_cells *g, eng_aux *a, int32_t i)
+void rc_eng_cells_remove(eng_cells *g, const eng_aux *a, int32_t i)
 {
-    int32_t p = a[i].prev, nx = g->next[i];
+    int32_t p = g->prev[i], nx = g->next[i];
     if (p >= 0)
         g->next[p] = nx;
     else
         g->head[a[i].cell] = nx;
     if (nx >= 0)
-        a[nx].prev = p;
+        g->prev[nx] = p;
 }

@@ -595,15 +595,15 @@ static int predict_checked_narrow(rc_sim *s, int32_t i, const eng_check *chk)
 static void advance_ball(rc_sim *s, int32_t i, double T)
 {
     eng_ball *b = &s->b[i];
-    eng_aux *a = &s->a[i];
+    const eng_aux *a = &s->a[i];
     double h = T - b->t;
     if (h == 0.0)
         return;
     b->x = rc_v3_axpy(b->x, h, b->v);
     if (s->inv_c2 == 0.0)
-        a->tau += h;
+        s->clk[i].tau += h;
     else
-        a->tau += h * (a->m / eng_mass_rel(a->m, a->p, s->inv_c2));
+        s->clk[i].tau += h * (a->m / eng_mass_rel(a->m, a->p, s->inv_c2));
     b->t = T;
 }
 
@@ -978,11 +978,11 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
  * its previous collision is below t_c. */
 static double contact_eps(rc_sim *s, const rc_contact *c)
 {
-    const eng_aux *aa = &s->a[s->grp_ball[c->a]];
+    const eng_clock *aa = &s->clk[s->grp_ball[c->a]];
     int wall = c->b < 0;
     int tc = aa->tau - aa->tau_last < s->def.t_c;
     if (!wall) {
-        const eng_aux *ab = &s->a[s->grp_ball[c->b]];
+        const eng_clock *ab = &s->clk[s->grp_ball[c->b]];
         tc = tc || ab->tau - ab->tau_last < s->def.t_c;
     }
     const double eps = wall ? s->def.eps_wall : s->def.eps_ball;
@@ -1006,7 +1006,7 @@ static void finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int k
         eng_aux *a = &s->a[b];
         k1 += kinetic(&P[j], s->inv_c2);
         p1 = rc_v3_add(p1, P[j].p);
-        a->tau_last = a->tau;
+        s->clk[b].tau_last = s->clk[b].tau;
         if (!single) {
             a->m = P[j].m;
             a->p = P[j].p;
@@ -1092,19 +1092,23 @@ static void reorder(rc_sim *s)
             continue;
         eng_ball cb = s->b[i];
         eng_aux ca = s->a[i];
+        eng_clock cc = s->clk[i];
         uint32_t cid = s->id[i], ccnt = s->cnt[i];
         size_t o = i;
         do {
             size_t to = np[o];
             eng_ball tb = s->b[to];
             eng_aux ta = s->a[to];
+            eng_clock tcl = s->clk[to];
             uint32_t tid = s->id[to], tcnt = s->cnt[to];
             s->b[to] = cb;
             s->a[to] = ca;
+            s->clk[to] = cc;
             s->id[to] = cid;
             s->cnt[to] = ccnt;
             cb = tb;
             ca = ta;
+            cc = tcl;
             cid = tid;
             ccnt = tcnt;
             done[o] = 1;

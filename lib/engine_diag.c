@@ -19,9 +19,10 @@ static void ball_now(const rc_sim *s, size_t i, rc_sim_ball *o)
     o->p = a->p;
     o->r = b->r;
     o->m = a->m;
-    o->tau = a->tau;
-    o->collided = isfinite(a->tau_last);
-    o->tau_last = o->collided ? a->tau_last : 0.0;
+    const eng_clock *k = &s->clk[i];
+    o->tau = k->tau;
+    o->collided = isfinite(k->tau_last);
+    o->tau_last = o->collided ? k->tau_last : 0.0;
     if (h != 0.0)
         o->tau += s->inv_c2 == 0.0 ? h : h * (a->m / eng_mass_rel(a->m, a->p, s->inv_c2));
 }
@@ -132,8 +133,9 @@ size_t rc_sim_bytes(const rc_sim *s)
 {
     if (!s)
         return 0;
-    return sizeof *s + s->n * (sizeof *s->b + sizeof *s->a + sizeof *s->g.next + sizeof *s->id +
-                               sizeof *s->slot + sizeof *s->cnt) +
+    return sizeof *s + s->n * (sizeof *s->b + sizeof *s->a + sizeof *s->clk + sizeof *s->g.next +
+                               sizeof *s->g.prev + sizeof *s->id + sizeof *s->slot +
+                               sizeof *s->cnt) +
            rc_eng_queue_bytes(&s->q) +
            s->g.ncells * sizeof *s->g.head +
            s->grp_ball_cap * (sizeof *s->grp_ball + sizeof *s->grp_part) +

@@ -22,20 +22,27 @@ typedef struct eng_ball {
 #define ENG_WALL(w) (-1 - (w))
 #define ENG_WALL_INDEX(code) (-1 - (code))
 
-/* Cold data: the dynamical state beyond x, v and the ball's single scheduled event. */
+/* The rest of the state a prediction or a collision reads, and the ball's single
+ * scheduled event: one 64-byte line per ball (allocated aligned). */
 typedef struct eng_aux {
     rc_vec3 p;
     double m;
-    double tau;       /* proper time at t */
-    double tau_last;  /* proper time of the last collision (-inf: none yet) */
     double ev_t;      /* earliest collision (ball or wall) */
     double cross_t;   /* next cell crossing */
     int32_t ev_partner;
     uint32_t ev_pcount; /* partner's counter (rc_sim.cnt) when ev was computed */
-    int32_t cell, prev;
+    int32_t cell;
     int32_t cross_code; /* 2 d + (direction > 0), -1 none */
-    int32_t pad_;
 } eng_aux;
+
+/* (aligned_alloc wants sizes that are multiples of the alignment) */
+_Static_assert(sizeof(eng_ball) == 64 && sizeof(eng_aux) == 64, "one cache line per record");
+
+/* Proper time, read and written only when the ball collides (or is read out). */
+typedef struct eng_clock {
+    double tau;      /* proper time at t */
+    double tau_last; /* proper time of the last collision (-inf: none yet) */
+} eng_clock;
 
 /* The event queue (queue_cal.c): one entry per ball, popped in (time, ball) order.
  * (Functions shared between the engine files carry rc_eng_: exported, not public.) */
@@ -72,6 +79,7 @@ typedef struct eng_cells {
     double inv_w[3];
     int32_t *head;
     int32_t *next;    /* per ball: next ball of its cell (compact: read by every scan) */
+    int32_t *prev;    /* per ball: previous ball of its cell (-1: the head) */
     size_t ncells;
 } eng_cells;
 
@@ -79,7 +87,7 @@ int rc_eng_cells_init(eng_cells *g, int dim, rc_vec3 box, double min_edge, size_
 void rc_eng_cells_free(eng_cells *g);
 int32_t rc_eng_cells_index_of(const eng_cells *g, int dim, rc_vec3 x);
 void rc_eng_cells_insert(eng_cells *g, eng_aux *a, int32_t i, int32_t cell);
-void rc_eng_cells_remove(eng_cells *g, eng_aux *a, int32_t i);
+void rc_eng_cells_remove(eng_cells *g, const eng_aux *a, int32_t i);
 
 /* A broad-phase candidate of a contracted frame: bounding-sphere time, ball. */
 typedef struct eng_cand {
@@ -100,6 +108,7 @@ struct rc_sim {
     size_t n;
     eng_ball *b;
     eng_aux *a;
+    eng_clock *clk;
     uint32_t *id;   /* caller's index of internal ball k */
     uint32_t *slot; /* internal index of caller's ball i */
     /* collisions per ball so far: an event naming a ball whose counter moved is stale.

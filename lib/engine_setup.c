@@ -119,6 +119,8 @@ static void release_balls(rc_sim *s)
 {
     free(s->b);
     free(s->a);
+    free(s->clk);
+    s->clk = NULL;
     free(s->id);
     free(s->slot);
     free(s->cnt);
@@ -284,8 +286,9 @@ static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, i
     /* each 64-byte record on one cache line, not straddling two (malloc aligns to 16):
      * every neighbour test loads one whole record */
     s->b = aligned_alloc(64, (n ? n : 1) * sizeof *s->b);
-    s->a = malloc((n ? n : 1) * sizeof *s->a);
-    if (!s->b || !s->a)
+    s->a = aligned_alloc(64, (n ? n : 1) * sizeof *s->a);
+    s->clk = malloc((n ? n : 1) * sizeof *s->clk);
+    if (!s->b || !s->a || !s->clk)
         goto fail;
     double edge = 2.0 * rmax * (1.0 + CELL_MARGIN + 2.0 * s->def.sim_tol);
     if (s->def.cell_size > edge)
@@ -330,8 +333,8 @@ static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, i
         memset(a, 0, sizeof *a);
         a->m = b->m > 0.0 ? b->m : s->def.density * b->r * b->r * b->r;
         a->p = b->p;
-        a->tau = b->tau;
-        a->tau_last = b->collided ? b->tau_last : -INFINITY;
+        s->clk[k].tau = b->tau;
+        s->clk[k].tau_last = b->collided ? b->tau_last : -INFINITY;
         double M = eng_mass_rel(a->m, a->p, s->inv_c2);
         e->x = b->x;
         e->v = rc_v3_scale(1.0 / M, a->p);
