@@ -163,4 +163,27 @@ static inline double key_of(const eng_aux *a)
 /* Predict ball i's earliest events from scratch (and update its heap entry if asked). */
 void rc_eng_predict(rc_sim *s, int32_t i, int update_heap);
 
+/* What a contracted-frame prediction for a ball that has just collided (at T, its clock)
+ * also looks for: another contact simultaneous with the one resolved -- as grow_group
+ * judges it, on the states before the collision (old momentum, old velocity), the event's
+ * own partner excepted. */
+typedef struct eng_check {
+    rc_particle old;
+    rc_vec3 vold;
+    int32_t partner;
+} eng_check;
+
+/* Prediction for ball i just resolved at T (uncontracted frames / contracted ones), that
+ * also looks for another contact simultaneous with the resolved one: 1 on one (nothing
+ * stored), else the events are stored (the queue is not updated) and 0. */
+int rc_eng_predict_checked(rc_sim *s, int32_t i, rc_vec3 vold, int32_t partner, double T);
+int rc_eng_predict_checked_narrow(rc_sim *s, int32_t i, const eng_check *chk);
+/* Ball i crosses into its next cell (events updated, queue too). */
+void rc_eng_cross(rc_sim *s, int32_t i);
+/* The contracted contact test of a simultaneity check (engine_predict.c). */
+int rc_eng_narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
+                           double d2, const eng_check *chk, rc_vec3 *normal);
+/* Support distance of ball i's shape along the wall normal e_d. */
+double rc_eng_wall_support(const rc_sim *s, int32_t i, int d);
+
 #endif

@@ -1,0 +1,665 @@
+/* engine_predict.c — predicting a ball's earliest event from its stored state: walls,
+ * the neighbours of its 3^d cells (sphere times in AVX2 lanes, then the contact frame's
+ * narrow phase for contracted shapes), its next cell crossing; the cheaper update when it
+ * crosses into a cell; and the prediction that also looks for a contact simultaneous with
+ * the one just resolved. Resolving events: engine_core.c. */
+#include <math.h>
+#include <stdlib.h>
+
+#include "engine_pairs.h"
+#include "engine_private.h"
+#include "relcol/status.h"
+
+/* ---- event prediction ------------------------------------------------------------ */
+
+
+/* Bounding-sphere (and, if plugged in, contracted) contact time of balls i and k, as an
+ * absolute time >= now, INFINITY if none before `best`. It depends only on the two stored
+ * states (reference time max(t_i, t_k)), so the same pair gives the same bits whichever
+ * ball asks, and a continued run predicts what an uninterrupted one did. */
+static inline double pair_time_dx(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
+                                  rc_vec3 dx, double d2, double tref, double best,
+                                  int use_narrow);
+
+static inline double pair_time(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
+                               double best)
+{
+    double tref;
+    rc_vec3 dx = pair_sep(bi, bk, &tref);
+    return pair_time_dx(s, bi, bk, dx, rc_v3_norm2(dx), tref, best, s->narrow);
+}
+
+/* The same from the separation dx (and its square d2) at time tref. */
+__attribute__((always_inline)) static inline double pair_time_dx(
+    const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx, double d2, double tref,
+    double best, int use_narrow)
+{
+    double ta = sphere_time_dx(s, bi, bk, dx, d2, tref, best);
+    if (!(ta < best))
+        return INFINITY;
+    if (use_narrow) {
+        /* narrow phase: the contracted shapes inside the bounding spheres */
+        const eng_aux *ai = &s->a[bi - s->b], *ak = &s->a[bk - s->b];
+        rc_toi_ball A = {rc_v3(0, 0, 0), bi->r, ai->m, ai->p};
+        rc_toi_ball B = {dx, bk->r, ak->m, ak->p};
+        rc_toi_contact out;
+        int st = s->def.frame->toi(&s->toi, &A, &B, s->ws, &out);
+        if (st == RC_EOVERLAP)
+            return s->now; /* approaching bounding spheres: overlap policy, resolve now */
+        if (st != RC_OK)
+            return INFINITY;
+        ta = tref + out.t;
+        if (ta < s->now)
+            ta = s->now;
+        if (!(ta < best))
+            return INFINITY;
+    }
+    return ta;
+}
+
+/* Support distance of ball i's shape along the wall normal e_d: r, or contracted
+ * r sqrt(1 - v_d^2/c^2) = (r/M) sqrt(m^2 + p_perp^2/c^2) (no cancellation near c). */
+static inline double wall_support(const rc_sim *s, int32_t i, int d)
+{
+    const double r = s->b[i].r;
+    if (!s->wall_contracted)
+        return r;
+    const eng_aux *a = &s->a[i];
+    double pd = rc_v3_get(a->p, d), pp = rc_v3_norm2(a->p) - pd * pd;
+    if (pp < 0.0)
+        pp = 0.0;
+    double M = eng_mass_rel(a->m, a->p, s->inv_c2);
+    return r / M * sqrt(a->m * a->m + pp * s->inv_c2);
+}
+
+/* Walls and cell crossings below are written without branches on the direction of
+ * motion (a coin toss per dimension for the branch predictor); the times are the same
+ * expressions, so the same bits. */
+/* Dimensions in which cell c touches the box (bit d): only there can a ball reach a wall
+ * before it leaves its cell, since cells are at least one bounding diameter wide and a
+ * wall is touched with the centre at most r from it. Elsewhere the wall test is skipped;
+ * the crossing into a boundary cell computes it (cross). */
+static inline unsigned boundary_dims(const rc_sim *s, const int c[3])
+{
+    unsigned m = 0;
+    const int dim = s->def.dim < 3 ? s->def.dim : 3; /* (says so to the compiler) */
+    for (int d = 0; d < dim; d++)
+        m |= (unsigned)((c[d] == 0) | (c[d] == s->g.n[d] - 1)) << d;
+    return m;
+}
+
+static void wall_event(const rc_sim *s, int32_t i, unsigned dims, double *best, int32_t *bp)
+{
+    const eng_ball *bi = &s->b[i];
+    double bt = *best;
+    int32_t bw = *bp;
+    for (int d = 0; d < s->def.dim; d++) {
+        if (!(dims >> d & 1u))
+            continue;
+        const double v = rc_v3_get(bi->v, d), x = rc_v3_get(bi->x, d);
+        const double h = wall_support(s, i, d);
+        const int up = v > 0.0, moving = v != 0.0;
+        const double num = up ? s->L[d] - h - x : x - h;
+        const double den = up ? v : (moving ? -v : 1.0);
+        double t = bi->t + num / den;
+        t = t < s->now ? s->now : t;
+        const int take = moving & (t < bt);
+        bt = take ? t : bt;
+        bw = take ? ENG_WALL(2 * d + up) : bw;
+    }
+    *best = bt;
+    *bp = bw;
+}
+
+/* Neighbours gathered per scan before testing (stack buffer; more are done in chunks). */
+#define GATHER_MAX 128
+
+/* The balls of a block of cells (offsets lo..hi around cell c, clipped to the grid), in
+ * chunks: cell by cell (x fastest), each cell's list in order, ball `skip` left out. Each
+ * index is prefetched as it is gathered, so walking the lists and loading the balls
+ * overlap instead of waiting on each other. */
+typedef struct eng_walk {
+    const rc_sim *s;
+    int x0, x1, y0, y1, z0, z1, x, y, z;
+    int32_t k, skip;
+} eng_walk;
+
+static void walk_init(eng_walk *w, const rc_sim *s, int32_t skip, const int c[3],
+                      const int lo[3], const int hi[3])
+{
+    const eng_cells *g = &s->g;
+    w->s = s;
+    w->skip = skip;
+    w->x0 = c[0] + lo[0] > 0 ? c[0] + lo[0] : 0;
+    w->y0 = c[1] + lo[1] > 0 ? c[1] + lo[1] : 0;
+    w->z0 = c[2] + lo[2] > 0 ? c[2] + lo[2] : 0;
+    w->x1 = c[0] + hi[0] < g->n[0] ? c[0] + hi[0] : g->n[0] - 1;
+    w->y1 = c[1] + hi[1] < g->n[1] ? c[1] + hi[1] : g->n[1] - 1;
+    w->z1 = c[2] + hi[2] < g->n[2] ? c[2] + hi[2] : g->n[2] - 1;
+    w->x = w->x0;
+    w->y = w->y0;
+    w->z = w->z0;
+    /* an empty block (a crossing into a boundary cell has no slab beyond it) */
+    const int empty = w->x0 > w->x1 || w->y0 > w->y1 || w->z0 > w->z1;
+    w->k = empty ? -1 : g->head[w->x + g->n[0] * (w->y + g->n[1] * w->z)];
+    if (empty)
+        w->z = w->z1 + 1;
+}
+
+/* Up to GATHER_MAX more balls into nb; fewer means the block is done. */
+static size_t walk_gather(eng_walk *w, int32_t *nb)
+{
+    const eng_cells *g = &w->s->g;
+    size_t m = 0;
+    int32_t k = w->k;
+    while (m < GATHER_MAX) {
+        while (k < 0 && w->z <= w->z1) {
+            if (++w->x > w->x1) {
+                w->x = w->x0;
+                if (++w->y > w->y1) {
+                    w->y = w->y0;
+                    if (++w->z > w->z1)
+                        break;
+                }
+            }
+            k = g->head[w->x + g->n[0] * (w->y + g->n[1] * w->z)];
+        }
+        if (k < 0)
+            break;
+        if (k != w->skip) {
+            __builtin_prefetch(&w->s->b[k]);
+            nb[m++] = k;
+        }
+        k = g->next[k];
+    }
+    w->k = k;
+    return m;
+}
+
+/* Simultaneity check of predict_checked for neighbour k of ball i (at time T, velocity
+ * before the collision vold): approaching within approach_tol, so in contact now. */
+static int approaching_with(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, double T,
+                            rc_vec3 vold)
+{
+    const double atol = s->def.approach_tol, sig = bi->r + bk->r;
+    const rc_vec3 dx = rc_v3_sub(rc_v3_axpy(bk->x, T - bk->t, bk->v), bi->x);
+    const rc_vec3 dv = rc_v3_sub(bk->v, vold);
+    const double bb = rc_v3_dot(dx, dv);
+    return bb < 0.0 && bb * bb > atol * atol * sig * sig * rc_v3_norm2(dv);
+}
+
+/* One neighbour's verdict, in scan order: 1 if it is a simultaneous contact (see
+ * test_list), else keep it if it is the earliest so far (ties: the first). */
+static inline int visit(const rc_sim *s, const eng_ball *bi, int32_t k, double t, int near,
+                        int check, int32_t partner, const rc_vec3 *vold, double T, double *bt,
+                        int32_t *bk)
+{
+    /* one rarely taken branch (&, not &&: the parts are cheap) */
+    if (check & near & (k != partner) && approaching_with(s, bi, &s->b[k], T, *vold))
+        return 1;
+    const int take = t < *bt;
+    *bt = take ? t : *bt;
+    *bk = take ? k : *bk;
+    return 0;
+}
+
+/* The neighbours test_list leaves after its lanes, one by one. */
+static inline int test_tail(const rc_sim *s, const eng_ball *bi, const int32_t *nb, size_t j,
+                            size_t m, int check, int32_t partner, const rc_vec3 *vold, double T,
+                            double *bt, int32_t *bk)
+{
+    for (; j < m; j++) {
+        int near;
+        const double t = pair_sphere_scalar(s, bi, &s->b[nb[j]], *bt, s->def.sim_tol, &near);
+        if (visit(s, bi, nb[j], t, near, check, partner, vold, T, bt, bk))
+            return 1;
+    }
+    return 0;
+}
+
+#ifdef ENG_HAVE_AVX2
+/* (three: a compile-time constant at each call, so 2-D gets its own loop without z) */
+__attribute__((target("avx2"), always_inline)) static inline int test_list_avx2_dim(
+    const rc_sim *s, int32_t i, const int32_t *nb, size_t m, double *best, int32_t *bp,
+    const rc_vec3 *vold, int32_t partner, double T, const int three)
+{
+    const eng_ball *bi = &s->b[i];
+    const int check = vold && s->def.sim_tol > 0.0;
+    double bt = *best;
+    int32_t bk = *bp;
+    size_t j = 0;
+    for (; j + 4 <= m; j += 4) {
+        const eng_ball *const k[4] = {&s->b[nb[j]], &s->b[nb[j + 1]], &s->b[nb[j + 2]],
+                                      &s->b[nb[j + 3]]};
+        double t[4];
+        int nears;
+        pair_sphere_x4(s, bi, k, bt, s->def.sim_tol, t, &nears, three);
+        for (int l = 0; l < 4; l++)
+            if (visit(s, bi, nb[j + (size_t)l], t[l], nears >> l & 1, check, partner, vold, T,
+                      &bt, &bk))
+                return 1;
+    }
+    if (test_tail(s, bi, nb, j, m, check, partner, vold, T, &bt, &bk))
+        return 1;
+    *best = bt;
+    *bp = bk;
+    return 0;
+}
+
+__attribute__((target("avx2"))) static int test_list_avx2(const rc_sim *s, int32_t i,
+                                                          const int32_t *nb, size_t m,
+                                                          double *best, int32_t *bp,
+                                                          const rc_vec3 *vold, int32_t partner,
+                                                          double T)
+{
+    if (s->def.dim == 3)
+        return test_list_avx2_dim(s, i, nb, m, best, bp, vold, partner, T, 1);
+    return test_list_avx2_dim(s, i, nb, m, best, bp, vold, partner, T, 0);
+}
+#endif
+
+/* Sphere contact of ball i with each of the m gathered neighbours nb (uncontracted
+ * frames), keeping the earliest below *best (ties: the first in nb order). With vold
+ * (ball i just collided at T = t_i, every other clock <= T) it also looks for another
+ * contact simultaneous with the resolved one -- gap <= sim_tol, approaching with the old
+ * velocity, not the partner -- and returns 1 at the first, else 0. The lanes (s->simd)
+ * give the same bits as the scalar loop. */
+static int test_list(const rc_sim *s, int32_t i, const int32_t *nb, size_t m, double *best,
+                     int32_t *bp, const rc_vec3 *vold, int32_t partner, double T)
+{
+#ifdef ENG_HAVE_AVX2
+    if (s->simd == ENG_SIMD_AVX2)
+        return test_list_avx2(s, i, nb, m, best, bp, vold, partner, T);
+#endif
+    const eng_ball *bi = &s->b[i];
+    const int check = vold && s->def.sim_tol > 0.0;
+    double bt = *best;
+    int32_t bk = *bp;
+    if (test_tail(s, bi, nb, 0, m, check, partner, vold, T, &bt, &bk))
+        return 1;
+    *best = bt;
+    *bp = bk;
+    return 0;
+}
+
+/* Bounding-sphere times of ball i with the m <= GATHER_MAX gathered neighbours nb (t[j]:
+ * INFINITY unless it can beat `best`) and the proximity flags near[j] of
+ * pair_sphere_scalar, in lanes where the CPU has them (the same bits every way): the
+ * broad phase of a contracted frame. */
+#ifdef ENG_HAVE_AVX2
+__attribute__((target("avx2"), always_inline)) static inline size_t sphere_lanes_avx2_dim(
+    const rc_sim *s, const eng_ball *bi, const int32_t *nb, size_t m, double best, double *t,
+    unsigned char *near, const int three)
+{
+    size_t j = 0;
+    for (; j + 4 <= m; j += 4) {
+        const eng_ball *const k[4] = {&s->b[nb[j]], &s->b[nb[j + 1]], &s->b[nb[j + 2]],
+                                      &s->b[nb[j + 3]]};
+        int nears;
+        pair_sphere_x4(s, bi, k, best, s->def.sim_tol, &t[j], &nears, three);
+        for (int l = 0; l < 4; l++)
+            near[j + (size_t)l] = (unsigned char)(nears >> l & 1);
+    }
+    return j;
+}
+
+__attribute__((target("avx2"))) static size_t sphere_lanes_avx2(const rc_sim *s,
+                                                               const eng_ball *bi,
+                                                               const int32_t *nb, size_t m,
+                                                               double best, double *t,
+                                                               unsigned char *near)
+{
+    if (s->def.dim == 3)
+        return sphere_lanes_avx2_dim(s, bi, nb, m, best, t, near, 1);
+    return sphere_lanes_avx2_dim(s, bi, nb, m, best, t, near, 0);
+}
+#endif
+
+static void sphere_lanes(const rc_sim *s, int32_t i, const int32_t *nb, size_t m, double best,
+                         double *t, unsigned char *near)
+{
+    const eng_ball *bi = &s->b[i];
+    size_t j = 0;
+#ifdef ENG_HAVE_AVX2
+    if (s->simd == ENG_SIMD_AVX2)
+        j = sphere_lanes_avx2(s, bi, nb, m, best, t, near);
+#endif
+    for (; j < m; j++) {
+        int nr;
+        t[j] = pair_sphere_scalar(s, bi, &s->b[nb[j]], best, s->def.sim_tol, &nr);
+        near[j] = (unsigned char)nr;
+    }
+}
+
+/* Gap along unit axis u between table-frame shapes (contracted along their velocities,
+ * support r sqrt(1 - (v.u)^2/c^2)) at separation dx, and its closing speed. */
+static inline void axis_gap(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
+                            rc_vec3 dx, rc_vec3 dv, rc_vec3 u, double *gap, double *close)
+{
+    const double vin = rc_v3_dot(bi->v, u), vkn = rc_v3_dot(bk->v, u), dn = rc_v3_dot(dx, u);
+    const double h = bi->r * sqrt(fmax(0.0, 1.0 - vin * vin * s->inv_c2)) +
+                     bk->r * sqrt(fmax(0.0, 1.0 - vkn * vkn * s->inv_c2));
+    *gap = fabs(dn) - h;
+    *close = dn >= 0.0 ? -rc_v3_dot(dv, u) : rc_v3_dot(dv, u);
+}
+
+/* Separating axes for the table frame's shapes: separated along a fixed axis u by a gap g
+ * closing at speed w (the shapes keep their form between collisions), they cannot touch
+ * before g / w (never, if w <= 0). 1 if that is no earlier than `best` along the centre
+ * line or either ball's direction of motion -- so the root finder need not be asked. The
+ * margin AXIS_MARGIN (relative to ri + rk, far above the frame's touch_tol of 1e-12 and
+ * round-off) keeps every pair the frame could still call touching. */
+#define AXIS_MARGIN 1e-9
+
+static int axes_rule_out(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, double best)
+{
+    double tref;
+    const rc_vec3 dx = pair_sep(bi, bk, &tref);
+    const rc_vec3 dv = rc_v3_sub(bk->v, bi->v);
+    const double margin = AXIS_MARGIN * (bi->r + bk->r), horizon = best - tref;
+    for (int q = 0; q < 3; q++) {
+        const rc_vec3 u = q == 0 ? dx : (q == 1 ? bi->v : bk->v);
+        const double u2 = rc_v3_norm2(u);
+        if (!(u2 > 0.0))
+            continue;
+        double gap, close;
+        axis_gap(s, bi, bk, dx, dv, rc_v3_scale(1.0 / sqrt(u2), u), &gap, &close);
+        gap -= margin;
+        /* gap > close * horizon, written so that horizon = inf and close <= 0 behave */
+        if (gap > 0.0 && (close <= 0.0 || gap > close * horizon))
+            return 1;
+    }
+    return 0;
+}
+
+
+/* 1 if neighbour bk of bi is in contact with bi's old shape within sim_tol and approaching
+ * it: bounding spheres within sim_tol, approaching, not separated along the centre line,
+ * and the frame's contact time within sim_tol of now (grow_group's tests, in its order).
+ * dx, d2: pair_sep's separation and its square; *normal (if asked): the frame's normal. */
+static int narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
+                           double d2, const eng_check *chk, rc_vec3 *normal)
+{
+    const double stol = s->def.sim_tol, atol = s->def.approach_tol;
+    const double sig = bi->r + bk->r, lim = sig * (1.0 + stol);
+    if (!(d2 <= lim * lim))
+        return 0;
+    const rc_vec3 dv = rc_v3_sub(bk->v, chk->vold);
+    const double bb = rc_v3_dot(dx, dv);
+    if (!(bb < 0.0 && bb * bb > atol * atol * sig * sig * rc_v3_norm2(dv)))
+        return 0;
+    const rc_vec3 n = rc_v3_scale(1.0 / sqrt(d2), dx);
+    const double vin = rc_v3_dot(chk->vold, n), vkn = rc_v3_dot(bk->v, n);
+    const double hsum = bi->r * sqrt(fmax(0.0, 1.0 - vin * vin * s->inv_c2)) +
+                        bk->r * sqrt(fmax(0.0, 1.0 - vkn * vkn * s->inv_c2));
+    if (d2 > hsum * hsum * (1.0 + stol) * (1.0 + stol) * (1.0 + 1e-12))
+        return 0;
+    const eng_aux *ak = &s->a[bk - s->b];
+    rc_toi_ball A = {rc_v3(0, 0, 0), bi->r, chk->old.m, chk->old.p};
+    rc_toi_ball B = {dx, bk->r, ak->m, ak->p};
+    rc_toi_contact out;
+    const int st = s->def.frame->toi(&s->toi, &A, &B, s->ws, &out);
+    if (!(st == RC_OK && out.t * out.t * rc_v3_norm2(dv) <= stol * stol * sig * sig))
+        return 0;
+    if (normal)
+        *normal = out.n;
+    return 1;
+}
+
+/* Contracted frames: the root finding is the cost, so first collect the neighbours whose
+ * bounding spheres can touch before `best`, then ask the frame in order of sphere time and
+ * stop as soon as the next sphere time is no earlier than the best contracted contact
+ * (the contracted contact is never earlier than the bounding spheres'). */
+static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *best,
+                             int32_t *bp, const eng_check *chk)
+{
+    rc_sim *s = (rc_sim *)cs; /* the candidate buffer is scratch */
+    const eng_ball *bi = &s->b[i];
+    size_t nc = 0;
+    int32_t nb[GATHER_MAX];
+    double t[GATHER_MAX];
+    unsigned char near[GATHER_MAX];
+    for (int more = 1; more;) {
+        /* gather a chunk of neighbours ... */
+        const size_t m = walk_gather(w, nb);
+        more = m == GATHER_MAX;
+        /* ... then the bounding spheres in lanes, and the candidates that can beat best */
+        sphere_lanes(s, i, nb, m, *best, t, near);
+        for (size_t j = 0; j < m; j++) {
+            const int32_t kk = nb[j];
+            if (chk && near[j] && kk != chk->partner) {
+                double tref;
+                const rc_vec3 dx = pair_sep(bi, &s->b[kk], &tref);
+                if (narrow_conflict(s, bi, &s->b[kk], dx, rc_v3_norm2(dx), chk, NULL))
+                    return 1;
+            }
+            if (!(t[j] < *best))
+                continue;
+            if (nc == s->cand_cap) {
+                size_t cap = s->cand_cap ? 2 * s->cand_cap : 64;
+                eng_cand *c = realloc(s->cand, cap * sizeof *c);
+                if (!c) { /* no memory: ask the frame at once */
+                    double tn = pair_time(s, bi, &s->b[kk], *best);
+                    if (tn < *best) {
+                        *best = tn;
+                        *bp = kk;
+                    }
+                    continue;
+                }
+                s->cand = c;
+                s->cand_cap = cap;
+            }
+            s->cand[nc].t = t[j];
+            s->cand[nc].k = kk;
+            nc++;
+        }
+    }
+    for (size_t a = 1; a < nc; a++) { /* insertion sort by (t, k): lists are short */
+        eng_cand c = s->cand[a];
+        size_t b = a;
+        while (b > 0 && (s->cand[b - 1].t > c.t ||
+                         (s->cand[b - 1].t == c.t && s->cand[b - 1].k > c.k))) {
+            s->cand[b] = s->cand[b - 1];
+            b--;
+        }
+        s->cand[b] = c;
+    }
+    const int table = s->def.frame == &rc_toi_frame_table;
+    for (size_t a = 0; a < nc; a++) {
+        if (!(s->cand[a].t < *best))
+            break;
+        if (table && axes_rule_out(s, bi, &s->b[s->cand[a].k], *best))
+            continue;
+        double t = pair_time(s, bi, &s->b[s->cand[a].k], *best);
+        if (t < *best) {
+            *best = t;
+            *bp = s->cand[a].k;
+        }
+    }
+    return 0;
+}
+
+/* Scan the cells around c with offsets lo[d]..hi[d] (clipped to the grid). */
+static int scan_block(const rc_sim *s, int32_t i, const int c[3], const int lo[3],
+                      const int hi[3], double *best, int32_t *bp, const eng_check *chk)
+{
+    eng_walk w;
+    walk_init(&w, s, i, c, lo, hi);
+    if (s->narrow)
+        return scan_block_narrow(s, i, &w, best, bp, chk);
+    int32_t nb[GATHER_MAX];
+    size_t m;
+    do {
+        m = walk_gather(&w, nb);
+        test_list(s, i, nb, m, best, bp, NULL, ENG_NONE, 0.0);
+    } while (m == GATHER_MAX);
+    return 0;
+}
+
+static void cross_event(rc_sim *s, int32_t i, const int c[3])
+{
+    const eng_ball *bi = &s->b[i];
+    double best = INFINITY;
+    int32_t code = -1;
+    for (int d = 0; d < s->def.dim; d++) {
+        const double v = rc_v3_get(bi->v, d), x = rc_v3_get(bi->x, d);
+        const int up = v > 0.0;
+        /* a boundary to cross: not the box's own wall */
+        const int valid = up ? c[d] < s->g.n[d] - 1 : (v < 0.0) & (c[d] > 0);
+        const double edge = (double)(c[d] + up) * s->g.w[d];
+        double t = bi->t + (edge - x) / (valid ? v : 1.0);
+        t = t < s->now ? s->now : t;
+        const int take = valid & (t < best);
+        best = take ? t : best;
+        code = take ? 2 * d + up : code;
+    }
+    s->a[i].cross_t = best;
+    s->a[i].cross_code = code;
+}
+
+static inline void store_event(rc_sim *s, int32_t i, double best, int32_t bp)
+{
+    eng_aux *a = &s->a[i];
+    a->ev_t = best;
+    a->ev_partner = bp;
+    a->ev_pcount = bp >= 0 ? s->cnt[bp] : 0;
+}
+
+
+/* Full prediction for ball i: walls, the 3^d cells around it, its next cell crossing. */
+void rc_eng_predict(rc_sim *s, int32_t i, int update_heap)
+{
+    double best = INFINITY;
+    int32_t bp = ENG_NONE;
+    int c[3];
+    cell_coords(&s->g, s->a[i].cell, c);
+    wall_event(s, i, boundary_dims(s, c), &best, &bp);
+    static const int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
+    scan_block(s, i, c, lo, hi, &best, &bp, NULL);
+    store_event(s, i, best, bp);
+    cross_event(s, i, c);
+    if (update_heap)
+        rc_eng_queue_update(&s->q, (uint32_t)i, key_of(&s->a[i]));
+}
+
+/* rc_eng_predict for a ball of a contracted frame that has just collided, looking for
+ * another simultaneous contact as it scans (walls too, with its old shape): 1 on one
+ * (nothing stored: the caller resolves the whole group), else the events are stored
+ * (the heap is not updated) and 0. */
+int rc_eng_predict_checked_narrow(rc_sim *s, int32_t i, const eng_check *chk)
+{
+    const eng_ball *bi = &s->b[i];
+    int c[3];
+    cell_coords(&s->g, s->a[i].cell, c);
+    const unsigned walls = boundary_dims(s, c);
+    const int check = s->def.sim_tol > 0.0;
+    for (int d = 0; d < s->def.dim && check && walls; d++) {
+        const double v = rc_v3_get(chk->vold, d), x = rc_v3_get(bi->x, d);
+        const int w = 2 * d + (v > 0.0);
+        if (v == 0.0 || ENG_WALL(w) == chk->partner)
+            continue;
+        double h = bi->r; /* the old shape's support along e_d, as wall_support */
+        if (s->wall_contracted) {
+            const double pd = rc_v3_get(chk->old.p, d);
+            const double pp = fmax(0.0, rc_v3_norm2(chk->old.p) - pd * pd);
+            h = bi->r / eng_mass_rel(chk->old.m, chk->old.p, s->inv_c2) *
+                sqrt(chk->old.m * chk->old.m + pp * s->inv_c2);
+        }
+        const double gap = v > 0.0 ? s->L[d] - h - x : x - h;
+        if (gap <= s->def.sim_tol * bi->r)
+            return 1;
+    }
+    double best = INFINITY;
+    int32_t bp = ENG_NONE;
+    wall_event(s, i, walls, &best, &bp);
+    static const int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
+    if (scan_block(s, i, c, lo, hi, &best, &bp, check ? chk : NULL))
+        return 1;
+    store_event(s, i, best, bp);
+    cross_event(s, i, c);
+    return 0;
+}
+
+/* Full prediction for member i of a tentatively resolved single contact (i is at time T,
+ * vold its velocity before): while scanning, look with the old velocities for any other
+ * contact simultaneous with the resolved one (gap <= sim_tol, approaching) -- the same
+ * test as grow_group, at no extra distance computation. Returns 1 on such a contact (the
+ * caller then undoes and resolves the whole group), else stores the event and returns 0. */
+int rc_eng_predict_checked(rc_sim *s, int32_t i, rc_vec3 vold, int32_t partner, double T)
+{
+    const double stol = s->def.sim_tol;
+    const eng_ball *bi = &s->b[i];
+    /* sim_tol = 0: no grouping asked for, no check */
+    const int check = stol > 0.0;
+    int c[3];
+    cell_coords(&s->g, s->a[i].cell, c);
+    const unsigned walls = boundary_dims(s, c);
+    for (int d = 0; d < s->def.dim && check && walls; d++) {
+        double v = rc_v3_get(vold, d), x = rc_v3_get(bi->x, d);
+        if (v == 0.0)
+            continue;
+        int w = 2 * d + (v > 0.0);
+        if (ENG_WALL(w) == partner)
+            continue;
+        double h = wall_support(s, i, d);
+        double gap = v > 0.0 ? s->L[d] - h - x : x - h;
+        if (gap <= stol * bi->r)
+            return 1;
+    }
+    double best = INFINITY;
+    int32_t bp = ENG_NONE;
+    wall_event(s, i, walls, &best, &bp);
+    static const int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
+    eng_walk w;
+    walk_init(&w, s, i, c, lo, hi);
+    int32_t nb[GATHER_MAX];
+    size_t m;
+    do {
+        m = walk_gather(&w, nb);
+        if (test_list(s, i, nb, m, &best, &bp, check ? &vold : NULL, partner, T))
+            return 1;
+    } while (m == GATHER_MAX);
+    store_event(s, i, best, bp);
+    cross_event(s, i, c);
+    return 0;
+}
+
+/* Ball i enters the next cell: the balls that became neighbours are one slab of cells. */
+void rc_eng_cross(rc_sim *s, int32_t i)
+{
+    eng_aux *a = &s->a[i];
+    int d = a->cross_code / 2, dir = (a->cross_code & 1) ? 1 : -1;
+    int c[3];
+    cell_coords(&s->g, a->cell, c);
+    c[d] += dir;
+    rc_eng_cells_remove(&s->g, s->a, i);
+    rc_eng_cells_insert(&s->g, s->a, i, (int32_t)(c[0] + s->g.n[0] * (c[1] + s->g.n[1] * c[2])));
+    s->events[RC_SIM_EV_CELL]++;
+    if (a->ev_partner >= 0 && s->cnt[a->ev_partner] != a->ev_pcount) {
+        rc_eng_predict(s, i, 1); /* the kept event went stale: full scan */
+        return;
+    }
+    double best = a->ev_t;
+    int32_t bp = a->ev_partner;
+    int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
+    lo[d] = hi[d] = dir;
+    if (s->def.dim == 2)
+        lo[2] = hi[2] = 0;
+    scan_block(s, i, c, lo, hi, &best, &bp, NULL);
+    if (c[d] == 0 || c[d] == s->g.n[d] - 1) /* a boundary cell: its wall is now in reach */
+        wall_event(s, i, 1u << d, &best, &bp);
+    if (bp != a->ev_partner || best != a->ev_t)
+        store_event(s, i, best, bp);
+    cross_event(s, i, c);
+    rc_eng_queue_update(&s->q, (uint32_t)i, key_of(a));
+}
+
+/* For engine_core.c (the functions above stay static so that their callers here inline
+ * them: an exported function of a shared library is called through the PLT). */
+double rc_eng_wall_support(const rc_sim *s, int32_t i, int d) { return wall_support(s, i, d); }
+
+int rc_eng_narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
+                           double d2, const eng_check *chk, rc_vec3 *normal)
+{
+    return narrow_conflict(s, bi, bk, dx, d2, chk, normal);
+}
