@@ -26,10 +26,10 @@ typedef struct result {
     double ok;
 } result;
 
-static result run(int dim, size_t n, double packing, double c, const char *frame,
-                  double melt_per_ball, double measure_per_ball)
+/* A gas (radius 1/2, rms speed 1 classically, 0.5 c otherwise) in a fresh engine, not yet
+ * melted; NULL (with a message) on failure. */
+static rc_sim *setup(int dim, size_t n, double packing, double c, const char *frame)
 {
-    result res = {0, 0, 0};
     rc_sim_gas_def g = {dim, n, 0.5, packing, isinf(c) ? 1.0 : 0.5 * c, c, 1.0, 2024};
     rc_sim_ball *b = calloc(n, sizeof *b); /* zeroed: rc_sim_gas_init leaves collided, tau_last */
     rc_sim_def d = rc_sim_def_default();
@@ -47,8 +47,17 @@ static result run(int dim, size_t n, double packing, double c, const char *frame
     if (st != RC_OK) {
         fprintf(stderr, "setup failed: %s\n", rc_strerror(st));
         rc_sim_free(&s);
-        return res;
     }
+    return s;
+}
+
+static result run(int dim, size_t n, double packing, double c, const char *frame,
+                  double melt_per_ball, double measure_per_ball)
+{
+    result res = {0, 0, 0};
+    rc_sim *s = setup(dim, n, packing, c, frame);
+    if (!s)
+        return res;
     rc_sim_diag d0, d1;
     /* melt: collisions per ball (events include crossings and stale entries: ~1.5x) */
     uint64_t melt = (uint64_t)(melt_per_ball * (double)n * 1.5);
@@ -79,26 +88,9 @@ static result run(int dim, size_t n, double packing, double c, const char *frame
  * in alternating chunks of events, so both see the same load on a shared machine. */
 static rc_sim *make(int dim, size_t n, double packing, double c, const char *frame)
 {
-    rc_sim_gas_def g = {dim, n, 0.5, packing, isinf(c) ? 1.0 : 0.5 * c, c, 1.0, 2024};
-    rc_sim_ball *b = calloc(n, sizeof *b); /* zeroed: rc_sim_gas_init leaves collided, tau_last */
-    rc_sim_def d = rc_sim_def_default();
-    d.dim = dim;
-    d.c = c;
-    if (frame)
-        d.frame = rc_toi_frame_find(frame);
-    rc_sim *s = NULL;
-    int st = b ? rc_sim_gas_init(&g, &d.box, b) : RC_ENOMEM;
-    if (st == RC_OK)
-        st = rc_sim_create(&d, &s);
-    if (st == RC_OK)
-        st = rc_sim_set_balls(s, n, b, NULL);
-    free(b);
-    if (st != RC_OK) {
-        fprintf(stderr, "setup failed: %s\n", rc_strerror(st));
-        rc_sim_free(&s);
-        return NULL;
-    }
-    rc_sim_advance(s, INFINITY, (uint64_t)(15 * n)); /* melt */
+    rc_sim *s = setup(dim, n, packing, c, frame);
+    if (s)
+        rc_sim_advance(s, INFINITY, (uint64_t)(15 * n)); /* melt */
     return s;
 }
 
