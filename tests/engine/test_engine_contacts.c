@@ -226,6 +226,65 @@ static void test_groups_conserve_and_order(void)
     ENSURE(solved > 200);
 }
 
+/* The rule's rest-mass step (papers/simultaneous-contacts.md, "Rest masses"): an elastic
+ * relativistic group keeps every rest mass, an inelastic one lets none fall, and the total
+ * energy stays. First the grazing ball-ball-wall group met in a c = 1 table-frame gas,
+ * whose impulses alone took the rest masses from 1 to 0.64 and 1.41; then random trees of
+ * contacts with a wall. Tolerance 1e-13 relative: two boosts and an energy sum matched to 8
+ * roundings; a skipped or wrong step is off by O((v/c)^2) >= 1e-4 here. */
+static void test_group_rest_masses(void)
+{
+    const rc_vec3 x0 = rc_v3(12.177256227744929, 54.710217348099157, 0);
+    const rc_vec3 x1 = rc_v3(12.252982782684304, 55.568602895127718, 0);
+    rc_particle G[2] = {{1.0, rc_v3(-0.57687298846651103, 0.55152411821159275, 0)},
+                        {1.0, rc_v3(-0.91259096605624812, 0.34675320581145286, 0)}};
+    rc_contact GC[2] = {{0, 1, unit(rc_v3_sub(x1, x0)), 1.0}, {1, -1, rc_v3(0, 1, 0), 1.0}};
+    const double E0 = rc_mass_rel(G[0].m, G[0].p, 1.0) + rc_mass_rel(G[1].m, G[1].p, 1.0);
+    ENSURE(rc_contacts_resolve(1.0, 2, G, 2, GC, NULL) == RC_OK);
+    ENSURE_REL(G[0].m, 1.0, 1e-13);
+    ENSURE_REL(G[1].m, 1.0, 1e-13);
+    ENSURE_REL(rc_mass_rel(G[0].m, G[0].p, 1.0) + rc_mass_rel(G[1].m, G[1].p, 1.0), E0, 1e-13);
+
+    rc_test_rng R = {91};
+    int solved = 0;
+    for (int trial = 0; trial < 300; trial++) {
+        const double k = trial % 2 ? 1.0 : 0.25; /* c = 1 or 2, momenta up to ~1.7 */
+        const int elastic = trial % 4 < 2;
+        const int nb = 3 + (int)(rc_test_uniform(&R) * 3);
+        rc_particle P[6], Q[6];
+        for (int i = 0; i < nb; i++)
+            P[i] = Q[i] = (rc_particle){rc_test_range(&R, 0.5, 2),
+                                        rc_v3(rc_test_range(&R, -1, 1), rc_test_range(&R, -1, 1),
+                                              rc_test_range(&R, -1, 1))};
+        rc_contact C[7];
+        int nc = 0;
+        for (int i = 1; i < nb; i++)
+            C[nc++] = (rc_contact){(int)(rc_test_uniform(&R) * i), i,
+                                   unit(rc_v3(rc_test_range(&R, -1, 1), rc_test_range(&R, -1, 1),
+                                              rc_test_range(&R, -1, 1))),
+                                   elastic ? 1.0 : rc_test_uniform(&R)};
+        C[nc++] = (rc_contact){0, -1, rc_v3(-1, 0, 0), elastic ? 1.0 : rc_test_uniform(&R)};
+        const int st = rc_contacts_resolve(k, (size_t)nb, Q, (size_t)nc, C, NULL);
+        /* an elastic group always has its outcome (the targets are the rest masses, below
+         * the invariant mass); an inelastic one may have none */
+        ENSURE(st == RC_OK || (!elastic && st == RC_ENOCONVERGE));
+        if (st != RC_OK)
+            continue;
+        solved++;
+        double E0g = 0.0, E1g = 0.0;
+        for (int i = 0; i < nb; i++) {
+            E0g += rc_mass_rel(P[i].m, P[i].p, k);
+            E1g += rc_mass_rel(Q[i].m, Q[i].p, k);
+            if (elastic)
+                ENSURE_REL(Q[i].m, P[i].m, 1e-13);
+            else
+                ENSURE(Q[i].m >= P[i].m * (1.0 - 1e-13));
+        }
+        ENSURE_REL(E1g, E0g, 1e-13);
+    }
+    ENSURE(solved > 200);
+}
+
 /* c -> inf: the relativistic rule tends to the classical solver, velocities at O(1/c^2). */
 static void test_classical_limit(void)
 {
@@ -357,6 +416,7 @@ int main(void)
     RUN_TEST(test_straight_back);
     RUN_TEST(test_single_is_zmf_law);
     RUN_TEST(test_groups_conserve_and_order);
+    RUN_TEST(test_group_rest_masses);
     RUN_TEST(test_classical_limit);
     RUN_TEST(test_engine_double_collision);
     RUN_TEST(test_rack_break_symmetric);
