@@ -1,14 +1,17 @@
 /* cells_grid.c — the neighbour search: a uniform grid of cells at least one largest
- * bounding diameter wide, so balls that can touch are always in adjacent cells, with an
- * intrusive doubly linked list per cell so moving a ball is O(1). */
+ * bounding diameter wide, so balls that can touch are always in adjacent cells. Each
+ * cell keeps its balls in ENG_CELL_CAP slots of its own, the last of which becomes an
+ * overflow chain when more arrive (engine_private.h); moving a ball is O(1) unless its
+ * cell overflows. */
 #include <math.h>
 #include <stdlib.h>
 
 #include "engine_private.h"
 #include "relcol/status.h"
 
-/* At most this many cells per ball (then cells grow): bounds memory for sparse gases. */
-#define CELLS_PER_BALL_MAX 8.0
+/* At most this many cells per ball (then cells grow): bounds memory for sparse gases
+ * (12 bytes a cell). */
+#define CELLS_PER_BALL_MAX 3.0
 
 int rc_eng_cells_init(eng_cells *g, int dim, rc_vec3 box, double min_edge, size_t nballs)
 {
@@ -35,26 +38,28 @@ int rc_eng_cells_init(eng_cells *g, int dim, rc_vec3 box, double min_edge, size_
         g->inv_w[d] = 1.0 / g->w[d];
         g->ncells *= (size_t)g->n[d];
     }
-    g->head = malloc(g->ncells * sizeof *g->head);
+    g->slot = malloc((g->ncells * ENG_CELL_CAP + ENG_SLOT_PAD) * sizeof *g->slot);
     g->next = malloc((nballs ? nballs : 1) * sizeof *g->next);
-    g->prev = malloc((nballs ? nballs : 1) * sizeof *g->prev);
-    if (!g->head || !g->next || !g->prev) {
+    if (!g->slot || !g->next) {
         rc_eng_cells_free(g);
         return RC_ENOMEM;
     }
-    for (size_t c = 0; c < g->ncells; c++)
-        g->head[c] = -1;
+    rc_eng_cells_clear(g);
     return RC_OK;
+}
+
+void rc_eng_cells_clear(eng_cells *g)
+{
+    for (size_t c = 0; c < g->ncells * ENG_CELL_CAP + ENG_SLOT_PAD; c++)
+        g->slot[c] = -1;
 }
 
 void rc_eng_cells_free(eng_cells *g)
 {
-    free(g->head);
+    free(g->slot);
     free(g->next);
-    free(g->prev);
-    g->head = NULL;
+    g->slot = NULL;
     g->next = NULL;
-    g->prev = NULL;
 }
 
 int32_t rc_eng_cells_index_of(const eng_cells *g, int dim, rc_vec3 x)
@@ -68,24 +73,49 @@ int32_t rc_eng_cells_index_of(const eng_cells *g, int dim, rc_vec3 x)
     return (int32_t)(c[0] + g->n[0] * (c[1] + g->n[1] * c[2]));
 }
 
+/* Into the first empty slot; with none, the last slot's ball and i form a chain, or i
+ * joins the chain there at its head. */
 void rc_eng_cells_insert(eng_cells *g, eng_aux *a, int32_t i, int32_t cell)
 {
-    int32_t h = g->head[cell];
+    int32_t *sl = g->slot + (size_t)cell * ENG_CELL_CAP;
     a[i].cell = cell;
-    g->prev[i] = -1;
-    g->next[i] = h;
-    if (h >= 0)
-        g->prev[h] = i;
-    g->head[cell] = i;
+    for (int j = 0; j < ENG_CELL_CAP; j++)
+        if (sl[j] == -1) {
+            sl[j] = i;
+            return;
+        }
+    const int32_t last = sl[ENG_CELL_CAP - 1];
+    if (last >= 0) {
+        g->next[last] = -1;
+        g->next[i] = last;
+    } else {
+        g->next[i] = ENG_CHAIN_HEAD(last);
+    }
+    sl[ENG_CELL_CAP - 1] = ENG_CHAIN(i);
 }
 
+/* A slot simply empties (a chain keeps at least two balls); a chain left with one ball
+ * is a plain slot again. */
 void rc_eng_cells_remove(eng_cells *g, const eng_aux *a, int32_t i)
 {
-    int32_t p = g->prev[i], nx = g->next[i];
-    if (p >= 0)
-        g->next[p] = nx;
-    else
-        g->head[a[i].cell] = nx;
-    if (nx >= 0)
-        g->prev[nx] = p;
+    int32_t *sl = g->slot + (size_t)a[i].cell * ENG_CELL_CAP;
+    for (int j = 0; j < ENG_CELL_CAP; j++)
+        if (sl[j] == i) {
+            sl[j] = -1;
+            return;
+        }
+    if (sl[ENG_CELL_CAP - 1] >= -1)
+        return; /* not in its cell: nothing to undo (does not happen) */
+    int32_t h = ENG_CHAIN_HEAD(sl[ENG_CELL_CAP - 1]);
+    if (h == i) {
+        h = g->next[i];
+    } else {
+        int32_t p = h;
+        while (p >= 0 && g->next[p] != i)
+            p = g->next[p];
+        if (p < 0)
+            return;
+        g->next[p] = g->next[i];
+    }
+    sl[ENG_CELL_CAP - 1] = g->next[h] < 0 ? h : ENG_CHAIN(h);
 }

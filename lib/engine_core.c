@@ -115,7 +115,8 @@ static int grow_group(rc_sim *s, size_t *nm, size_t *nc, double T)
                     if (x < 0 || y < 0 || z < 0 || x >= g->n[0] || y >= g->n[1] || z >= g->n[2])
                         continue;
                     int32_t cell = (int32_t)(x + g->n[0] * (y + g->n[1] * z));
-                    for (int32_t k = g->head[cell]; k >= 0; k = g->next[k]) {
+                    eng_cell_it it;
+                    for (int32_t k = cell_first(g, cell, &it); k >= 0; k = cell_next(g, &it)) {
                         if (k == i)
                             continue;
                         const eng_ball *bi = &s->b[i], *bk = &s->b[k];
@@ -466,9 +467,8 @@ static void reorder(rc_sim *s)
     }
     free(done);
     free(np);
-    for (size_t c = 0; c < s->g.ncells; c++)
-        s->g.head[c] = -1;
-    for (size_t k = n; k-- > 0;)
+    rc_eng_cells_clear(&s->g);
+    for (size_t k = 0; k < n; k++)
         rc_eng_cells_insert(&s->g, s->a, (int32_t)k, s->a[k].cell);
     /* the queue under the new numbers (and a bucket width fitted to the gas as it is now) */
     for (size_t k = 0; k < n; k++)

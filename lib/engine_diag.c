@@ -47,8 +47,9 @@ static double overlap_around(const rc_sim *s, size_t i, const rc_vec3 xi)
             for (int x = c[0] - 1; x <= c[0] + 1; x++) {
                 if (x < 0 || y < 0 || z < 0 || x >= g->n[0] || y >= g->n[1] || z >= g->n[2])
                     continue;
-                for (int32_t k = g->head[x + g->n[0] * (y + g->n[1] * z)]; k >= 0;
-                     k = g->next[k]) {
+                eng_cell_it it;
+                for (int32_t k = cell_first(g, x + g->n[0] * (y + g->n[1] * z), &it); k >= 0;
+                     k = cell_next(g, &it)) {
                     if ((size_t)k <= i)
                         continue;
                     const eng_ball *bk = &s->b[k];
@@ -134,10 +135,10 @@ size_t rc_sim_bytes(const rc_sim *s)
     if (!s)
         return 0;
     return sizeof *s + s->n * (sizeof *s->b + sizeof *s->a + sizeof *s->clk + sizeof *s->g.next +
-                               sizeof *s->g.prev + sizeof *s->id + sizeof *s->slot +
+                               sizeof *s->id + sizeof *s->slot +
                                sizeof *s->cnt) +
            rc_eng_queue_bytes(&s->q) +
-           s->g.ncells * sizeof *s->g.head +
+           s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot +
            s->grp_ball_cap * (sizeof *s->grp_ball + sizeof *s->grp_part) +
            s->grp_con_cap * sizeof *s->grp_con;
 }

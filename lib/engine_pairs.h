@@ -72,8 +72,9 @@ static inline double pair_sphere_scalar(const rc_sim *s, const eng_ball *bi, con
 /* Four lanes: pair_sphere_scalar's operations on 256-bit registers (AVX2 machines;
  * rc_sim_create asks the CPU once): lanes 0..3 get the times of bi against k[0..3]
  * (INFINITY: no contact able to beat `best`) and bit l of *nears the proximity flag of
- * k[l]. No FMA: the target adds AVX2 only, so the bits stay. */
-__attribute__((target("avx2"), always_inline)) static inline void pair_sphere_x4(
+ * k[l]; returned: bit l set if lane l's time is finite. No FMA: the target adds AVX2
+ * only, so the bits stay. */
+__attribute__((target("avx2"), always_inline)) static inline int pair_sphere_x4(
     const rc_sim *s, const eng_ball *bi, const eng_ball *const k[4], double best, double stol,
     double out[4], int *nears, const int three)
 {
@@ -143,7 +144,7 @@ __attribute__((target("avx2"), always_inline)) static inline void pair_sphere_x4
     if (!_mm256_movemask_pd(hit)) {
         const __m256d inf = _mm256_set1_pd(INFINITY);
         _mm256_storeu_pd(out, inf);
-        return;
+        return 0;
     }
     const __m256d safe = _mm256_blendv_pd(_mm256_set1_pd(1.0), disc, hit);
     const __m256d root = _mm256_div_pd(dd, _mm256_sub_pd(_mm256_sqrt_pd(safe), b));
@@ -152,6 +153,7 @@ __attribute__((target("avx2"), always_inline)) static inline void pair_sphere_x4
     ta = _mm256_blendv_pd(ta, now, _mm256_cmp_pd(ta, now, _CMP_LT_OQ));
     const __m256d keep = _mm256_and_pd(hit, _mm256_cmp_pd(ta, _mm256_set1_pd(best), _CMP_LT_OQ));
     _mm256_storeu_pd(out, _mm256_blendv_pd(_mm256_set1_pd(INFINITY), ta, keep));
+    return _mm256_movemask_pd(keep);
 }
 #endif
 

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 
 #include "engine_pairs.h"
+#include "engine_walk.h"
 #include "engine_private.h"
 #include "relcol/status.h"
 
@@ -111,71 +112,6 @@ static void wall_event(const rc_sim *s, int32_t i, unsigned dims, double *best, 
     *bp = bw;
 }
 
-/* Neighbours gathered per scan before testing (stack buffer; more are done in chunks). */
-#define GATHER_MAX 128
-
-/* The balls of a block of cells (offsets lo..hi around cell c, clipped to the grid), in
- * chunks: cell by cell (x fastest), each cell's list in order, ball `skip` left out. Each
- * index is prefetched as it is gathered, so walking the lists and loading the balls
- * overlap instead of waiting on each other. */
-typedef struct eng_walk {
-    const rc_sim *s;
-    int x0, x1, y0, y1, z0, z1, x, y, z;
-    int32_t k, skip;
-} eng_walk;
-
-static void walk_init(eng_walk *w, const rc_sim *s, int32_t skip, const int c[3],
-                      const int lo[3], const int hi[3])
-{
-    const eng_cells *g = &s->g;
-    w->s = s;
-    w->skip = skip;
-    w->x0 = c[0] + lo[0] > 0 ? c[0] + lo[0] : 0;
-    w->y0 = c[1] + lo[1] > 0 ? c[1] + lo[1] : 0;
-    w->z0 = c[2] + lo[2] > 0 ? c[2] + lo[2] : 0;
-    w->x1 = c[0] + hi[0] < g->n[0] ? c[0] + hi[0] : g->n[0] - 1;
-    w->y1 = c[1] + hi[1] < g->n[1] ? c[1] + hi[1] : g->n[1] - 1;
-    w->z1 = c[2] + hi[2] < g->n[2] ? c[2] + hi[2] : g->n[2] - 1;
-    w->x = w->x0;
-    w->y = w->y0;
-    w->z = w->z0;
-    /* an empty block (a crossing into a boundary cell has no slab beyond it) */
-    const int empty = w->x0 > w->x1 || w->y0 > w->y1 || w->z0 > w->z1;
-    w->k = empty ? -1 : g->head[w->x + g->n[0] * (w->y + g->n[1] * w->z)];
-    if (empty)
-        w->z = w->z1 + 1;
-}
-
-/* Up to GATHER_MAX more balls into nb; fewer means the block is done. */
-static size_t walk_gather(eng_walk *w, int32_t *nb)
-{
-    const eng_cells *g = &w->s->g;
-    size_t m = 0;
-    int32_t k = w->k;
-    while (m < GATHER_MAX) {
-        while (k < 0 && w->z <= w->z1) {
-            if (++w->x > w->x1) {
-                w->x = w->x0;
-                if (++w->y > w->y1) {
-                    w->y = w->y0;
-                    if (++w->z > w->z1)
-                        break;
-                }
-            }
-            k = g->head[w->x + g->n[0] * (w->y + g->n[1] * w->z)];
-        }
-        if (k < 0)
-            break;
-        if (k != w->skip) {
-            __builtin_prefetch(&w->s->b[k]);
-            nb[m++] = k;
-        }
-        k = g->next[k];
-    }
-    w->k = k;
-    return m;
-}
-
 /* Simultaneity check of predict_checked for neighbour k of ball i (at time T, velocity
  * before the collision vold): approaching within approach_tol, so in contact now. */
 static int approaching_with(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, double T,
@@ -218,36 +154,52 @@ static inline int test_tail(const rc_sim *s, const eng_ball *bi, const int32_t *
 }
 
 #ifdef ENG_HAVE_AVX2
-/* (three: a compile-time constant at each call, so 2-D gets its own loop without z) */
+/* Pad the m gathered indices to a multiple of four with ball i itself (its lanes are
+ * masked off), so that every neighbour goes through the lanes; returns the padded count. */
+static inline size_t pad_lanes(int32_t *nb, size_t m, int32_t i)
+{
+    const size_t m4 = (m + 3) & ~(size_t)3;
+    for (size_t j = m; j < m4; j++)
+        nb[j] = i;
+    return m4;
+}
+
+/* (three: a compile-time constant at each call, so 2-D gets its own loop without z)
+ * Only the lanes with a time, or with a proximity flag while checking, are visited, in
+ * lane order: a lane with neither can change nothing. */
 __attribute__((target("avx2"), always_inline)) static inline int test_list_avx2_dim(
-    const rc_sim *s, int32_t i, const int32_t *nb, size_t m, double *best, int32_t *bp,
+    const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *best, int32_t *bp,
     const rc_vec3 *vold, int32_t partner, double T, const int three)
 {
     const eng_ball *bi = &s->b[i];
     const int check = vold && s->def.sim_tol > 0.0;
     double bt = *best;
     int32_t bk = *bp;
-    size_t j = 0;
-    for (; j + 4 <= m; j += 4) {
+    const size_t m4 = pad_lanes(nb, m, i);
+    for (size_t j = 0; j < m4; j += 4) {
         const eng_ball *const k[4] = {&s->b[nb[j]], &s->b[nb[j + 1]], &s->b[nb[j + 2]],
                                       &s->b[nb[j + 3]]};
         double t[4];
         int nears;
-        pair_sphere_x4(s, bi, k, bt, s->def.sim_tol, t, &nears, three);
-        for (int l = 0; l < 4; l++)
+        unsigned lanes = (unsigned)pair_sphere_x4(s, bi, k, bt, s->def.sim_tol, t, &nears, three);
+        lanes |= check ? (unsigned)nears : 0u;
+        if (j + 4 > m)
+            lanes &= (1u << (m - j)) - 1u;
+        while (lanes) {
+            const int l = __builtin_ctz(lanes);
+            lanes &= lanes - 1u;
             if (visit(s, bi, nb[j + (size_t)l], t[l], nears >> l & 1, check, partner, vold, T,
                       &bt, &bk))
                 return 1;
+        }
     }
-    if (test_tail(s, bi, nb, j, m, check, partner, vold, T, &bt, &bk))
-        return 1;
     *best = bt;
     *bp = bk;
     return 0;
 }
 
 __attribute__((target("avx2"))) static int test_list_avx2(const rc_sim *s, int32_t i,
-                                                          const int32_t *nb, size_t m,
+                                                          int32_t *nb, size_t m,
                                                           double *best, int32_t *bp,
                                                           const rc_vec3 *vold, int32_t partner,
                                                           double T)
@@ -264,7 +216,7 @@ __attribute__((target("avx2"))) static int test_list_avx2(const rc_sim *s, int32
  * contact simultaneous with the resolved one -- gap <= sim_tol, approaching with the old
  * velocity, not the partner -- and returns 1 at the first, else 0. The lanes (s->simd)
  * give the same bits as the scalar loop. */
-static int test_list(const rc_sim *s, int32_t i, const int32_t *nb, size_t m, double *best,
+static int test_list(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *best,
                      int32_t *bp, const rc_vec3 *vold, int32_t partner, double T)
 {
 #ifdef ENG_HAVE_AVX2
@@ -282,17 +234,19 @@ static int test_list(const rc_sim *s, int32_t i, const int32_t *nb, size_t m, do
     return 0;
 }
 
-/* Bounding-sphere times of ball i with the m <= GATHER_MAX gathered neighbours nb (t[j]:
+/* Bounding-sphere times of ball i with the m <= GATHER_MAX gathered neighbours nb (padded,
+ * so nb, t and near need NB_CAP; t[j]:
  * INFINITY unless it can beat `best`) and the proximity flags near[j] of
  * pair_sphere_scalar, in lanes where the CPU has them (the same bits every way): the
  * broad phase of a contracted frame. */
 #ifdef ENG_HAVE_AVX2
 __attribute__((target("avx2"), always_inline)) static inline size_t sphere_lanes_avx2_dim(
-    const rc_sim *s, const eng_ball *bi, const int32_t *nb, size_t m, double best, double *t,
+    const rc_sim *s, const eng_ball *bi, int32_t *nb, size_t m, double best, double *t,
     unsigned char *near, const int three)
 {
+    const size_t m4 = pad_lanes(nb, m, (int32_t)(bi - s->b));
     size_t j = 0;
-    for (; j + 4 <= m; j += 4) {
+    for (; j < m4; j += 4) {
         const eng_ball *const k[4] = {&s->b[nb[j]], &s->b[nb[j + 1]], &s->b[nb[j + 2]],
                                       &s->b[nb[j + 3]]};
         int nears;
@@ -305,7 +259,7 @@ __attribute__((target("avx2"), always_inline)) static inline size_t sphere_lanes
 
 __attribute__((target("avx2"))) static size_t sphere_lanes_avx2(const rc_sim *s,
                                                                const eng_ball *bi,
-                                                               const int32_t *nb, size_t m,
+                                                               int32_t *nb, size_t m,
                                                                double best, double *t,
                                                                unsigned char *near)
 {
@@ -315,7 +269,7 @@ __attribute__((target("avx2"))) static size_t sphere_lanes_avx2(const rc_sim *s,
 }
 #endif
 
-static void sphere_lanes(const rc_sim *s, int32_t i, const int32_t *nb, size_t m, double best,
+static void sphere_lanes(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double best,
                          double *t, unsigned char *near)
 {
     const eng_ball *bi = &s->b[i];
@@ -416,13 +370,12 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
     rc_sim *s = (rc_sim *)cs; /* the candidate buffer is scratch */
     const eng_ball *bi = &s->b[i];
     size_t nc = 0;
-    int32_t nb[GATHER_MAX];
-    double t[GATHER_MAX];
-    unsigned char near[GATHER_MAX];
-    for (int more = 1; more;) {
+    int32_t nb[NB_CAP];
+    double t[NB_CAP];
+    unsigned char near[NB_CAP];
+    while (!w->done) {
         /* gather a chunk of neighbours ... */
         const size_t m = walk_gather(w, nb);
-        more = m == GATHER_MAX;
         /* ... then the bounding spheres in lanes, and the candidates that can beat best */
         sphere_lanes(s, i, nb, m, *best, t, near);
         for (size_t j = 0; j < m; j++) {
@@ -487,12 +440,11 @@ static int scan_block(const rc_sim *s, int32_t i, const int c[3], const int lo[3
     walk_init(&w, s, i, c, lo, hi);
     if (s->narrow)
         return scan_block_narrow(s, i, &w, best, bp, chk);
-    int32_t nb[GATHER_MAX];
-    size_t m;
-    do {
-        m = walk_gather(&w, nb);
+    int32_t nb[NB_CAP];
+    while (!w.done) {
+        const size_t m = walk_gather(&w, nb);
         test_list(s, i, nb, m, best, bp, NULL, ENG_NONE, 0.0);
-    } while (m == GATHER_MAX);
+    }
     return 0;
 }
 
@@ -612,13 +564,12 @@ int rc_eng_predict_checked(rc_sim *s, int32_t i, rc_vec3 vold, int32_t partner, 
     static const int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
     eng_walk w;
     walk_init(&w, s, i, c, lo, hi);
-    int32_t nb[GATHER_MAX];
-    size_t m;
-    do {
-        m = walk_gather(&w, nb);
+    int32_t nb[NB_CAP];
+    while (!w.done) {
+        const size_t m = walk_gather(&w, nb);
         if (test_list(s, i, nb, m, &best, &bp, check ? &vold : NULL, partner, T))
             return 1;
-    } while (m == GATHER_MAX);
+    }
     store_event(s, i, best, bp);
     cross_event(s, i, c);
     return 0;

@@ -72,22 +72,68 @@ void rc_eng_queue_update(eng_queue *q, uint32_t ball, double t);
 int rc_eng_queue_top(eng_queue *q, double *t, uint32_t *ball);
 size_t rc_eng_queue_bytes(const eng_queue *q);
 
-/* Uniform cell grid over the box, doubly linked lists per cell. */
+/* Uniform cell grid over the box. A cell keeps its balls in ENG_CELL_CAP slots of its
+ * own (cells hold about one ball): a ball index, -1 (empty) or, in the last slot only,
+ * ENG_CHAIN(k) -- the cell has more balls than slots, and the last slot's share of them
+ * is the chain k, next[k], ... (at least two). The slots of a row of cells lie together,
+ * so a neighbour scan reads each row of its block in one or two loads, with no list to
+ * walk unless a cell overflows (cells_grid.c). */
+#define ENG_CELL_CAP 2
+#define ENG_SLOT_PAD 8 /* (slots past the last cell, always empty: rows are read 8 at a time) */
+#define ENG_CHAIN(k) (-2 - (k))
+#define ENG_CHAIN_HEAD(v) (-2 - (v))
+
 typedef struct eng_cells {
     int n[3];
     double w[3];      /* cell edge per dimension */
     double inv_w[3];
-    int32_t *head;
-    int32_t *next;    /* per ball: next ball of its cell (compact: read by every scan) */
-    int32_t *prev;    /* per ball: previous ball of its cell (-1: the head) */
+    int32_t *slot;    /* ENG_CELL_CAP per cell */
+    int32_t *next;    /* per ball: next of its overflow chain (-1: the end) */
     size_t ncells;
 } eng_cells;
 
 int rc_eng_cells_init(eng_cells *g, int dim, rc_vec3 box, double min_edge, size_t nballs);
 void rc_eng_cells_free(eng_cells *g);
+/* Every cell empty again. */
+void rc_eng_cells_clear(eng_cells *g);
 int32_t rc_eng_cells_index_of(const eng_cells *g, int dim, rc_vec3 x);
 void rc_eng_cells_insert(eng_cells *g, eng_aux *a, int32_t i, int32_t cell);
 void rc_eng_cells_remove(eng_cells *g, const eng_aux *a, int32_t i);
+
+/* The balls of one cell, in slot order, a chain where it stands:
+ *   for (int32_t k = cell_first(g, cell, &it); k >= 0; k = cell_next(g, &it)) */
+typedef struct eng_cell_it {
+    const int32_t *sl;
+    int j;     /* next slot */
+    int32_t k; /* next ball of the chain being walked (-1: none) */
+} eng_cell_it;
+
+static inline int32_t cell_next(const eng_cells *g, eng_cell_it *it)
+{
+    if (it->k >= 0) {
+        const int32_t k = it->k;
+        it->k = g->next[k];
+        return k;
+    }
+    while (it->j < ENG_CELL_CAP) {
+        const int32_t v = it->sl[it->j++];
+        if (v >= 0)
+            return v;
+        if (v < -1) {
+            it->k = g->next[ENG_CHAIN_HEAD(v)];
+            return ENG_CHAIN_HEAD(v);
+        }
+    }
+    return -1;
+}
+
+static inline int32_t cell_first(const eng_cells *g, int32_t cell, eng_cell_it *it)
+{
+    it->sl = g->slot + (size_t)cell * ENG_CELL_CAP;
+    it->j = 0;
+    it->k = -1;
+    return cell_next(g, it);
+}
 
 /* A broad-phase candidate of a contracted frame: bounding-sphere time, ball. */
 typedef struct eng_cand {

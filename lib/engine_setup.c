@@ -326,7 +326,7 @@ static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, i
         s->slot[i] = (uint32_t)k;
     }
     free(start);
-    for (size_t k = n; k-- > 0;) {
+    for (size_t k = 0; k < n; k++) { /* (cells fill their slots in ball order) */
         const rc_sim_ball *b = &in[s->id[k]];
         eng_ball *e = &s->b[k];
         eng_aux *a = &s->a[k];
@@ -355,7 +355,9 @@ static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, i
                         z >= s->g.n[2])
                         continue;
                     int32_t cell = (int32_t)(x + s->g.n[0] * (y + s->g.n[1] * z));
-                    for (int32_t k = s->g.head[cell]; k >= 0; k = s->g.next[k]) {
+                    eng_cell_it it;
+                    for (int32_t k = cell_first(&s->g, cell, &it); k >= 0;
+                         k = cell_next(&s->g, &it)) {
                         if ((size_t)k <= i)
                             continue;
                         /* touching is allowed (a rack): only overlaps deeper than the
