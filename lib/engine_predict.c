@@ -405,6 +405,7 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
             s->cand[nc].t = t[j];
             s->cand[nc].k = kk;
             nc++;
+            __builtin_prefetch(&s->a[kk]); /* (the frame will want its momentum and mass) */
         }
     }
     for (size_t a = 1; a < nc; a++) { /* insertion sort by (t, k): lists are short */
