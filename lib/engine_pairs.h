@@ -76,7 +76,7 @@ static inline double pair_sphere_scalar(const rc_sim *s, const eng_ball *bi, con
  * only, so the bits stay. */
 __attribute__((target("avx2"), always_inline)) static inline int pair_sphere_x4(
     const rc_sim *s, const eng_ball *bi, const eng_ball *const k[4], double best, double stol,
-    double out[4], int *nears, const int three)
+    double out[4], int *nears, const int three, const int latest)
 {
     /* transpose four 64-byte records (x, v, t, r): low halves x.x x.y x.z v.x, high halves
      * v.y v.z t r */
@@ -103,16 +103,24 @@ __attribute__((target("avx2"), always_inline)) static inline int pair_sphere_x4(
     const __m256d xiz = _mm256_set1_pd(bi->x.z), vix = _mm256_set1_pd(bi->v.x);
     const __m256d viy = _mm256_set1_pd(bi->v.y), viz = _mm256_set1_pd(bi->v.z);
     const __m256d ti = _mm256_set1_pd(bi->t), ri = _mm256_set1_pd(bi->r);
-    const __m256d ge = _mm256_cmp_pd(ti, tk, _CMP_GE_OQ);
-    const __m256d hk = _mm256_sub_pd(ti, tk), hi_ = _mm256_sub_pd(tk, ti);
+    /* pair_sep: the earlier ball advanced to the later clock. latest (a compile-time
+     * constant): the caller knows bi's clock is the later one (a ball that has just
+     * collided, at the engine's time), so only that branch is computed. */
+    const __m256d hk = _mm256_sub_pd(ti, tk);
     const __m256d ax = _mm256_sub_pd(_mm256_add_pd(xkx, _mm256_mul_pd(hk, vkx)), xix);
     const __m256d ay = _mm256_sub_pd(_mm256_add_pd(xky, _mm256_mul_pd(hk, vky)), xiy);
     const __m256d az = _mm256_sub_pd(_mm256_add_pd(xkz, _mm256_mul_pd(hk, vkz)), xiz);
-    const __m256d bx = _mm256_sub_pd(xkx, _mm256_add_pd(xix, _mm256_mul_pd(hi_, vix)));
-    const __m256d by = _mm256_sub_pd(xky, _mm256_add_pd(xiy, _mm256_mul_pd(hi_, viy)));
-    const __m256d bz = _mm256_sub_pd(xkz, _mm256_add_pd(xiz, _mm256_mul_pd(hi_, viz)));
-    const __m256d dx = _mm256_blendv_pd(bx, ax, ge), dy = _mm256_blendv_pd(by, ay, ge);
-    const __m256d dz = _mm256_blendv_pd(bz, az, ge), tref = _mm256_blendv_pd(tk, ti, ge);
+    __m256d dx = ax, dy = ay, dz = az, tref = ti;
+    if (!latest) {
+        const __m256d ge = _mm256_cmp_pd(ti, tk, _CMP_GE_OQ), hi_ = _mm256_sub_pd(tk, ti);
+        const __m256d bx = _mm256_sub_pd(xkx, _mm256_add_pd(xix, _mm256_mul_pd(hi_, vix)));
+        const __m256d by = _mm256_sub_pd(xky, _mm256_add_pd(xiy, _mm256_mul_pd(hi_, viy)));
+        const __m256d bz = _mm256_sub_pd(xkz, _mm256_add_pd(xiz, _mm256_mul_pd(hi_, viz)));
+        dx = _mm256_blendv_pd(bx, ax, ge);
+        dy = _mm256_blendv_pd(by, ay, ge);
+        dz = _mm256_blendv_pd(bz, az, ge);
+        tref = _mm256_blendv_pd(tk, ti, ge);
+    }
     /* three == 0 (2-D, every z component 0): the z terms add +0 and are left out (the sums
      * are the same bits unless one is -0, which no comparison below can tell from +0) */
     __m256d d2 = _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy));

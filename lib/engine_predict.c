@@ -169,7 +169,7 @@ static inline size_t pad_lanes(int32_t *nb, size_t m, int32_t i)
  * lane order: a lane with neither can change nothing. */
 __attribute__((target("avx2"), always_inline)) static inline int test_list_avx2_dim(
     const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *best, int32_t *bp,
-    const rc_vec3 *vold, int32_t partner, double T, const int three)
+    const rc_vec3 *vold, int32_t partner, double T, const int three, const int latest)
 {
     const eng_ball *bi = &s->b[i];
     const int check = vold && s->def.sim_tol > 0.0;
@@ -181,7 +181,7 @@ __attribute__((target("avx2"), always_inline)) static inline int test_list_avx2_
                                       &s->b[nb[j + 3]]};
         double t[4];
         int nears;
-        unsigned lanes = (unsigned)pair_sphere_x4(s, bi, k, bt, s->def.sim_tol, t, &nears, three);
+        unsigned lanes = (unsigned)pair_sphere_x4(s, bi, k, bt, s->def.sim_tol, t, &nears, three, latest);
         lanes |= check ? (unsigned)nears : 0u;
         if (j + 4 > m)
             lanes &= (1u << (m - j)) - 1u;
@@ -202,11 +202,13 @@ __attribute__((target("avx2"))) static int test_list_avx2(const rc_sim *s, int32
                                                           int32_t *nb, size_t m,
                                                           double *best, int32_t *bp,
                                                           const rc_vec3 *vold, int32_t partner,
-                                                          double T)
+                                                          double T, int latest)
 {
     if (s->def.dim == 3)
-        return test_list_avx2_dim(s, i, nb, m, best, bp, vold, partner, T, 1);
-    return test_list_avx2_dim(s, i, nb, m, best, bp, vold, partner, T, 0);
+        return latest ? test_list_avx2_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 1)
+                      : test_list_avx2_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 0);
+    return latest ? test_list_avx2_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 1)
+                  : test_list_avx2_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 0);
 }
 #endif
 
@@ -217,11 +219,13 @@ __attribute__((target("avx2"))) static int test_list_avx2(const rc_sim *s, int32
  * velocity, not the partner -- and returns 1 at the first, else 0. The lanes (s->simd)
  * give the same bits as the scalar loop. */
 static int test_list(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *best,
-                     int32_t *bp, const rc_vec3 *vold, int32_t partner, double T)
+                     int32_t *bp, const rc_vec3 *vold, int32_t partner, double T, int latest)
 {
 #ifdef ENG_HAVE_AVX2
     if (s->simd == ENG_SIMD_AVX2)
-        return test_list_avx2(s, i, nb, m, best, bp, vold, partner, T);
+        return test_list_avx2(s, i, nb, m, best, bp, vold, partner, T, latest);
+#else
+    (void)latest;
 #endif
     const eng_ball *bi = &s->b[i];
     const int check = vold && s->def.sim_tol > 0.0;
@@ -250,7 +254,7 @@ __attribute__((target("avx2"), always_inline)) static inline size_t sphere_lanes
         const eng_ball *const k[4] = {&s->b[nb[j]], &s->b[nb[j + 1]], &s->b[nb[j + 2]],
                                       &s->b[nb[j + 3]]};
         int nears;
-        pair_sphere_x4(s, bi, k, best, s->def.sim_tol, &t[j], &nears, three);
+        pair_sphere_x4(s, bi, k, best, s->def.sim_tol, &t[j], &nears, three, 0);
         for (int l = 0; l < 4; l++)
             near[j + (size_t)l] = (unsigned char)(nears >> l & 1);
     }
@@ -444,7 +448,7 @@ static int scan_block(const rc_sim *s, int32_t i, const int c[3], const int lo[3
     int32_t nb[NB_CAP];
     while (!w.done) {
         const size_t m = walk_gather(&w, nb);
-        test_list(s, i, nb, m, best, bp, NULL, ENG_NONE, 0.0);
+        test_list(s, i, nb, m, best, bp, NULL, ENG_NONE, 0.0, 0);
     }
     return 0;
 }
@@ -568,7 +572,7 @@ int rc_eng_predict_checked(rc_sim *s, int32_t i, rc_vec3 vold, int32_t partner, 
     int32_t nb[NB_CAP];
     while (!w.done) {
         const size_t m = walk_gather(&w, nb);
-        if (test_list(s, i, nb, m, &best, &bp, check ? &vold : NULL, partner, T))
+        if (test_list(s, i, nb, m, &best, &bp, check ? &vold : NULL, partner, T, 1))
             return 1;
     }
     store_event(s, i, best, bp);
