@@ -119,3 +119,52 @@ void rc_eng_cells_remove(eng_cells *g, const eng_aux *a, int32_t i)
     }
     sl[ENG_CELL_CAP - 1] = g->next[h] < 0 ? h : ENG_CHAIN(h);
 }
+
+/* Z order of the cells: the bits of the cell coordinates interleaved (x lowest), a
+ * dimension with fewer bits simply dropping out of the higher levels. Visited as the
+ * binary tree those bits span, subtrees off the grid pruned: O(cells x levels). */
+typedef struct zwalk {
+    const eng_cells *g;
+    int32_t *rank;
+    int32_t r;
+    int dim_of[96]; /* the dimension each level splits, lowest bit first */
+} zwalk;
+
+static void zvisit(zwalk *z, int lev, int c[3], int span[3])
+{
+    const eng_cells *g = z->g;
+    if (c[0] >= g->n[0] || c[1] >= g->n[1] || c[2] >= g->n[2])
+        return;
+    if (lev < 0) {
+        z->rank[c[0] + g->n[0] * (c[1] + g->n[1] * c[2])] = z->r++;
+        return;
+    }
+    const int d = z->dim_of[lev];
+    span[d] /= 2;
+    zvisit(z, lev - 1, c, span);
+    c[d] += span[d];
+    zvisit(z, lev - 1, c, span);
+    c[d] -= span[d];
+    span[d] *= 2;
+}
+
+/* rank[c]: the place of cell c in Z (Morton) order, so that balls numbered in this order
+ * of their cells lie near their neighbours in y and z too, not only in x (row-major order
+ * puts a cell's y and z neighbours a row or a plane of cells away): +2.5-6.5 % at
+ * N = 1e6, measured in one process. */
+void rc_eng_cells_zorder(const eng_cells *g, int32_t *rank)
+{
+    zwalk z = {g, rank, 0, {0}};
+    int bits[3] = {0, 0, 0}, span[3], levels = 0;
+    for (int d = 0; d < 3; d++) {
+        while ((1L << bits[d]) < g->n[d])
+            bits[d]++;
+        span[d] = 1 << bits[d];
+    }
+    for (int b = 0; b < 32; b++)
+        for (int d = 0; d < 3; d++)
+            if (b < bits[d])
+                z.dim_of[levels++] = d;
+    int c[3] = {0, 0, 0};
+    zvisit(&z, levels - 1, c, span);
+}

@@ -417,20 +417,24 @@ static void reorder(rc_sim *s)
     const size_t n = s->n;
     uint32_t *np = malloc(n * sizeof *np);
     size_t *start = calloc(s->g.ncells + 1, sizeof *start);
+    int32_t *rank = malloc(s->g.ncells * sizeof *rank);
     unsigned char *done = calloc(n, 1);
-    if (!np || !start || !done) { /* no memory: simply keep the old order */
+    if (!np || !start || !rank || !done) { /* no memory: simply keep the old order */
         free(np);
         free(start);
+        free(rank);
         free(done);
         return;
     }
+    rc_eng_cells_zorder(&s->g, rank);
     for (size_t i = 0; i < n; i++)
-        start[s->a[i].cell + 1]++;
+        start[rank[s->a[i].cell] + 1]++;
     for (size_t c = 0; c < s->g.ncells; c++)
         start[c + 1] += start[c];
     for (size_t i = 0; i < n; i++)
-        np[i] = (uint32_t)start[s->a[i].cell]++;
+        np[i] = (uint32_t)start[rank[s->a[i].cell]]++;
     free(start);
+    free(rank);
     /* references first, then move the elements along the cycles of the permutation */
     for (size_t i = 0; i < n; i++) {
         if (s->a[i].ev_partner >= 0)

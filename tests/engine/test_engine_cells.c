@@ -4,7 +4,9 @@
  * slots (overflow chains of every length, a chain longer than a gather chunk):
  *  - each cell's iterator yields exactly its balls, each once;
  *  - a walk over any block yields exactly the balls of its cells but the scanning ball,
- *    each once, in the same order with the AVX2 compress as slot by slot. */
+ *    each once, in the same order with the AVX2 compress as slot by slot;
+ *  - the Z order balls are numbered in is a permutation of the cells, the Morton code
+ *    itself on a power-of-two grid, and plain order along a line of cells. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -194,8 +196,50 @@ static void test_long_chain(void)
     world_free(&w);
 }
 
+/* rank[] on a grid of nx x ny x nz cells (edge 1): a permutation; with morton = 1 (a
+ * cube of side 2^k) the interleaved bits x0 y0 z0 x1 y1 z1 ... themselves; with 2 (a
+ * line of cells) the plain order. */
+static void zorder_case(int nx, int ny, int nz, int morton)
+{
+    eng_cells g;
+    ENSURE(rc_eng_cells_init(&g, nz > 1 ? 3 : 2, rc_v3(nx, ny, nz), 1.0, (size_t)(nx * ny * nz)) ==
+           RC_OK);
+    ENSURE(g.n[0] == nx && g.n[1] == ny && g.n[2] == nz);
+    int32_t *rank = malloc(g.ncells * sizeof *rank);
+    unsigned char *hit = calloc(g.ncells, 1);
+    for (size_t c = 0; c < g.ncells; c++)
+        rank[c] = -1;
+    rc_eng_cells_zorder(&g, rank);
+    int perm = 1, code_ok = 1;
+    for (size_t c = 0; c < g.ncells; c++) {
+        perm &= rank[c] >= 0 && (size_t)rank[c] < g.ncells && !hit[rank[c]];
+        if (rank[c] >= 0 && (size_t)rank[c] < g.ncells)
+            hit[rank[c]] = 1;
+        const int x = (int)c % nx, y = ((int)c / nx) % ny, z = (int)c / (nx * ny);
+        int32_t code = 0;
+        for (int b = 0; b < 10; b++)
+            code |= ((x >> b & 1) << (3 * b)) | ((y >> b & 1) << (3 * b + 1)) |
+                    ((z >> b & 1) << (3 * b + 2));
+        code_ok &= morton == 0 || rank[c] == (morton == 1 ? code : (int32_t)c);
+    }
+    ENSURE_MSG(perm, "%d x %d x %d: not a permutation", nx, ny, nz);
+    ENSURE_MSG(code_ok, "%d x %d x %d: not the Morton order", nx, ny, nz);
+    free(rank);
+    free(hit);
+    rc_eng_cells_free(&g);
+}
+
+static void test_zorder(void)
+{
+    zorder_case(8, 8, 8, 1);
+    zorder_case(5, 4, 3, 0);
+    zorder_case(1000, 1, 1, 2); /* a line: y and z have no bits, the code is x itself */
+    zorder_case(37, 23, 1, 0);
+}
+
 int main(void)
 {
+    RUN_TEST(test_zorder);
     RUN_TEST(test_random_churn);
     RUN_TEST(test_long_chain);
     RC_TEST_MAIN_END();
