@@ -245,23 +245,17 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
     rc_vec3 n0;
     int frame_normal = 0;
     if (bp >= 0 && s->narrow) {
-        /* The frame's normal at contact: ask it again with exactly the inputs it was
-         * given when this event was predicted (both stored states are unchanged, the
-         * counters say so), which reproduces its answer bit for bit -- also for frames
-         * (zmf) whose contact is not simultaneous in the table frame. RC_EOVERLAP: the
+        /* The frame's normal at contact: the one its call that predicted this event
+         * returned with the time (both stored states are unchanged since, the counters
+         * say so), so not asked again -- right also for frames (zmf) whose contact is
+         * not simultaneous in the table frame. NAN: the frame said RC_EOVERLAP, the
          * shape-change policy, resolved along the centre line and counted. */
-        const eng_ball *bi = &s->b[i], *bk = &s->b[bp];
-        double tref;
-        const rc_vec3 dx = pair_sep(bi, bk, &tref);
-        rc_toi_ball A = {rc_v3(0, 0, 0), bi->r, s->a[i].m, s->a[i].p};
-        rc_toi_ball B = {dx, bk->r, s->a[bp].m, s->a[bp].p};
-        rc_toi_contact out;
-        int st = s->def.frame->toi(&s->toi, &A, &B, s->ws, &out);
-        if (st == RC_OK) {
-            n0 = out.n;
-            frame_normal = 1;
-        } else if (st == RC_EOVERLAP) {
+        const rc_vec3 n = s->ev_n[i];
+        if (isnan(n.x)) {
             s->overlaps++;
+        } else {
+            n0 = n;
+            frame_normal = 1;
         }
     }
     if (member_of(s, &nm, i, T) < 0)
@@ -444,6 +438,8 @@ static void reorder(rc_sim *s)
     for (size_t i = 0; i < n; i++) {
         if (done[i])
             continue;
+        const rc_vec3 zero = rc_v3(0, 0, 0);
+        rc_vec3 cn = s->ev_n ? s->ev_n[i] : zero;
         eng_ball cb = s->b[i];
         eng_aux ca = s->a[i];
         eng_clock cc = s->clk[i];
@@ -455,6 +451,10 @@ static void reorder(rc_sim *s)
             eng_aux ta = s->a[to];
             eng_clock tcl = s->clk[to];
             uint32_t tid = s->id[to], tcnt = s->cnt[to];
+            const rc_vec3 tn = s->ev_n ? s->ev_n[to] : zero;
+            if (s->ev_n)
+                s->ev_n[to] = cn;
+            cn = tn;
             s->b[to] = cb;
             s->a[to] = ca;
             s->clk[to] = cc;

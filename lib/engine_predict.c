@@ -20,20 +20,21 @@
  * ball asks, and a continued run predicts what an uninterrupted one did. */
 static inline double pair_time_dx(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
                                   rc_vec3 dx, double d2, double tref, double best,
-                                  int use_narrow);
+                                  int use_narrow, rc_vec3 *n);
 
+/* (*n: the frame's contact normal when the narrow phase returns a time, NAN on overlap) */
 static inline double pair_time(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
-                               double best)
+                               double best, rc_vec3 *n)
 {
     double tref;
     rc_vec3 dx = pair_sep(bi, bk, &tref);
-    return pair_time_dx(s, bi, bk, dx, rc_v3_norm2(dx), tref, best, s->narrow);
+    return pair_time_dx(s, bi, bk, dx, rc_v3_norm2(dx), tref, best, s->narrow, n);
 }
 
 /* The same from the separation dx (and its square d2) at time tref. */
 __attribute__((always_inline)) static inline double pair_time_dx(
     const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx, double d2, double tref,
-    double best, int use_narrow)
+    double best, int use_narrow, rc_vec3 *n)
 {
     double ta = sphere_time_dx(s, bi, bk, dx, d2, tref, best);
     if (!(ta < best))
@@ -45,10 +46,13 @@ __attribute__((always_inline)) static inline double pair_time_dx(
         rc_toi_ball B = {dx, bk->r, ak->m, ak->p};
         rc_toi_contact out;
         int st = s->def.frame->toi(&s->toi, &A, &B, s->ws, &out);
-        if (st == RC_EOVERLAP)
+        if (st == RC_EOVERLAP) {
+            *n = rc_v3(NAN, NAN, NAN);
             return s->now; /* approaching bounding spheres: overlap policy, resolve now */
+        }
         if (st != RC_OK)
             return INFINITY;
+        *n = out.n;
         ta = tref + out.t;
         if (ta < s->now)
             ta = s->now;
@@ -295,26 +299,30 @@ static inline void axis_gap(const rc_sim *s, const eng_ball *bi, const eng_ball 
                             rc_vec3 dx, rc_vec3 dv, rc_vec3 u, double *gap, double *close)
 {
     const double vin = rc_v3_dot(bi->v, u), vkn = rc_v3_dot(bk->v, u), dn = rc_v3_dot(dx, u);
-    const double h = bi->r * sqrt(fmax(0.0, 1.0 - vin * vin * s->inv_c2)) +
-                     bk->r * sqrt(fmax(0.0, 1.0 - vkn * vkn * s->inv_c2));
+    /* (not fmax: a library call here; the same value, NAN included) */
+    const double ei = 1.0 - vin * vin * s->inv_c2, ek = 1.0 - vkn * vkn * s->inv_c2;
+    const double h = bi->r * sqrt(ei > 0.0 ? ei : 0.0) + bk->r * sqrt(ek > 0.0 ? ek : 0.0);
     *gap = fabs(dn) - h;
     *close = dn >= 0.0 ? -rc_v3_dot(dv, u) : rc_v3_dot(dv, u);
 }
 
 /* Separating axes for the table frame's shapes: separated along a fixed axis u by a gap g
  * closing at speed w (the shapes keep their form between collisions), they cannot touch
- * before g / w (never, if w <= 0). 1 if that is no earlier than `best` along the centre
- * line or either ball's direction of motion -- so the root finder need not be asked. The
- * margin AXIS_MARGIN (relative to ri + rk, far above the frame's touch_tol of 1e-12 and
- * round-off) keeps every pair the frame could still call touching. */
+ * before g / w (never, if w <= 0). The latest such time along the centre line and either
+ * ball's direction of motion, as an absolute time (-INFINITY: no axis separates them,
+ * INFINITY: never) -- a lower bound of the contact time, often well above the bounding
+ * spheres', by which the candidates are ordered and pruned. The margin AXIS_MARGIN
+ * (relative to ri + rk, far above the frame's touch_tol of 1e-12 and round-off) keeps
+ * every pair the frame could still call touching. */
 #define AXIS_MARGIN 1e-9
 
-static int axes_rule_out(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, double best)
+static double axes_bound(const rc_sim *s, const eng_ball *bi, const eng_ball *bk)
 {
     double tref;
     const rc_vec3 dx = pair_sep(bi, bk, &tref);
     const rc_vec3 dv = rc_v3_sub(bk->v, bi->v);
-    const double margin = AXIS_MARGIN * (bi->r + bk->r), horizon = best - tref;
+    const double margin = AXIS_MARGIN * (bi->r + bk->r);
+    double lb = -INFINITY;
     for (int q = 0; q < 3; q++) {
         const rc_vec3 u = q == 0 ? dx : (q == 1 ? bi->v : bk->v);
         const double u2 = rc_v3_norm2(u);
@@ -323,11 +331,14 @@ static int axes_rule_out(const rc_sim *s, const eng_ball *bi, const eng_ball *bk
         double gap, close;
         axis_gap(s, bi, bk, dx, dv, rc_v3_scale(1.0 / sqrt(u2), u), &gap, &close);
         gap -= margin;
-        /* gap > close * horizon, written so that horizon = inf and close <= 0 behave */
-        if (gap > 0.0 && (close <= 0.0 || gap > close * horizon))
-            return 1;
+        if (!(gap > 0.0))
+            continue;
+        if (!(close > 0.0))
+            return INFINITY; /* separated along u and not closing: never */
+        const double t = tref + gap / close;
+        lb = t > lb ? t : lb;
     }
-    return 0;
+    return lb;
 }
 
 
@@ -365,11 +376,14 @@ static int narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc
 }
 
 /* Contracted frames: the root finding is the cost, so first collect the neighbours whose
- * bounding spheres can touch before `best`, then ask the frame in order of sphere time and
- * stop as soon as the next sphere time is no earlier than the best contracted contact
- * (the contracted contact is never earlier than the bounding spheres'). */
+ * bounding spheres can touch before `best`, then ask the frame in order of a lower bound
+ * of the contracted contact (the bounding spheres', for the table frame also the
+ * separating axes') and stop as soon as the next bound is no earlier than the best
+ * contracted contact. Ordered by sphere time alone, the frame was asked 1.26 times per
+ * scan that asked it, by the tighter bound 1.07 times (bench_engine rel:3000); the first
+ * answer is then mostly the earliest, and later candidates are pruned by their bounds. */
 static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *best,
-                             int32_t *bp, const eng_check *chk)
+                             int32_t *bp, rc_vec3 *bn, const eng_check *chk)
 {
     rc_sim *s = (rc_sim *)cs; /* the candidate buffer is scratch */
     const eng_ball *bi = &s->b[i];
@@ -377,6 +391,7 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
     int32_t nb[NB_CAP];
     double t[NB_CAP];
     unsigned char near[NB_CAP];
+    const int table = s->def.frame == &rc_toi_frame_table;
     while (!w->done) {
         /* gather a chunk of neighbours ... */
         const size_t m = walk_gather(w, nb);
@@ -396,10 +411,12 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
                 size_t cap = s->cand_cap ? 2 * s->cand_cap : 64;
                 eng_cand *c = realloc(s->cand, cap * sizeof *c);
                 if (!c) { /* no memory: ask the frame at once */
-                    double tn = pair_time(s, bi, &s->b[kk], *best);
+                    rc_vec3 n;
+                    double tn = pair_time(s, bi, &s->b[kk], *best, &n);
                     if (tn < *best) {
                         *best = tn;
                         *bp = kk;
+                        *bn = n;
                     }
                     continue;
                 }
@@ -422,29 +439,53 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
         }
         s->cand[b] = c;
     }
-    const int table = s->def.frame == &rc_toi_frame_table;
-    for (size_t a = 0; a < nc; a++) {
-        if (!(s->cand[a].t < *best))
-            break;
-        if (table && axes_rule_out(s, bi, &s->b[s->cand[a].k], *best))
+    /* Best first, the bounds computed lazily: cand[0, nr) holds the candidates whose lower
+     * bound lb (sphere time, and the separating axes' for the table frame) is known, by
+     * (lb, k); cand[u, nc) the others, by sphere time. The next is refined while its
+     * sphere time could still put it first; else the frame is asked about the least lb. */
+    size_t u = 0, nr = 0;
+    for (;;) {
+        size_t rb = nr;
+        for (size_t q = 0; q < nr; q++)
+            if (rb == nr || s->cand[q].t < s->cand[rb].t ||
+                (s->cand[q].t == s->cand[rb].t && s->cand[q].k < s->cand[rb].k))
+                rb = q;
+        const double lr = rb < nr ? s->cand[rb].t : INFINITY;
+        if (u < nc && s->cand[u].t < *best && s->cand[u].t <= lr) {
+            eng_cand c = s->cand[u++];
+            if (table) {
+                const double ta = axes_bound(s, bi, &s->b[c.k]);
+                c.t = ta > c.t ? ta : c.t;
+            }
+            if (c.t < *best)
+                s->cand[nr++] = c;
             continue;
-        double t = pair_time(s, bi, &s->b[s->cand[a].k], *best);
+        }
+        if (!(lr < *best))
+            break;
+        const int32_t k = s->cand[rb].k;
+        s->cand[rb] = s->cand[--nr];
+        rc_vec3 n;
+        double t = pair_time(s, bi, &s->b[k], *best, &n);
         if (t < *best) {
             *best = t;
-            *bp = s->cand[a].k;
+            *bp = k;
+            *bn = n;
         }
     }
     return 0;
 }
 
-/* Scan the cells around c with offsets lo[d]..hi[d] (clipped to the grid). */
+/* Scan the cells around c with offsets lo[d]..hi[d] (clipped to the grid). *bn: the
+ * contact normal of a ball event found by a contracted frame. */
 static int scan_block(const rc_sim *s, int32_t i, const int c[3], const int lo[3],
-                      const int hi[3], double *best, int32_t *bp, const eng_check *chk)
+                      const int hi[3], double *best, int32_t *bp, rc_vec3 *bn,
+                      const eng_check *chk)
 {
     eng_walk w;
     walk_init(&w, s, i, c, lo, hi);
     if (s->narrow)
-        return scan_block_narrow(s, i, &w, best, bp, chk);
+        return scan_block_narrow(s, i, &w, best, bp, bn, chk);
     int32_t nb[NB_CAP];
     while (!w.done) {
         const size_t m = walk_gather(&w, nb);
@@ -474,12 +515,14 @@ static void cross_event(rc_sim *s, int32_t i, const int c[3])
     s->a[i].cross_code = code;
 }
 
-static inline void store_event(rc_sim *s, int32_t i, double best, int32_t bp)
+static inline void store_event(rc_sim *s, int32_t i, double best, int32_t bp, rc_vec3 bn)
 {
     eng_aux *a = &s->a[i];
     a->ev_t = best;
     a->ev_partner = bp;
     a->ev_pcount = bp >= 0 ? s->cnt[bp] : 0;
+    if (s->ev_n)
+        s->ev_n[i] = bn;
 }
 
 
@@ -488,12 +531,13 @@ void rc_eng_predict(rc_sim *s, int32_t i, int update_heap)
 {
     double best = INFINITY;
     int32_t bp = ENG_NONE;
+    rc_vec3 bn = rc_v3(0, 0, 0);
     int c[3];
     cell_coords(&s->g, s->a[i].cell, c);
     wall_event(s, i, boundary_dims(s, c), &best, &bp);
     static const int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
-    scan_block(s, i, c, lo, hi, &best, &bp, NULL);
-    store_event(s, i, best, bp);
+    scan_block(s, i, c, lo, hi, &best, &bp, &bn, NULL);
+    store_event(s, i, best, bp, bn);
     cross_event(s, i, c);
     if (update_heap)
         rc_eng_queue_update(&s->q, (uint32_t)i, key_of(&s->a[i]));
@@ -528,11 +572,12 @@ int rc_eng_predict_checked_narrow(rc_sim *s, int32_t i, const eng_check *chk)
     }
     double best = INFINITY;
     int32_t bp = ENG_NONE;
+    rc_vec3 bn = rc_v3(0, 0, 0);
     wall_event(s, i, walls, &best, &bp);
     static const int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
-    if (scan_block(s, i, c, lo, hi, &best, &bp, check ? chk : NULL))
+    if (scan_block(s, i, c, lo, hi, &best, &bp, &bn, check ? chk : NULL))
         return 1;
-    store_event(s, i, best, bp);
+    store_event(s, i, best, bp, bn);
     cross_event(s, i, c);
     return 0;
 }
@@ -575,7 +620,7 @@ int rc_eng_predict_checked(rc_sim *s, int32_t i, rc_vec3 vold, int32_t partner, 
         if (test_list(s, i, nb, m, &best, &bp, check ? &vold : NULL, partner, T, 1))
             return 1;
     }
-    store_event(s, i, best, bp);
+    store_event(s, i, best, bp, rc_v3(0, 0, 0));
     cross_event(s, i, c);
     return 0;
 }
@@ -597,15 +642,16 @@ void rc_eng_cross(rc_sim *s, int32_t i)
     }
     double best = a->ev_t;
     int32_t bp = a->ev_partner;
+    rc_vec3 bn = s->ev_n ? s->ev_n[i] : rc_v3(0, 0, 0);
     int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
     lo[d] = hi[d] = dir;
     if (s->def.dim == 2)
         lo[2] = hi[2] = 0;
-    scan_block(s, i, c, lo, hi, &best, &bp, NULL);
+    scan_block(s, i, c, lo, hi, &best, &bp, &bn, NULL);
     if (c[d] == 0 || c[d] == s->g.n[d] - 1) /* a boundary cell: its wall is now in reach */
         wall_event(s, i, 1u << d, &best, &bp);
     if (bp != a->ev_partner || best != a->ev_t)
-        store_event(s, i, best, bp);
+        store_event(s, i, best, bp, bn);
     cross_event(s, i, c);
     rc_eng_queue_update(&s->q, (uint32_t)i, key_of(a));
 }

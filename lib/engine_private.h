@@ -163,6 +163,11 @@ struct rc_sim {
     /* collisions per ball so far: an event naming a ball whose counter moved is stale.
      * Its own compact array: read for every popped event, it stays in cache. */
     uint32_t *cnt;
+    /* contracted frames only (else NULL): per ball, the frame's contact normal of its
+     * scheduled ball event, from the same call that predicted the event's time (NAN: the
+     * frame found the shapes overlapping), so that resolving the event need not ask the
+     * frame again */
+    rc_vec3 *ev_n;
     eng_queue q;
     eng_cells g;
     rc_collision_params prm;

@@ -125,6 +125,8 @@ static void release_balls(rc_sim *s)
     free(s->slot);
     free(s->cnt);
     s->cnt = NULL;
+    free(s->ev_n);
+    s->ev_n = NULL;
     s->b = NULL;
     s->a = NULL;
     s->id = NULL;
@@ -306,6 +308,10 @@ static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, i
     s->cnt = calloc(n ? n : 1, sizeof *s->cnt);
     s->id = malloc((n ? n : 1) * sizeof *s->id);
     s->slot = malloc((n ? n : 1) * sizeof *s->slot);
+    if (s->narrow && !(s->ev_n = malloc((n ? n : 1) * sizeof *s->ev_n))) {
+        st = RC_ENOMEM;
+        goto fail;
+    }
     int32_t *cellof = malloc((n ? n : 1) * sizeof *cellof);
     size_t *start = calloc(s->g.ncells + 1, sizeof *start);
     int32_t *rank = malloc(s->g.ncells * sizeof *rank);
