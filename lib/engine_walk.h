@@ -34,21 +34,26 @@ static inline void walk_init(eng_walk *w, const rc_sim *s, int32_t skip, const i
                              const int lo[3], const int hi[3])
 {
     const eng_cells *g = &s->g;
-    int a[3], b[3];
-    for (int d = 0; d < 3; d++) {
-        a[d] = c[d] + lo[d] > 0 ? c[d] + lo[d] : 0;
-        b[d] = c[d] + hi[d] < g->n[d] ? c[d] + hi[d] : g->n[d] - 1;
-    }
+    const int x0 = c[0] + lo[0] > 0 ? c[0] + lo[0] : 0;
+    const int x1 = c[0] + hi[0] < g->n[0] ? c[0] + hi[0] : g->n[0] - 1;
+    const int y0 = c[1] + lo[1] > 0 ? c[1] + lo[1] : 0;
+    const int y1 = c[1] + hi[1] < g->n[1] ? c[1] + hi[1] : g->n[1] - 1;
+    const int z0 = c[2] + lo[2] > 0 ? c[2] + lo[2] : 0;
+    const int z1 = c[2] + hi[2] < g->n[2] ? c[2] + hi[2] : g->n[2] - 1;
     w->s = s;
     w->skip = skip;
     w->nrows = 0;
-    w->nslots = (b[0] - a[0] + 1) * ENG_CELL_CAP;
+    w->nslots = (x1 - x0 + 1) * ENG_CELL_CAP;
     /* (an empty block: a crossing into a boundary cell has no slab beyond it) */
-    if (w->nslots > 0)
-        for (int z = a[2]; z <= b[2]; z++)
-            for (int y = a[1]; y <= b[1]; y++)
-                w->row[w->nrows++] =
-                    (int32_t)((a[0] + g->n[0] * (y + g->n[1] * z)) * ENG_CELL_CAP);
+    if (w->nslots > 0) {
+        const int32_t sy = g->n[0] * ENG_CELL_CAP, sz = sy * g->n[1];
+        int32_t plane = (x0 + g->n[0] * (y0 + g->n[1] * z0)) * ENG_CELL_CAP;
+        for (int z = z0; z <= z1; z++, plane += sz) {
+            int32_t row = plane;
+            for (int y = y0; y <= y1; y++, row += sy)
+                w->row[w->nrows++] = row;
+        }
+    }
     w->nchain = w->ci = 0;
     w->k = -1;
     w->rows_done = w->done = 0;
