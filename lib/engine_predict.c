@@ -168,9 +168,10 @@ static inline size_t pad_lanes(int32_t *nb, size_t m, int32_t i)
     return m4;
 }
 
-/* (three: a compile-time constant at each call, so 2-D gets its own loop without z)
- * Only the lanes with a time, or with a proximity flag while checking, are visited, in
- * lane order: a lane with neither can change nothing. */
+/* (three, latest: compile-time constants at each call, so 2-D gets its own loop without
+ * z.) The earliest time is taken lane by lane without a branch (a lane without a time
+ * holds INFINITY; the padding lanes, ball i itself, too); only when checking, and a lane
+ * of the chunk is near, are the lanes visited one by one. */
 __attribute__((target("avx2"), always_inline)) static inline int test_list_avx2_dim(
     const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *best, int32_t *bp,
     const rc_vec3 *vold, int32_t partner, double T, const int three, const int latest)
@@ -185,16 +186,20 @@ __attribute__((target("avx2"), always_inline)) static inline int test_list_avx2_
                                       &s->b[nb[j + 3]]};
         double t[4];
         int nears;
-        unsigned lanes = (unsigned)pair_sphere_x4(s, bi, k, bt, s->def.sim_tol, t, &nears, three, latest);
-        lanes |= check ? (unsigned)nears : 0u;
-        if (j + 4 > m)
-            lanes &= (1u << (m - j)) - 1u;
-        while (lanes) {
-            const int l = __builtin_ctz(lanes);
-            lanes &= lanes - 1u;
-            if (visit(s, bi, nb[j + (size_t)l], t[l], nears >> l & 1, check, partner, vold, T,
-                      &bt, &bk))
-                return 1;
+        pair_sphere_x4(s, bi, k, bt, s->def.sim_tol, t, &nears, three, latest);
+        const size_t left = m - j < 4 ? m - j : 4;
+        const unsigned near_in = (unsigned)nears & ((1u << left) - 1u);
+        if (check && near_in) {
+            for (size_t l = 0; l < left; l++)
+                if (visit(s, bi, nb[j + l], t[l], near_in >> l & 1, check, partner, vold, T,
+                          &bt, &bk))
+                    return 1;
+            continue;
+        }
+        for (int l = 0; l < 4; l++) {
+            const int take = t[l] < bt;
+            bt = take ? t[l] : bt;
+            bk = take ? nb[j + (size_t)l] : bk;
         }
     }
     *best = bt;
