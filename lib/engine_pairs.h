@@ -65,7 +65,7 @@ static inline double pair_sphere_scalar(const rc_sim *s, const eng_ball *bi, con
     return sphere_time_dx(s, bi, bk, dx, d2, tref, best);
 }
 
-#if defined(__x86_64__) && defined(__GNUC__)
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(RELCOL_NO_SIMD)
 #define ENG_HAVE_AVX2 1
 #include <immintrin.h>
 

@@ -73,7 +73,7 @@ static inline size_t gather_slots_scalar(eng_walk *w, const int32_t *sl, int ns,
     return m;
 }
 
-#if defined(__x86_64__) && defined(__GNUC__)
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(RELCOL_NO_SIMD)
 #include <immintrin.h>
 
 /* pshufb controls that move the 32-bit lanes set in a 4-bit mask to the front */
