@@ -38,6 +38,12 @@ int rc_eng_cells_init(eng_cells *g, int dim, rc_vec3 box, double min_edge, size_
         g->inv_w[d] = 1.0 / g->w[d];
         g->ncells *= (size_t)g->n[d];
     }
+    /* slot indices are int32 (rows are computed in int32 by the walk) */
+    if (g->ncells > ((size_t)INT32_MAX - ENG_SLOT_PAD) / ENG_CELL_CAP) {
+        g->slot = NULL;
+        g->next = NULL;
+        return RC_ENOMEM;
+    }
     g->slot = malloc((g->ncells * ENG_CELL_CAP + ENG_SLOT_PAD) * sizeof *g->slot);
     g->next = malloc((nballs ? nballs : 1) * sizeof *g->next);
     if (!g->slot || !g->next) {
