@@ -53,6 +53,62 @@ static void run_frame(const char *name, double eps)
     rc_sim_free(&s);
 }
 
+/* Contracted shapes inside bounding spheres that already overlap and part can still meet:
+ * a flat shape's flank sweeps into its neighbour while the centres move apart. Pairs of
+ * table-frame discs (c = 1, r = 1/2, m = 1, disjoint shapes, |d| < 1, d.w > 0) found by a
+ * random search (scratch-h2/find_case.c); the frame predicts each contact at t_c, and the
+ * engine must collide them there (it used to let them pass through each other). */
+static void test_parting_bounding_spheres(void)
+{
+    static const double cs[][6] = {
+        /* p0x, p0y, p1x, p1y, dx, dy */
+        {-1.2, 0.6, -2.1, 3.0, 0.56, -0.11},  {0.4, 1.6, 1.4, 2.7, 0.21, -0.53},
+        {-2.1, -0.5, -2.5, -0.4, 0.32, 0.41}, {-2.3, -1.9, -2.9, -2.6, 0.61, -0.32},
+        {-3.0, -2.6, -1.4, -1.4, 0.27, -0.78}, {-1.9, 2.9, -1.0, 1.0, -0.62, 0.06},
+        {-2.5, -2.1, -1.4, -1.3, 0.38, -0.8}, {1.3, 2.8, 1.2, 1.6, 0.46, 0.19},
+    };
+    rc_toi_params prm = rc_toi_params_default();
+    prm.inv_c2 = 1.0;
+    rc_toi_workspace *ws = rc_toi_workspace_alloc();
+    ENSURE(ws != NULL);
+    if (!ws)
+        return;
+    for (size_t q = 0; q < sizeof cs / sizeof cs[0]; q++) {
+        const double *c = cs[q];
+        rc_sim_ball b[2] = {{rc_v3(10.0, 10.0, 0.0), rc_v3(c[0], c[1], 0.0), 0.5, 1.0, 0.0, 0, 0.0},
+                            {rc_v3(10.0 + c[4], 10.0 + c[5], 0.0), rc_v3(c[2], c[3], 0.0), 0.5,
+                             1.0, 0.0, 0, 0.0}};
+        /* the premise: centres parting, bounding circles overlapping, shapes to meet */
+        const rc_vec3 v0 = rc_velocity(1.0, b[0].p, 1.0), v1 = rc_velocity(1.0, b[1].p, 1.0);
+        const rc_vec3 d = rc_v3_sub(b[1].x, b[0].x);
+        ENSURE(rc_v3_dot(d, rc_v3_sub(v1, v0)) > 0.0 && rc_v3_norm(d) < 1.0);
+        rc_toi_ball A = {b[0].x, 0.5, 1.0, b[0].p}, B = {b[1].x, 0.5, 1.0, b[1].p};
+        rc_toi_contact ct;
+        ENSURE(rc_toi(&rc_toi_frame_table, &prm, &A, &B, ws, &ct) == RC_OK);
+        rc_sim_def def = rc_sim_def_default();
+        def.dim = 2;
+        def.box = rc_v3(20.0, 20.0, 0.0); /* walls >= 9 away: no wall before t = 9 */
+        def.c = 1.0;
+        def.frame = &rc_toi_frame_table;
+        rc_sim *s = NULL;
+        ENSURE(rc_sim_create(&def, &s) == RC_OK);
+        ENSURE(rc_sim_set_balls(s, 2, b, NULL) == RC_OK);
+        /* the event is at t_c to round-off of the frame's time (touch_tol 1e-12 scale):
+         * 1e-9 relative brackets it */
+        rc_sim_diag dg;
+        ENSURE(rc_sim_advance(s, ct.t * (1.0 - 1e-9), 0) == RC_OK);
+        rc_sim_diagnostics(s, &dg);
+        ENSURE_MSG(dg.collisions == 0, "case %zu: collided before t_c", q);
+        ENSURE(rc_sim_advance(s, ct.t * (1.0 + 1e-9), 0) == RC_OK);
+        rc_sim_diagnostics(s, &dg);
+        ENSURE_MSG(dg.collisions == 1 && dg.events[RC_SIM_EV_BALL] == 1 && dg.overlaps == 0,
+                   "case %zu: %llu collisions at t_c = %.6g (a contact passed through)", q,
+                   (unsigned long long)dg.collisions, ct.t);
+        rc_sim_free(&s);
+    }
+    rc_toi_workspace_free(&ws);
+}
+
 static void test_table_elastic(void) { run_frame("table", 1.0); }
 static void test_table_inelastic(void) { run_frame("table", 0.8); }
 static void test_zmf_elastic(void) { run_frame("zmf", 1.0); }
@@ -91,6 +147,7 @@ static void test_classical_limit(void)
 
 int main(void)
 {
+    RUN_TEST(test_parting_bounding_spheres);
     RUN_TEST(test_table_elastic);
     RUN_TEST(test_table_inelastic);
     RUN_TEST(test_zmf_elastic);
