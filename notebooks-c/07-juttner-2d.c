@@ -267,12 +267,10 @@ is **not** Jüttner: `⟨p·v⟩/2` reads about 1.5 % below the energy's θ, and
 histogram has up to ~30 % too many slow and too many fast discs and ~20 % too few in
 between. The deviation does not change with the packing fraction (measured from 0.05 to
 0.5 with `relcol-gas`), so it is not an excluded-volume effect but one of the collision
-kernel. A likely cause, not proven here: a contracted disc changes shape the moment its
-speed changes, so the time-reversed collision is not a collision of the same shapes (the
-engine counts the overlaps this creates), and without micro-reversibility nothing forces
-the Jüttner law; contact found in the pair's zero-momentum frame (`zmf`) deviates too,
-less. An engine-side check (collision rate against the contracted shapes' kinematic
-cross-section) would tell a model property from a narrow-phase problem.
+kernel. The cause is the model, not the engine: notebook 08 samples the collision kernel
+of the contracted shapes alone (no positions, no contact detection) and finds the same
+deficit — their curvature depends on the velocities a collision changes, so a collision
+and its reverse have different rates, and detailed balance fails.
 The figure divides both equilibrium
 histograms (t = 40 … 200) by the Jüttner law at each run's own `⟨p·v⟩` temperature.
 @output contracted
