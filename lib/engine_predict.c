@@ -35,15 +35,25 @@ __attribute__((always_inline)) static inline double pair_time(const rc_sim *s,
     return pair_time_dx(s, bi, bk, dx, rc_v3_norm2(dx), tref, best, s->narrow, n);
 }
 
-/* |u| times the support of ball b's table-frame shape along u: r sqrt(|u|^2 - (u.v)^2/c^2),
+/* A ball's table-frame shape for support_along: r / M, m^2, p. */
+typedef struct eng_shape {
+    double rM, m2;
+    rc_vec3 p;
+} eng_shape;
+
+static inline eng_shape shape_of(const rc_sim *s, const eng_ball *b)
+{
+    const eng_aux *a = &s->a[b - s->b];
+    return (eng_shape){b->r / eng_mass_rel(a->m, a->p, s->inv_c2), a->m * a->m, a->p};
+}
+
+/* |u| times the support of a table-frame shape along u: r sqrt(|u|^2 - (u.v)^2/c^2),
  * written as (r/M) sqrt(m^2 |u|^2 + |p x u|^2 / c^2), which keeps its precision as
  * v -> c (the first form cancels: at gamma ~ 1e6 it would be wrong by more than the
  * margins its callers use). */
-static inline double support_along(const rc_sim *s, const eng_ball *b, rc_vec3 u, double u2)
+static inline double support_along(const rc_sim *s, const eng_shape *h, rc_vec3 u, double u2)
 {
-    const eng_aux *a = &s->a[b - s->b];
-    const double M = eng_mass_rel(a->m, a->p, s->inv_c2);
-    return b->r / M * sqrt(a->m * a->m * u2 + rc_v3_norm2(rc_v3_cross(a->p, u)) * s->inv_c2);
+    return h->rM * sqrt(h->m2 * u2 + rc_v3_norm2(rc_v3_cross(h->p, u)) * s->inv_c2);
 }
 
 /* Distance from a ball's centre to the edge of its table-frame shape (contracted by
@@ -78,7 +88,8 @@ static inline int parting_settled(const rc_sim *s, const eng_ball *bi, const eng
     if (!(d2 > 0.0))
         return 1; /* coincident centres: overlapping */
     /* the supports times d (no square root of d2 for the common case) */
-    const double hi = support_along(s, bi, dx, d2), hk = support_along(s, bk, dx, d2);
+    const eng_shape shi = shape_of(s, bi), shk = shape_of(s, bk);
+    const double hi = support_along(s, &shi, dx, d2), hk = support_along(s, &shk, dx, d2);
     const double h = hi + hk;
     /* d - h_i(u) - h_k(u) > margin d: apart along the centre line, and never meeting if
      * not closing along it (a pair that approaches too slowly to count as approaching
@@ -530,11 +541,11 @@ static void sphere_lanes(const rc_sim *s, int32_t i, int32_t *nb, size_t m, doub
 /* Gap along unit axis u between table-frame shapes (contracted along their velocities,
  * support r sqrt(1 - (v.u)^2/c^2), support_along) at separation dx, and its closing
  * speed. */
-static inline void axis_gap(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
+static inline void axis_gap(const rc_sim *s, const eng_shape *hi, const eng_shape *hk,
                             rc_vec3 dx, rc_vec3 dv, rc_vec3 u, double *gap, double *close)
 {
     const double dn = rc_v3_dot(dx, u);
-    const double h = support_along(s, bi, u, 1.0) + support_along(s, bk, u, 1.0);
+    const double h = support_along(s, hi, u, 1.0) + support_along(s, hk, u, 1.0);
     *gap = fabs(dn) - h;
     *close = dn >= 0.0 ? -rc_v3_dot(dv, u) : rc_v3_dot(dv, u);
 }
@@ -555,6 +566,7 @@ static double axes_bound(const rc_sim *s, const eng_ball *bi, const eng_ball *bk
     const rc_vec3 dx = pair_sep(bi, bk, &tref);
     const rc_vec3 dv = rc_v3_sub(bk->v, bi->v);
     const double margin = AXIS_MARGIN * (bi->r + bk->r);
+    const eng_shape hi = shape_of(s, bi), hk = shape_of(s, bk);
     double lb = -INFINITY;
     for (int q = 0; q < 3; q++) {
         const rc_vec3 u = q == 0 ? dx : (q == 1 ? bi->v : bk->v);
@@ -562,7 +574,7 @@ static double axes_bound(const rc_sim *s, const eng_ball *bi, const eng_ball *bk
         if (!(u2 > 0.0))
             continue;
         double gap, close;
-        axis_gap(s, bi, bk, dx, dv, rc_v3_scale(1.0 / sqrt(u2), u), &gap, &close);
+        axis_gap(s, &hi, &hk, dx, dv, rc_v3_scale(1.0 / sqrt(u2), u), &gap, &close);
         gap -= margin;
         if (!(gap > 0.0))
             continue;
@@ -593,10 +605,10 @@ static int narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc
     const rc_vec3 n = rc_v3_scale(1.0 / sqrt(d2), dx);
     /* supports along n: ball i's old shape (its state before the collision), k's as is,
      * in support_along's cancellation-free form */
-    const double Mo = eng_mass_rel(chk->old.m, chk->old.p, s->inv_c2);
-    const double hsum = bi->r / Mo * sqrt(chk->old.m * chk->old.m +
-                                          rc_v3_norm2(rc_v3_cross(chk->old.p, n)) * s->inv_c2) +
-                        support_along(s, bk, n, 1.0);
+    const eng_shape ho = {bi->r / eng_mass_rel(chk->old.m, chk->old.p, s->inv_c2),
+                          chk->old.m * chk->old.m, chk->old.p};
+    const eng_shape hk = shape_of(s, bk);
+    const double hsum = support_along(s, &ho, n, 1.0) + support_along(s, &hk, n, 1.0);
     if (d2 > hsum * hsum * (1.0 + stol) * (1.0 + stol) * (1.0 + 1e-12))
         return 0;
     const eng_aux *ak = &s->a[bk - s->b];
