@@ -80,16 +80,16 @@ static inline double table_radius_along(const rc_sim *s, const eng_ball *b, rc_v
  * 1 if settled (no event), 0 if the frame must look. Other frames: 0. *lam (if not
  * NULL, and 0 returned): h_i(u) / (h_i(u) + h_k(u)), the Perram-Wertheim lambda if the
  * shapes touched along u (parting_pw's start). */
-static inline int parting_settled(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
-                                  rc_vec3 dx, double d2, double *lam)
+static inline int parting_settled(const rc_sim *s, const eng_shape *shi, const eng_ball *bi,
+                                  const eng_ball *bk, rc_vec3 dx, double d2, double *lam)
 {
     if (s->def.frame != &rc_toi_frame_table)
         return 0;
     if (!(d2 > 0.0))
         return 1; /* coincident centres: overlapping */
     /* the supports times d (no square root of d2 for the common case) */
-    const eng_shape shi = shape_of(s, bi), shk = shape_of(s, bk);
-    const double hi = support_along(s, &shi, dx, d2), hk = support_along(s, &shk, dx, d2);
+    const eng_shape shk = shape_of(s, bk);
+    const double hi = support_along(s, shi, dx, d2), hk = support_along(s, &shk, dx, d2);
     const double h = hi + hk;
     /* d - h_i(u) - h_k(u) > margin d: apart along the centre line, and never meeting if
      * not closing along it (a pair that approaches too slowly to count as approaching
@@ -231,11 +231,12 @@ static int parting_pw(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, r
 /* 1 if the frame must look at a pair whose bounding spheres overlap while not bound to
  * touch before best (parting_settled, then parting_pw for the table frame), 0 if it
  * would give no event before best. */
-static inline int parting_open(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
-                               rc_vec3 dx, double d2, double tref, double best)
+static inline int parting_open(const rc_sim *s, const eng_shape *shi, const eng_ball *bi,
+                               const eng_ball *bk, rc_vec3 dx, double d2, double tref,
+                               double best)
 {
     double lam = 0.5;
-    if (parting_settled(s, bi, bk, dx, d2, &lam))
+    if (parting_settled(s, shi, bi, bk, dx, d2, &lam))
         return 0;
     if (s->def.frame == &rc_toi_frame_table && parting_pw(s, bi, bk, dx, d2, tref, best, lam))
         return 0;
@@ -244,13 +245,14 @@ static inline int parting_open(const rc_sim *s, const eng_ball *bi, const eng_ba
 
 /* parting_open for a neighbour without a bounding-sphere time (scan_block_narrow; out of
  * line, as the loop rarely needs it) */
-__attribute__((noinline)) static int parting_candidate(const rc_sim *s, const eng_ball *bi,
-                                                       const eng_ball *bk, double best)
+__attribute__((noinline)) static int parting_candidate(const rc_sim *s, const eng_shape *shi,
+                                                       const eng_ball *bi, const eng_ball *bk,
+                                                       double best)
 {
     double tref;
     const rc_vec3 dx = pair_sep(bi, bk, &tref);
     const double d2 = rc_v3_norm2(dx), sig = bi->r + bk->r;
-    return d2 <= sig * sig && parting_open(s, bi, bk, dx, d2, tref, best);
+    return d2 <= sig * sig && parting_open(s, shi, bi, bk, dx, d2, tref, best);
 }
 
 /* The same from the separation dx (and its square d2) at time tref. */
@@ -265,14 +267,15 @@ __attribute__((always_inline)) static inline double pair_time_dx(
          * contracted shapes that meet later: a flat shape's flank sweeps into its
          * neighbour while the centres part. Such a pair goes to the narrow phase with
          * the lower bound now (missed before: ~1 contact in 3000 in a table-frame gas at
-         * theta = 0.75 passed through, scratch-h2/contact_check.c). */
+         * theta = 0.75 passed through; test_engine_audit). */
         const double sig = bi->r + bk->r;
         if (!use_narrow || !(d2 <= sig * sig))
             return INFINITY;
         ta = tref > s->now ? tref : s->now;
         if (!(ta < best))
             return INFINITY;
-        if (!parting_open(s, bi, bk, dx, d2, tref, best))
+        const eng_shape shi = shape_of(s, bi);
+        if (!parting_open(s, &shi, bi, bk, dx, d2, tref, best))
             return INFINITY;
         parting = 1;
     }
@@ -560,13 +563,14 @@ static inline void axis_gap(const rc_sim *s, const eng_shape *hi, const eng_shap
  * every pair the frame could still call touching. */
 #define AXIS_MARGIN 1e-9
 
-static double axes_bound(const rc_sim *s, const eng_ball *bi, const eng_ball *bk)
+static double axes_bound(const rc_sim *s, const eng_shape *shi, const eng_ball *bi,
+                         const eng_ball *bk)
 {
     double tref;
     const rc_vec3 dx = pair_sep(bi, bk, &tref);
     const rc_vec3 dv = rc_v3_sub(bk->v, bi->v);
     const double margin = AXIS_MARGIN * (bi->r + bk->r);
-    const eng_shape hi = shape_of(s, bi), hk = shape_of(s, bk);
+    const eng_shape hk = shape_of(s, bk);
     double lb = -INFINITY;
     for (int q = 0; q < 3; q++) {
         const rc_vec3 u = q == 0 ? dx : (q == 1 ? bi->v : bk->v);
@@ -574,7 +578,7 @@ static double axes_bound(const rc_sim *s, const eng_ball *bi, const eng_ball *bk
         if (!(u2 > 0.0))
             continue;
         double gap, close;
-        axis_gap(s, &hi, &hk, dx, dv, rc_v3_scale(1.0 / sqrt(u2), u), &gap, &close);
+        axis_gap(s, shi, &hk, dx, dv, rc_v3_scale(1.0 / sqrt(u2), u), &gap, &close);
         gap -= margin;
         if (!(gap > 0.0))
             continue;
@@ -640,6 +644,7 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
     double t[NB_CAP];
     unsigned char near[NB_CAP];
     const int table = s->def.frame == &rc_toi_frame_table;
+    const eng_shape shi = shape_of(s, bi); /* (the scanning ball's, for every pair) */
     while (!w->done) {
         /* gather a chunk of neighbours ... */
         const size_t m = walk_gather(w, nb);
@@ -657,7 +662,7 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
             /* near and no bounding-sphere time: overlapping bounding spheres that part
              * may still hold shapes that meet (pair_time_dx); now is their lower bound */
             if (!(tj < *best)) {
-                if (!near[j] || !parting_candidate(s, bi, &s->b[kk], *best))
+                if (!near[j] || !parting_candidate(s, &shi, bi, &s->b[kk], *best))
                     continue;
                 tj = s->now;
             }
@@ -710,7 +715,7 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
         if (u < nc && s->cand[u].t < *best && s->cand[u].t <= lr) {
             eng_cand c = s->cand[u++];
             if (table) {
-                const double ta = axes_bound(s, bi, &s->b[c.k]);
+                const double ta = axes_bound(s, &shi, bi, &s->b[c.k]);
                 c.t = ta > c.t ? ta : c.t;
             }
             if (c.t < *best)
