@@ -56,7 +56,8 @@ static void run_frame(const char *name, double eps)
 /* Contracted shapes inside bounding spheres that already overlap and part can still meet:
  * a flat shape's flank sweeps into its neighbour while the centres move apart. Pairs of
  * table-frame discs (c = 1, r = 1/2, m = 1, disjoint shapes, |d| < 1, d.w > 0) found by a
- * random search (scratch-h2/find_case.c); the frame predicts each contact at t_c, and the
+ * random search over such pairs (discs with random momenta and separations, kept when the
+ * frame predicts a contact); the frame predicts each contact at t_c, and the
  * engine must collide them there (it used to let them pass through each other). */
 static void test_parting_bounding_spheres(void)
 {
