@@ -38,6 +38,8 @@ changes"; the simulation below shows it is enough to produce the whole deviation
 #include <stdio.h>
 #include <stdlib.h>
 
+#include <gsl/gsl_rng.h>
+
 #include "nb.h"
 #include "relcol/relcol.h"
 
@@ -47,17 +49,8 @@ changes"; the simulation below shows it is enough to produce the whole deviation
 #define NBIN 24  /* histogram of gamma - 1 in bins of BIN_W */
 #define BIN_W 0.25
 
-typedef struct rng {
-    uint64_t s;
-} rng;
-
-static double uniform(rng *g)
-{
-    uint64_t z = (g->s += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return (double)((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
-}
+/* uniform on [0, 1): GSL's Mersenne twister */
+static double uniform(gsl_rng *g) { return gsl_rng_uniform(g); }
 
 /* Radius of curvature of a disc's table-frame shape (c = 1) at outward normal n. */
 static double rho(const rc_particle *a, rc_vec3 n, int contracted)
@@ -87,12 +80,13 @@ static double juttner_sf(double t, double x) { return (x + t) * exp(-(x - 1.0) /
 /* Kac's model: `per` accepted collisions per disc after 50 per disc to relax. */
 static result kac(int contracted, double per, uint64_t seed)
 {
-    rng g = {seed};
+    gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(g, (unsigned long)seed);
     rc_particle *b = malloc(N * sizeof *b);
     const double g0 = (1.0 + 2.0 * THETA + 2.0 * THETA * THETA) / (1.0 + THETA);
     const double p0 = sqrt(g0 * g0 - 1.0);
     for (size_t i = 0; i < N; i += 2) { /* pairs of opposite momenta: zero total */
-        const double phi = 2.0 * M_PI * uniform(&g);
+        const double phi = 2.0 * M_PI * uniform(g);
         b[i] = (rc_particle){1.0, rc_v3(p0 * cos(phi), p0 * sin(phi), 0.0)};
         b[i + 1] = (rc_particle){1.0, rc_v3(-p0 * cos(phi), -p0 * sin(phi), 0.0)};
     }
@@ -111,8 +105,8 @@ static result kac(int contracted, double per, uint64_t seed)
     uint64_t done = 0, trials = 0;
     int over = 0;
     while (done < total) {
-        const size_t i = (size_t)(uniform(&g) * N), j = (size_t)(uniform(&g) * N);
-        const double phi = 2.0 * M_PI * uniform(&g);
+        const size_t i = (size_t)(uniform(g) * N), j = (size_t)(uniform(g) * N);
+        const double phi = 2.0 * M_PI * uniform(g);
         trials++;
         if (done > relax && trials % (100 * N) == 0) { /* a snapshot */
             double spv = 0.0, sg = 0.0;
@@ -140,7 +134,7 @@ static result kac(int contracted, double per, uint64_t seed)
             continue;
         const double W = wn * (rho(&b[i], n, contracted) + rho(&b[j], n, contracted));
         over |= W > w_cap;
-        if (uniform(&g) * w_cap >= W)
+        if (uniform(g) * w_cap >= W)
             continue;
         rc_particle a = b[i], c = b[j];
         if (rc_law_zmf.collide(&prm, &a, &c, n) != RC_OK)
@@ -150,6 +144,7 @@ static result kac(int contracted, double per, uint64_t seed)
         done++;
     }
     free(b);
+    gsl_rng_free(g);
     const double mpv = s_pv / snaps;
     res.th_pv = mpv / 2.0;
     res.se_pv = sqrt(fmax(0.0, s_pv2 / snaps - mpv * mpv) / snaps) / 2.0;

@@ -119,6 +119,19 @@ static double interleaved_ratio(rc_sim *a, rc_sim *b, uint64_t chunk_a, uint64_t
     return (tb / (double)cb) / (ta / (double)ca);
 }
 
+/* Time per collision at N = n against N = 1e4 (3-D, packing 0.45), interleaved; `label`
+ * names n, `note` ends the line. */
+static void scaling(size_t n, uint64_t chunk, int rounds, const char *label, const char *note)
+{
+    rc_sim *s4 = make(3, 10000, 0.45, INFINITY, NULL);
+    rc_sim *sn = make(3, n, 0.45, INFINITY, NULL);
+    if (s4 && sn)
+        printf("time per collision N %s / N 1e4: %.2f (interleaved%s)\n", label,
+               interleaved_ratio(s4, sn, chunk, chunk, rounds), note);
+    rc_sim_free(&s4);
+    rc_sim_free(&sn);
+}
+
 int main(int argc, char **argv)
 {
     const char *mode = argc > 1 ? argv[1] : "quick";
@@ -174,23 +187,8 @@ int main(int argc, char **argv)
     printf("bytes per ball: %.1f (target <= 200); with a contracted frame %.1f (its contact "
            "normals)\n", a.bytes, rt.bytes);
     printf("time per collision N 1e5 / N 1e4: %.2f (sequential runs)\n", a.rate / b.rate);
-    {
-        rc_sim *s4 = make(3, 10000, 0.45, INFINITY, NULL);
-        rc_sim *s5 = make(3, 100000, 0.45, INFINITY, NULL);
-        if (s4 && s5)
-            printf("time per collision N 1e5 / N 1e4: %.2f (interleaved)\n",
-                   interleaved_ratio(s4, s5, 50000, 50000, 20));
-        rc_sim_free(&s4);
-        rc_sim_free(&s5);
-    }
-    if (!strcmp(mode, "full")) { /* N = 1e6: ~200 MB and a few minutes, interleaved */
-        rc_sim *s4 = make(3, 10000, 0.45, INFINITY, NULL);
-        rc_sim *s6 = make(3, 1000000, 0.45, INFINITY, NULL);
-        if (s4 && s6)
-            printf("time per collision N 1e6 / N 1e4: %.2f (interleaved; target <= 1.5)\n",
-                   interleaved_ratio(s4, s6, 100000, 100000, 10));
-        rc_sim_free(&s4);
-        rc_sim_free(&s6);
-    }
+    scaling(100000, 50000, 20, "1e5", "");
+    if (!strcmp(mode, "full")) /* N = 1e6: ~200 MB and a few minutes */
+        scaling(1000000, 100000, 10, "1e6", "; target <= 1.5");
     return 0;
 }
