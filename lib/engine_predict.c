@@ -62,12 +62,20 @@ __attribute__((always_inline)) static inline double pair_time_dx(
         parting = 1;
     }
     if (use_narrow) {
-        /* narrow phase: the contracted shapes inside the bounding spheres */
-        const eng_aux *ai = &s->a[bi - s->b], *ak = &s->a[bk - s->b];
-        rc_toi_ball A = {rc_v3(0, 0, 0), bi->r, ai->m, ai->p};
-        rc_toi_ball B = {dx, bk->r, ak->m, ak->p};
+        /* narrow phase: the contracted shapes inside the bounding spheres. The frames'
+         * root finds are not symmetric in their two shapes (about half of all pairs get
+         * other bits with the roles swapped), so the pair is put to the frame in one
+         * orientation whichever ball asks: the first shape is the one from which dx
+         * points lexicographically up (pair_sep from the other ball is exactly -dx). */
+        const int flip = dx.x < 0.0 || (dx.x == 0.0 && (dx.y < 0.0 || (dx.y == 0.0 && dx.z < 0.0)));
+        const eng_ball *b0 = flip ? bk : bi, *b1 = flip ? bi : bk;
+        const eng_aux *a0 = &s->a[b0 - s->b], *a1 = &s->a[b1 - s->b];
+        rc_toi_ball A = {rc_v3(0, 0, 0), b0->r, a0->m, a0->p};
+        rc_toi_ball B = {flip ? rc_v3_scale(-1.0, dx) : dx, b1->r, a1->m, a1->p};
         rc_toi_contact out;
         int st = s->def.frame->toi(&s->toi, &A, &B, s->ws, &out);
+        if (flip)
+            out.n = rc_v3_scale(-1.0, out.n);
         if (st == RC_EOVERLAP) {
             if (parting)
                 return INFINITY; /* overlap policy: a pair whose bounding spheres part is
