@@ -349,8 +349,8 @@ static int narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc
     const rc_vec3 n = rc_v3_scale(1.0 / sqrt(d2), dx);
     /* supports along n: ball i's old shape (its state before the collision), k's as is,
      * in support_along's cancellation-free form */
-    const eng_shape ho = {bi->r / eng_mass_rel(chk->old.m, chk->old.p, s->inv_c2),
-                          chk->old.m * chk->old.m, chk->old.p};
+    const double rMo = bi->r / eng_mass_rel(chk->old.m, chk->old.p, s->inv_c2);
+    const eng_shape ho = {rMo, chk->old.m * chk->old.m, chk->old.p, rMo * chk->old.m};
     const eng_shape hk = shape_of(s, bk);
     const double hsum = support_along(s, &ho, n, 1.0) + support_along(s, &hk, n, 1.0);
     if (d2 > hsum * hsum * (1.0 + stol) * (1.0 + stol) * (1.0 + 1e-12))

@@ -16,12 +16,14 @@
 typedef struct eng_shape {
     double rM, m2;
     rc_vec3 p;
+    double thin; /* the support along the ball's own velocity: r m / M = r / gamma */
 } eng_shape;
 
 static inline eng_shape shape_of(const rc_sim *s, const eng_ball *b)
 {
     const eng_aux *a = &s->a[b - s->b];
-    return (eng_shape){b->r / eng_mass_rel(a->m, a->p, s->inv_c2), a->m * a->m, a->p};
+    const double rM = b->r / eng_mass_rel(a->m, a->p, s->inv_c2);
+    return (eng_shape){rM, a->m * a->m, a->p, rM * a->m};
 }
 
 /* |u| times the support of a table-frame shape along u: r sqrt(|u|^2 - (u.v)^2/c^2),
@@ -236,10 +238,14 @@ __attribute__((noinline)) static int parting_candidate(const rc_sim *s, const en
  * support r sqrt(1 - (v.u)^2/c^2), support_along) at separation dx, and its closing
  * speed. */
 static inline void axis_gap(const rc_sim *s, const eng_shape *hi, const eng_shape *hk,
-                            rc_vec3 dx, rc_vec3 dv, rc_vec3 u, double *gap, double *close)
+                            rc_vec3 dx, rc_vec3 dv, rc_vec3 u, int along, double *gap,
+                            double *close)
 {
+    /* along (1: u is ball i's direction of motion, 2: ball k's): that ball's support
+     * along its own velocity is r / gamma, exactly */
     const double dn = rc_v3_dot(dx, u);
-    const double h = support_along(s, hi, u, 1.0) + support_along(s, hk, u, 1.0);
+    const double h = (along == 1 ? hi->thin : support_along(s, hi, u, 1.0)) +
+                     (along == 2 ? hk->thin : support_along(s, hk, u, 1.0));
     *gap = fabs(dn) - h;
     *close = dn >= 0.0 ? -rc_v3_dot(dv, u) : rc_v3_dot(dv, u);
 }
@@ -269,7 +275,7 @@ static double axes_bound(const rc_sim *s, const eng_shape *shi, const eng_ball *
         if (!(u2 > 0.0))
             continue;
         double gap, close;
-        axis_gap(s, shi, &hk, dx, dv, rc_v3_scale(1.0 / sqrt(u2), u), &gap, &close);
+        axis_gap(s, shi, &hk, dx, dv, rc_v3_scale(1.0 / sqrt(u2), u), q, &gap, &close);
         gap -= margin;
         if (!(gap > 0.0))
             continue;
