@@ -224,7 +224,7 @@ static inline int parting_open(const rc_sim *s, const eng_shape *shi, const eng_
 
 /* parting_open for a neighbour without a bounding-sphere time (scan_block_narrow; out of
  * line, as the loop rarely needs it) */
-__attribute__((noinline)) static int parting_candidate(const rc_sim *s, const eng_shape *shi,
+__attribute__((noinline, unused)) static int parting_candidate(const rc_sim *s, const eng_shape *shi,
                                                        const eng_ball *bi, const eng_ball *bk,
                                                        double best)
 {
@@ -260,7 +260,7 @@ static inline void axis_gap(const rc_sim *s, const eng_shape *hi, const eng_shap
  * every pair the frame could still call touching. */
 #define AXIS_MARGIN 1e-9
 
-static double axes_bound(const rc_sim *s, const eng_shape *shi, const eng_ball *bi,
+static inline double axes_bound(const rc_sim *s, const eng_shape *shi, const eng_ball *bi,
                          const eng_ball *bk)
 {
     double tref;
