@@ -56,7 +56,7 @@ __attribute__((always_inline)) static inline double pair_time_dx(
         ta = tref > s->now ? tref : s->now;
         if (!(ta < best))
             return INFINITY;
-        const eng_shape shi = shape_of(s, bi);
+        const rc_toi_shape shi = shape_of(s, bi);
         if (!parting_open(s, &shi, bi, bk, dx, d2, tref, best))
             return INFINITY;
         parting = 1;
@@ -95,19 +95,21 @@ __attribute__((always_inline)) static inline double pair_time_dx(
     return ta;
 }
 
-/* Support distance of ball i's shape along the wall normal e_d: r, or contracted
- * r sqrt(1 - v_d^2/c^2) = (r/M) sqrt(m^2 + p_perp^2/c^2) (no cancellation near c). */
+/* Support distance of a shape along the wall normal e_d (the shape's own support). */
+static inline double axis_support(const rc_toi_shape *h, int d)
+{
+    rc_vec3 e = rc_v3(0, 0, 0);
+    rc_v3_set(&e, d, 1.0);
+    return rc_toi_support_(h, e);
+}
+
+/* Support distance of ball i's shape along the wall normal e_d: r, or contracted. */
 static inline double wall_support(const rc_sim *s, int32_t i, int d)
 {
-    const double r = s->b[i].r;
     if (!s->wall_contracted)
-        return r;
-    const eng_aux *a = &s->a[i];
-    double pd = rc_v3_get(a->p, d), pp = rc_v3_norm2(a->p) - pd * pd;
-    if (pp < 0.0)
-        pp = 0.0;
-    double M = eng_mass_rel(a->m, a->p, s->inv_c2);
-    return r / M * sqrt(a->m * a->m + pp * s->inv_c2);
+        return s->b[i].r;
+    const rc_toi_shape h = shape_of(s, &s->b[i]);
+    return axis_support(&h, d);
 }
 
 /* Walls and cell crossings below are written without branches on the direction of
@@ -347,12 +349,10 @@ static int narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc
     if (!(bb < 0.0 && bb * bb > atol * atol * sig * sig * rc_v3_norm2(dv)))
         return 0;
     const rc_vec3 n = rc_v3_scale(1.0 / sqrt(d2), dx);
-    /* supports along n: ball i's old shape (its state before the collision), k's as is,
-     * in support_along's cancellation-free form */
-    const double rMo = bi->r / eng_mass_rel(chk->old.m, chk->old.p, s->inv_c2);
-    const eng_shape ho = {rMo, chk->old.m * chk->old.m, chk->old.p, rMo * chk->old.m};
-    const eng_shape hk = shape_of(s, bk);
-    const double hsum = support_along(s, &ho, n, 1.0) + support_along(s, &hk, n, 1.0);
+    /* supports along n: ball i's old shape (its state before the collision), k's as is */
+    const rc_toi_shape ho = rc_toi_shape_of(bi->r, chk->old.m, chk->old.p, s->inv_c2);
+    const rc_toi_shape hk = shape_of(s, bk);
+    const double hsum = rc_toi_support_(&ho, n) + rc_toi_support_(&hk, n);
     if (d2 > hsum * hsum * (1.0 + stol) * (1.0 + stol) * (1.0 + 1e-12))
         return 0;
     const eng_aux *ak = &s->a[bk - s->b];
@@ -384,7 +384,7 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
     double t[NB_CAP];
     unsigned char near[NB_CAP];
     const int table = s->def.frame == &rc_toi_frame_table;
-    const eng_shape shi = shape_of(s, bi); /* (the scanning ball's, for every pair) */
+    const rc_toi_shape shi = shape_of(s, bi); /* (the scanning ball's, for every pair) */
     while (!w->done) {
         /* gather a chunk of neighbours ... */
         const size_t m = walk_gather(w, nb);
@@ -615,10 +615,8 @@ int rc_eng_predict_checked_narrow(rc_sim *s, int32_t i, const eng_check *chk)
             continue;
         double h = bi->r; /* the old shape's support along e_d, as wall_support */
         if (s->wall_contracted) {
-            const double pd = rc_v3_get(chk->old.p, d);
-            const double pp = fmax(0.0, rc_v3_norm2(chk->old.p) - pd * pd);
-            h = bi->r / eng_mass_rel(chk->old.m, chk->old.p, s->inv_c2) *
-                sqrt(chk->old.m * chk->old.m + pp * s->inv_c2);
+            const rc_toi_shape ho = rc_toi_shape_of(bi->r, chk->old.m, chk->old.p, s->inv_c2);
+            h = axis_support(&ho, d);
         }
         const double gap = v > 0.0 ? s->L[d] - h - x : x - h;
         if (gap <= s->def.sim_tol * bi->r)

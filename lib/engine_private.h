@@ -152,6 +152,7 @@ struct rc_sim {
     rc_sim_def def;
     int simd;
     double inv_c2;
+    double inv_c; /* sqrt(inv_c2): contracted shapes' beta = p inv_c / M */
     double L[3];
     double now;
     size_t n;

@@ -95,6 +95,7 @@ int rc_sim_create(const rc_sim_def *def, rc_sim **out)
     if (def->dim == 2)
         s->def.box.z = 0.0;
     rc_inv_c2(def->c, &s->inv_c2);
+    s->inv_c = sqrt(s->inv_c2);
     s->L[0] = def->box.x;
     s->L[1] = def->box.y;
     s->L[2] = def->box.z;

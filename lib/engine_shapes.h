@@ -11,28 +11,16 @@
 
 #include "engine_pairs.h"
 #include "engine_private.h"
+#include "toi_private.h"
 
-/* A ball's table-frame shape for support_along: r / M, m^2, p. */
-typedef struct eng_shape {
-    double rM, m2;
-    rc_vec3 p;
-    double thin; /* the support along the ball's own velocity: r m / M = r / gamma */
-} eng_shape;
-
-static inline eng_shape shape_of(const rc_sim *s, const eng_ball *b)
+/* A ball's table-frame shape (relcol/toi.h's, r, g = 1/gamma, beta = v/c), from its
+ * stored state: its supports are toi_private.h's, r sqrt(g^2 + |beta x n|^2), which keep
+ * their precision as v -> c (r sqrt(1 - (v.n)^2/c^2) cancels: past gamma ~ 1e8 it is wrong
+ * by more than the margins of the callers below; test_engine_shapes). */
+static inline rc_toi_shape shape_of(const rc_sim *s, const eng_ball *b)
 {
     const eng_aux *a = &s->a[b - s->b];
-    const double rM = b->r / eng_mass_rel(a->m, a->p, s->inv_c2);
-    return (eng_shape){rM, a->m * a->m, a->p, rM * a->m};
-}
-
-/* |u| times the support of a table-frame shape along u: r sqrt(|u|^2 - (u.v)^2/c^2),
- * written as (r/M) sqrt(m^2 |u|^2 + |p x u|^2 / c^2), which keeps its precision as
- * v -> c (the first form cancels: at gamma ~ 1e6 it would be wrong by more than the
- * margins its callers use). */
-static inline double support_along(const rc_sim *s, const eng_shape *h, rc_vec3 u, double u2)
-{
-    return h->rM * sqrt(h->m2 * u2 + rc_v3_norm2(rc_v3_cross(h->p, u)) * s->inv_c2);
+    return rc_toi_shape_Mc_(b->r, a->m, a->p, s->inv_c, eng_mass_rel(a->m, a->p, s->inv_c2));
 }
 
 /* Distance from a ball's centre to the edge of its table-frame shape (contracted by
@@ -59,7 +47,7 @@ static inline double table_radius_along(const rc_sim *s, const eng_ball *b, rc_v
  * 1 if settled (no event), 0 if the frame must look. Other frames: 0. *lam (if not
  * NULL, and 0 returned): h_i(u) / (h_i(u) + h_k(u)), the Perram-Wertheim lambda if the
  * shapes touched along u (parting_pw's start). */
-static inline int parting_settled(const rc_sim *s, const eng_shape *shi, const eng_ball *bi,
+static inline int parting_settled(const rc_sim *s, const rc_toi_shape *shi, const eng_ball *bi,
                                   const eng_ball *bk, rc_vec3 dx, double d2, double *lam)
 {
     if (s->def.frame != &rc_toi_frame_table)
@@ -67,8 +55,9 @@ static inline int parting_settled(const rc_sim *s, const eng_shape *shi, const e
     if (!(d2 > 0.0))
         return 1; /* coincident centres: overlapping */
     /* the supports times d (no square root of d2 for the common case) */
-    const eng_shape shk = shape_of(s, bk);
-    const double hi = support_along(s, shi, dx, d2), hk = support_along(s, &shk, dx, d2);
+    const rc_toi_shape shk = shape_of(s, bk);
+    const double hi = rc_toi_support_scaled_(shi, dx, d2);
+    const double hk = rc_toi_support_scaled_(&shk, dx, d2);
     const double h = hi + hk;
     /* d - h_i(u) - h_k(u) > margin d: apart along the centre line, and never meeting if
      * not closing along it (a pair that approaches too slowly to count as approaching
@@ -210,7 +199,7 @@ static int parting_pw(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, r
 /* 1 if the frame must look at a pair whose bounding spheres overlap while not bound to
  * touch before best (parting_settled, then parting_pw for the table frame), 0 if it
  * would give no event before best. */
-static inline int parting_open(const rc_sim *s, const eng_shape *shi, const eng_ball *bi,
+static inline int parting_open(const rc_sim *s, const rc_toi_shape *shi, const eng_ball *bi,
                                const eng_ball *bk, rc_vec3 dx, double d2, double tref,
                                double best)
 {
@@ -224,9 +213,10 @@ static inline int parting_open(const rc_sim *s, const eng_shape *shi, const eng_
 
 /* parting_open for a neighbour without a bounding-sphere time (scan_block_narrow; out of
  * line, as the loop rarely needs it) */
-__attribute__((noinline, unused)) static int parting_candidate(const rc_sim *s, const eng_shape *shi,
-                                                       const eng_ball *bi, const eng_ball *bk,
-                                                       double best)
+__attribute__((noinline, unused)) static int parting_candidate(const rc_sim *s,
+                                                               const rc_toi_shape *shi,
+                                                               const eng_ball *bi,
+                                                               const eng_ball *bk, double best)
 {
     double tref;
     const rc_vec3 dx = pair_sep(bi, bk, &tref);
@@ -235,17 +225,17 @@ __attribute__((noinline, unused)) static int parting_candidate(const rc_sim *s, 
 }
 
 /* Gap along unit axis u between table-frame shapes (contracted along their velocities,
- * support r sqrt(1 - (v.u)^2/c^2), support_along) at separation dx, and its closing
+ * support r sqrt(1 - (v.u)^2/c^2), rc_toi_support_) at separation dx, and its closing
  * speed. */
-static inline void axis_gap(const rc_sim *s, const eng_shape *hi, const eng_shape *hk,
+static inline void axis_gap(const rc_toi_shape *hi, const rc_toi_shape *hk,
                             rc_vec3 dx, rc_vec3 dv, rc_vec3 u, int along, double *gap,
                             double *close)
 {
     /* along (1: u is ball i's direction of motion, 2: ball k's): that ball's support
      * along its own velocity is r / gamma, exactly */
     const double dn = rc_v3_dot(dx, u);
-    const double h = (along == 1 ? hi->thin : support_along(s, hi, u, 1.0)) +
-                     (along == 2 ? hk->thin : support_along(s, hk, u, 1.0));
+    const double h = (along == 1 ? hi->r * hi->g : rc_toi_support_(hi, u)) +
+                     (along == 2 ? hk->r * hk->g : rc_toi_support_(hk, u));
     *gap = fabs(dn) - h;
     *close = dn >= 0.0 ? -rc_v3_dot(dv, u) : rc_v3_dot(dv, u);
 }
@@ -260,14 +250,14 @@ static inline void axis_gap(const rc_sim *s, const eng_shape *hi, const eng_shap
  * every pair the frame could still call touching. */
 #define AXIS_MARGIN 1e-9
 
-static inline double axes_bound(const rc_sim *s, const eng_shape *shi, const eng_ball *bi,
+static inline double axes_bound(const rc_sim *s, const rc_toi_shape *shi, const eng_ball *bi,
                          const eng_ball *bk)
 {
     double tref;
     const rc_vec3 dx = pair_sep(bi, bk, &tref);
     const rc_vec3 dv = rc_v3_sub(bk->v, bi->v);
     const double margin = AXIS_MARGIN * (bi->r + bk->r);
-    const eng_shape hk = shape_of(s, bk);
+    const rc_toi_shape hk = shape_of(s, bk);
     double lb = -INFINITY;
     for (int q = 0; q < 3; q++) {
         const rc_vec3 u = q == 0 ? dx : (q == 1 ? bi->v : bk->v);
@@ -275,7 +265,7 @@ static inline double axes_bound(const rc_sim *s, const eng_shape *shi, const eng
         if (!(u2 > 0.0))
             continue;
         double gap, close;
-        axis_gap(s, shi, &hk, dx, dv, rc_v3_scale(1.0 / sqrt(u2), u), q, &gap, &close);
+        axis_gap(shi, &hk, dx, dv, rc_v3_scale(1.0 / sqrt(u2), u), q, &gap, &close);
         gap -= margin;
         if (!(gap > 0.0))
             continue;

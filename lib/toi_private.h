@@ -4,16 +4,24 @@
 
 #include "relcol/toi.h"
 
-/* Shape of a ball state whose relativistic mass M = sqrt(m^2 + p^2/c^2) is known. */
-static inline rc_toi_shape rc_toi_shape_M_(double r, double m, rc_vec3 p, double inv_c2,
-                                           double M)
+/* Shape of a ball state whose relativistic mass M = sqrt(m^2 + p^2/c^2) is known, given
+ * 1/c (sqrt(inv_c2)) as well (for callers that make many shapes). */
+static inline rc_toi_shape rc_toi_shape_Mc_(double r, double m, rc_vec3 p, double inv_c,
+                                            double M)
 {
     rc_toi_shape s;
     s.r = r;
     s.g = m / M; /* exactly 1 when inv_c2 = 0 (M = m) */
     s.g2 = s.g * s.g;
-    s.beta = rc_v3_scale(sqrt(inv_c2) / M, p);
+    s.beta = rc_v3_scale(inv_c / M, p);
     return s;
+}
+
+/* Shape of a ball state whose relativistic mass M = sqrt(m^2 + p^2/c^2) is known. */
+static inline rc_toi_shape rc_toi_shape_M_(double r, double m, rc_vec3 p, double inv_c2,
+                                           double M)
+{
+    return rc_toi_shape_Mc_(r, m, p, sqrt(inv_c2), M);
 }
 
 /* Table-frame contact point: ball 0's centre at time t plus the contact offset y0.
@@ -29,6 +37,12 @@ static inline rc_vec3 rc_toi_point_(rc_vec3 x0, rc_vec3 v0, double t, rc_vec3 y0
 static inline double rc_toi_support_(const rc_toi_shape *s, rc_vec3 n)
 {
     return s->r * sqrt(s->g2 + rc_v3_norm2(rc_v3_cross(s->beta, n)));
+}
+
+/* The same along any u, times |u| (u2 = |u|^2): no normalising square root. */
+static inline double rc_toi_support_scaled_(const rc_toi_shape *s, rc_vec3 u, double u2)
+{
+    return s->r * sqrt(s->g2 * u2 + rc_v3_norm2(rc_v3_cross(s->beta, u)));
 }
 
 /* Support point of a shape along unit n, relative to its centre: P n / h(n). */

@@ -1,6 +1,8 @@
 /* test_engine_shapes.c — the supports of the table frame's contracted shapes that the
- * engine's separating-axis bounds use (lib/engine_shapes.h, internal): against a long
- * double reference, for speeds up to gamma = 1e12, and r/gamma exactly along the motion.
+ * engine's separating-axis bounds and wall tests use (lib/engine_shapes.h: the shape from
+ * a ball's stored state; toi_private.h's supports, also along an unnormalised axis):
+ * against a long double reference, for speeds up to gamma = 1e12, and r/gamma exactly
+ * along the motion.
  * The form r sqrt(1 - (u.v)^2/c^2) evaluated from v in double loses all its digits near c
  * (1 - v^2/c^2 ~ 1/gamma^2 is below the round-off of v^2 past gamma ~ 1e8), which moves
  * a separating-axis bound by more than its 1e-9 margin; the test shows that too. */
@@ -35,6 +37,7 @@ static void test_supports_near_c(void)
     rc_sim s;
     memset(&s, 0, sizeof s);
     s.inv_c2 = 1.0;
+    s.inv_c = 1.0;
     eng_ball b[1];
     eng_aux a[1];
     memset(b, 0, sizeof b);
@@ -59,16 +62,18 @@ static void test_supports_near_c(void)
             a[0].p = rc_v3_scale(sqrt(gamma * gamma - 1.0), e); /* |p| = m sqrt(g^2 - 1) */
             const double M = eng_mass_rel(a[0].m, a[0].p, s.inv_c2);
             b[0].v = rc_v3_scale(1.0 / M, a[0].p);
-            const eng_shape h = shape_of(&s, &b[0]);
+            const rc_toi_shape h = shape_of(&s, &b[0]);
             const long double ref = support_ref(b[0].r, a[0].m, a[0].p, u);
-            const double got = support_along(&s, &h, u, 1.0);
+            const double got = rc_toi_support_(&h, u);
+            const double got_scaled = rc_toi_support_scaled_(&h, rc_v3_scale(3.0, u), 9.0) / 3.0;
             const double uv = rc_v3_dot(u, b[0].v);
             const double naive = b[0].r * sqrt(fmax(0.0, 1.0 - uv * uv));
             worst = fmax(worst, (double)fabsl((got - ref) / b[0].r));
+            worst = fmax(worst, (double)fabsl((got_scaled - ref) / b[0].r));
             worst_naive = fmax(worst_naive, (double)fabsl((naive - ref) / b[0].r));
             if (trial % 4 == 0) /* along the motion: r / gamma exactly */
-                ENSURE_MSG(fabs(h.thin - b[0].r / gamma) <= TOL * b[0].r / gamma,
-                           "gamma %g: r/gamma %.17g, thin %.17g", gamma, b[0].r / gamma, h.thin);
+                ENSURE_MSG(fabs(h.r * h.g - b[0].r / gamma) <= TOL * b[0].r / gamma,
+                           "gamma %g: r/gamma %.17g, r g %.17g", gamma, b[0].r / gamma, h.r * h.g);
         }
     }
     ENSURE_MSG(worst <= TOL, "support off by %.3g of the radius", worst);
