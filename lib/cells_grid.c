@@ -174,3 +174,26 @@ void rc_eng_cells_zorder(const eng_cells *g, int32_t *rank)
     int c[3] = {0, 0, 0};
     zvisit(&z, levels - 1, c, span);
 }
+
+/* pos[i]: ball i's place when the n balls are numbered in the Z order of their cells
+ * (cell[i]), ties in index order (a stable counting sort). RC_ENOMEM leaves pos unset. */
+int rc_eng_cells_number(const eng_cells *g, const int32_t *cell, size_t n, uint32_t *pos)
+{
+    size_t *start = calloc(g->ncells + 1, sizeof *start);
+    int32_t *rank = malloc(g->ncells * sizeof *rank);
+    if (!start || !rank) {
+        free(start);
+        free(rank);
+        return RC_ENOMEM;
+    }
+    rc_eng_cells_zorder(g, rank);
+    for (size_t i = 0; i < n; i++)
+        start[rank[cell[i]] + 1]++;
+    for (size_t c = 0; c < g->ncells; c++)
+        start[c + 1] += start[c];
+    for (size_t i = 0; i < n; i++)
+        pos[i] = (uint32_t)start[rank[cell[i]]]++;
+    free(start);
+    free(rank);
+    return RC_OK;
+}

@@ -410,25 +410,18 @@ static void reorder(rc_sim *s)
 {
     const size_t n = s->n;
     uint32_t *np = malloc(n * sizeof *np);
-    size_t *start = calloc(s->g.ncells + 1, sizeof *start);
-    int32_t *rank = malloc(s->g.ncells * sizeof *rank);
+    int32_t *cell = malloc(n * sizeof *cell);
     unsigned char *done = calloc(n, 1);
-    if (!np || !start || !rank || !done) { /* no memory: simply keep the old order */
-        free(np);
-        free(start);
-        free(rank);
+    if (cell)
+        for (size_t i = 0; i < n; i++)
+            cell[i] = s->a[i].cell;
+    if (!np || !cell || !done || rc_eng_cells_number(&s->g, cell, n, np) != RC_OK) {
+        free(np); /* no memory: simply keep the old order */
+        free(cell);
         free(done);
         return;
     }
-    rc_eng_cells_zorder(&s->g, rank);
-    for (size_t i = 0; i < n; i++)
-        start[rank[s->a[i].cell] + 1]++;
-    for (size_t c = 0; c < s->g.ncells; c++)
-        start[c + 1] += start[c];
-    for (size_t i = 0; i < n; i++)
-        np[i] = (uint32_t)start[rank[s->a[i].cell]]++;
-    free(start);
-    free(rank);
+    free(cell);
     /* references first, then move the elements along the cycles of the permutation */
     for (size_t i = 0; i < n; i++) {
         if (s->a[i].ev_partner >= 0)

@@ -99,6 +99,8 @@ void rc_eng_cells_clear(eng_cells *g);
 /* rank[cell] (ncells entries): the cell's place in Z order, the order balls are
  * numbered in. */
 void rc_eng_cells_zorder(const eng_cells *g, int32_t *rank);
+/* pos[i]: ball i's number in that order, from its cell cell[i] (stable). */
+int rc_eng_cells_number(const eng_cells *g, const int32_t *cell, size_t n, uint32_t *pos);
 int32_t rc_eng_cells_index_of(const eng_cells *g, int dim, rc_vec3 x);
 void rc_eng_cells_insert(eng_cells *g, eng_aux *a, int32_t i, int32_t cell);
 void rc_eng_cells_remove(eng_cells *g, const eng_aux *a, int32_t i);

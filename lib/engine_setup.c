@@ -314,29 +314,20 @@ static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, i
         goto fail;
     }
     int32_t *cellof = malloc((n ? n : 1) * sizeof *cellof);
-    size_t *start = calloc(s->g.ncells + 1, sizeof *start);
-    int32_t *rank = malloc(s->g.ncells * sizeof *rank);
-    if (!s->id || !s->slot || !s->cnt || !cellof || !start || !rank) {
+    if (!s->id || !s->slot || !s->cnt || !cellof) {
         free(cellof);
-        free(start);
-        free(rank);
         st = RC_ENOMEM;
         goto fail;
     }
-    rc_eng_cells_zorder(&s->g, rank); /* (cells in Z order: see cells_grid.c) */
-    for (size_t i = 0; i < n; i++) {
+    for (size_t i = 0; i < n; i++)
         cellof[i] = rc_eng_cells_index_of(&s->g, dim, in[i].x);
-        start[rank[cellof[i]] + 1]++;
+    /* (cells in Z order: see cells_grid.c) */
+    if ((st = rc_eng_cells_number(&s->g, cellof, n, s->slot)) != RC_OK) {
+        free(cellof);
+        goto fail;
     }
-    for (size_t c = 0; c < s->g.ncells; c++)
-        start[c + 1] += start[c];
-    for (size_t i = 0; i < n; i++) {
-        size_t k = start[rank[cellof[i]]]++;
-        s->id[k] = (uint32_t)i;
-        s->slot[i] = (uint32_t)k;
-    }
-    free(start);
-    free(rank);
+    for (size_t i = 0; i < n; i++)
+        s->id[s->slot[i]] = (uint32_t)i;
     for (size_t k = 0; k < n; k++) { /* (cells fill their slots in ball order) */
         const rc_sim_ball *b = &in[s->id[k]];
         eng_ball *e = &s->b[k];
