@@ -163,6 +163,97 @@ __attribute__((target("avx2"), always_inline)) static inline int pair_sphere_x4(
     _mm256_storeu_pd(out, _mm256_blendv_pd(_mm256_set1_pd(INFINITY), ta, keep));
     return _mm256_movemask_pd(keep);
 }
+
+#define ENG_HAVE_AVX512 1
+/* Eight lanes (AVX-512F machines): pair_sphere_x4's operations, on eight neighbours. A
+ * ball's record is one 512-bit load; the eight are transposed by three rounds of eight
+ * shuffles. The same operations in the same order, so the same bits (no FMA either: the
+ * build contracts nothing, -ffp-contract=off). */
+__attribute__((target("avx512f"), always_inline)) static inline unsigned pair_sphere_x8(
+    const rc_sim *s, const eng_ball *bi, const eng_ball *const k[8], double best, double stol,
+    double out[8], unsigned *nears, const int three, const int latest)
+{
+    __m512d r[8], t[8], u[8];
+    for (int l = 0; l < 8; l++)
+        r[l] = _mm512_loadu_pd(&k[l]->x.x);
+    for (int l = 0; l < 8; l += 2) { /* t[l]: fields 0 2 4 6, t[l+1]: 1 3 5 7 (rows l, l+1) */
+        t[l] = _mm512_unpacklo_pd(r[l], r[l + 1]);
+        t[l + 1] = _mm512_unpackhi_pd(r[l], r[l + 1]);
+    }
+    for (int h = 0; h < 8; h += 4) { /* rows h..h+3: fields (0 4) (2 6) (1 5) (3 7) */
+        u[h] = _mm512_shuffle_f64x2(t[h], t[h + 2], 0x88);
+        u[h + 1] = _mm512_shuffle_f64x2(t[h], t[h + 2], 0xDD);
+        u[h + 2] = _mm512_shuffle_f64x2(t[h + 1], t[h + 3], 0x88);
+        u[h + 3] = _mm512_shuffle_f64x2(t[h + 1], t[h + 3], 0xDD);
+    }
+    const __m512d xkx = _mm512_shuffle_f64x2(u[0], u[4], 0x88);
+    const __m512d vky = _mm512_shuffle_f64x2(u[0], u[4], 0xDD);
+    const __m512d xkz = _mm512_shuffle_f64x2(u[1], u[5], 0x88);
+    const __m512d tk = _mm512_shuffle_f64x2(u[1], u[5], 0xDD);
+    const __m512d xky = _mm512_shuffle_f64x2(u[2], u[6], 0x88);
+    const __m512d vkz = _mm512_shuffle_f64x2(u[2], u[6], 0xDD);
+    const __m512d vkx = _mm512_shuffle_f64x2(u[3], u[7], 0x88);
+    const __m512d rk = _mm512_shuffle_f64x2(u[3], u[7], 0xDD);
+    const __m512d xix = _mm512_set1_pd(bi->x.x), xiy = _mm512_set1_pd(bi->x.y);
+    const __m512d xiz = _mm512_set1_pd(bi->x.z), vix = _mm512_set1_pd(bi->v.x);
+    const __m512d viy = _mm512_set1_pd(bi->v.y), viz = _mm512_set1_pd(bi->v.z);
+    const __m512d ti = _mm512_set1_pd(bi->t), ri = _mm512_set1_pd(bi->r);
+    const __m512d hk = _mm512_sub_pd(ti, tk);
+    const __m512d ax = _mm512_sub_pd(_mm512_add_pd(xkx, _mm512_mul_pd(hk, vkx)), xix);
+    const __m512d ay = _mm512_sub_pd(_mm512_add_pd(xky, _mm512_mul_pd(hk, vky)), xiy);
+    const __m512d az = _mm512_sub_pd(_mm512_add_pd(xkz, _mm512_mul_pd(hk, vkz)), xiz);
+    __m512d dx = ax, dy = ay, dz = az, tref = ti;
+    if (!latest) {
+        const __mmask8 ge = _mm512_cmp_pd_mask(ti, tk, _CMP_GE_OQ);
+        const __m512d hi_ = _mm512_sub_pd(tk, ti);
+        const __m512d bx = _mm512_sub_pd(xkx, _mm512_add_pd(xix, _mm512_mul_pd(hi_, vix)));
+        const __m512d by = _mm512_sub_pd(xky, _mm512_add_pd(xiy, _mm512_mul_pd(hi_, viy)));
+        const __m512d bz = _mm512_sub_pd(xkz, _mm512_add_pd(xiz, _mm512_mul_pd(hi_, viz)));
+        dx = _mm512_mask_blend_pd(ge, bx, ax);
+        dy = _mm512_mask_blend_pd(ge, by, ay);
+        dz = _mm512_mask_blend_pd(ge, bz, az);
+        tref = _mm512_mask_blend_pd(ge, tk, ti);
+    }
+    __m512d d2 = _mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy));
+    const __m512d dvx = _mm512_sub_pd(vkx, vix), dvy = _mm512_sub_pd(vky, viy);
+    __m512d b = _mm512_add_pd(_mm512_mul_pd(dx, dvx), _mm512_mul_pd(dy, dvy));
+    __m512d dv2 = _mm512_add_pd(_mm512_mul_pd(dvx, dvx), _mm512_mul_pd(dvy, dvy));
+    if (three) {
+        const __m512d dvz = _mm512_sub_pd(vkz, viz);
+        d2 = _mm512_add_pd(d2, _mm512_mul_pd(dz, dz));
+        b = _mm512_add_pd(b, _mm512_mul_pd(dz, dvz));
+        dv2 = _mm512_add_pd(dv2, _mm512_mul_pd(dvz, dvz));
+    }
+    const __m512d sig = _mm512_add_pd(ri, rk);
+    const __m512d dd = _mm512_sub_pd(d2, _mm512_mul_pd(sig, sig));
+    const __m512d disc = _mm512_sub_pd(_mm512_mul_pd(b, b), _mm512_mul_pd(dv2, dd));
+    const __m512d tol = _mm512_mul_pd(_mm512_set1_pd(s->def.approach_tol), sig);
+    const __m512d lim = _mm512_mul_pd(sig, _mm512_set1_pd(1.0 + stol));
+    const __m512d zero = _mm512_setzero_pd();
+    const __mmask8 touching = _mm512_cmp_pd_mask(dd, zero, _CMP_LE_OQ);
+    const __mmask8 slow = _mm512_cmp_pd_mask(
+        _mm512_mul_pd(b, b), _mm512_mul_pd(_mm512_mul_pd(tol, tol), dv2), _CMP_GT_OQ);
+    const __m512d bound = _mm512_mul_pd(_mm512_mul_pd(_mm512_set1_pd(-2.0), b),
+                                        _mm512_sub_pd(_mm512_set1_pd(best), tref));
+    const __mmask8 flying = _mm512_cmp_pd_mask(disc, zero, _CMP_GT_OQ) &
+                            _mm512_cmp_pd_mask(dd, bound, _CMP_LT_OQ);
+    const __mmask8 hit = _mm512_cmp_pd_mask(b, zero, _CMP_LT_OQ) &
+                         (__mmask8)((touching & slow) | (~touching & flying));
+    *nears = _mm512_cmp_pd_mask(d2, _mm512_mul_pd(lim, lim), _CMP_LE_OQ);
+    const __m512d inf = _mm512_set1_pd(INFINITY);
+    if (!hit) {
+        _mm512_storeu_pd(out, inf);
+        return 0;
+    }
+    const __m512d safe = _mm512_mask_blend_pd(hit, _mm512_set1_pd(1.0), disc);
+    const __m512d root = _mm512_div_pd(dd, _mm512_sub_pd(_mm512_sqrt_pd(safe), b));
+    __m512d ta = _mm512_add_pd(tref, _mm512_mask_blend_pd(touching, root, zero));
+    const __m512d now = _mm512_set1_pd(s->now);
+    ta = _mm512_mask_blend_pd(_mm512_cmp_pd_mask(ta, now, _CMP_LT_OQ), ta, now);
+    const __mmask8 keep = hit & _mm512_cmp_pd_mask(ta, _mm512_set1_pd(best), _CMP_LT_OQ);
+    _mm512_storeu_pd(out, _mm512_mask_blend_pd(keep, inf, ta));
+    return keep;
+}
 #endif
 
 #endif

@@ -203,6 +203,15 @@ static inline size_t pad_lanes(int32_t *nb, size_t m, int32_t i)
     return m4;
 }
 
+/* The same to a multiple of eight (the AVX-512 lanes). */
+static inline size_t pad_lanes8(int32_t *nb, size_t m, int32_t i)
+{
+    const size_t m8 = (m + 7) & ~(size_t)7;
+    for (size_t j = m; j < m8; j++)
+        nb[j] = i;
+    return m8;
+}
+
 /* (three, latest: compile-time constants at each call, so 2-D gets its own loop without
  * z.) The earliest time is taken lane by lane without a branch (a lane without a time
  * holds INFINITY; the padding lanes, ball i itself, too); only when checking, and a lane
@@ -242,6 +251,63 @@ __attribute__((target("avx2"), always_inline)) static inline int test_list_avx2_
     return 0;
 }
 
+#ifdef ENG_HAVE_AVX512
+/* test_list_avx2_dim on eight lanes. Without the check, a chunk's earliest lane is found
+ * by a vector minimum and the first lane holding it: the same choice as visiting the lanes
+ * in order (strictly earlier replaces, so ties go to the first in nb order). */
+__attribute__((target("avx512f"), always_inline)) static inline int test_list_avx512_dim(
+    const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *best, int32_t *bp,
+    const rc_vec3 *vold, int32_t partner, double T, const int three, const int latest)
+{
+    const eng_ball *bi = &s->b[i];
+    const int check = vold && s->def.sim_tol > 0.0;
+    double bt = *best;
+    int32_t bk = *bp;
+    const size_t m8 = pad_lanes8(nb, m, i);
+    for (size_t j = 0; j < m8; j += 8) {
+        const eng_ball *k[8];
+        for (int l = 0; l < 8; l++)
+            k[l] = &s->b[nb[j + (size_t)l]];
+        double t[8];
+        unsigned nears;
+        pair_sphere_x8(s, bi, k, bt, s->def.sim_tol, t, &nears, three, latest);
+        const size_t left = m - j < 8 ? m - j : 8;
+        const unsigned near_in = nears & ((1u << left) - 1u);
+        if (check && near_in) {
+            for (size_t l = 0; l < left; l++)
+                if (visit(s, bi, nb[j + l], t[l], near_in >> l & 1, check, partner, vold, T,
+                          &bt, &bk))
+                    return 1;
+            continue;
+        }
+        const __m512d tv = _mm512_loadu_pd(t);
+        const double tmin = _mm512_reduce_min_pd(tv);
+        const unsigned at = _mm512_cmp_pd_mask(tv, _mm512_set1_pd(tmin), _CMP_EQ_OQ);
+        const int take = tmin < bt;
+        const int32_t kmin = nb[j + (size_t)(__builtin_ctz(at | 0x100u) & 7)];
+        bt = take ? tmin : bt;
+        bk = take ? kmin : bk;
+    }
+    *best = bt;
+    *bp = bk;
+    return 0;
+}
+
+__attribute__((target("avx512f"))) static int test_list_avx512(const rc_sim *s, int32_t i,
+                                                              int32_t *nb, size_t m,
+                                                              double *best, int32_t *bp,
+                                                              const rc_vec3 *vold,
+                                                              int32_t partner, double T,
+                                                              int latest)
+{
+    if (s->def.dim == 3)
+        return latest ? test_list_avx512_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 1)
+                      : test_list_avx512_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 0);
+    return latest ? test_list_avx512_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 1)
+                  : test_list_avx512_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 0);
+}
+#endif
+
 __attribute__((target("avx2"))) static int test_list_avx2(const rc_sim *s, int32_t i,
                                                           int32_t *nb, size_t m,
                                                           double *best, int32_t *bp,
@@ -266,6 +332,8 @@ static int test_list(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *
                      int32_t *bp, const rc_vec3 *vold, int32_t partner, double T, int latest)
 {
 #ifdef ENG_HAVE_AVX2
+    if (s->simd == ENG_SIMD_AVX512)
+        return test_list_avx512(s, i, nb, m, best, bp, vold, partner, T, latest);
     if (s->simd == ENG_SIMD_AVX2)
         return test_list_avx2(s, i, nb, m, best, bp, vold, partner, T, latest);
 #else
@@ -317,13 +385,46 @@ __attribute__((target("avx2"))) static size_t sphere_lanes_avx2(const rc_sim *s,
 }
 #endif
 
+#ifdef ENG_HAVE_AVX512
+__attribute__((target("avx512f"), always_inline)) static inline size_t sphere_lanes_avx512_dim(
+    const rc_sim *s, const eng_ball *bi, int32_t *nb, size_t m, double best, double *t,
+    unsigned char *near, const int three)
+{
+    const size_t m8 = pad_lanes8(nb, m, (int32_t)(bi - s->b));
+    size_t j = 0;
+    for (; j < m8; j += 8) {
+        const eng_ball *k[8];
+        for (int l = 0; l < 8; l++)
+            k[l] = &s->b[nb[j + (size_t)l]];
+        unsigned nears;
+        pair_sphere_x8(s, bi, k, best, s->def.sim_tol, &t[j], &nears, three, 0);
+        for (int l = 0; l < 8; l++)
+            near[j + (size_t)l] = (unsigned char)(nears >> l & 1);
+    }
+    return j;
+}
+
+__attribute__((target("avx512f"))) static size_t sphere_lanes_avx512(const rc_sim *s,
+                                                                   const eng_ball *bi,
+                                                                   int32_t *nb, size_t m,
+                                                                   double best, double *t,
+                                                                   unsigned char *near)
+{
+    if (s->def.dim == 3)
+        return sphere_lanes_avx512_dim(s, bi, nb, m, best, t, near, 1);
+    return sphere_lanes_avx512_dim(s, bi, nb, m, best, t, near, 0);
+}
+#endif
+
 static void sphere_lanes(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double best,
                          double *t, unsigned char *near)
 {
     const eng_ball *bi = &s->b[i];
     size_t j = 0;
 #ifdef ENG_HAVE_AVX2
-    if (s->simd == ENG_SIMD_AVX2)
+    if (s->simd == ENG_SIMD_AVX512)
+        j = sphere_lanes_avx512(s, bi, nb, m, best, t, near);
+    else if (s->simd == ENG_SIMD_AVX2)
         j = sphere_lanes_avx2(s, bi, nb, m, best, t, near);
 #endif
     for (; j < m; j++) {
@@ -561,7 +662,7 @@ __attribute__((target("avx2"))) static void cross_event_avx2(rc_sim *s, int32_t 
 static inline void cross_event(rc_sim *s, int32_t i, const int c[3])
 {
 #ifdef ENG_HAVE_AVX2
-    if (s->simd == ENG_SIMD_AVX2) {
+    if (s->simd >= ENG_SIMD_AVX2) {
         cross_event_avx2(s, i, c);
         return;
     }

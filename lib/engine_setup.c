@@ -64,9 +64,10 @@ static int check_def(const rc_sim_def *d)
     return rc_inv_c2(d->c, &k);
 }
 
-/* AVX2 lanes for the neighbour test if this CPU has them, unless RELCOL_SIMD=scalar asks
- * for the scalar loop (the paths give the same bits; the variable exists to show it and
- * to time them). */
+/* The widest lanes this CPU has for the neighbour test (AVX-512F with VL for the walk's
+ * compress, else AVX2), unless RELCOL_SIMD asks for narrower ones: avx2, or scalar for
+ * the scalar loop (the paths give the same bits; the variable exists to show it and to
+ * time them). */
 static int choose_simd(void)
 {
     int best = ENG_SIMD_NONE;
@@ -74,9 +75,16 @@ static int choose_simd(void)
     if (__builtin_cpu_supports("avx2"))
         best = ENG_SIMD_AVX2;
 #endif
+#ifdef ENG_HAVE_AVX512
+    if (best == ENG_SIMD_AVX2 && __builtin_cpu_supports("avx512f") &&
+        __builtin_cpu_supports("avx512vl"))
+        best = ENG_SIMD_AVX512;
+#endif
     const char *want = getenv("RELCOL_SIMD");
     if (want && !strcmp(want, "scalar"))
         return ENG_SIMD_NONE;
+    if (want && !strcmp(want, "avx2") && best > ENG_SIMD_AVX2)
+        return ENG_SIMD_AVX2;
     return best;
 }
 

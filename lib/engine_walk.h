@@ -16,7 +16,7 @@
  * only long overflow chains need more). Buffers hold NB_CAP: room for the compress to
  * store four past the end, and for the lanes to pad a chunk to a multiple of four. */
 #define GATHER_MAX 128
-#define NB_CAP (GATHER_MAX + 4)
+#define NB_CAP (GATHER_MAX + 8)
 
 typedef struct eng_walk {
     const rc_sim *s;
@@ -136,6 +136,32 @@ __attribute__((target("avx2"))) static size_t gather_rows_avx2(eng_walk *w, int3
     return m;
 }
 #define ENG_WALK_AVX2 1
+
+/* The same with AVX-512VL's compress: the kept slots moved to the front by one
+ * instruction (stores eight past the kept ones). */
+__attribute__((target("avx512f,avx512vl"))) static size_t gather_rows_avx512(eng_walk *w,
+                                                                           int32_t *nb)
+{
+    const int32_t *slot = w->s->g.slot;
+    const __mmask8 valid = (__mmask8)((1u << w->nslots) - 1u);
+    const __m256i none = _mm256_set1_epi32(-1), skip = _mm256_set1_epi32(w->skip);
+    size_t m = 0;
+    for (int r = 0; r < w->nrows; r++) {
+        const int32_t *sl = slot + w->row[r];
+        const __m256i v = _mm256_loadu_si256((const __m256i *)sl);
+        const __mmask8 keep = _mm256_mask_cmpgt_epi32_mask(valid, v, none) &
+                              _mm256_cmpneq_epi32_mask(v, skip);
+        const __mmask8 chains = _mm256_mask_cmpgt_epi32_mask(valid, none, v);
+        if (__builtin_expect(chains != 0, 0)) {
+            for (int l = 0; l < 8; l++)
+                if (chains >> l & 1u)
+                    w->chain[w->nchain++] = ENG_CHAIN_HEAD(sl[l]);
+        }
+        _mm256_storeu_si256((__m256i *)(nb + m), _mm256_maskz_compress_epi32(keep, v));
+        m += (size_t)__builtin_popcount(keep);
+    }
+    return m;
+}
 #endif
 
 /* More balls into nb (at most GATHER_MAX); w->done once the block is finished. The rows
@@ -147,7 +173,9 @@ static inline size_t walk_gather(eng_walk *w, int32_t *nb)
     if (!w->rows_done) {
         w->rows_done = 1;
 #ifdef ENG_WALK_AVX2
-        if (s->simd == ENG_SIMD_AVX2)
+        if (s->simd == ENG_SIMD_AVX512)
+            m = gather_rows_avx512(w, nb);
+        else if (s->simd == ENG_SIMD_AVX2)
             m = gather_rows_avx2(w, nb);
         else
 #endif

@@ -4,7 +4,7 @@
  * slots (overflow chains of every length, a chain longer than a gather chunk):
  *  - each cell's iterator yields exactly its balls, each once;
  *  - a walk over any block yields exactly the balls of its cells but the scanning ball,
- *    each once, in the same order with the AVX2 compress as slot by slot;
+ *    each once, in the same order with the AVX2 and AVX-512 compresses as slot by slot;
  *  - the Z order balls are numbered in is a permutation of the cells, the Morton code
  *    itself on a power-of-two grid, and plain order along a line of cells. */
 #include <stdlib.h>
@@ -125,6 +125,11 @@ static void check_walks(world *w, rc_test_rng *R, int blocks)
             const size_t m2 = walk_all(w, ENG_SIMD_AVX2, c, lo, hi, skip, got2);
             ENSURE_MSG(m2 == m && !memcmp(got, got2, m * sizeof *got),
                        "block %d: the AVX2 walk differs", b);
+        }
+        if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl")) {
+            const size_t m3 = walk_all(w, ENG_SIMD_AVX512, c, lo, hi, skip, got2);
+            ENSURE_MSG(m3 == m && !memcmp(got, got2, m * sizeof *got),
+                       "block %d: the AVX-512 walk differs", b);
         }
 #endif
     }

@@ -129,9 +129,10 @@ typedef struct rc_sim_diag {
                                  was resolved, the rest follow as events of their own */
 } rc_sim_diag;
 
-/* A new engine. Its neighbour test runs in AVX2 lanes if the CPU has them; the
- * environment variable RELCOL_SIMD=scalar, read here, asks for the scalar loop instead.
- * Both give the same bits (the lanes do the scalar operations in the same order). */
+/* A new engine. Its neighbour test runs in AVX-512 lanes (eight pairs at a time) or AVX2
+ * lanes (four) if the CPU has them; the environment variable RELCOL_SIMD, read here, asks
+ * for narrower ones: RELCOL_SIMD=avx2, or RELCOL_SIMD=scalar for the scalar loop. All give
+ * the same bits (the lanes do the scalar operations in the same order). */
 int rc_sim_create(const rc_sim_def *def, rc_sim **out);
 /* Frees and sets *s to NULL (NULL and *s == NULL are fine). */
 void rc_sim_free(rc_sim **s);
