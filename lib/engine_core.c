@@ -498,6 +498,14 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
         s->since_reorder++;
         const int32_t i = (int32_t)top_ball;
         eng_aux *a = &s->a[i];
+        /* the next event's records, while this one is resolved: at N = 1e5 they come
+         * from L3 or memory (x1.09 in 3-D and 2-D at 1e5, measured interleaved in one
+         * process; no change at 1e4) */
+        const int32_t nx = rc_eng_queue_next(&s->q);
+        if (nx >= 0) {
+            __builtin_prefetch(&s->b[nx]);
+            __builtin_prefetch(&s->a[nx]);
+        }
         s->now = top_t;
         done++;
         if (a->ev_partner >= 0) {

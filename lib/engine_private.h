@@ -71,6 +71,17 @@ void rc_eng_queue_update(eng_queue *q, uint32_t ball, double t);
 /* The earliest entry (time, ball); 0 if the queue is empty. */
 int rc_eng_queue_top(eng_queue *q, double *t, uint32_t *ball);
 size_t rc_eng_queue_bytes(const eng_queue *q);
+/* The ball likely to come after the top (the earlier child of the heap's root), -1 if
+ * the heap holds no other: a hint for prefetching, not a promise of order. */
+static inline int32_t rc_eng_queue_next(const eng_queue *q)
+{
+    if (q->hn < 2)
+        return -1;
+    uint32_t k = q->heap[1];
+    if (q->hn > 2 && q->key[q->heap[2]] < q->key[k])
+        k = q->heap[2];
+    return (int32_t)k;
+}
 
 /* Uniform cell grid over the box. A cell keeps its balls in ENG_CELL_CAP slots of its
  * own (cells hold about one ball): a ball index, -1 (empty) or, in the last slot only,
