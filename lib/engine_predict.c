@@ -193,6 +193,18 @@ static inline int test_tail(const rc_sim *s, const eng_ball *bi, const int32_t *
 }
 
 #ifdef ENG_HAVE_AVX2
+/* Bit l set if lane l of a chunk holds the partner. A chunk with a near lane is visited
+ * lane by lane for the simultaneity check, and the partner, the contact just resolved, is
+ * always near but never a conflict (visit passes it over): its lane alone need not send
+ * the chunk the slow way (the same choice either way). */
+static inline unsigned partner_lanes(const int32_t *nb, int lanes, int32_t partner)
+{
+    unsigned m = 0;
+    for (int l = 0; l < lanes; l++)
+        m |= (unsigned)(nb[l] == partner) << l;
+    return m;
+}
+
 /* Pad the m gathered indices to a multiple of four with ball i itself (its lanes are
  * masked off), so that every neighbour goes through the lanes; returns the padded count. */
 static inline size_t pad_lanes(int32_t *nb, size_t m, int32_t i)
@@ -232,7 +244,9 @@ __attribute__((target("avx2"), always_inline)) static inline int test_list_avx2_
         int nears;
         pair_sphere_x4(s, bi, k, bt, s->def.sim_tol, t, &nears, three, latest);
         const size_t left = m - j < 4 ? m - j : 4;
-        const unsigned near_in = (unsigned)nears & ((1u << left) - 1u);
+        unsigned near_in = (unsigned)nears & ((1u << left) - 1u);
+        if (check && near_in)
+            near_in &= ~partner_lanes(nb + j, 4, partner);
         if (check && near_in) {
             for (size_t l = 0; l < left; l++)
                 if (visit(s, bi, nb[j + l], t[l], near_in >> l & 1, check, partner, vold, T,
@@ -272,7 +286,9 @@ __attribute__((target("avx512f"), always_inline)) static inline int test_list_av
         unsigned nears;
         pair_sphere_x8(s, bi, k, bt, s->def.sim_tol, t, &nears, three, latest);
         const size_t left = m - j < 8 ? m - j : 8;
-        const unsigned near_in = nears & ((1u << left) - 1u);
+        unsigned near_in = nears & ((1u << left) - 1u);
+        if (check && near_in)
+            near_in &= ~partner_lanes(nb + j, 8, partner);
         if (check && near_in) {
             for (size_t l = 0; l < left; l++)
                 if (visit(s, bi, nb[j + l], t[l], near_in >> l & 1, check, partner, vold, T,

@@ -48,10 +48,20 @@ static inline void walk_init(eng_walk *w, const rc_sim *s, int32_t skip, const i
     if (w->nslots > 0) {
         const int32_t sy = g->n[0] * ENG_CELL_CAP, sz = sy * g->n[1];
         int32_t plane = (x0 + g->n[0] * (y0 + g->n[1] * z0)) * ENG_CELL_CAP;
-        for (int z = z0; z <= z1; z++, plane += sz) {
-            int32_t row = plane;
-            for (int y = y0; y <= y1; y++, row += sy)
-                w->row[w->nrows++] = row;
+        if (y1 - y0 == 2 && (z1 - z0 == 2 || g->n[2] == 1)) {
+            /* three rows a plane, one or three planes (a full block away from the
+             * grid's edges, the common case): fixed counts, no loop branches to
+             * mispredict (the general loops below cost ~5 % of a 3-D run) */
+            const int32_t pz = g->n[2] == 1 ? 0 : sz; /* (2-D: rows 3.. unused) */
+            for (int r = 0; r < 9; r++)
+                w->row[r] = plane + (r / 3) * pz + (r % 3) * sy;
+            w->nrows = g->n[2] == 1 ? 3 : 9;
+        } else {
+            for (int z = z0; z <= z1; z++, plane += sz) {
+                int32_t row = plane;
+                for (int y = y0; y <= y1; y++, row += sy)
+                    w->row[w->nrows++] = row;
+            }
         }
     }
     w->nchain = w->ci = 0;
