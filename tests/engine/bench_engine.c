@@ -2,8 +2,9 @@
  * 0.45 (N = 1e4, 1e5), discs at 0.7 (N = 1e4), a relativistic gas (rms speed 0.5 c) as a
  * cost ratio to the classical run of the same N and density measured in this process,
  * and bytes per ball. Each run melts the lattice start first (not timed).
- * Usage: bench_engine [quick|full|N|2d:N|rel:N|ratio]; full adds N = 1e6; N, 2d:N, rel:N run
- * one case; ratio only the interleaved contracted/classical cost ratio.
+ * Usage: bench_engine [quick|full|N|2d:N|rel:N|ratio] [collisions per ball]; full adds
+ * N = 1e6; N, 2d:N, rel:N run one case, timing 20 (rel: 5) collisions a ball or as many as
+ * asked; ratio only the interleaved contracted/classical cost ratio.
  * Figures are CPU time of this process (the wall clock on a shared machine is noisier). */
 #include <math.h>
 #include <stdio.h>
@@ -148,12 +149,18 @@ int main(int argc, char **argv)
     if (strcmp(mode, "quick") && strcmp(mode, "full")) {
         /* one run: N (3-D, packing 0.45), 2d:N (2-D, 0.7) or rel:N (3-D, contracted
          * table frame at rms speed 0.5 c) */
+        const double per = argc > 2 ? atof(argv[2]) : 0.0;
+        if (argc > 2 && !(per > 0.0)) {
+            fprintf(stderr, "bench_engine: collisions per ball '%s': not a positive number\n",
+                    argv[2]);
+            return 2;
+        }
         if (!strncmp(mode, "2d:", 3))
-            run(2, (size_t)atof(mode + 3), 0.70, INFINITY, NULL, 5, 20);
+            run(2, (size_t)atof(mode + 3), 0.70, INFINITY, NULL, 5, per > 0.0 ? per : 20);
         else if (!strncmp(mode, "rel:", 4))
-            run(3, (size_t)atof(mode + 4), 0.45, 2.0, "table", 2, 5);
+            run(3, (size_t)atof(mode + 4), 0.45, 2.0, "table", 2, per > 0.0 ? per : 5);
         else
-            run(3, (size_t)atof(mode), 0.45, INFINITY, NULL, 5, 20);
+            run(3, (size_t)atof(mode), 0.45, INFINITY, NULL, 5, per > 0.0 ? per : 20);
         return 0;
     }
     printf("relcol engine benchmark (CPU time; targets from issue 4)\n");
