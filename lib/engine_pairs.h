@@ -76,7 +76,7 @@ static inline double pair_sphere_scalar(const rc_sim *s, const eng_ball *bi, con
  * only, so the bits stay. */
 __attribute__((target("avx2"), always_inline)) static inline int pair_sphere_x4(
     const rc_sim *s, const eng_ball *bi, const eng_ball *const k[4], double best, double stol,
-    double out[4], int *nears, const int three, const int latest)
+    double out[4], unsigned *nears, const int three, const int latest)
 {
     /* transpose four 64-byte records (x, v, t, r): low halves x.x x.y x.z v.x, high halves
      * v.y v.z t r */
@@ -148,7 +148,7 @@ __attribute__((target("avx2"), always_inline)) static inline int pair_sphere_x4(
                                          _mm256_cmp_pd(dd, bound, _CMP_LT_OQ));
     const __m256d hit = _mm256_and_pd(_mm256_cmp_pd(b, zero, _CMP_LT_OQ),
                                       _mm256_blendv_pd(flying, slow, touching));
-    *nears = _mm256_movemask_pd(_mm256_cmp_pd(d2, _mm256_mul_pd(lim, lim), _CMP_LE_OQ));
+    *nears = (unsigned)_mm256_movemask_pd(_mm256_cmp_pd(d2, _mm256_mul_pd(lim, lim), _CMP_LE_OQ));
     if (!_mm256_movemask_pd(hit)) {
         const __m256d inf = _mm256_set1_pd(INFINITY);
         _mm256_storeu_pd(out, inf);

@@ -205,137 +205,98 @@ static inline unsigned partner_lanes(const int32_t *nb, int lanes, int32_t partn
     return m;
 }
 
-/* Pad the m gathered indices to a multiple of four with ball i itself (its lanes are
- * masked off), so that every neighbour goes through the lanes; returns the padded count. */
-static inline size_t pad_lanes(int32_t *nb, size_t m, int32_t i)
+/* Pad the m gathered indices to a multiple of the lanes' width w (4 or 8) with ball i
+ * itself (its lanes are masked off), so that every neighbour goes through the lanes;
+ * returns the padded count. */
+static inline size_t pad_lanes(int32_t *nb, size_t m, int32_t i, size_t w)
 {
-    const size_t m4 = (m + 3) & ~(size_t)3;
-    for (size_t j = m; j < m4; j++)
+    const size_t mw = (m + w - 1) & ~(w - 1);
+    for (size_t j = m; j < mw; j++)
         nb[j] = i;
-    return m4;
+    return mw;
 }
 
-/* The same to a multiple of eight (the AVX-512 lanes). */
-static inline size_t pad_lanes8(int32_t *nb, size_t m, int32_t i)
+/* A chunk's earliest lane below *bt into (*bt, *bk), ties to the first in nb order (a
+ * lane without a time holds INFINITY; the padding lanes, ball i itself, too): four lanes
+ * one by one without a branch; eight by a vector minimum and the first lane holding it,
+ * the same choice (strictly earlier replaces). */
+__attribute__((target("avx2"), always_inline)) static inline void
+earliest4(const double *t, const int32_t *nb, double *bt, int32_t *bk)
 {
-    const size_t m8 = (m + 7) & ~(size_t)7;
-    for (size_t j = m; j < m8; j++)
-        nb[j] = i;
-    return m8;
-}
-
-/* (three, latest: compile-time constants at each call, so 2-D gets its own loop without
- * z.) The earliest time is taken lane by lane without a branch (a lane without a time
- * holds INFINITY; the padding lanes, ball i itself, too); only when checking, and a lane
- * of the chunk is near, are the lanes visited one by one. */
-__attribute__((target("avx2"), always_inline)) static inline int test_list_avx2_dim(
-    const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *best, int32_t *bp,
-    const rc_vec3 *vold, int32_t partner, double T, const int three, const int latest)
-{
-    const eng_ball *bi = &s->b[i];
-    const int check = vold && s->def.sim_tol > 0.0;
-    double bt = *best;
-    int32_t bk = *bp;
-    const size_t m4 = pad_lanes(nb, m, i);
-    for (size_t j = 0; j < m4; j += 4) {
-        const eng_ball *const k[4] = {&s->b[nb[j]], &s->b[nb[j + 1]], &s->b[nb[j + 2]],
-                                      &s->b[nb[j + 3]]};
-        double t[4];
-        int nears;
-        pair_sphere_x4(s, bi, k, bt, s->def.sim_tol, t, &nears, three, latest);
-        const size_t left = m - j < 4 ? m - j : 4;
-        unsigned near_in = (unsigned)nears & ((1u << left) - 1u);
-        if (check && near_in)
-            near_in &= ~partner_lanes(nb + j, 4, partner);
-        if (check && near_in) {
-            for (size_t l = 0; l < left; l++)
-                if (visit(s, bi, nb[j + l], t[l], near_in >> l & 1, check, partner, vold, T,
-                          &bt, &bk))
-                    return 1;
-            continue;
-        }
-        for (int l = 0; l < 4; l++) {
-            const int take = t[l] < bt;
-            bt = take ? t[l] : bt;
-            bk = take ? nb[j + (size_t)l] : bk;
-        }
+    for (int l = 0; l < 4; l++) {
+        const int take = t[l] < *bt;
+        *bt = take ? t[l] : *bt;
+        *bk = take ? nb[l] : *bk;
     }
-    *best = bt;
-    *bp = bk;
-    return 0;
 }
 
 #ifdef ENG_HAVE_AVX512
-/* test_list_avx2_dim on eight lanes. Without the check, a chunk's earliest lane is found
- * by a vector minimum and the first lane holding it: the same choice as visiting the lanes
- * in order (strictly earlier replaces, so ties go to the first in nb order). */
-__attribute__((target("avx512f"), always_inline)) static inline int test_list_avx512_dim(
-    const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *best, int32_t *bp,
-    const rc_vec3 *vold, int32_t partner, double T, const int three, const int latest)
+__attribute__((target("avx512f"), always_inline)) static inline void
+earliest8(const double *t, const int32_t *nb, double *bt, int32_t *bk)
 {
-    const eng_ball *bi = &s->b[i];
-    const int check = vold && s->def.sim_tol > 0.0;
-    double bt = *best;
-    int32_t bk = *bp;
-    const size_t m8 = pad_lanes8(nb, m, i);
-    for (size_t j = 0; j < m8; j += 8) {
-        const eng_ball *k[8];
-        for (int l = 0; l < 8; l++)
-            k[l] = &s->b[nb[j + (size_t)l]];
-        double t[8];
-        unsigned nears;
-        pair_sphere_x8(s, bi, k, bt, s->def.sim_tol, t, &nears, three, latest);
-        const size_t left = m - j < 8 ? m - j : 8;
-        unsigned near_in = nears & ((1u << left) - 1u);
-        if (check && near_in)
-            near_in &= ~partner_lanes(nb + j, 8, partner);
-        if (check && near_in) {
-            for (size_t l = 0; l < left; l++)
-                if (visit(s, bi, nb[j + l], t[l], near_in >> l & 1, check, partner, vold, T,
-                          &bt, &bk))
-                    return 1;
-            continue;
-        }
-        const __m512d tv = _mm512_loadu_pd(t);
-        const double tmin = _mm512_reduce_min_pd(tv);
-        const unsigned at = _mm512_cmp_pd_mask(tv, _mm512_set1_pd(tmin), _CMP_EQ_OQ);
-        const int take = tmin < bt;
-        const int32_t kmin = nb[j + (size_t)(__builtin_ctz(at | 0x100u) & 7)];
-        bt = take ? tmin : bt;
-        bk = take ? kmin : bk;
-    }
-    *best = bt;
-    *bp = bk;
-    return 0;
-}
-
-__attribute__((target("avx512f"))) static int test_list_avx512(const rc_sim *s, int32_t i,
-                                                              int32_t *nb, size_t m,
-                                                              double *best, int32_t *bp,
-                                                              const rc_vec3 *vold,
-                                                              int32_t partner, double T,
-                                                              int latest)
-{
-    if (s->def.dim == 3)
-        return latest ? test_list_avx512_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 1)
-                      : test_list_avx512_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 0);
-    return latest ? test_list_avx512_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 1)
-                  : test_list_avx512_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 0);
+    const __m512d tv = _mm512_loadu_pd(t);
+    const double tmin = _mm512_reduce_min_pd(tv);
+    const unsigned at = _mm512_cmp_pd_mask(tv, _mm512_set1_pd(tmin), _CMP_EQ_OQ);
+    const int take = tmin < *bt;
+    const int32_t kmin = nb[__builtin_ctz(at | 0x100u) & 7];
+    *bt = take ? tmin : *bt;
+    *bk = take ? kmin : *bk;
 }
 #endif
 
-__attribute__((target("avx2"))) static int test_list_avx2(const rc_sim *s, int32_t i,
-                                                          int32_t *nb, size_t m,
-                                                          double *best, int32_t *bp,
-                                                          const rc_vec3 *vold, int32_t partner,
-                                                          double T, int latest)
-{
-    if (s->def.dim == 3)
-        return latest ? test_list_avx2_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 1)
-                      : test_list_avx2_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 0);
-    return latest ? test_list_avx2_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 1)
-                  : test_list_avx2_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 0);
-}
+/* test_list in lanes of width W (pair_sphere_x4 or _x8 as PAIR, the earliest by
+ * EARLIEST). three, latest: compile-time constants at each call, so 2-D gets
+ * its own loop without z. Only when checking, and a lane of the chunk other than the
+ * partner's is near, are the lanes visited one by one. */
+#define ENG_TEST_LIST(NAME, TARGET, W, PAIR, EARLIEST)                                      \
+    __attribute__((target(TARGET), always_inline)) static inline int NAME##_dim(           \
+        const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *best, int32_t *bp,      \
+        const rc_vec3 *vold, int32_t partner, double T, const int three, const int latest) \
+    {                                                                                      \
+        const eng_ball *bi = &s->b[i];                                                     \
+        const int check = vold && s->def.sim_tol > 0.0;                                    \
+        double bt = *best;                                                                 \
+        int32_t bk = *bp;                                                                  \
+        const size_t mw = pad_lanes(nb, m, i, W);                                          \
+        for (size_t j = 0; j < mw; j += W) {                                               \
+            const eng_ball *k[W];                                                          \
+            for (int l = 0; l < W; l++)                                                    \
+                k[l] = &s->b[nb[j + (size_t)l]];                                           \
+            double t[W];                                                                   \
+            unsigned nears;                                                                \
+            PAIR(s, bi, k, bt, s->def.sim_tol, t, &nears, three, latest);                  \
+            const size_t left = m - j < W ? m - j : W;                                     \
+            unsigned near_in = nears & ((1u << left) - 1u);                                \
+            if (check && near_in)                                                          \
+                near_in &= ~partner_lanes(nb + j, W, partner);                             \
+            if (check && near_in) {                                                        \
+                for (size_t l = 0; l < left; l++)                                          \
+                    if (visit(s, bi, nb[j + l], t[l], near_in >> l & 1, check, partner,    \
+                              vold, T, &bt, &bk))                                          \
+                        return 1;                                                          \
+                continue;                                                                  \
+            }                                                                              \
+            EARLIEST(t, nb + j, &bt, &bk);                                                 \
+        }                                                                                  \
+        *best = bt;                                                                        \
+        *bp = bk;                                                                          \
+        return 0;                                                                          \
+    }                                                                                      \
+    __attribute__((target(TARGET))) static int NAME(const rc_sim *s, int32_t i, int32_t *nb, \
+                                                    size_t m, double *best, int32_t *bp,    \
+                                                    const rc_vec3 *vold, int32_t partner,   \
+                                                    double T, int latest)                   \
+    {                                                                                      \
+        if (s->def.dim == 3)                                                               \
+            return latest ? NAME##_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 1)      \
+                          : NAME##_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 0);     \
+        return latest ? NAME##_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 1)          \
+                      : NAME##_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 0);         \
+    }
+ENG_TEST_LIST(test_list_avx2, "avx2", 4, pair_sphere_x4, earliest4)
+#ifdef ENG_HAVE_AVX512
+ENG_TEST_LIST(test_list_avx512, "avx512f", 8, pair_sphere_x8, earliest8)
+#endif
 #endif
 
 /* Sphere contact of ball i with each of the m gathered neighbours nb (uncontracted
@@ -372,64 +333,38 @@ static int test_list(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *
  * pair_sphere_scalar, in lanes where the CPU has them (the same bits every way): the
  * broad phase of a contracted frame. */
 #ifdef ENG_HAVE_AVX2
-__attribute__((target("avx2"), always_inline)) static inline size_t sphere_lanes_avx2_dim(
-    const rc_sim *s, const eng_ball *bi, int32_t *nb, size_t m, double best, double *t,
-    unsigned char *near, const int three)
-{
-    const size_t m4 = pad_lanes(nb, m, (int32_t)(bi - s->b));
-    size_t j = 0;
-    for (; j < m4; j += 4) {
-        const eng_ball *const k[4] = {&s->b[nb[j]], &s->b[nb[j + 1]], &s->b[nb[j + 2]],
-                                      &s->b[nb[j + 3]]};
-        int nears;
-        pair_sphere_x4(s, bi, k, best, s->def.sim_tol, &t[j], &nears, three, 0);
-        for (int l = 0; l < 4; l++)
-            near[j + (size_t)l] = (unsigned char)(nears >> l & 1);
+/* One body for each width of lanes: W neighbours a step through PAIR (pair_sphere_x4 or
+ * _x8); the dimension a constant in each of the two copies. */
+#define ENG_SPHERE_LANES(NAME, TARGET, W, PAIR)                                             \
+    __attribute__((target(TARGET), always_inline)) static inline size_t NAME##_dim(        \
+        const rc_sim *s, const eng_ball *bi, int32_t *nb, size_t m, double best, double *t, \
+        unsigned char *near, const int three)                                              \
+    {                                                                                      \
+        const size_t mw = pad_lanes(nb, m, (int32_t)(bi - s->b), W);                       \
+        size_t j = 0;                                                                      \
+        for (; j < mw; j += W) {                                                           \
+            const eng_ball *k[W];                                                          \
+            for (int l = 0; l < W; l++)                                                    \
+                k[l] = &s->b[nb[j + (size_t)l]];                                           \
+            unsigned nears;                                                                \
+            PAIR(s, bi, k, best, s->def.sim_tol, &t[j], &nears, three, 0);                 \
+            for (int l = 0; l < W; l++)                                                    \
+                near[j + (size_t)l] = (unsigned char)(nears >> l & 1);                     \
+        }                                                                                  \
+        return j;                                                                          \
+    }                                                                                      \
+    __attribute__((target(TARGET))) static size_t NAME(const rc_sim *s, const eng_ball *bi, \
+                                                       int32_t *nb, size_t m, double best,  \
+                                                       double *t, unsigned char *near)      \
+    {                                                                                      \
+        if (s->def.dim == 3)                                                               \
+            return NAME##_dim(s, bi, nb, m, best, t, near, 1);                             \
+        return NAME##_dim(s, bi, nb, m, best, t, near, 0);                                 \
     }
-    return j;
-}
-
-__attribute__((target("avx2"))) static size_t sphere_lanes_avx2(const rc_sim *s,
-                                                               const eng_ball *bi,
-                                                               int32_t *nb, size_t m,
-                                                               double best, double *t,
-                                                               unsigned char *near)
-{
-    if (s->def.dim == 3)
-        return sphere_lanes_avx2_dim(s, bi, nb, m, best, t, near, 1);
-    return sphere_lanes_avx2_dim(s, bi, nb, m, best, t, near, 0);
-}
+ENG_SPHERE_LANES(sphere_lanes_avx2, "avx2", 4, pair_sphere_x4)
 #endif
-
 #ifdef ENG_HAVE_AVX512
-__attribute__((target("avx512f"), always_inline)) static inline size_t sphere_lanes_avx512_dim(
-    const rc_sim *s, const eng_ball *bi, int32_t *nb, size_t m, double best, double *t,
-    unsigned char *near, const int three)
-{
-    const size_t m8 = pad_lanes8(nb, m, (int32_t)(bi - s->b));
-    size_t j = 0;
-    for (; j < m8; j += 8) {
-        const eng_ball *k[8];
-        for (int l = 0; l < 8; l++)
-            k[l] = &s->b[nb[j + (size_t)l]];
-        unsigned nears;
-        pair_sphere_x8(s, bi, k, best, s->def.sim_tol, &t[j], &nears, three, 0);
-        for (int l = 0; l < 8; l++)
-            near[j + (size_t)l] = (unsigned char)(nears >> l & 1);
-    }
-    return j;
-}
-
-__attribute__((target("avx512f"))) static size_t sphere_lanes_avx512(const rc_sim *s,
-                                                                   const eng_ball *bi,
-                                                                   int32_t *nb, size_t m,
-                                                                   double best, double *t,
-                                                                   unsigned char *near)
-{
-    if (s->def.dim == 3)
-        return sphere_lanes_avx512_dim(s, bi, nb, m, best, t, near, 1);
-    return sphere_lanes_avx512_dim(s, bi, nb, m, best, t, near, 0);
-}
+ENG_SPHERE_LANES(sphere_lanes_avx512, "avx512f", 8, pair_sphere_x8)
 #endif
 
 static void sphere_lanes(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double best,
