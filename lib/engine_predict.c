@@ -335,10 +335,10 @@ static int test_list(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *
 #ifdef ENG_HAVE_AVX2
 /* One body for each width of lanes: W neighbours a step through PAIR (pair_sphere_x4 or
  * _x8); the dimension a constant in each of the two copies. */
-#define ENG_SPHERE_LANES(NAME, TARGET, W, PAIR)                                             \
+#define ENG_SPHERE_LANES(NAME, TARGET, W, PAIR)                                            \
     __attribute__((target(TARGET), always_inline)) static inline size_t NAME##_dim(        \
         const rc_sim *s, const eng_ball *bi, int32_t *nb, size_t m, double best, double *t, \
-        unsigned char *near, const int three)                                              \
+        unsigned char *near, uint64_t *live, const int three)                              \
     {                                                                                      \
         const size_t mw = pad_lanes(nb, m, (int32_t)(bi - s->b), W);                       \
         size_t j = 0;                                                                      \
@@ -347,19 +347,22 @@ static int test_list(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *
             for (int l = 0; l < W; l++)                                                    \
                 k[l] = &s->b[nb[j + (size_t)l]];                                           \
             unsigned nears;                                                                \
-            PAIR(s, bi, k, best, s->def.sim_tol, &t[j], &nears, three, 0);                 \
+            const unsigned hit = (unsigned)PAIR(s, bi, k, best, s->def.sim_tol, &t[j],     \
+                                                &nears, three, 0);                         \
             for (int l = 0; l < W; l++)                                                    \
                 near[j + (size_t)l] = (unsigned char)(nears >> l & 1);                     \
+            live[j / 64] |= (uint64_t)(hit | nears) << (j % 64);                           \
         }                                                                                  \
         return j;                                                                          \
     }                                                                                      \
     __attribute__((target(TARGET))) static size_t NAME(const rc_sim *s, const eng_ball *bi, \
                                                        int32_t *nb, size_t m, double best,  \
-                                                       double *t, unsigned char *near)      \
+                                                       double *t, unsigned char *near,      \
+                                                       uint64_t *live)                      \
     {                                                                                      \
         if (s->def.dim == 3)                                                               \
-            return NAME##_dim(s, bi, nb, m, best, t, near, 1);                             \
-        return NAME##_dim(s, bi, nb, m, best, t, near, 0);                                 \
+            return NAME##_dim(s, bi, nb, m, best, t, near, live, 1);                       \
+        return NAME##_dim(s, bi, nb, m, best, t, near, live, 0);                           \
     }
 ENG_SPHERE_LANES(sphere_lanes_avx2, "avx2", 4, pair_sphere_x4)
 #endif
@@ -367,21 +370,33 @@ ENG_SPHERE_LANES(sphere_lanes_avx2, "avx2", 4, pair_sphere_x4)
 ENG_SPHERE_LANES(sphere_lanes_avx512, "avx512f", 8, pair_sphere_x8)
 #endif
 
+/* (and live: bit j set if neighbour j has a time or is near -- the only ones the narrow
+ * phase looks at -- GATHER_MAX bits) */
+_Static_assert(GATHER_MAX <= 128, "live holds two words");
 static void sphere_lanes(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double best,
-                         double *t, unsigned char *near)
+                         double *t, unsigned char *near, uint64_t live[2])
 {
     const eng_ball *bi = &s->b[i];
     size_t j = 0;
+    live[0] = live[1] = 0;
 #ifdef ENG_HAVE_AVX2
     if (s->simd == ENG_SIMD_AVX512)
-        j = sphere_lanes_avx512(s, bi, nb, m, best, t, near);
+        j = sphere_lanes_avx512(s, bi, nb, m, best, t, near, live);
     else if (s->simd == ENG_SIMD_AVX2)
-        j = sphere_lanes_avx2(s, bi, nb, m, best, t, near);
+        j = sphere_lanes_avx2(s, bi, nb, m, best, t, near, live);
 #endif
     for (; j < m; j++) {
         int nr;
         t[j] = pair_sphere_scalar(s, bi, &s->b[nb[j]], best, s->def.sim_tol, &nr);
         near[j] = (unsigned char)nr;
+        live[j / 64] |= (uint64_t)((t[j] < INFINITY) | nr) << (j % 64);
+    }
+    /* (the padding lanes past m are ball i itself: near, so masked off) */
+    if (m < 64) {
+        live[0] &= (UINT64_C(1) << m) - 1u;
+        live[1] = 0;
+    } else if (m < 128) {
+        live[1] &= (UINT64_C(1) << (m - 64)) - 1u;
     }
 }
 
@@ -440,9 +455,13 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
     while (!w->done) {
         /* gather a chunk of neighbours ... */
         const size_t m = walk_gather(w, nb);
-        /* ... then the bounding spheres in lanes, and the candidates that can beat best */
-        sphere_lanes(s, i, nb, m, *best, t, near);
-        for (size_t j = 0; j < m; j++) {
+        /* ... then the bounding spheres in lanes, and the candidates that can beat best
+         * (only the live neighbours: the others have no time and are not near) */
+        uint64_t live[2];
+        sphere_lanes(s, i, nb, m, *best, t, near, live);
+        for (size_t lw = 0; lw < 2; lw++)
+        for (uint64_t bits = live[lw]; bits; bits &= bits - 1u) {
+            const size_t j = 64 * lw + (size_t)__builtin_ctzll(bits);
             const int32_t kk = nb[j];
             if (chk && near[j] && kk != chk->partner) {
                 double tref;
