@@ -207,13 +207,14 @@ static inline unsigned partner_lanes(const int32_t *nb, int lanes, int32_t partn
 
 /* Pad the m gathered indices to a multiple of the lanes' width w (4 or 8) with ball i
  * itself (its lanes are masked off), so that every neighbour goes through the lanes;
- * returns the padded count. */
+ * returns the padded count. (Eight stored whatever the count: no loop to mispredict;
+ * buffers hold NB_CAP >= GATHER_MAX + 8.) */
+_Static_assert(NB_CAP >= GATHER_MAX + 8, "room to pad");
 static inline size_t pad_lanes(int32_t *nb, size_t m, int32_t i, size_t w)
 {
-    const size_t mw = (m + w - 1) & ~(w - 1);
-    for (size_t j = m; j < mw; j++)
-        nb[j] = i;
-    return mw;
+    for (size_t l = 0; l < 8; l++)
+        nb[m + l] = i;
+    return (m + w - 1) & ~(w - 1);
 }
 
 /* A chunk's earliest lane below *bt into (*bt, *bk), ties to the first in nb order (a

