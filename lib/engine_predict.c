@@ -130,6 +130,8 @@ static inline unsigned boundary_dims(const rc_sim *s, const int c[3])
 
 static void wall_event(const rc_sim *s, int32_t i, unsigned dims, double *best, int32_t *bp)
 {
+    if (!dims) /* (most cells) */
+        return;
     const eng_ball *bi = &s->b[i];
     double bt = *best;
     int32_t bw = *bp;

@@ -101,6 +101,7 @@ typedef struct eng_cells {
     int32_t *slot;    /* ENG_CELL_CAP per cell */
     int32_t *next;    /* per ball: next of its overflow chain (-1: the end) */
     size_t ncells;
+    int32_t block_rows[9]; /* a full 3^d block's rows, as slot offsets from its first */
 } eng_cells;
 
 int rc_eng_cells_init(eng_cells *g, int dim, rc_vec3 box, double min_edge, size_t nballs);

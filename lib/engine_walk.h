@@ -53,9 +53,8 @@ static inline void walk_init(eng_walk *w, const rc_sim *s, int32_t skip, const i
             /* three rows a plane, one or three planes (a full block away from the
              * grid's edges, the common case): fixed counts, no loop branches to
              * mispredict (the general loops below cost ~5 % of a 3-D run) */
-            const int32_t pz = g->n[2] == 1 ? 0 : sz; /* (2-D: rows 3.. unused) */
             for (int r = 0; r < 9; r++)
-                w->row[r] = plane + (r / 3) * pz + (r % 3) * sy;
+                w->row[r] = plane + g->block_rows[r];
             w->nrows = g->n[2] == 1 ? 3 : 9;
         } else {
             for (int z = z0; z <= z1; z++, plane += sz) {
