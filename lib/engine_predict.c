@@ -331,17 +331,16 @@ static int test_list(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *
 }
 
 /* Bounding-sphere times of ball i with the m <= GATHER_MAX gathered neighbours nb (padded,
- * so nb, t and near need NB_CAP; t[j]:
- * INFINITY unless it can beat `best`) and the proximity flags near[j] of
- * pair_sphere_scalar, in lanes where the CPU has them (the same bits every way): the
- * broad phase of a contracted frame. */
+ * so nb and t need NB_CAP; t[j]: INFINITY unless it can beat `best`), in lanes where the
+ * CPU has them (the same bits every way): the broad phase of a contracted frame. As bits
+ * (j of the 128): hit, t[j] finite; near, pair_sphere_scalar's proximity flag. */
 #ifdef ENG_HAVE_AVX2
 /* One body for each width of lanes: W neighbours a step through PAIR (pair_sphere_x4 or
  * _x8); the dimension a constant in each of the two copies. */
 #define ENG_SPHERE_LANES(NAME, TARGET, W, PAIR)                                            \
     __attribute__((target(TARGET), always_inline)) static inline size_t NAME##_dim(        \
         const rc_sim *s, const eng_ball *bi, int32_t *nb, size_t m, double best, double *t, \
-        unsigned char *near, uint64_t *live, const int three)                              \
+        uint64_t *hit, uint64_t *near, const int three)                                    \
     {                                                                                      \
         const size_t mw = pad_lanes(nb, m, (int32_t)(bi - s->b), W);                       \
         size_t j = 0;                                                                      \
@@ -350,22 +349,21 @@ static int test_list(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *
             for (int l = 0; l < W; l++)                                                    \
                 k[l] = &s->b[nb[j + (size_t)l]];                                           \
             unsigned nears;                                                                \
-            const unsigned hit = (unsigned)PAIR(s, bi, k, best, s->def.sim_tol, &t[j],     \
-                                                &nears, three, 0);                         \
-            for (int l = 0; l < W; l++)                                                    \
-                near[j + (size_t)l] = (unsigned char)(nears >> l & 1);                     \
-            live[j / 64] |= (uint64_t)(hit | nears) << (j % 64);                           \
+            const unsigned h = (unsigned)PAIR(s, bi, k, best, s->def.sim_tol, &t[j],       \
+                                              &nears, three, 0);                           \
+            hit[j / 64] |= (uint64_t)h << (j % 64);                                        \
+            near[j / 64] |= (uint64_t)nears << (j % 64);                                   \
         }                                                                                  \
         return j;                                                                          \
     }                                                                                      \
     __attribute__((target(TARGET))) static size_t NAME(const rc_sim *s, const eng_ball *bi, \
                                                        int32_t *nb, size_t m, double best,  \
-                                                       double *t, unsigned char *near,      \
-                                                       uint64_t *live)                      \
+                                                       double *t, uint64_t *hit,            \
+                                                       uint64_t *near)                      \
     {                                                                                      \
         if (s->def.dim == 3)                                                               \
-            return NAME##_dim(s, bi, nb, m, best, t, near, live, 1);                       \
-        return NAME##_dim(s, bi, nb, m, best, t, near, live, 0);                           \
+            return NAME##_dim(s, bi, nb, m, best, t, hit, near, 1);                        \
+        return NAME##_dim(s, bi, nb, m, best, t, hit, near, 0);                            \
     }
 ENG_SPHERE_LANES(sphere_lanes_avx2, "avx2", 4, pair_sphere_x4)
 #endif
@@ -373,33 +371,31 @@ ENG_SPHERE_LANES(sphere_lanes_avx2, "avx2", 4, pair_sphere_x4)
 ENG_SPHERE_LANES(sphere_lanes_avx512, "avx512f", 8, pair_sphere_x8)
 #endif
 
-/* (and live: bit j set if neighbour j has a time or is near -- the only ones the narrow
- * phase looks at -- GATHER_MAX bits) */
-_Static_assert(GATHER_MAX <= 128, "live holds two words");
+_Static_assert(GATHER_MAX <= 128, "the bit sets hold two words");
 static void sphere_lanes(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double best,
-                         double *t, unsigned char *near, uint64_t live[2])
+                         double *t, uint64_t hit[2], uint64_t near[2])
 {
     const eng_ball *bi = &s->b[i];
     size_t j = 0;
-    live[0] = live[1] = 0;
+    hit[0] = hit[1] = near[0] = near[1] = 0;
 #ifdef ENG_HAVE_AVX2
     if (s->simd == ENG_SIMD_AVX512)
-        j = sphere_lanes_avx512(s, bi, nb, m, best, t, near, live);
+        j = sphere_lanes_avx512(s, bi, nb, m, best, t, hit, near);
     else if (s->simd == ENG_SIMD_AVX2)
-        j = sphere_lanes_avx2(s, bi, nb, m, best, t, near, live);
+        j = sphere_lanes_avx2(s, bi, nb, m, best, t, hit, near);
 #endif
     for (; j < m; j++) {
         int nr;
         t[j] = pair_sphere_scalar(s, bi, &s->b[nb[j]], best, s->def.sim_tol, &nr);
-        near[j] = (unsigned char)nr;
-        live[j / 64] |= (uint64_t)((t[j] < INFINITY) | nr) << (j % 64);
+        hit[j / 64] |= (uint64_t)(t[j] < INFINITY) << (j % 64);
+        near[j / 64] |= (uint64_t)nr << (j % 64);
     }
-    /* (the padding lanes past m are ball i itself: near, so masked off) */
+    /* (the padding lanes past m are ball i itself, near: masked off) */
     if (m < 64) {
-        live[0] &= (UINT64_C(1) << m) - 1u;
-        live[1] = 0;
+        near[0] &= (UINT64_C(1) << m) - 1u;
+        near[1] = 0;
     } else if (m < 128) {
-        live[1] &= (UINT64_C(1) << (m - 64)) - 1u;
+        near[1] &= (UINT64_C(1) << (m - 64)) - 1u;
     }
 }
 
@@ -452,7 +448,6 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
     size_t nc = 0;
     int32_t nb[NB_CAP];
     double t[NB_CAP];
-    unsigned char near[NB_CAP];
     const int table = s->def.frame == &rc_toi_frame_table;
     const rc_toi_shape shi = shape_of(s, bi); /* (the scanning ball's, for every pair) */
     while (!w->done) {
@@ -460,13 +455,14 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
         const size_t m = walk_gather(w, nb);
         /* ... then the bounding spheres in lanes, and the candidates that can beat best
          * (only the live neighbours: the others have no time and are not near) */
-        uint64_t live[2];
-        sphere_lanes(s, i, nb, m, *best, t, near, live);
+        uint64_t hit[2], nearb[2];
+        sphere_lanes(s, i, nb, m, *best, t, hit, nearb);
         for (size_t lw = 0; lw < 2; lw++)
-        for (uint64_t bits = live[lw]; bits; bits &= bits - 1u) {
+        for (uint64_t bits = hit[lw] | nearb[lw]; bits; bits &= bits - 1u) {
             const size_t j = 64 * lw + (size_t)__builtin_ctzll(bits);
+            const int near = (int)(nearb[lw] >> (j % 64) & 1u);
             const int32_t kk = nb[j];
-            if (chk && near[j] && kk != chk->partner) {
+            if (chk && near && kk != chk->partner) {
                 double tref;
                 const rc_vec3 dx = pair_sep(bi, &s->b[kk], &tref);
                 if (narrow_conflict(s, bi, &s->b[kk], dx, rc_v3_norm2(dx), chk, NULL))
@@ -476,7 +472,7 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
             /* near and no bounding-sphere time: overlapping bounding spheres that part
              * may still hold shapes that meet (pair_time_dx); now is their lower bound */
             if (!(tj < *best)) {
-                if (!near[j] || !parting_candidate(s, &shi, bi, &s->b[kk], *best))
+                if (!near || !parting_candidate(s, &shi, bi, &s->b[kk], *best))
                     continue;
                 tj = s->now;
             }
