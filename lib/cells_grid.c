@@ -49,8 +49,8 @@ int rc_eng_cells_init(eng_cells *g, int dim, rc_vec3 box, double min_edge, size_
     const int32_t sy = g->n[0] * ENG_CELL_CAP, sz = g->n[2] == 1 ? 0 : sy * g->n[1];
     for (int r = 0; r < 9; r++)
         g->block_rows[r] = (r / 3) * sz + (r % 3) * sy;
-    g->slot = malloc((g->ncells * ENG_CELL_CAP + ENG_SLOT_PAD) * sizeof *g->slot);
-    g->next = malloc((nballs ? nballs : 1) * sizeof *g->next);
+    g->slot = rc_eng_alloc((g->ncells * ENG_CELL_CAP + ENG_SLOT_PAD) * sizeof *g->slot);
+    g->next = rc_eng_alloc(nballs * sizeof *g->next);
     if (!g->slot || !g->next) {
         rc_eng_cells_free(g);
         return RC_ENOMEM;

@@ -294,11 +294,11 @@ static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, i
     s->max_group = 0;
     memset(s->events, 0, sizeof s->events);
     int st = RC_ENOMEM;
-    /* each 64-byte record on one cache line, not straddling two (malloc aligns to 16):
+    /* each 64-byte record on one cache line, not straddling two (rc_eng_alloc aligns to 64):
      * every neighbour test loads one whole record */
-    s->b = aligned_alloc(64, (n ? n : 1) * sizeof *s->b);
-    s->a = aligned_alloc(64, (n ? n : 1) * sizeof *s->a);
-    s->clk = malloc((n ? n : 1) * sizeof *s->clk);
+    s->b = rc_eng_alloc(n * sizeof *s->b);
+    s->a = rc_eng_alloc(n * sizeof *s->a);
+    s->clk = rc_eng_alloc(n * sizeof *s->clk);
     if (!s->b || !s->a || !s->clk)
         goto fail;
     double edge = 2.0 * rmax * (1.0 + CELL_MARGIN + 2.0 * s->def.sim_tol);
@@ -314,10 +314,12 @@ static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, i
     /* Store balls in cell order (stable): neighbours then share cache lines and the
      * prefetcher, which matters more than anything else once N no longer fits in cache.
      * id[] / slot[] translate to and from the caller's indices. */
-    s->cnt = calloc(n ? n : 1, sizeof *s->cnt);
-    s->id = malloc((n ? n : 1) * sizeof *s->id);
-    s->slot = malloc((n ? n : 1) * sizeof *s->slot);
-    if (s->narrow && !(s->ev_n = malloc((n ? n : 1) * sizeof *s->ev_n))) {
+    s->cnt = rc_eng_alloc(n * sizeof *s->cnt);
+    if (s->cnt)
+        memset(s->cnt, 0, (n ? n : 1) * sizeof *s->cnt);
+    s->id = rc_eng_alloc(n * sizeof *s->id);
+    s->slot = rc_eng_alloc(n * sizeof *s->slot);
+    if (s->narrow && !(s->ev_n = rc_eng_alloc(n * sizeof *s->ev_n))) {
         st = RC_ENOMEM;
         goto fail;
     }

@@ -149,11 +149,11 @@ int rc_eng_queue_init(eng_queue *q, size_t n)
     while (2 * (size_t)q->nb <= n / 2 + 1) /* nb ~ n/4 .. n/2: a few bytes per ball */
         q->nb *= 2;
     const size_t m = n ? n : 1;
-    q->key = malloc(m * sizeof *q->key);
-    q->next = malloc(m * sizeof *q->next);
-    q->prev = malloc(m * sizeof *q->prev);
-    q->where = malloc(m * sizeof *q->where);
-    q->heap = malloc(m * sizeof *q->heap);
+    q->key = rc_eng_alloc(m * sizeof *q->key);
+    q->next = rc_eng_alloc(m * sizeof *q->next);
+    q->prev = rc_eng_alloc(m * sizeof *q->prev);
+    q->where = rc_eng_alloc(m * sizeof *q->where);
+    q->heap = rc_eng_alloc(m * sizeof *q->heap);
     q->head = malloc(((size_t)q->nb + 2) * sizeof *q->head);
     if (!q->key || !q->next || !q->prev || !q->where || !q->heap || !q->head) {
         rc_eng_queue_free(q);
