@@ -469,8 +469,8 @@ static void reorder(rc_sim *s)
         rc_eng_cells_insert(&s->g, s->a, (int32_t)k, s->a[k].cell);
     /* the queue under the new numbers (and a bucket width fitted to the gas as it is now) */
     for (size_t k = 0; k < n; k++)
-        s->q.key[k] = key_of(&s->a[k]);
-    rc_eng_queue_build(&s->q, s->q.key, s->now);
+        s->q.e[k].key = key_of(&s->a[k]);
+    rc_eng_queue_rebuild(&s->q, s->now);
 }
 
 int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)

@@ -46,18 +46,27 @@ typedef struct eng_clock {
 
 /* The event queue (queue_cal.c): one entry per ball, popped in (time, ball) order.
  * (Functions shared between the engine files carry rc_eng_: exported, not public.) */
+typedef struct eng_qent {
+    double key;   /* the ball's entry's time */
+    int32_t next; /* links of the bucket list it is in, or its heap position (queue_cal.c) */
+    int32_t prev;
+} eng_qent;
+
+/* A ball's key, links and heap place on one 16-byte entry: an update reads and writes one
+ * line instead of four arrays' (at N = 1e5 they come from L3). */
+_Static_assert(sizeof(eng_qent) == 16, "four entries a cache line");
+
 typedef struct eng_queue {
     size_t n;
-    double *key;          /* per ball: its entry's time */
-    int32_t *next, *prev; /* per ball: links of the bucket list it is in */
-    int32_t *where;       /* per ball: >= 0 position in heap, else -1 - its list */
+    eng_qent *e;          /* per ball */
     uint32_t *heap;       /* the bucket being drained: a binary heap (capacity n) */
     size_t hn;
     int32_t *head;        /* nb calendar lists, then overflow, then never */
     uint32_t nb;          /* buckets in the span, a power of two */
     double inv_w;         /* 1 / bucket width */
     int64_t cur;          /* number of the bucket being drained */
-    int64_t redist;       /* the overflow list is spread again when cur reaches this */
+    int64_t redist;       /* end of the span: buckets from here on wait in the overflow
+                             list, spread again when cur reaches it */
     size_t in_cal;        /* entries in the calendar lists */
 } eng_queue;
 
@@ -66,6 +75,8 @@ int rc_eng_queue_init(eng_queue *q, size_t n);
 void rc_eng_queue_free(eng_queue *q);
 /* Refile every ball under keys[] (all >= now), choosing the bucket width afresh. */
 void rc_eng_queue_build(eng_queue *q, const double *keys, double now);
+/* The same with the keys already in q->e[i].key. */
+void rc_eng_queue_rebuild(eng_queue *q, double now);
 /* Change ball's key (>= the time last popped). */
 void rc_eng_queue_update(eng_queue *q, uint32_t ball, double t);
 /* The earliest entry (time, ball); 0 if the queue is empty. */
@@ -84,7 +95,7 @@ static inline int32_t rc_eng_queue_next(const eng_queue *q)
 {
     if (q->hn >= 2) {
         uint32_t k = q->heap[1];
-        if (q->hn > 2 && q->key[q->heap[2]] < q->key[k])
+        if (q->hn > 2 && q->e[q->heap[2]].key < q->e[k].key)
             k = q->heap[2];
         return (int32_t)k;
     }
@@ -93,9 +104,9 @@ static inline int32_t rc_eng_queue_next(const eng_queue *q)
         if (k < 0)
             continue;
         int32_t best = k;
-        k = q->next[k];
-        for (int e = 1; k >= 0 && e < ENG_HINT_ENTRIES; k = q->next[k], e++)
-            if (q->key[k] < q->key[best])
+        k = q->e[k].next;
+        for (int e = 1; k >= 0 && e < ENG_HINT_ENTRIES; k = q->e[k].next, e++)
+            if (q->e[k].key < q->e[best].key)
                 best = k;
         return best;
     }

@@ -20,17 +20,27 @@
  * a span that would pass it is rebuilt with a wider bucket. */
 #define BUCKET_MAX 4503599627370496.0
 
-/* where[i]: >= 0 position in the heap; < 0: in list -1 - where[i] */
-#define IN_LIST(L) (-1 - (int32_t)(L))
-#define LIST_OF(w) ((uint32_t)(-1 - (w)))
+/* An entry's links (eng_qent): in the heap, next = IN_HEAP and prev = its position; in a
+ * list, next = the following ball (-1: none) and prev = the preceding one, or HEAD(L) at
+ * the head of list L. */
+#define IN_HEAP INT32_MIN
+#define HEAD(L) (-1 - (int32_t)(L))
+#define HEAD_LIST(p) ((uint32_t)(-1 - (p)))
 
 static inline uint32_t list_over(const eng_queue *q) { return q->nb; }
 static inline uint32_t list_never(const eng_queue *q) { return q->nb + 1; }
 
 static inline int before(const eng_queue *q, uint32_t a, uint32_t b)
 {
-    const double ka = q->key[a], kb = q->key[b];
+    const double ka = q->e[a].key, kb = q->e[b].key;
     return ka < kb || (ka == kb && a < b);
+}
+
+static inline void heap_set(eng_queue *q, size_t k, uint32_t i)
+{
+    q->heap[k] = i;
+    q->e[i].next = IN_HEAP;
+    q->e[i].prev = (int32_t)k;
 }
 
 static void heap_up(eng_queue *q, size_t k)
@@ -40,12 +50,10 @@ static void heap_up(eng_queue *q, size_t k)
         const size_t parent = (k - 1) / 2;
         if (!before(q, e, q->heap[parent]))
             break;
-        q->heap[k] = q->heap[parent];
-        q->where[q->heap[k]] = (int32_t)k;
+        heap_set(q, k, q->heap[parent]);
         k = parent;
     }
-    q->heap[k] = e;
-    q->where[e] = (int32_t)k;
+    heap_set(q, k, e);
 }
 
 static void heap_down(eng_queue *q, size_t k)
@@ -59,12 +67,10 @@ static void heap_down(eng_queue *q, size_t k)
             c++;
         if (!before(q, q->heap[c], e))
             break;
-        q->heap[k] = q->heap[c];
-        q->where[q->heap[k]] = (int32_t)k;
+        heap_set(q, k, q->heap[c]);
         k = c;
     }
-    q->heap[k] = e;
-    q->where[e] = (int32_t)k;
+    heap_set(q, k, e);
 }
 
 static void heap_push(eng_queue *q, uint32_t i)
@@ -78,45 +84,50 @@ static void heap_remove(eng_queue *q, size_t k)
     const uint32_t last = q->heap[--q->hn];
     if (k == q->hn)
         return;
-    q->heap[k] = last;
-    q->where[last] = (int32_t)k;
+    heap_set(q, k, last);
     heap_up(q, k);
-    heap_down(q, (size_t)q->where[last]);
+    heap_down(q, (size_t)q->e[last].prev);
 }
 
 static void list_push(eng_queue *q, uint32_t L, uint32_t i)
 {
     const int32_t h = q->head[L];
-    q->next[i] = h;
-    q->prev[i] = -1;
+    q->e[i].next = h;
+    q->e[i].prev = HEAD(L);
     if (h >= 0)
-        q->prev[h] = (int32_t)i;
+        q->e[h].prev = (int32_t)i;
     q->head[L] = (int32_t)i;
-    q->where[i] = IN_LIST(L);
     q->in_cal += L < q->nb;
+}
+
+/* Whether an entry in a list is in a calendar list (not overflow or never), from its key:
+ * place() files an entry in a calendar list exactly when its bucket lies before redist,
+ * and redist only grows until every overflow entry is filed again (redistribute). */
+static inline int in_calendar(const eng_queue *q, double t)
+{
+    return t * q->inv_w < (double)q->redist; /* (inf and NaN: no) */
 }
 
 static void list_unlink(eng_queue *q, uint32_t i)
 {
-    const uint32_t L = LIST_OF(q->where[i]);
-    const int32_t p = q->prev[i], nx = q->next[i];
+    const int32_t p = q->e[i].prev, nx = q->e[i].next;
     if (p >= 0)
-        q->next[p] = nx;
+        q->e[p].next = nx;
     else
-        q->head[L] = nx;
+        q->head[HEAD_LIST(p)] = nx;
     if (nx >= 0)
-        q->prev[nx] = p;
-    q->in_cal -= L < q->nb;
+        q->e[nx].prev = p; /* (the new head takes the list's mark) */
+    q->in_cal -= (size_t)in_calendar(q, q->e[i].key);
 }
 
 /* File ball i by its key: the heap if its bucket is the current one (or earlier, which
- * only a caller's clock set back can give), its calendar list if within the span, else
- * the overflow list (never: no event at all). */
+ * only a caller's clock set back can give), its calendar list if before redist (within
+ * the span), else the overflow list (never: no event at all). */
 static void place(eng_queue *q, uint32_t i)
 {
-    const double t = q->key[i];
+    const double t = q->e[i].key;
     const double x = t * q->inv_w; /* bucket floor(x); bucket numbers are exact doubles */
-    if (!(x < (double)(q->cur + (int64_t)q->nb))) { /* also inf and NaN */
+    if (!(x < (double)q->redist)) { /* also inf and NaN */
         list_push(q, t < INFINITY ? list_over(q) : list_never(q), i);
         return;
     }
@@ -124,7 +135,7 @@ static void place(eng_queue *q, uint32_t i)
         heap_push(q, i);
         return;
     }
-    /* cur + 1 <= x < cur + nb: truncation is floor when x >= 0 (no libm call) */
+    /* cur + 1 <= x < redist <= cur + nb: truncation is floor when x >= 0 (no libm call) */
     const int64_t b = x >= 0.0 ? (int64_t)x : (int64_t)floor(x);
     list_push(q, (uint32_t)(b & (int64_t)(q->nb - 1)), i);
 }
@@ -134,12 +145,12 @@ static void redistribute(eng_queue *q)
 {
     int32_t k = q->head[list_over(q)];
     q->head[list_over(q)] = -1;
+    q->redist = q->cur + (int64_t)q->nb;
     while (k >= 0) {
-        const int32_t nx = q->next[k];
+        const int32_t nx = q->e[k].next;
         place(q, (uint32_t)k);
         k = nx;
     }
-    q->redist = q->cur + (int64_t)q->nb;
 }
 
 int rc_eng_queue_init(eng_queue *q, size_t n)
@@ -149,13 +160,10 @@ int rc_eng_queue_init(eng_queue *q, size_t n)
     while (2 * (size_t)q->nb <= n / 2 + 1) /* nb ~ n/4 .. n/2: a few bytes per ball */
         q->nb *= 2;
     const size_t m = n ? n : 1;
-    q->key = rc_eng_alloc(m * sizeof *q->key);
-    q->next = rc_eng_alloc(m * sizeof *q->next);
-    q->prev = rc_eng_alloc(m * sizeof *q->prev);
-    q->where = rc_eng_alloc(m * sizeof *q->where);
+    q->e = rc_eng_alloc(m * sizeof *q->e);
     q->heap = rc_eng_alloc(m * sizeof *q->heap);
     q->head = malloc(((size_t)q->nb + 2) * sizeof *q->head);
-    if (!q->key || !q->next || !q->prev || !q->where || !q->heap || !q->head) {
+    if (!q->e || !q->heap || !q->head) {
         rc_eng_queue_free(q);
         return RC_ENOMEM;
     }
@@ -165,10 +173,7 @@ int rc_eng_queue_init(eng_queue *q, size_t n)
 
 void rc_eng_queue_free(eng_queue *q)
 {
-    free(q->key);
-    free(q->next);
-    free(q->prev);
-    free(q->where);
+    free(q->e);
     free(q->heap);
     free(q->head);
     *q = (eng_queue){0};
@@ -182,7 +187,7 @@ static void rebuild(eng_queue *q, double now)
     double lead = 0.0, far = now;
     size_t nf = 0;
     for (size_t i = 0; i < q->n; i++) {
-        const double t = q->key[i];
+        const double t = q->e[i].key;
         if (t < INFINITY) {
             lead += t > now ? t - now : 0.0;
             far = t > far ? t : far;
@@ -198,40 +203,45 @@ static void rebuild(eng_queue *q, double now)
         w = 1.0;
     q->inv_w = 1.0 / w;
     q->cur = (int64_t)floor(now * q->inv_w);
+    q->redist = q->cur + (int64_t)q->nb;
     q->hn = 0;
     q->in_cal = 0;
     for (uint32_t L = 0; L < q->nb + 2; L++)
         q->head[L] = -1;
     for (size_t i = q->n; i-- > 0;)
         place(q, (uint32_t)i);
-    q->redist = q->cur + (int64_t)q->nb;
 }
 
 void rc_eng_queue_build(eng_queue *q, const double *keys, double now)
 {
     for (size_t i = 0; i < q->n; i++)
-        q->key[i] = keys[i];
+        q->e[i].key = keys[i];
+    rebuild(q, now);
+}
+
+void rc_eng_queue_rebuild(eng_queue *q, double now)
+{
     rebuild(q, now);
 }
 
 void rc_eng_queue_update(eng_queue *q, uint32_t ball, double t)
 {
-    const int32_t w = q->where[ball];
-    if (w >= 0) { /* in the heap: most updates are of the ball just popped */
+    eng_qent *e = &q->e[ball];
+    if (e->next == IN_HEAP) { /* in the heap: most updates are of the ball just popped */
         if (t * q->inv_w < (double)q->cur + 1.0) { /* still the current bucket */
-            const double old = q->key[ball];
-            q->key[ball] = t;
+            const double old = e->key;
+            e->key = t;
             if (t < old)
-                heap_up(q, (size_t)w);
+                heap_up(q, (size_t)e->prev);
             else
-                heap_down(q, (size_t)w);
+                heap_down(q, (size_t)e->prev);
             return;
         }
-        heap_remove(q, (size_t)w);
+        heap_remove(q, (size_t)e->prev);
     } else {
         list_unlink(q, ball);
     }
-    q->key[ball] = t;
+    e->key = t;
     place(q, ball);
 }
 
@@ -250,8 +260,8 @@ int rc_eng_queue_top(eng_queue *q, double *t, uint32_t *ball)
                 return 1;
             }
             double tmin = INFINITY;
-            for (; k >= 0; k = q->next[k])
-                tmin = q->key[k] < tmin ? q->key[k] : tmin;
+            for (; k >= 0; k = q->e[k].next)
+                tmin = q->e[k].key < tmin ? q->e[k].key : tmin;
             const double b = floor(tmin * q->inv_w);
             if (!(fabs(b) < BUCKET_MAX - (double)q->nb)) {
                 rebuild(q, tmin); /* beyond exact bucket numbers: a wider width */
@@ -269,20 +279,18 @@ int rc_eng_queue_top(eng_queue *q, double *t, uint32_t *ball)
         int32_t k = q->head[L];
         q->head[L] = -1;
         while (k >= 0) {
-            const int32_t nx = q->next[k];
+            const int32_t nx = q->e[k].next;
             q->in_cal--;
             heap_push(q, (uint32_t)k);
             k = nx;
         }
     }
-    *t = q->key[q->heap[0]];
+    *t = q->e[q->heap[0]].key;
     *ball = q->heap[0];
     return 1;
 }
 
 size_t rc_eng_queue_bytes(const eng_queue *q)
 {
-    return q->n * (sizeof *q->key + sizeof *q->next + sizeof *q->prev + sizeof *q->where +
-                   sizeof *q->heap) +
-           ((size_t)q->nb + 2) * sizeof *q->head;
+    return q->n * (sizeof *q->e + sizeof *q->heap) + ((size_t)q->nb + 2) * sizeof *q->head;
 }

@@ -23,6 +23,35 @@ static void brute_min(const double *key, size_t n, double *t, uint32_t *ball)
         }
 }
 
+/* The queue's bookkeeping, walked: every ball in the heap (its entry naming its position)
+ * or in exactly one list (links consistent both ways, the head's entry naming its list),
+ * and in_cal the number in the calendar lists (an overcount only slows the queue, an
+ * undercount skips entries: both must be caught here). Returns the faults found. */
+static long structure_faults(const eng_queue *q)
+{
+    long bad = 0;
+    size_t seen = 0, in_cal = 0;
+    for (size_t k = 0; k < q->hn; k++) {
+        const eng_qent *e = &q->e[q->heap[k]];
+        bad += !(e->next == INT32_MIN && e->prev == (int32_t)k);
+        seen++;
+    }
+    for (uint32_t L = 0; L < q->nb + 2; L++) {
+        int32_t prev = -1 - (int32_t)L;
+        for (int32_t k = q->head[L]; k >= 0; k = q->e[k].next) {
+            bad += q->e[k].prev != prev;
+            prev = k;
+            seen++;
+            in_cal += L < q->nb;
+            if (seen > q->n)
+                return bad + 1; /* a cycle */
+        }
+    }
+    bad += seen != q->n;
+    bad += in_cal != q->in_cal;
+    return bad;
+}
+
 /* A new key after time now, drawn from a mixture that exercises every path: soon (the
  * bucket being drained), within a few mean times, far beyond the span, exactly now (ties),
  * a value shared with other balls (ties by ball index), never. */
@@ -49,7 +78,7 @@ static void order_case(size_t n, double t0, double scale, uint64_t seed, int pop
     for (size_t i = 0; i < n; i++)
         key[i] = draw(&R, t0, scale);
     rc_eng_queue_build(&q, key, t0);
-    long bad = 0;
+    long bad = 0, faults = structure_faults(&q);
     for (int p = 0; p < pops; p++) {
         double t, tb;
         uint32_t b, bb;
@@ -75,8 +104,12 @@ static void order_case(size_t n, double t0, double scale, uint64_t seed, int pop
         }
         if (p % 5000 == 4999) /* the engine refiles everything when it renumbers */
             rc_eng_queue_build(&q, key, t);
+        if (p % 997 == 0)
+            faults += structure_faults(&q);
     }
     ENSURE_MSG(bad == 0, "n=%zu t0=%g scale=%g: %ld pops out of order", n, t0, scale, bad);
+    ENSURE_MSG(faults == 0, "n=%zu t0=%g scale=%g: %ld faults in the queue's structure", n,
+               t0, scale, faults);
     rc_eng_queue_free(&q);
     free(key);
 }
