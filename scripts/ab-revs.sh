@@ -8,9 +8,12 @@
 # REV_A, REV_B: git revisions, each built (release) in a temporary worktree that is removed
 # afterwards; "." is this checkout as it is, uncommitted changes included (its build-rel/).
 # The rest goes to ab_engine (tests/engine/ab_engine.c): N (10000), dim (3), rounds (10),
-# c (inf), frame (default). Prints A's and B's collisions per CPU second and B/A.
+# c (inf), frame (default). ab_engine runs RUNS times (default 3), A and B swapping places
+# each time; printed are each run and the median of B/A over the runs. Why repeat: a run's
+# two gases each sit in memory their own way, which biases one run by up to ~5 % (one
+# library against itself: 0.956, 0.991, 1.030 at N = 1e5; 1.012, 0.954, 0.990 at 1e4).
 # Both revisions must agree on the public structures ab_engine passes (relcol/sim.h).
-# Example: scripts/ab-revs.sh HEAD~1 HEAD 100000 3 10
+# Example: RUNS=5 scripts/ab-revs.sh HEAD~1 HEAD 100000 3 10
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 usage="usage: scripts/ab-revs.sh REV_A REV_B [N] [dim] [rounds] [c] [frame]"
@@ -55,7 +58,23 @@ library_of() {
     echo "$so"
 }
 
+runs=${RUNS:-3}
+[[ "$runs" =~ ^[1-9][0-9]*$ ]] || { echo "ab-revs: RUNS '$runs': not a positive whole number" >&2; exit 2; }
 lib_a=$(library_of "$rev_a" a)
 lib_b=$(library_of "$rev_b" b)
 echo "A = $rev_a, B = $rev_b"
-"$here/build-rel/tests/engine/ab_engine" "$lib_a" "$lib_b" "$@"
+ratios=()
+for r in $(seq "$runs"); do
+    if (( r % 2 )); then
+        line=$("$here/build-rel/tests/engine/ab_engine" "$lib_a" "$lib_b" "$@")
+        echo "run $r: $line"
+        ratios+=("$(awk '{print $NF}' <<<"$line")")
+    else # (B first: the printed B/A is A's rate over B's)
+        line=$("$here/build-rel/tests/engine/ab_engine" "$lib_b" "$lib_a" "$@")
+        echo "run $r (B loaded first): $line"
+        ratios+=("$(awk '{printf "%.3f", 1 / $NF}' <<<"$line")")
+    fi
+done
+printf '%s\n' "${ratios[@]}" | sort -g |
+    awk -v all="${ratios[*]}" '{a[NR] = $1} END {m = NR % 2 ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2;
+        printf "B/A median %.3f over %d runs (%s)\n", m, NR, all}' 
