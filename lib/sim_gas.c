@@ -62,7 +62,8 @@ int rc_sim_gas_init(const rc_sim_gas_def *g, rc_vec3 *box, rc_sim_ball *balls)
     int st = rc_inv_c2(g->c, &k);
     if (st != RC_OK)
         return st;
-    if (!(g->v_rms * g->v_rms * k < 1.0))
+    if (!(g->v_rms * sqrt(k) < 1.0)) /* v_rms < c (no square: a huge classical v_rms
+                                         is refused below, not as faster than light) */
         return RC_ESPEED;
     const int dim = g->dim;
     const double r = g->radius;
@@ -104,11 +105,19 @@ int rc_sim_gas_init(const rc_sim_gas_def *g, rc_vec3 *box, rc_sim_ball *balls)
     free(perm);
     for (size_t i = 0; i < g->n; i++)
         balls[i].p = rc_v3_axpy(balls[i].p, -1.0 / (double)g->n, ptot);
-    /* scale momenta so the rms speed is v_rms: rms speed grows monotonically with scale */
+    /* scale momenta so the rms speed is v_rms: rms speed grows monotonically with scale.
+     * A single ball (zero total momentum leaves it at rest) has no speed to scale, and a
+     * v_rms that needs momenta past ~1e150 (their squares, which every energy takes,
+     * would overflow) is refused, rather than a NaN or infinite momentum handed back. */
     double lo = 0.0, hi = 1.0;
     if (g->v_rms > 0.0) {
-        while (rms_speed(balls, g->n, hi, m, k) < g->v_rms)
+        if (!(rms_speed(balls, g->n, 1.0, m, k) > 0.0))
+            return RC_EINVAL;
+        while (rms_speed(balls, g->n, hi, m, k) < g->v_rms) {
             hi *= 2.0;
+            if (!(hi < 1e150))
+                return RC_ENONFINITE;
+        }
         while (hi - lo > GAS_SCALE_TOL * hi) {
             double mid = 0.5 * (lo + hi);
             if (rms_speed(balls, g->n, mid, m, k) < g->v_rms)

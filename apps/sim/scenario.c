@@ -34,10 +34,17 @@ static int bad(const ctx *c, const char *path, const char *fmt, ...)
     return -1;
 }
 
-/* Reject keys of obj not in the NULL-terminated list. */
+/* Reject keys of obj not in the NULL-terminated list, and keys given twice (the reader
+ * would silently take the first). */
 static int only_keys(const ctx *c, const cJSON *obj, const char *path, const char *const *keys)
 {
     for (const cJSON *it = obj->child; it; it = it->next) {
+        for (const cJSON *e = obj->child; e != it; e = e->next)
+            if (strcmp(e->string, it->string) == 0) {
+                char p[256];
+                snprintf(p, sizeof p, "%s%s%s", path, *path ? "." : "", it->string);
+                return bad(c, p, "given twice");
+            }
         int ok = 0;
         for (size_t i = 0; keys[i]; i++)
             ok |= strcmp(it->string, keys[i]) == 0;
@@ -248,12 +255,17 @@ static int parse_generate(const ctx *c, const cJSON *g, const cJSON *jbox, scn_s
             return bad(c, "generate.v_rms", "must be in [0, c) (c = %g)", s->c);
         if (!(density > 0))
             return bad(c, "generate.density", "must be > 0");
+        if (n == 1 && v_rms > 0)
+            return bad(c, "generate.v_rms", "must be 0 for a gas of one ball (its total "
+                                            "momentum is zero: it is at rest)");
         rc_sim_gas_def gd = {s->dim, (size_t)n, radius, packing, v_rms, s->c, density, s->seed};
         s->n = (size_t)n;
         s->balls = calloc(s->n, sizeof *s->balls);
         if (!s->balls)
             return bad(c, "generate.n", "out of memory for %zu balls", s->n);
         int st = rc_sim_gas_init(&gd, &s->box, s->balls);
+        if (st == RC_ENONFINITE)
+            return bad(c, "generate.v_rms", "too large: the momenta would overflow");
         if (st != RC_OK)
             return bad(c, "generate", "cannot make the gas: %s", rc_strerror(st));
         snprintf(s->generator, sizeof s->generator, "gas");
@@ -368,7 +380,11 @@ static int parse_outputs(const ctx *c, const cJSON *o, scn_scenario *s)
             if (span / every > SCN_MAX_SNAPSHOTS)
                 return bad(c, "outputs.snapshots.every", "gives more than %d snapshots",
                            SCN_MAX_SNAPSHOTS);
-            for (size_t k = 1; s->time + every * (double)k <= s->t_end * (1 + 1e-15); k++)
+            /* (the count bounded too: near a large t_end the tolerance may admit more
+             * steps than span / every) */
+            const double lim = s->t_end + fabs(s->t_end) * 1e-15;
+            for (size_t k = 1; out->n_snap < SCN_MAX_SNAPSHOTS && s->time + every * (double)k <= lim;
+                 k++)
                 out->snap[out->n_snap++] = fmin(s->time + every * (double)k, s->t_end);
         } else if (sn) {
             return bad(c, "outputs.snapshots", "must be an array of times or {\"every\": dt}");
@@ -586,6 +602,22 @@ void scn_free(scn_scenario *s)
     memset(s, 0, sizeof *s);
 }
 
+/* s as a JSON string: quotes, backslashes and control characters escaped (a folder name
+ * may hold any of them; written raw, final.json would not read back). */
+static void put_string(FILE *f, const char *s)
+{
+    fputc('"', f);
+    for (const unsigned char *p = (const unsigned char *)s; *p; p++) {
+        if (*p == '"' || *p == '\\')
+            fprintf(f, "\\%c", *p);
+        else if (*p < 0x20)
+            fprintf(f, "\\u%04x", *p);
+        else
+            fputc(*p, f);
+    }
+    fputc('"', f);
+}
+
 static void put_vec(FILE *f, rc_vec3 v, int dim)
 {
     fputc('[', f);
@@ -608,9 +640,11 @@ int scn_write(FILE *f, const scn_scenario *s, double t, double t_end, size_t n,
     fprintf(f, " \"contact_frame\": \"%s\", \"tc\": %.17g, \"seed\": %llu,\n", s->frame, s->t_c,
             (unsigned long long)s->seed);
     fprintf(f, " \"time\": %.17g, \"t_end\": %.17g, \"restart\": true,\n", t, t_end);
-    fprintf(f, " \"outputs\": {\"dir\": \"%s\", \"xyz_every\": %.17g, \"plots\": %s, \"gif\": %s},\n",
-            s->out.dir, s->out.xyz_every, s->out.plots ? "true" : "false",
-            s->out.gif ? "true" : "false");
+    fprintf(f, " \"outputs\": {\"dir\": ");
+    put_string(f, s->out.dir);
+    fprintf(f, ", \"xyz_every\": %.17g, \"plots\": %s, \"gif\": %s, \"summary\": %s},\n",
+            s->out.xyz_every, s->out.plots ? "true" : "false", s->out.gif ? "true" : "false",
+            s->out.summary ? "true" : "false");
     fprintf(f, " \"balls\": [\n");
     for (size_t i = 0; i < n; i++) {
         fprintf(f, "  {\"r\": %.17g, \"m\": %.17g, \"tau\": %.17g, ", balls[i].r, balls[i].m,

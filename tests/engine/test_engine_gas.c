@@ -63,6 +63,23 @@ static void test_rejects(void)
     g.dim = 3;
     g.radius = NAN;
     ENSURE(rc_sim_gas_init(&g, &box, b) == RC_ENONFINITE);
+    /* one ball: zero total momentum leaves it at rest, so no v_rms > 0 (it returned NaN
+     * momenta, found by fuzzing the scenario reader); at rest it is a gas */
+    g.radius = 0.5;
+    g.n = 1;
+    ENSURE(rc_sim_gas_init(&g, &box, b) == RC_EINVAL);
+    g.v_rms = 0.0;
+    ENSURE(rc_sim_gas_init(&g, &box, b) == RC_OK && b[0].p.x == 0.0 && b[0].p.y == 0.0);
+    /* momenta whose squares would overflow: refused, not inf or NaN (8 balls: the
+     * lattice start of 10 at packing 0.3 would need a denser lattice) */
+    g.n = 8;
+    g.v_rms = 1e200;
+    g.density = 1e100; /* m = 1.25e99: p ~ 1e299 */
+    ENSURE(rc_sim_gas_init(&g, &box, b) == RC_ENONFINITE);
+    g.v_rms = 1e30; /* p ~ 1e129: fine */
+    ENSURE(rc_sim_gas_init(&g, &box, b) == RC_OK);
+    for (int i = 0; i < 8; i++)
+        ENSURE(rc_v3_isfinite(b[i].p) && rc_v3_norm(b[i].p) > 1e120);
 }
 
 /* set_balls rejects bad input and names the ball */

@@ -46,6 +46,12 @@ reject packing '{"dim": 3, "t_end": 1, "generate": {"kind": "gas", "n": 10, "pac
 reject snaps "{$B, \"balls\": [$ball], \"outputs\": {\"snapshots\": [0.5, 7]}}" 'outputs.snapshots[1]: time 7 is outside'
 reject outkey "{$B, \"balls\": [$ball], \"outputs\": {\"snapshot\": 1}}" 'outputs.snapshot: unknown key'
 reject nan "{$B, \"balls\": [{\"r\": 1, \"x\": [5, NaN]}]}" 'malformed JSON'
+reject twice "{$B, \"balls\": [$ball], \"dim\": 2}" 'dim: given twice'
+reject twiceinner '{"dim": 2, "t_end": 1, "generate": {"kind": "gas", "n": 4, "packing": 0.2, "v_rms": 0.1, "packing": 0.3}}' 'generate.packing: given twice'
+# found by fuzzing (tests/fuzz/fuzz_scenario.c): a one-ball gas had NaN momenta, a huge
+# classical v_rms was called faster than light
+reject oneball '{"dim": 2, "t_end": 1, "generate": {"kind": "gas", "n": 1, "packing": 0.2, "v_rms": 0.1}}' 'generate.v_rms: must be 0 for a gas of one ball'
+reject hugev '{"dim": 2, "t_end": 1, "generate": {"kind": "gas", "n": 4, "packing": 0.2, "v_rms": 1e200}}' 'generate.v_rms: too large'
 
 # the shipped scenario files are the built-ins
 for b in rack gas; do
@@ -109,6 +115,17 @@ wait $pid; st=$?
 "$sim" "$tmp/long/final.json" --dump > /dev/null 2> "$tmp/err" && ok "Ctrl-C: final.json reads back as a scenario" \
     || ko "Ctrl-C: final.json does not read back: $(cat "$tmp/err")"
 grep -q 'interrupted' "$tmp/long/summary.txt" && ok "Ctrl-C: summary written" || ko "Ctrl-C: no summary"
+
+# an output folder whose name needs escaping in JSON: final.json still reads back
+q="$tmp/o\"q\\z"
+sed 's/"t_end": 40/"t_end": 2/; s/"snapshots": \[10, 20\], //' "$tmp/run.json" > "$tmp/quote.json"
+if "$sim" "$tmp/quote.json" --out "$q" > /dev/null 2> "$tmp/err" &&
+    "$sim" "$q/final.json" --dump > "$tmp/quote-dump.json" 2> "$tmp/err" &&
+    grep -qF 'o\"q\\z' "$tmp/quote-dump.json"; then
+    ok "final.json of a folder named with a quote and a backslash reads back"
+else
+    ko "folder with a quote: $(cat "$tmp/err")"
+fi
 
 echo "$((n - fails)) passed, $fails failed"
 [ $fails -eq 0 ]

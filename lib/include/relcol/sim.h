@@ -217,7 +217,9 @@ typedef struct rc_sim_gas_def {
 /* n equal balls on a random subset of the sites of a square / cubic lattice filling a
  * cubic box whose edge makes the packing fraction exact, with isotropic random momenta
  * scaled so the rms speed is v_rms and total momentum is zero. Melt it with
- * rc_sim_advance before measuring anything that needs a fluid. balls: n entries. */
+ * rc_sim_advance before measuring anything that needs a fluid. balls: n entries.
+ * RC_EINVAL also for n = 1 with v_rms > 0 (zero total momentum leaves one ball at rest),
+ * RC_ENONFINITE for a v_rms whose momenta would overflow. */
 int rc_sim_gas_init(const rc_sim_gas_def *g, rc_vec3 *box, rc_sim_ball *balls);
 
 #ifdef __cplusplus
