@@ -2,7 +2,7 @@
  * scenario.c): any byte string must be parsed or refused with a message, never crash,
  * hang or leak (issue 4: "every malformed or impossible scenario is rejected with the path
  * of the offending value and the reason"); what it accepts must write back and read again
- * (a run's final state is itself a scenario). Built and run by scripts/fuzz-scenario.sh. */
+ * (a run's final state is itself a scenario). Built and run by scripts/fuzz.sh scenario. */
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# fuzz.sh — fuzz the apps' input readers with libFuzzer under ASan and UBSan: any input
+# must be read or refused with a message, never crash, hang or hand back a bad number.
+#
+#   scripts/fuzz.sh [scenario|table] [seconds]      (default: scenario, 300)
+#
+# scenario: relcol-sim's scenario reader (tests/fuzz/fuzz_scenario.c; what it reads must
+# write back as a scenario that reads again), from data/scenarios/*.json with a dictionary
+# of the schema's keys. table: the CSV reader and ball rows every other app reads
+# (tests/fuzz/fuzz_table.c), from data/examples/*.csv.
+# Needs clang with libFuzzer (Debian: clang libclang-rt-14-dev). Builds into
+# build-fuzz/TARGET/ and keeps its corpus there; a failing input is left as
+# build-fuzz/TARGET/crash-* (replay: build-fuzz/TARGET/fuzz_TARGET that-file). Add it to
+# tests/fuzz/regress/ and to tests/fuzz/meson.build so the suite replays it. Exit status:
+# libFuzzer's (0: nothing found).
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+target=${1:-scenario}
+secs=${2:-300}
+case "$target" in
+scenario) seeds=("$here"/data/scenarios/*.json); extra=("$here/apps/sim/scenario.c" "$here/apps/sim/frames.c"); libs=(-lcjson) ;;
+table) seeds=("$here"/data/examples/*.csv); extra=(); libs=() ;;
+*) echo "fuzz: target '$target': not scenario or table" >&2; exit 2 ;;
+esac
+[[ "$secs" =~ ^[1-9][0-9]*$ ]] || { echo "fuzz: seconds '$secs': not a positive whole number" >&2; exit 2; }
+command -v clang >/dev/null || { echo "fuzz: needs clang and libFuzzer (apt-get install clang libclang-rt-14-dev)" >&2; exit 2; }
+out="$here/build-fuzz/$target"
+mkdir -p "$out/corpus"
+cp -n "${seeds[@]}" "$out/corpus/" 2>/dev/null || true
+
+# the library, the apps' common code and the reader, compiled together with the harness
+clang -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
+    -std=c11 -D_GNU_SOURCE -ffp-contract=off \
+    -I"$here/lib/include" -I"$here/lib" -I"$here/apps/common" -I"$here/apps/sim" \
+    "$here/tests/fuzz/fuzz_$target.c" "${extra[@]}" "$here"/apps/common/*.c "$here"/lib/*.c \
+    "${libs[@]}" -lgsl -lgslcblas -lsundials_cvode -lsundials_nvecserial \
+    -lsundials_sunmatrixdense -lsundials_sunlinsoldense -lm -o "$out/fuzz_$target"
+
+# the schema's keys and values, so that mutations make scenarios rather than noise
+dict="$out/scenario.dict"
+{
+    for k in relcol dim box c law restitution ball wall contact_frame tc seed time t_end \
+        restart balls generate kind gas rack n radius packing v_rms density speed aim gap \
+        outputs dir snapshots every xyz_every plots gif summary r m x v p tau tau_last inf \
+        table zmf sphere; do
+        printf '"\\"%s\\""\n' "$k"
+    done
+    printf '"%s"\n' true false null 1e308 -0 1e-320 0.45 0.7
+} > "$dict"
+
+cd "$out"
+dictarg=()
+[ "$target" = scenario ] && dictarg=(-dict="$dict")
+# allocator_may_return_null: a huge ball count must be refused as out of memory, not abort
+ASAN_OPTIONS=allocator_may_return_null=1 "./fuzz_$target" corpus "${dictarg[@]}" \
+    -max_len=4096 -timeout=10 -rss_limit_mb=2048 -max_total_time="$secs"
