@@ -2,12 +2,15 @@
 # fuzz.sh — fuzz the apps' input readers with libFuzzer under ASan and UBSan: any input
 # must be read or refused with a message, never crash, hang or hand back a bad number.
 #
-#   scripts/fuzz.sh [scenario|table] [seconds]      (default: scenario, 300)
+#   scripts/fuzz.sh [scenario|table|engine] [seconds]      (default: scenario, 300)
 #
 # scenario: relcol-sim's scenario reader (tests/fuzz/fuzz_scenario.c; what it reads must
 # write back as a scenario that reads again), from data/scenarios/*.json with a dictionary
 # of the schema's keys. table: the CSV reader and ball rows every other app reads
-# (tests/fuzz/fuzz_table.c), from data/examples/*.csv.
+# (tests/fuzz/fuzz_table.c), from data/examples/*.csv. engine: the engine itself on small
+# configurations of up to 8 balls on a coarse grid (tests/fuzz/fuzz_engine.c: ties,
+# touching balls, simultaneous contacts; every frame; conservation checked), from
+# tests/fuzz/engine-seeds/.
 # Needs clang with libFuzzer (Debian: clang libclang-rt-14-dev). Builds into
 # build-fuzz/TARGET/ and keeps its corpus there; a failing input is left as
 # build-fuzz/TARGET/crash-* (replay: build-fuzz/TARGET/fuzz_TARGET that-file). Add it to
@@ -20,7 +23,8 @@ secs=${2:-300}
 case "$target" in
 scenario) seeds=("$here"/data/scenarios/*.json); extra=("$here/apps/sim/scenario.c" "$here/apps/sim/frames.c"); libs=(-lcjson) ;;
 table) seeds=("$here"/data/examples/*.csv); extra=(); libs=() ;;
-*) echo "fuzz: target '$target': not scenario or table" >&2; exit 2 ;;
+engine) seeds=("$here"/tests/fuzz/engine-seeds/*); extra=(); libs=() ;;
+*) echo "fuzz: target '$target': not scenario, table or engine" >&2; exit 2 ;;
 esac
 [[ "$secs" =~ ^[1-9][0-9]*$ ]] || { echo "fuzz: seconds '$secs': not a positive whole number" >&2; exit 2; }
 command -v clang >/dev/null || { echo "fuzz: needs clang and libFuzzer (apt-get install clang libclang-rt-14-dev)" >&2; exit 2; }

@@ -12,12 +12,12 @@
  * pair that separates is left to separate.
  *
  * Event times are pure functions of the two balls' stored states (position at the ball's
- * own clock, momentum, rest mass), never of when they were asked for; so a run can later
- * be written out and continued bit-identically from those stored states (a raw-state
- * getter/setter is still to be added: rc_sim_get_ball extrapolates to the engine time).
+ * own clock, momentum, rest mass), never of when they were asked for; so a run can be
+ * written out and continued bit-identically (rc_sim_sync, then rc_sim_get_ball: see
+ * rc_sim_sync).
  *
  * Cost per event does not grow with N: balls are grouped in cells at least one bounding
- * diameter wide, each ball keeps only its own earliest event in an indexed 4-ary heap,
+ * diameter wide, each ball keeps only its own earliest event in a calendar queue,
  * events made stale by a partner's later collision are detected by per-ball collision
  * counters, and every ball keeps its own clock (its state is stored at the time it was
  * last touched and advanced lazily), so an event touches only its balls. */
