@@ -57,4 +57,4 @@ dictarg=()
 [ "$target" = scenario ] && dictarg=(-dict="$dict")
 # allocator_may_return_null: a huge ball count must be refused as out of memory, not abort
 ASAN_OPTIONS=allocator_may_return_null=1 "./fuzz_$target" corpus "${dictarg[@]}" \
-    -max_len=4096 -timeout=10 -rss_limit_mb=2048 -max_total_time="$secs"
+    -max_len=4096 -timeout=60 -rss_limit_mb=2048 -max_total_time="$secs"
