@@ -602,6 +602,27 @@ void scn_free(scn_scenario *s)
     memset(s, 0, sizeof *s);
 }
 
+char *scn_next_dir(const char *dir)
+{
+    size_t len = strlen(dir);
+    while (len > 1 && dir[len - 1] == '/') /* (a trailing slash names the same folder) */
+        len--;
+    /* a trailing ".K" (K a whole number >= 1, no leading zero) is this folder's number */
+    size_t dot = len;
+    while (dot > 0 && dir[dot - 1] >= '0' && dir[dot - 1] <= '9')
+        dot--;
+    unsigned long long k = 0;
+    int numbered = dot > 1 && dot < len && dir[dot - 1] == '.' && dir[dot] != '0' &&
+                   len - dot <= 9 && dir[dot - 2] != '/';
+    if (numbered)
+        k = strtoull(dir + dot, NULL, 10);
+    const size_t base = numbered ? dot - 1 : len;
+    char *out = malloc(base + 24);
+    if (out)
+        snprintf(out, base + 24, "%.*s.%llu", (int)base, dir, k + 1);
+    return out;
+}
+
 /* s as a JSON string: quotes, backslashes and control characters escaped (a folder name
  * may hold any of them; written raw, final.json would not read back). */
 static void put_string(FILE *f, const char *s)

@@ -51,6 +51,11 @@ int scn_load(const char *path, scn_scenario *s, char *err);
 int scn_builtin(const char *name, scn_scenario *s, char *err);
 void scn_free(scn_scenario *s);
 
+/* The output folder of a run continued from one that wrote into dir: "dir.1", and after
+ * "dir.K" "dir.K+1" -- so that continuing from final.json never writes over the files of
+ * the run it continues. NULL if out of memory (free the result). */
+char *scn_next_dir(const char *dir);
+
 /* Write s with the given balls at time t, to be run until t_end, as a scenario to f,
  * numbers in %.17g so that reading it back gives the same bits. */
 int scn_write(FILE *f, const scn_scenario *s, double t, double t_end, size_t n,

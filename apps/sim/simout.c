@@ -150,6 +150,7 @@ static int write_final(const sim_output *o, const rc_sim *sim, int interrupted, 
     size_t n = rc_sim_count(sim);
     rc_sim_ball *b = malloc((n ? n : 1) * sizeof *b);
     char *path = app_path_join(s->out.dir, "final.json");
+    char *next_dir = NULL;
     app_atomic a;
     int r = -1;
     if (!b || !path) {
@@ -163,13 +164,23 @@ static int write_final(const sim_output *o, const rc_sim *sim, int interrupted, 
     double t = rc_sim_time(sim);
     /* interrupted: continue to the same end; finished: continue for as long again */
     double t_end = interrupted ? s->t_end : t + (s->t_end - s->time);
-    if (scn_write(a.f, s, t, t_end, n, b)) {
+    /* the continuation writes into a folder of its own (scn_next_dir) */
+    scn_scenario next = *s;
+    next_dir = scn_next_dir(s->out.dir);
+    if (!next_dir) {
+        app_atomic_abort(&a);
+        app_errf(err, "out of memory");
+        goto done;
+    }
+    next.out.dir = next_dir;
+    if (scn_write(a.f, &next, t, t_end, n, b)) {
         app_atomic_abort(&a);
         app_errf(err, "cannot write %s", path);
         goto done;
     }
     r = app_atomic_commit(&a, err);
 done:
+    free(next_dir);
     free(b);
     free(path);
     return r;

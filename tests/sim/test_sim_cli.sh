@@ -86,6 +86,19 @@ head -2 "$tmp/full/trajectory.xyz" | tail -1 | grep -q 'Properties=species:S:1:p
     && ok "extended-XYZ header" || ko "extended-XYZ header"
 grep -q 'overlaps         0 found' "$tmp/full/summary.txt" && ok "no overlaps" || ko "overlaps: $(grep overlaps "$tmp/full/summary.txt")"
 
+# continuing from final.json writes into a folder of its own (full.1, then full.2), and
+# the run it continues keeps its files
+cp "$tmp/full/trajectory.xyz" "$tmp/traj-first.xyz"
+grep -qF "\"dir\": \"$tmp/full.1\"" "$tmp/full/final.json" && ok "final.json continues into full.1" \
+    || ko "final.json's outputs.dir: $(grep -o '"dir": "[^"]*"' "$tmp/full/final.json")"
+if "$sim" "$tmp/full/final.json" > /dev/null 2> "$tmp/err" && [ -s "$tmp/full.1/final.json" ] &&
+    cmp -s "$tmp/traj-first.xyz" "$tmp/full/trajectory.xyz" &&
+    grep -qF "\"dir\": \"$tmp/full.2\"" "$tmp/full.1/final.json"; then
+    ok "continuing: wrote full.1/, left full/ as it was, next into full.2"
+else
+    ko "continuing from final.json: $(cat "$tmp/err")"
+fi
+
 # restart identity: 0 -> 20 -> (final.json) -> 40 equals 0 -> 40 with a stop at 20
 sed 's/"t_end": 40/"t_end": 20/' "$tmp/run.json" > "$tmp/half.json"
 "$sim" "$tmp/half.json" --out "$tmp/half" > /dev/null 2>&1
