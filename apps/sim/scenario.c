@@ -663,9 +663,19 @@ int scn_write(FILE *f, const scn_scenario *s, double t, double t_end, size_t n,
     fprintf(f, " \"time\": %.17g, \"t_end\": %.17g, \"restart\": true,\n", t, t_end);
     fprintf(f, " \"outputs\": {\"dir\": ");
     put_string(f, s->out.dir);
-    fprintf(f, ", \"xyz_every\": %.17g, \"plots\": %s, \"gif\": %s, \"summary\": %s},\n",
+    fprintf(f, ", \"xyz_every\": %.17g, \"plots\": %s, \"gif\": %s, \"summary\": %s",
             s->out.xyz_every, s->out.plots ? "true" : "false", s->out.gif ? "true" : "false",
             s->out.summary ? "true" : "false");
+    /* the snapshot times still ahead (a run interrupted before them takes them along); at
+     * the scenario's own start (--dump) one at t is ahead too, later it has been written */
+    int first = 1;
+    for (size_t k = 0; k < s->out.n_snap; k++)
+        if ((s->out.snap[k] > t || (t == s->time && s->out.snap[k] == t)) &&
+            s->out.snap[k] <= t_end) {
+            fprintf(f, "%s%.17g", first ? ",\n  \"snapshots\": [" : ", ", s->out.snap[k]);
+            first = 0;
+        }
+    fprintf(f, "%s},\n", first ? "" : "]");
     fprintf(f, " \"balls\": [\n");
     for (size_t i = 0; i < n; i++) {
         fprintf(f, "  {\"r\": %.17g, \"m\": %.17g, \"tau\": %.17g, ", balls[i].r, balls[i].m,

@@ -118,7 +118,7 @@ cmp -s "$tmp/a" "$tmp/c" && ok "same scenario twice -> identical final state" \
     || ko "two runs of one scenario differ"
 
 # Ctrl-C: a long run interrupted writes a restart state that reads back, and exits 130
-sed 's/"t_end": 40/"t_end": 1e9/; s/"snapshots": \[10, 20\], //' "$tmp/run.json" > "$tmp/long.json"
+sed 's/"t_end": 40/"t_end": 1e9/; s/"snapshots": \[10, 20\], /"snapshots": {"every": 1e8}, /' "$tmp/run.json" > "$tmp/long.json"
 "$sim" "$tmp/long.json" --out "$tmp/long" > /dev/null 2> "$tmp/err" &
 pid=$!
 sleep 1
@@ -128,6 +128,10 @@ wait $pid; st=$?
 "$sim" "$tmp/long/final.json" --dump > /dev/null 2> "$tmp/err" && ok "Ctrl-C: final.json reads back as a scenario" \
     || ko "Ctrl-C: final.json does not read back: $(cat "$tmp/err")"
 grep -q 'interrupted' "$tmp/long/summary.txt" && ok "Ctrl-C: summary written" || ko "Ctrl-C: no summary"
+# ... and takes the snapshot times still ahead along (here all ten: every 1e8 up to 1e9)
+nsnap=$(grep -o '"snapshots": \[[^]]*\]' "$tmp/long/final.json" | tr ',' '\n' | grep -c '[0-9]')
+[ "$nsnap" -eq 10 ] && ok "Ctrl-C: final.json carries the 10 snapshot times ahead" \
+    || ko "Ctrl-C: final.json carries $nsnap snapshot times, want 10"
 
 # an output folder whose name needs escaping in JSON: final.json still reads back
 q="$tmp/o\"q\\z"
