@@ -316,7 +316,7 @@ static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, i
      * id[] / slot[] translate to and from the caller's indices. */
     s->cnt = rc_eng_alloc(n * sizeof *s->cnt);
     if (s->cnt)
-        memset(s->cnt, 0, (n ? n : 1) * sizeof *s->cnt);
+        memset(s->cnt, 0, n * sizeof *s->cnt);
     s->id = rc_eng_alloc(n * sizeof *s->id);
     s->slot = rc_eng_alloc(n * sizeof *s->slot);
     if (s->narrow && !(s->ev_n = rc_eng_alloc(n * sizeof *s->ev_n))) {

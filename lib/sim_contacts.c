@@ -168,11 +168,12 @@ static int keep_rest_masses(double inv_c2, size_t nb, const rc_particle *b0, siz
     }
     double Mt = 0.0;
     rc_vec3 Pt = rc_v3(0, 0, 0);
-    size_t touched = 0;
+    size_t touched = 0, one = 0;
     for (size_t i = 0; i < nb; i++) {
         if (mstar[i] == 0.0)
             continue;
         touched++;
+        one = i;
         Mt += Mp[i];
         Pt = rc_v3_add(Pt, pp[i]);
         const double m2 = Mp[i] * Mp[i] - rc_v3_norm2(pp[i]) * inv_c2;
@@ -185,12 +186,10 @@ static int keep_rest_masses(double inv_c2, size_t nb, const rc_particle *b0, siz
      * its momentum is round-off: scaling that to absorb an energy mismatch of round-off
      * gave a corner hit at c = 1 a speed 1e-7 too high (found by fuzzing the engine) or
      * no solution at all (a fallback). */
-    if (touched == 1)
-        for (size_t i = 0; i < nb; i++)
-            if (mstar[i] != 0.0) {
-                Mp[i] = sqrt(mstar[i] * mstar[i] + rc_v3_norm2(pp[i]) * inv_c2);
-                return RC_OK;
-            }
+    if (touched == 1) {
+        Mp[one] = sqrt(mstar[one] * mstar[one] + rc_v3_norm2(pp[one]) * inv_c2);
+        return RC_OK;
+    }
     const rc_vec3 u = rc_v3_scale(1.0 / Mt, Pt);
     /* ZMF states of the touched balls (kept in Mp, pp); W their total energy there */
     double W = 0.0, W0 = 0.0;
