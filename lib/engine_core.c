@@ -400,10 +400,14 @@ static void finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int k
 }
 
 
-/* Every REORDER_EVERY x N events the balls are renumbered in cell order again: they
- * diffuse away from the order set_balls gave them, and neighbours that share cache lines
- * are what keeps a pair test from being a cache miss. O(N), in place, deterministic
- * (it depends only on the event count), invisible to the caller (id / slot). */
+/* Every REORDER_EVERY x N collisions and cell crossings the balls are renumbered in cell
+ * order again: they diffuse away from the order set_balls gave them, and neighbours that
+ * share cache lines are what keeps a pair test from being a cache miss. O(N), in place,
+ * deterministic, invisible to the caller (id / slot). The clock counts what happens to
+ * the balls, not the queue's stale entries: how many of those there are depends on how
+ * events are predicted, not on the physics, and the numbering breaks ties of equal event
+ * times (which ball of a pair resolves it), so a count of entries would let a change in
+ * prediction alone change the bits of a run. */
 #define REORDER_EVERY 4
 
 static void reorder(rc_sim *s)
@@ -495,7 +499,6 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
             break;
         if (max_events && done >= max_events)
             return RC_OK;
-        s->since_reorder++;
         const int32_t i = (int32_t)top_ball;
         eng_aux *a = &s->a[i];
         /* the next event's records, while this one is resolved: at N = 1e5 they come
@@ -515,11 +518,13 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
             __builtin_prefetch(&s->a[a->ev_partner]);
         }
         if (a->cross_t <= a->ev_t) {
+            s->since_reorder++;
             rc_eng_cross(s, i);
         } else if (a->ev_partner >= 0 && s->cnt[a->ev_partner] != a->ev_pcount) {
             s->events[RC_SIM_EV_STALE]++;
             rc_eng_predict(s, i, 1);
         } else {
+            s->since_reorder++;
             int st = collide(s, i, a->ev_partner, top_t);
             if (st != RC_OK)
                 return st;

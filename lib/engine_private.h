@@ -215,7 +215,7 @@ struct rc_sim {
     uint64_t events[RC_SIM_EV_NKINDS];
     size_t max_group;
     uint64_t group_fallbacks;
-    uint64_t since_reorder; /* events since the balls were last renumbered */
+    uint64_t since_reorder; /* collisions and crossings since the balls were last renumbered */
     /* scratch for contact groups */
     int32_t *grp_ball;
     rc_particle *grp_part;
