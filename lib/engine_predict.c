@@ -439,9 +439,14 @@ static int narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc
  * separating axes') and stop as soon as the next bound is no earlier than the best
  * contracted contact. Ordered by sphere time alone, the frame was asked 1.26 times per
  * scan that asked it, by the tighter bound 1.07 times (bench_engine rel:3000); the first
- * answer is then mostly the earliest, and later candidates are pruned by their bounds. */
+ * answer is then mostly the earliest, and later candidates are pruned by their bounds.
+ * With df (the table frame, eng_defer) the frame is not asked at all about a candidate
+ * whose bound lies ahead: the least such bound is stored as the event, with the next
+ * least as the bound of the others (rc_eng_settle asks the frame when it comes up).
+ * Candidates bounded by now (touching or parting bounding spheres) are still asked at
+ * once, and an incoming deferred event (a crossing's scan) is merged with the new ones. */
 static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *best,
-                             int32_t *bp, rc_vec3 *bn, const eng_check *chk)
+                             int32_t *bp, rc_vec3 *bn, const eng_check *chk, eng_defer *df)
 {
     rc_sim *s = (rc_sim *)cs; /* the candidate buffer is scratch */
     const eng_ball *bi = &s->b[i];
@@ -450,13 +455,16 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
     double t[NB_CAP];
     const int table = s->def.frame == &rc_toi_frame_table;
     const rc_toi_shape shi = shape_of(s, bi); /* (the scanning ball's, for every pair) */
+    /* what a candidate must beat to matter: the best event, or with one deferred the bound
+     * of the others (a candidate below it can lower that bound) */
+    const double cut0 = df && df->on ? df->lb2 : *best;
     while (!w->done) {
         /* gather a chunk of neighbours ... */
         const size_t m = walk_gather(w, nb);
         /* ... then the bounding spheres in lanes, and the candidates that can beat best
          * (only the live neighbours: the others have no time and are not near) */
         uint64_t hit[2], nearb[2];
-        sphere_lanes(s, i, nb, m, *best, t, hit, nearb);
+        sphere_lanes(s, i, nb, m, cut0, t, hit, nearb);
         for (size_t lw = 0; lw < 2; lw++)
         for (uint64_t bits = hit[lw] | nearb[lw]; bits; bits &= bits - 1u) {
             const size_t j = 64 * lw + (size_t)__builtin_ctzll(bits);
@@ -471,23 +479,27 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
             double tj = t[j];
             /* near and no bounding-sphere time: overlapping bounding spheres that part
              * may still hold shapes that meet (pair_time_dx); now is their lower bound */
-            if (!(tj < *best)) {
-                if (!near || !parting_candidate(s, &shi, bi, &s->b[kk], *best))
+            if (!(tj < cut0)) {
+                if (!near || !parting_candidate(s, &shi, bi, &s->b[kk], cut0))
                     continue;
                 tj = s->now;
             }
-            if (!(tj < *best))
+            if (!(tj < cut0))
                 continue;
             if (nc == s->cand_cap) {
                 size_t cap = s->cand_cap ? 2 * s->cand_cap : 64;
                 eng_cand *c = realloc(s->cand, cap * sizeof *c);
                 if (!c) { /* no memory: ask the frame at once */
                     rc_vec3 n;
-                    double tn = pair_time(s, bi, &s->b[kk], *best, &n);
-                    if (tn < *best) {
+                    double tn = pair_time(s, bi, &s->b[kk], cut0, &n);
+                    if (df && df->on && !(tn < *best)) {
+                        df->lb2 = tn < df->lb2 ? tn : df->lb2; /* (an event, so a bound) */
+                    } else if (tn < *best) {
                         *best = tn;
                         *bp = kk;
                         *bn = n;
+                        if (df)
+                            df->on = 0;
                     }
                     continue;
                 }
@@ -516,26 +528,54 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
      * sphere time could still put it first; else the frame is asked about the least lb. */
     size_t u = 0, nr = 0;
     for (;;) {
+        const double cut = df && df->on ? df->lb2 : *best;
         size_t rb = nr;
         for (size_t q = 0; q < nr; q++)
             if (rb == nr || s->cand[q].t < s->cand[rb].t ||
                 (s->cand[q].t == s->cand[rb].t && s->cand[q].k < s->cand[rb].k))
                 rb = q;
         const double lr = rb < nr ? s->cand[rb].t : INFINITY;
-        if (u < nc && s->cand[u].t < *best && s->cand[u].t <= lr) {
+        if (u < nc && s->cand[u].t < cut && s->cand[u].t <= lr) {
             eng_cand c = s->cand[u++];
             if (table) {
                 const double ta = axes_bound(s, &shi, bi, &s->b[c.k]);
                 c.t = ta > c.t ? ta : c.t;
             }
-            if (c.t < *best)
+            if (c.t < cut)
                 s->cand[nr++] = c;
             continue;
         }
-        if (!(lr < *best))
+        if (!(lr < cut))
             break;
         const int32_t k = s->cand[rb].k;
         s->cand[rb] = s->cand[--nr];
+        if (df && df->on) { /* a second bound below the deferred one's others' */
+            if (lr < *best) {
+                df->lb2 = *best;
+                *best = lr;
+                *bp = k;
+            } else {
+                df->lb2 = lr;
+            }
+            continue;
+        }
+        if (df && lr > s->now) { /* the least bound: defer asking the frame (rc_eng_settle) */
+            df->on = 1;
+            df->lb2 = *best;
+            *best = lr;
+            *bp = k;
+            /* the others' bound: the least left, refined or not (refining it costs more
+             * than the rare settle it would spare) */
+            size_t r2 = nr;
+            for (size_t q = 0; q < nr; q++)
+                if (r2 == nr || s->cand[q].t < s->cand[r2].t)
+                    r2 = q;
+            if (r2 < nr && s->cand[r2].t < df->lb2)
+                df->lb2 = s->cand[r2].t;
+            if (u < nc && s->cand[u].t < df->lb2)
+                df->lb2 = s->cand[u].t;
+            break;
+        }
         rc_vec3 n;
         double t = pair_time(s, bi, &s->b[k], *best, &n);
         if (t < *best) {
@@ -551,12 +591,12 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
  * contact normal of a ball event found by a contracted frame. */
 static int scan_block(const rc_sim *s, int32_t i, const int c[3], const int lo[3],
                       const int hi[3], double *best, int32_t *bp, rc_vec3 *bn,
-                      const eng_check *chk)
+                      const eng_check *chk, eng_defer *df)
 {
     eng_walk w;
     walk_init(&w, s, i, c, lo, hi);
     if (s->narrow)
-        return scan_block_narrow(s, i, &w, best, bp, bn, chk);
+        return scan_block_narrow(s, i, &w, best, bp, bn, chk, df);
     int32_t nb[NB_CAP];
     while (!w.done) {
         const size_t m = walk_gather(&w, nb);
@@ -639,32 +679,83 @@ static inline void cross_event(rc_sim *s, int32_t i, const int c[3])
     cross_event_scalar(s, i, c);
 }
 
-static inline void store_event(rc_sim *s, int32_t i, double best, int32_t bp, rc_vec3 bn)
+static inline void store_event(rc_sim *s, int32_t i, double best, int32_t bp, rc_vec3 bn,
+                               const eng_defer *df)
 {
     eng_aux *a = &s->a[i];
     a->ev_t = best;
     a->ev_partner = bp;
     a->ev_pcount = bp >= 0 ? s->cnt[bp] : 0;
-    if (s->ev_n)
-        s->ev_n[i] = bn;
+    if (s->ev_n) /* (a deferred event displaced by a wall leaves its mark in bn) */
+        s->ev_n[i] = df && df->on && bp >= 0 ? ev_deferred_mark(df->lb2)
+                     : ev_is_deferred(bn)    ? rc_v3(0.0, 0.0, 0.0)
+                                             : bn;
 }
 
+/* Walls (dims) for a deferred event too: a wall before its bound is the event, one
+ * before the bound of the others lowers that. */
+static void wall_event_defer(const rc_sim *s, int32_t i, unsigned dims, double *best,
+                             int32_t *bp, eng_defer *df)
+{
+    if (!df->on) {
+        wall_event(s, i, dims, best, bp);
+        return;
+    }
+    double tw = df->lb2;
+    int32_t pw = ENG_NONE;
+    wall_event(s, i, dims, &tw, &pw);
+    if (pw == ENG_NONE)
+        return;
+    if (tw < *best) {
+        *best = tw;
+        *bp = pw;
+        df->on = 0;
+    } else {
+        df->lb2 = tw;
+    }
+}
 
-/* Full prediction for ball i: walls, the 3^d cells around it, its next cell crossing. */
-void rc_eng_predict(rc_sim *s, int32_t i, int update_heap)
+/* Full prediction for ball i: walls, the 3^d cells around it, its next cell crossing.
+ * defer: a contracted frame's ball event may be stored deferred (its bound). */
+static void predict(rc_sim *s, int32_t i, int update_heap, int defer)
 {
     double best = INFINITY;
     int32_t bp = ENG_NONE;
     rc_vec3 bn = rc_v3(0, 0, 0);
+    eng_defer df = {0, INFINITY};
     int c[3];
     cell_coords(&s->g, s->a[i].cell, c);
     wall_event(s, i, boundary_dims(s, c), &best, &bp);
     static const int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
-    scan_block(s, i, c, lo, hi, &best, &bp, &bn, NULL);
-    store_event(s, i, best, bp, bn);
+    scan_block(s, i, c, lo, hi, &best, &bp, &bn, NULL, defer && s->defer ? &df : NULL);
+    store_event(s, i, best, bp, bn, &df);
     cross_event(s, i, c);
     if (update_heap)
         rc_eng_queue_update(&s->q, (uint32_t)i, key_of(&s->a[i]));
+}
+
+void rc_eng_predict(rc_sim *s, int32_t i, int update_heap)
+{
+    predict(s, i, update_heap, 1);
+}
+
+/* Ball i's deferred event is due (s->now is its bound, both balls unchanged since): ask
+ * the frame about its pair. Contact before the bound of every other candidate: that is
+ * the event, stored with its normal. Else (later, or no contact) a full prediction that
+ * asks the frame at once. The queue is updated. */
+void rc_eng_settle(rc_sim *s, int32_t i)
+{
+    eng_aux *a = &s->a[i];
+    const double lb2 = s->ev_n[i].x;
+    rc_vec3 n;
+    const double t = pair_time(s, &s->b[i], &s->b[a->ev_partner], lb2, &n);
+    if (t < lb2) {
+        a->ev_t = t;
+        s->ev_n[i] = n;
+        rc_eng_queue_update(&s->q, (uint32_t)i, key_of(a));
+    } else {
+        predict(s, i, 1, 0);
+    }
 }
 
 /* rc_eng_predict for a ball of a contracted frame that has just collided, looking for
@@ -695,11 +786,12 @@ int rc_eng_predict_checked_narrow(rc_sim *s, int32_t i, const eng_check *chk)
     double best = INFINITY;
     int32_t bp = ENG_NONE;
     rc_vec3 bn = rc_v3(0, 0, 0);
+    eng_defer df = {0, INFINITY};
     wall_event(s, i, walls, &best, &bp);
     static const int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
-    if (scan_block(s, i, c, lo, hi, &best, &bp, &bn, check ? chk : NULL))
+    if (scan_block(s, i, c, lo, hi, &best, &bp, &bn, check ? chk : NULL, s->defer ? &df : NULL))
         return 1;
-    store_event(s, i, best, bp, bn);
+    store_event(s, i, best, bp, bn, &df);
     cross_event(s, i, c);
     return 0;
 }
@@ -742,7 +834,7 @@ int rc_eng_predict_checked(rc_sim *s, int32_t i, rc_vec3 vold, int32_t partner, 
         if (test_list(s, i, nb, m, &best, &bp, check ? &vold : NULL, partner, T, 1))
             return 1;
     }
-    store_event(s, i, best, bp, rc_v3(0, 0, 0));
+    store_event(s, i, best, bp, rc_v3(0, 0, 0), NULL);
     cross_event(s, i, c);
     return 0;
 }
@@ -765,15 +857,16 @@ void rc_eng_cross(rc_sim *s, int32_t i)
     double best = a->ev_t;
     int32_t bp = a->ev_partner;
     rc_vec3 bn = s->ev_n ? s->ev_n[i] : rc_v3(0, 0, 0);
+    eng_defer df = {s->defer && bp >= 0 && ev_is_deferred(bn), bn.x};
     int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
     lo[d] = hi[d] = dir;
     if (s->def.dim == 2)
         lo[2] = hi[2] = 0;
-    scan_block(s, i, c, lo, hi, &best, &bp, &bn, NULL);
+    scan_block(s, i, c, lo, hi, &best, &bp, &bn, NULL, s->defer ? &df : NULL);
     if (c[d] == 0 || c[d] == s->g.n[d] - 1) /* a boundary cell: its wall is now in reach */
-        wall_event(s, i, 1u << d, &best, &bp);
-    if (bp != a->ev_partner || best != a->ev_t)
-        store_event(s, i, best, bp, bn);
+        wall_event_defer(s, i, 1u << d, &best, &bp, &df);
+    if (bp != a->ev_partner || best != a->ev_t || df.on)
+        store_event(s, i, best, bp, bn, &df);
     cross_event(s, i, c);
     rc_eng_queue_update(&s->q, (uint32_t)i, key_of(a));
 }

@@ -202,6 +202,8 @@ struct rc_sim {
     rc_collision_params prm;
     /* contact geometry: narrow != 0 calls def.frame after the sphere test */
     int narrow;
+    /* the table frame's ball events are stored deferred (eng_defer) */
+    int defer;
     int wall_contracted;
     rc_toi_params toi;
     rc_toi_workspace *ws;
@@ -247,8 +249,25 @@ static inline double key_of(const eng_aux *a)
     return a->ev_t < a->cross_t ? a->ev_t : a->cross_t;
 }
 
+/* The table frame defers its root finds: a prediction stores, as its ball event,
+ * the candidate with the least lower bound of contact (bounding spheres, separating axes)
+ * keyed by that bound, and a bound lb2 of every other event of the ball (ball or wall).
+ * The frame is asked only when the bound comes up in the queue (rc_eng_settle), and not
+ * at all for the predictions that a collision elsewhere makes stale first, or that a
+ * later prediction of the ball replaces: 43 % fewer calls (bench_engine rel:10000).
+ * Such an event's ev_n entry is (lb2, 0, +inf): a contact normal is never infinite. */
+typedef struct eng_defer {
+    int on;     /* the best event so far is deferred: its time is a bound */
+    double lb2; /* on: a lower bound of every other event */
+} eng_defer;
+
+static inline rc_vec3 ev_deferred_mark(double lb2) { return rc_v3(lb2, 0.0, INFINITY); }
+static inline int ev_is_deferred(rc_vec3 n) { return n.z == INFINITY; }
+
 /* Predict ball i's earliest events from scratch (and update its heap entry if asked). */
 void rc_eng_predict(rc_sim *s, int32_t i, int update_heap);
+/* Ball i's deferred event has come up: ask the frame, store the event (queue updated). */
+void rc_eng_settle(rc_sim *s, int32_t i);
 
 /* What a contracted-frame prediction for a ball that has just collided (at T, its clock)
  * also looks for: another contact simultaneous with the one resolved -- as grow_group
