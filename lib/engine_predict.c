@@ -436,9 +436,10 @@ static int narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc
 /* Contracted frames: the root finding is the cost, so first collect the neighbours whose
  * bounding spheres can touch before `best`, then ask the frame in order of a lower bound
  * of the contracted contact (the bounding spheres', for the table frame also the
- * separating axes') and stop as soon as the next bound is no earlier than the best
- * contracted contact. Ordered by sphere time alone, the frame was asked 1.26 times per
- * scan that asked it, by the tighter bound 1.07 times (bench_engine rel:3000); the first
+ * centre line's separating axis) and stop as soon as the next bound is no earlier than
+ * the best contracted contact. Ordered by sphere time alone, the frame was asked 1.26
+ * times per scan that asked it, by the tighter bound (then with the balls' directions of
+ * motion as axes too) 1.07 times (bench_engine rel:3000); the first
  * answer is then mostly the earliest, and later candidates are pruned by their bounds.
  * With df (the table frame, eng_defer) the frame is not asked at all about a candidate
  * whose bound lies ahead: the least such bound is stored as the event, with the next
@@ -523,7 +524,7 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
         s->cand[b] = c;
     }
     /* Best first, the bounds computed lazily: cand[0, nr) holds the candidates whose lower
-     * bound lb (sphere time, and the separating axes' for the table frame) is known, by
+     * bound lb (sphere time, and the centre line's for the table frame) is known, by
      * (lb, k); cand[u, nc) the others, by sphere time. The next is refined while its
      * sphere time could still put it first; else the frame is asked about the least lb. */
     size_t u = 0, nr = 0;
@@ -538,7 +539,7 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
         if (u < nc && s->cand[u].t < cut && s->cand[u].t <= lr) {
             eng_cand c = s->cand[u++];
             if (table) {
-                const double ta = axes_bound(s, &shi, bi, &s->b[c.k]);
+                const double ta = line_bound(s, &shi, bi, &s->b[c.k]);
                 c.t = ta > c.t ? ta : c.t;
             }
             if (c.t < cut)

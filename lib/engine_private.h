@@ -250,7 +250,7 @@ static inline double key_of(const eng_aux *a)
 }
 
 /* The table frame defers its root finds: a prediction stores, as its ball event,
- * the candidate with the least lower bound of contact (bounding spheres, separating axes)
+ * the candidate with the least lower bound of contact (bounding spheres, centre line)
  * keyed by that bound, and a bound lb2 of every other event of the ball (ball or wall).
  * The frame is asked only when the bound comes up in the queue (rc_eng_settle), and not
  * at all for the predictions that a collision elsewhere makes stale first, or that a

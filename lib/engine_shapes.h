@@ -1,6 +1,6 @@
 /* engine_shapes.h — the table frame's contracted shapes, cheaply: their supports (in a
- * form that keeps its precision as v -> c), separating-axis lower bounds of a contact
- * time, and the certificates that settle a pair whose bounding spheres overlap while its
+ * form that keeps its precision as v -> c), the centre line's separating-axis bound of a
+ * contact time, and the certificates that settle a pair whose bounding spheres overlap while its
  * centres part without asking the frame (apart for good, or overlapping). Every decision
  * keeps a margin far above the frame's touch_tol, so it agrees with the frame; when in
  * doubt the frame is asked. Included by engine_predict.c. */
@@ -224,57 +224,38 @@ __attribute__((noinline, unused)) static int parting_candidate(const rc_sim *s,
     return d2 <= sig * sig && parting_open(s, shi, bi, bk, dx, d2, tref, best);
 }
 
-/* Gap along unit axis u between table-frame shapes (contracted along their velocities,
- * support r sqrt(1 - (v.u)^2/c^2), rc_toi_support_) at separation dx, and its closing
- * speed. */
-static inline void axis_gap(const rc_toi_shape *hi, const rc_toi_shape *hk,
-                            rc_vec3 dx, rc_vec3 dv, rc_vec3 u, int along, double *gap,
-                            double *close)
-{
-    /* along (1: u is ball i's direction of motion, 2: ball k's): that ball's support
-     * along its own velocity is r / gamma, exactly */
-    const double dn = rc_v3_dot(dx, u);
-    const double h = (along == 1 ? hi->r * hi->g : rc_toi_support_(hi, u)) +
-                     (along == 2 ? hk->r * hk->g : rc_toi_support_(hk, u));
-    *gap = fabs(dn) - h;
-    *close = dn >= 0.0 ? -rc_v3_dot(dv, u) : rc_v3_dot(dv, u);
-}
-
-/* Separating axes for the table frame's shapes: separated along a fixed axis u by a gap g
- * closing at speed w (the shapes keep their form between collisions), they cannot touch
- * before g / w (never, if w <= 0). The latest such time along the centre line and either
- * ball's direction of motion, as an absolute time (-INFINITY: no axis separates them,
- * INFINITY: never) -- a lower bound of the contact time, often well above the bounding
- * spheres', by which the candidates are ordered and pruned. The margin AXIS_MARGIN
- * (relative to ri + rk, far above the frame's touch_tol of 1e-12 and round-off) keeps
- * every pair the frame could still call touching. */
+/* The separating axis along the centre line for the table frame's shapes: separated along
+ * the fixed axis u = dx / |dx| by a gap g closing at speed w (the shapes keep their form
+ * between collisions), they cannot touch before g / w (never, if w <= 0). As an absolute
+ * time (-INFINITY: the axis does not separate them, INFINITY: never) -- a lower bound of
+ * the contact time, often well above the bounding spheres', by which the candidates are
+ * ordered, pruned and deferred. The margin AXIS_MARGIN (relative to ri + rk, far above
+ * the frame's touch_tol of 1e-12 and round-off) keeps every pair the frame could still
+ * call touching. The balls' directions of motion were axes too (the latest of the three
+ * bounds): with the frame's root finds deferred they cost more than they spared, and the
+ * centre line alone runs a contracted gas 4-5 % faster (in-process medians, 3-D and 2-D;
+ * same bits in the reference runs). */
 #define AXIS_MARGIN 1e-9
 
-static inline double axes_bound(const rc_sim *s, const rc_toi_shape *shi, const eng_ball *bi,
-                         const eng_ball *bk)
+static inline double line_bound(const rc_sim *s, const rc_toi_shape *shi, const eng_ball *bi,
+                                const eng_ball *bk)
 {
     double tref;
     const rc_vec3 dx = pair_sep(bi, bk, &tref);
-    const rc_vec3 dv = rc_v3_sub(bk->v, bi->v);
-    const double margin = AXIS_MARGIN * (bi->r + bk->r);
+    const double d2 = rc_v3_norm2(dx);
+    if (!(d2 > 0.0))
+        return -INFINITY;
+    const rc_vec3 u = rc_v3_scale(1.0 / sqrt(d2), dx);
     const rc_toi_shape hk = shape_of(s, bk);
-    double lb = -INFINITY;
-    for (int q = 0; q < 3; q++) {
-        const rc_vec3 u = q == 0 ? dx : (q == 1 ? bi->v : bk->v);
-        const double u2 = rc_v3_norm2(u);
-        if (!(u2 > 0.0))
-            continue;
-        double gap, close;
-        axis_gap(shi, &hk, dx, dv, rc_v3_scale(1.0 / sqrt(u2), u), q, &gap, &close);
-        gap -= margin;
-        if (!(gap > 0.0))
-            continue;
-        if (!(close > 0.0))
-            return INFINITY; /* separated along u and not closing: never */
-        const double t = tref + gap / close;
-        lb = t > lb ? t : lb;
-    }
-    return lb;
+    const double h = rc_toi_support_(shi, u) + rc_toi_support_(&hk, u);
+    double gap = fabs(rc_v3_dot(dx, u)) - h;
+    gap -= AXIS_MARGIN * (bi->r + bk->r);
+    if (!(gap > 0.0))
+        return -INFINITY;
+    const double close = -rc_v3_dot(rc_v3_sub(bk->v, bi->v), u);
+    if (!(close > 0.0))
+        return INFINITY; /* separated along u and not closing: never */
+    return tref + gap / close;
 }
 
 #endif
