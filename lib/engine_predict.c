@@ -70,10 +70,21 @@ __attribute__((always_inline)) static inline double pair_time_dx(
         const int flip = dx.x < 0.0 || (dx.x == 0.0 && (dx.y < 0.0 || (dx.y == 0.0 && dx.z < 0.0)));
         const eng_ball *b0 = flip ? bk : bi, *b1 = flip ? bi : bk;
         const eng_aux *a0 = &s->a[b0 - s->b], *a1 = &s->a[b1 - s->b];
-        rc_toi_ball A = {rc_v3(0, 0, 0), b0->r, a0->m, a0->p};
-        rc_toi_ball B = {flip ? rc_v3_scale(-1.0, dx) : dx, b1->r, a1->m, a1->p};
+        const rc_vec3 d01 = flip ? rc_v3_scale(-1.0, dx) : dx;
         rc_toi_contact out;
-        int st = s->def.frame->toi(&s->toi, &A, &B, s->ws, &out);
+        int st;
+        if (s->table) {
+            /* the table frame's own call, from the states as stored: the same bits as
+             * through rc_toi_frame_table (its masses, velocities and shapes are these),
+             * without the contact point, which the engine does not use */
+            const rc_toi_shape h0 = shape_of(s, b0), h1 = shape_of(s, b1);
+            st = rc_toi_shapes_rel(&h0, &h1, d01, rc_v3_sub(b1->v, b0->v), &s->toi, s->ws,
+                                   &out.t, NULL, &out.n);
+        } else {
+            rc_toi_ball A = {rc_v3(0, 0, 0), b0->r, a0->m, a0->p};
+            rc_toi_ball B = {d01, b1->r, a1->m, a1->p};
+            st = s->def.frame->toi(&s->toi, &A, &B, s->ws, &out);
+        }
         if (flip)
             out.n = rc_v3_scale(-1.0, out.n);
         if (st == RC_EOVERLAP) {
@@ -422,10 +433,16 @@ static int narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc
     if (d2 > hsum * hsum * (1.0 + stol) * (1.0 + stol) * (1.0 + 1e-12))
         return 0;
     const eng_aux *ak = &s->a[bk - s->b];
-    rc_toi_ball A = {rc_v3(0, 0, 0), bi->r, chk->old.m, chk->old.p};
-    rc_toi_ball B = {dx, bk->r, ak->m, ak->p};
     rc_toi_contact out;
-    const int st = s->def.frame->toi(&s->toi, &A, &B, s->ws, &out);
+    int st;
+    if (s->table) { /* (as in pair_time_dx; chk->vold is the old p / M, as stored) */
+        st = rc_toi_shapes_rel(&ho, &hk, dx, rc_v3_sub(bk->v, chk->vold), &s->toi, s->ws,
+                               &out.t, NULL, &out.n);
+    } else {
+        rc_toi_ball A = {rc_v3(0, 0, 0), bi->r, chk->old.m, chk->old.p};
+        rc_toi_ball B = {dx, bk->r, ak->m, ak->p};
+        st = s->def.frame->toi(&s->toi, &A, &B, s->ws, &out);
+    }
     if (!(st == RC_OK && out.t * out.t * rc_v3_norm2(dv) <= stol * stol * sig * sig))
         return 0;
     if (normal)

@@ -204,6 +204,8 @@ struct rc_sim {
     int narrow;
     /* the table frame's ball events are stored deferred (eng_defer) */
     int defer;
+    /* the frame is the table frame: the engine calls its solver directly */
+    int table;
     int wall_contracted;
     rc_toi_params toi;
     rc_toi_workspace *ws;

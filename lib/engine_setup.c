@@ -127,6 +127,7 @@ int rc_sim_create(const rc_sim_def *def, rc_sim **out)
     s->simd = choose_simd();
     s->narrow = def->frame && strcmp(def->frame->name, "sphere") != 0;
     s->defer = choose_defer(def);
+    s->table = def->frame == &rc_toi_frame_table;
     s->wall_contracted = def->frame && def->frame->wall_contracted && s->inv_c2 > 0.0;
     if (s->narrow) {
         if (!def->frame->toi || !(s->ws = rc_toi_workspace_alloc())) {

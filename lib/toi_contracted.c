@@ -444,7 +444,7 @@ int rc_toi_shapes_rel(const rc_toi_shape *s0, const rc_toi_shape *s1, rc_vec3 d,
     const double lam_hi = r0 / (r0 + r1 * g1);
     if (!(lam_lo < lam_hi)) {
         int st = rc_toi_sphere_rel(R, d, w, prm, t, n);
-        if (st == RC_OK)
+        if (st == RC_OK && y0)
             *y0 = rc_v3_scale(r0, *n);
         return st;
     }
@@ -502,12 +502,14 @@ int rc_toi_shapes_rel(const rc_toi_shape *s0, const rc_toi_shape *s1, rc_vec3 d,
                 const rc_vec3 nn = rc_v3_scale(1.0 / rc_v3_norm(p.best_y), p.best_y);
                 if (!(-rc_v3_dot(w, nn) > prm->graze_tol * sw))
                     return RC_MISS; /* touching but separating (or sliding) */
-                const double h0 = rc_toi_support_(s0, nn), h1 = rc_toi_support_(s1, nn);
-                const rc_vec3 ya = rc_toi_support_point_(s0, nn, h0);
-                const rc_vec3 yb = rc_v3_sub(d, rc_toi_support_point_(s1, nn, h1));
                 *t = 0.0;
                 *n = nn;
-                *y0 = rc_v3_scale(0.5, rc_v3_add(ya, yb));
+                if (y0) {
+                    const double h0 = rc_toi_support_(s0, nn), h1 = rc_toi_support_(s1, nn);
+                    const rc_vec3 ya = rc_toi_support_point_(s0, nn, h0);
+                    const rc_vec3 yb = rc_v3_sub(d, rc_toi_support_point_(s1, nn, h1));
+                    *y0 = rc_v3_scale(0.5, rc_v3_add(ya, yb));
+                }
                 return RC_OK;
             }
             /* the shapes scaled by mu touch with this lambda; contact comes soon (the
@@ -550,13 +552,15 @@ int rc_toi_shapes_rel(const rc_toi_shape *s0, const rc_toi_shape *s1, rc_vec3 d,
     const rc_vec3 nn = rc_v3_scale(1.0 / rc_v3_norm(p.best_y), p.best_y);
     if (!(-rc_v3_dot(w, nn) > prm->graze_tol * sw))
         return RC_MISS; /* grazing: tangent contact, no impulse */
-    const double h0 = rc_toi_support_(s0, nn), h1 = rc_toi_support_(s1, nn);
-    const rc_vec3 rc = rc_v3_axpy(d, tc, w);
-    /* the contact point seen from each surface; they agree to O(lambda error) */
-    const rc_vec3 ya = rc_toi_support_point_(s0, nn, h0);
-    const rc_vec3 yb = rc_v3_sub(rc, rc_toi_support_point_(s1, nn, h1));
     *t = tc;
     *n = nn;
-    *y0 = rc_v3_scale(0.5, rc_v3_add(ya, yb));
+    if (y0) {
+        const double h0 = rc_toi_support_(s0, nn), h1 = rc_toi_support_(s1, nn);
+        const rc_vec3 rc = rc_v3_axpy(d, tc, w);
+        /* the contact point seen from each surface; they agree to O(lambda error) */
+        const rc_vec3 ya = rc_toi_support_point_(s0, nn, h0);
+        const rc_vec3 yb = rc_v3_sub(rc, rc_toi_support_point_(s1, nn, h1));
+        *y0 = rc_v3_scale(0.5, rc_v3_add(ya, yb));
+    }
     return RC_OK;
 }

@@ -104,7 +104,8 @@ int rc_toi_sphere_rel(double R, rc_vec3 d, rc_vec3 w, const rc_toi_params *prm,
  * apart at w: first contact time *t, contact point relative to ball 0's centre at that
  * time *y0, and the common unit normal *n (outward from shape 0). Root finding with
  * Brent's method on the Perram-Wertheim parameter; shapes that are exact spheres (inv_c2 =
- * 0 or both at rest) give rc_toi_sphere_rel's result bit for bit. Trusted input. */
+ * 0 or both at rest) give rc_toi_sphere_rel's result bit for bit. Trusted input. y0 may
+ * be NULL: the contact point is then not computed (t and n are the same bits). */
 int rc_toi_shapes_rel(const rc_toi_shape *s0, const rc_toi_shape *s1, rc_vec3 d,
                       rc_vec3 w, const rc_toi_params *prm, rc_toi_workspace *ws,
                       double *t, rc_vec3 *y0, rc_vec3 *n);
