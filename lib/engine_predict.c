@@ -450,6 +450,29 @@ static int narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc
     return 1;
 }
 
+/* Table frame: a pair about to be put to the frame at once (no bound puts its contact
+ * ahead of now: the bounding spheres overlap and the centre line does not separate the
+ * shapes) whose shapes overlap now -- in a contracted gas about half the pairs asked at
+ * once are such shape-change overlaps. pw_certify finds them in a step or two, where the
+ * frame's test that says RC_EOVERLAP costs a root find. Only for approaching bounding
+ * spheres: pair_time_dx's path that answers an overlap with now and a NAN normal (a
+ * parting pair is left to separate). 1: overlapping. */
+static int overlap_now(const rc_sim *s, const rc_toi_shape *shi, const eng_ball *bi,
+                       const eng_ball *bk, double best)
+{
+    double tref;
+    const rc_vec3 dx = pair_sep(bi, bk, &tref);
+    const double d2 = rc_v3_norm2(dx), sig = bi->r + bk->r;
+    if (!(d2 <= sig * sig && d2 > 0.0) ||
+        !(sphere_time_dx(s, bi, bk, dx, d2, tref, best) < best))
+        return 0;
+    const rc_toi_shape shk = shape_of(s, bk);
+    const double hi = rc_toi_support_scaled_(shi, dx, d2);
+    const double hk = rc_toi_support_scaled_(&shk, dx, d2);
+    double bound;
+    return pw_certify(s, bi, bk, dx, d2, tref, hi / (hi + hk), &bound) == PW_OVERLAP;
+}
+
 /* Contracted frames: the root finding is the cost, so first collect the neighbours whose
  * bounding spheres can touch before `best`, then ask the frame in order of a lower bound
  * of the contracted contact (the bounding spheres', for the table frame also the
@@ -595,7 +618,13 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
             break;
         }
         rc_vec3 n;
-        double t = pair_time(s, bi, &s->b[k], *best, &n);
+        double t;
+        if (table && lr <= s->now && overlap_now(s, &shi, bi, &s->b[k], *best)) {
+            t = s->now; /* (pair_time's answer, without the frame) */
+            n = rc_v3(NAN, NAN, NAN);
+        } else {
+            t = pair_time(s, bi, &s->b[k], *best, &n);
+        }
         if (t < *best) {
             *best = t;
             *bp = k;

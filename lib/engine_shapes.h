@@ -138,8 +138,14 @@ static inline rc_vec3 pw_mul_P(const pw_shape *q, rc_vec3 y)
  * 12.1k pairs the centre line leaves, 5.8k are settled apart (first step), 6.2k overlapping
  * (0.3k first, 5.7k second, 0.2k third step), 18 go to the frame (11.7k frame calls
  * before); same events; 454M -> 411M instructions (391M before parting pairs were asked). */
-static int parting_pw(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
-                      double d2, double tref, double best, double lam)
+enum { PW_OPEN = 0, PW_APART, PW_OVERLAP };
+
+/* The steps above, for any pair whose bounding spheres overlap: PW_APART (separated
+ * along y; *bound: no contact before it, INFINITY if the gap does not close), PW_OVERLAP
+ * (overlapping now: the frame says RC_EOVERLAP) or PW_OPEN (undecided: the frame
+ * decides). lam: the start, h_i / (h_i + h_k) along the centre line. */
+static int pw_certify(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
+                      double d2, double tref, double lam, double *bound)
 {
     const double sc = sqrt(s->inv_c2);
     const pw_shape q0 = pw_shape_of(s, bi, sc), q1 = pw_shape_of(s, bk, sc);
@@ -171,7 +177,7 @@ static int parting_pw(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, r
         const double axz = cxy * cyz - cxz * cyy, ayz = cxy * cxz - cxx * cyz;
         const double det = cxx * axx + cxy * axy + cxz * axz;
         if (!(det > 0.0))
-            return 0;
+            return PW_OPEN;
         /* y = adj(C) dx = det C^-1 dx (the scale cancels in the tests below) */
         const rc_vec3 y = rc_v3(axx * dx.x + axy * dx.y + axz * dx.z,
                                 axy * dx.x + ayy * dx.y + ayz * dx.z,
@@ -180,20 +186,28 @@ static int parting_pw(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, r
         const double h0 = sqrt(pw_quad_P(&q0, y)), h1 = sqrt(pw_quad_P(&q1, y));
         const double gap = rc_v3_dot(dx, y) - h0 - h1; /* times |y| */
         if (!(ny > 0.0) || !isfinite(gap))
-            return 0;
+            return PW_OPEN;
         if (gap > PW_MARGIN * d * ny) {
             const rc_vec3 w = rc_v3_sub(bk->v, bi->v);
             const double close = -rc_v3_dot(w, y) / ny + PW_CLOSE_TOL * rc_v3_norm(w);
-            if (!(close > 0.0))
-                return 1; /* separated along y and not closing: never */
-            return tref + (gap / ny - PW_MARGIN * d) / close >= best;
+            /* separated along y and not closing: never */
+            *bound = close > 0.0 ? tref + (gap / ny - PW_MARGIN * d) / close : INFINITY;
+            return PW_APART;
         }
         const rc_vec3 x = rc_v3_scale(l1 / det, pw_mul_P(&q0, y));
         if (pw_quad_Q(&q0, x) < inside && pw_quad_Q(&q1, rc_v3_sub(x, dx)) < inside)
-            return 1; /* overlapping now */
+            return PW_OVERLAP; /* overlapping now */
         lam = h0 / (h0 + h1);
     }
-    return 0;
+    return PW_OPEN;
+}
+
+static int parting_pw(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
+                      double d2, double tref, double best, double lam)
+{
+    double bound = INFINITY;
+    const int r = pw_certify(s, bi, bk, dx, d2, tref, lam, &bound);
+    return r == PW_OVERLAP || (r == PW_APART && bound >= best);
 }
 
 /* 1 if the frame must look at a pair whose bounding spheres overlap while not bound to
