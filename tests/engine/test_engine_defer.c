@@ -4,7 +4,7 @@
  * comes up the frame is asked (rc_eng_settle), and its answer is kept only if it comes
  * before lb2, else the ball is predicted again asking the frame at once.
  *  - Settling, ball by ball, gives the very event (time bits, partner) that asking the
- *    frame at once gives, on states of dense gases at gamma up to ~10 (white box, on the
+ *    frame at once gives, on states of dense gases at rms speed 0.9c (white box, on the
  *    internal API). Among them are balls whose least bound is not their event (the
  *    fallback is needed: counted, and required to occur), so a settle that kept the
  *    frame's answer without comparing it to lb2 would fail here.

@@ -88,7 +88,7 @@ static void test_supports_near_c(void)
 /* pw_certify (engine_shapes.h), the Perram-Wertheim certificates the engine trusts in the
  * frame's place -- for parting pairs (parting_pw) and for approaching pairs asked at once
  * (overlap_now: an overlap answered without the frame) -- against the table frame itself
- * on random pairs whose bounding spheres overlap (gamma up to ~5, c = 1, 2-D and 3-D):
+ * on random pairs whose bounding spheres overlap (gamma up to ~9, c = 1, 2-D and 3-D):
  * PW_OVERLAP only where the frame says RC_EOVERLAP; PW_APART with bound b only where the
  * frame finds no contact before b. Each answer must come up (a certificate that never
  * answers would pass vacuously). */
