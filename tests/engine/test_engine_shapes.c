@@ -34,18 +34,25 @@ static long double support_ref(double r, double m, rc_vec3 p, rc_vec3 u)
            sqrtl((m2 * (ux * ux + uy * uy + uz * uz) + cx * cx + cy * cy + cz * cz) / M2);
 }
 
-static void test_supports_near_c(void)
+/* An engine of n balls at c = 1, as far as engine_shapes.h reads one (its records). */
+static rc_sim records_engine(eng_ball *b, eng_aux *a, size_t n)
 {
     rc_sim s;
     memset(&s, 0, sizeof s);
     s.inv_c2 = 1.0;
     s.inv_c = 1.0;
-    eng_ball b[1];
-    eng_aux a[1];
-    memset(b, 0, sizeof b);
-    memset(a, 0, sizeof a);
+    memset(b, 0, n * sizeof *b);
+    memset(a, 0, n * sizeof *a);
     s.b = b;
     s.a = a;
+    return s;
+}
+
+static void test_supports_near_c(void)
+{
+    eng_ball b[1];
+    eng_aux a[1];
+    rc_sim s = records_engine(b, a, 1);
     rc_test_rng R = {5};
     double worst = 0.0, worst_naive = 0.0;
     for (int k = 0; k <= 12; k++) {
@@ -94,16 +101,9 @@ static void test_supports_near_c(void)
  * answers would pass vacuously). */
 static void test_certificates(void)
 {
-    rc_sim s;
-    memset(&s, 0, sizeof s);
-    s.inv_c2 = 1.0;
-    s.inv_c = 1.0;
     eng_ball b[2];
     eng_aux a[2];
-    memset(b, 0, sizeof b);
-    memset(a, 0, sizeof a);
-    s.b = b;
-    s.a = a;
+    rc_sim s = records_engine(b, a, 2);
     rc_toi_params prm = rc_toi_params_default();
     prm.inv_c2 = 1.0;
     rc_toi_workspace *ws = rc_toi_workspace_alloc();
