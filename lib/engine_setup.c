@@ -93,12 +93,12 @@ static int choose_simd(void)
  * (The zmf frame's is simultaneous in the pair's own frame: a pair can overlap there
  * while its bounding spheres are apart here, and the overlap policy resolves it at the
  * time of the prediction, which deferring would move.) RELCOL_DEFER=0 in the
- * environment asks the frame at once; the bits are the same (test_engine_determinism),
- * the variable exists to show it and to time the two. */
-static int choose_defer(const rc_sim_def *def)
+ * environment asks the frame at once; the bits are the same (test_engine_defer), the
+ * variable exists to show it and to time the two. */
+static int defer_wanted(void)
 {
     const char *want = getenv("RELCOL_DEFER");
-    return def->frame == &rc_toi_frame_table && !(want && !strcmp(want, "0"));
+    return !(want && !strcmp(want, "0"));
 }
 
 int rc_sim_create(const rc_sim_def *def, rc_sim **out)
@@ -126,8 +126,8 @@ int rc_sim_create(const rc_sim_def *def, rc_sim **out)
     s->toi.inv_c2 = s->inv_c2;
     s->simd = choose_simd();
     s->narrow = def->frame && strcmp(def->frame->name, "sphere") != 0;
-    s->defer = choose_defer(def);
     s->table = def->frame == &rc_toi_frame_table;
+    s->defer = s->table && defer_wanted();
     s->wall_contracted = def->frame && def->frame->wall_contracted && s->inv_c2 > 0.0;
     if (s->narrow) {
         if (!def->frame->toi || !(s->ws = rc_toi_workspace_alloc())) {

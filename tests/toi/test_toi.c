@@ -1,7 +1,8 @@
 /* test_toi.c — time of impact: the issue's worked cases (head-on t = 7, wall at 0.8 r),
  * seed 002's eq. (17), c = inf equal (==) to the sphere result in every frame, the
  * documented outcomes (touching-but-separating, overlap, grazing, miss), the zmf frame
- * against an independent boost of the worldlines, and input validation. */
+ * against an independent boost of the worldlines, the contracted solver without the
+ * contact point giving the same bits, and input validation. */
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
@@ -414,6 +415,43 @@ static void test_scale_invariance(void)
     ENSURE(compared > 50);
 }
 
+/* rc_toi_shapes_rel without the contact point (y0 = NULL, what the engine asks for):
+ * the same time and normal, bit for bit, and the same outcome, on random pairs -- near
+ * (bounding spheres overlapping: overlap, touching and moving outcomes) and far. */
+static void test_no_contact_point(void)
+{
+    rc_test_rng rng = {321};
+    rc_toi_params prm = rc_toi_params_default();
+    prm.inv_c2 = 1.0;
+    int hits = 0, others = 0;
+    for (int i = 0; i < 2000; i++) {
+        const int dim = 2 + (i & 1);
+        rc_toi_shape sh[2];
+        for (int j = 0; j < 2; j++) {
+            const rc_vec3 p = rc_v3(rc_test_range(&rng, -3, 3), rc_test_range(&rng, -3, 3),
+                                    dim == 3 ? rc_test_range(&rng, -3, 3) : 0);
+            sh[j] = rc_toi_shape_of(rc_test_range(&rng, 0.5, 1.5), 1.0, p, 1.0);
+        }
+        const double R = sh[0].r + sh[1].r, far = i % 4 ? 1.0 : 4.0;
+        const rc_vec3 d = rc_v3(R * rc_test_range(&rng, 0.6, far), rc_test_range(&rng, -1, 1),
+                                dim == 3 ? rc_test_range(&rng, -1, 1) : 0);
+        const rc_vec3 w = rc_v3(rc_test_range(&rng, -1.5, 0.2), rc_test_range(&rng, -0.5, 0.5),
+                                dim == 3 ? rc_test_range(&rng, -0.5, 0.5) : 0);
+        double t1 = NAN, t2 = NAN;
+        rc_vec3 y0, n1 = rc_v3(0, 0, 0), n2 = rc_v3(0, 0, 0);
+        const int s1 = rc_toi_shapes_rel(&sh[0], &sh[1], d, w, &prm, ws, &t1, &y0, &n1);
+        const int s2 = rc_toi_shapes_rel(&sh[0], &sh[1], d, w, &prm, ws, &t2, NULL, &n2);
+        ENSURE(s1 == s2);
+        if (s1 == RC_OK) {
+            ENSURE(t1 == t2 && n1.x == n2.x && n1.y == n2.y && n1.z == n2.z);
+            hits++;
+        } else {
+            others++;
+        }
+    }
+    ENSURE(hits > 100 && others > 100);
+}
+
 static void test_validation(void)
 {
     rc_toi_params prm = rc_toi_params_default();
@@ -465,6 +503,7 @@ int main(void)
     RUN_TEST(test_contraction_miss);
     RUN_TEST(test_zmf_frame);
     RUN_TEST(test_scale_invariance);
+    RUN_TEST(test_no_contact_point);
     RUN_TEST(test_validation);
     rc_toi_workspace_free(&ws);
     ENSURE(ws == NULL);
