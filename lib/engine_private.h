@@ -68,6 +68,8 @@ typedef struct eng_queue {
     int64_t redist;       /* end of the span: buckets from here on wait in the overflow
                              list, spread again when cur reaches it */
     size_t in_cal;        /* entries in the calendar lists */
+    double over_min;      /* at most the least key in the overflow list (keys filed there
+                             since it was last spread; INFINITY: none) */
 } eng_queue;
 
 /* Allocate for n balls; then rc_eng_queue_build with every ball's key. */

@@ -25,8 +25,11 @@ static void brute_min(const double *key, size_t n, double *t, uint32_t *ball)
 
 /* The queue's bookkeeping, walked: every ball in the heap (its entry naming its position)
  * or in exactly one list (links consistent both ways, the head's entry naming its list),
- * and in_cal the number in the calendar lists (an overcount only slows the queue, an
- * undercount skips entries: both must be caught here). Returns the faults found. */
+ * in_cal the number in the calendar lists (an overcount only slows the queue, an
+ * undercount skips entries: both must be caught here), and over_min at most every key of
+ * the overflow list (the span then starts at or before its earliest entry; a bound above
+ * one would not break the order, the heap takes what lies before the span, but it could
+ * fill the heap). Returns the faults found. */
 static long structure_faults(const eng_queue *q)
 {
     long bad = 0;
@@ -40,6 +43,7 @@ static long structure_faults(const eng_queue *q)
         int32_t prev = -1 - (int32_t)L;
         for (int32_t k = q->head[L]; k >= 0; k = q->e[k].next) {
             bad += q->e[k].prev != prev;
+            bad += L == q->nb && !(q->e[k].key >= q->over_min);
             prev = k;
             seen++;
             in_cal += L < q->nb;
