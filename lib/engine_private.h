@@ -70,6 +70,7 @@ typedef struct eng_queue {
     size_t in_cal;        /* entries in the calendar lists */
     double over_min;      /* at most the least key in the overflow list (keys filed there
                              since it was last spread; INFINITY: none) */
+    int32_t ahead;        /* the entry of the next bucket's list to fetch ahead (-1: none) */
 } eng_queue;
 
 /* Allocate for n balls; then rc_eng_queue_build with every ball's key. */

@@ -188,6 +188,7 @@ int rc_eng_queue_init(eng_queue *q, size_t n)
     }
     q->hn = 0;
     q->over_min = INFINITY;
+    q->ahead = -1;
     return RC_OK;
 }
 
@@ -268,6 +269,13 @@ void rc_eng_queue_update(eng_queue *q, uint32_t ball, double t)
 
 int rc_eng_queue_top(eng_queue *q, double *t, uint32_t *ball)
 {
+    /* one step along the next bucket's list per call: its entries are in cache by the
+     * time it is drained (a hint: the list may have changed since, any ball will do) */
+    if (q->ahead >= 0) {
+        q->ahead = q->e[q->ahead].next;
+        if (q->ahead >= 0)
+            __builtin_prefetch(&q->e[q->ahead]);
+    }
     while (q->hn == 0) {
         if (q->in_cal == 0) {
             /* nothing within the span: start it at the earliest overflow entry */
@@ -304,6 +312,9 @@ int rc_eng_queue_top(eng_queue *q, double *t, uint32_t *ball)
         const uint32_t L = (uint32_t)(q->cur & (int64_t)(q->nb - 1));
         int32_t k = q->head[L];
         q->head[L] = -1;
+        q->ahead = q->head[(L + 1) & (q->nb - 1)];
+        if (q->ahead >= 0)
+            __builtin_prefetch(&q->e[q->ahead]);
         while (k >= 0) {
             const int32_t nx = q->e[k].next;
             q->in_cal--;
