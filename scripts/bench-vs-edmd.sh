@@ -6,25 +6,29 @@
 # this machine kind"; on a shared machine whose speed drifts by tens of per cent between
 # minutes, only runs alternated in one command compare.
 #
-#   scripts/bench-vs-edmd.sh EDMD_DIR [pairs_1e4] [pairs_1e5]
+#   scripts/bench-vs-edmd.sh EDMD_DIR [pairs_1e4] [pairs_1e5] [pairs_1e6]
 #
 # EDMD_DIR: a checkout of that repository (its Single/ variant is used: neighbour lists,
 # one event per particle, the paper's fastest). It is copied to a temporary directory and
 # its parameters set there, its own sources untouched: 3-D, FCC start at packing 0.45,
-# N = 10976 or 108000 (4 n^3 near relcol's 1e4 and 1e5), no thermostat, no snapshots, and
+# N = 10976, 108000 or 1048576 (4 n^3 near relcol's 1e4, 1e5 and 1e6), no thermostat, no snapshots, and
 # a CPU-time clock (CLOCK_PROCESS_CPUTIME_ID, as bench_engine) started after 2 time units
 # (~28 collisions a particle, the lattice melted). It is built with its own Makefile's
 # flags. relcol's side is `bench_engine N PER` from a release build (build-rel/, made if
 # missing): CPU time of PER collisions a ball after melting 5, PER chosen so that both
 # time about 3 M collisions. Each pair runs both, the first alternating; printed are the
-# rates, the ratio relcol/EDMD per pair and its median.
+# rates, the ratio relcol/EDMD per pair and its median. Last, each code's time per
+# collision at the larger N as a multiple of its own at N ~ 1e4 (medians of its rates;
+# the sizes run one after the other, so the machine's drift between them enters these).
+# pairs_1e6 (default 0: skipped) adds N ~ 1e6: ~0.5 GB and ~3 minutes a pair.
 # (EDMD's box is periodic, relcol's has walls: ~7 % of relcol's events are wall hits.)
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
-edmd=${1:?usage: scripts/bench-vs-edmd.sh EDMD_DIR [pairs_1e4] [pairs_1e5]}
+edmd=${1:?usage: scripts/bench-vs-edmd.sh EDMD_DIR [pairs_1e4] [pairs_1e5] [pairs_1e6]}
 [ -f "$edmd/Single/mdSingle.c" ] || { echo "no Single/mdSingle.c in $edmd" >&2; exit 2; }
 pairs4=${2:-7}
 pairs5=${3:-3}
+pairs6=${4:-0}
 bench="$here/build-rel/tests/engine/bench_engine"
 if [ ! -x "$bench" ]; then
     meson setup "$here/build-rel" "$here" --buildtype=release >/dev/null
@@ -54,20 +58,34 @@ make_edmd() { # $1 N, $2 maxtime
 edmd_rate() { (cd "$tmp/edmd_$1" && ./md | sed -n 's/^BENCH \([0-9]*\) collisions\/s$/\1/p'); }
 relcol_rate() { "$bench" "$1" "$2" | sed -n 's/.* \([0-9][0-9]*\) collisions\/s .*/\1/p' | head -1; }
 
+median() { sort -g | awk '{ a[NR] = $1 } END { print NR % 2 ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
+
+declare -A med_r med_e # median rates by relcol N
 compare() { # $1 relcol N, $2 EDMD N, $3 EDMD maxtime, $4 pairs, $5 relcol collisions a ball
     make_edmd "$2" "$3"
     echo "== relcol N=$1 against EDMD Single N=$2 (3-D, packing 0.45), $4 pairs =="
-    local ratios=() k e r q
+    local ratios=() rs=() es=() k e r q
     for ((k = 1; k <= $4; k++)); do
         if ((k % 2)); then e=$(edmd_rate "$2"); r=$(relcol_rate "$1" "$5");
         else r=$(relcol_rate "$1" "$5"); e=$(edmd_rate "$2"); fi
         q=$(awk -v r="$r" -v e="$e" 'BEGIN { printf "%.3f", r / e }')
-        ratios+=("$q")
+        ratios+=("$q") rs+=("$r") es+=("$e")
         echo "pair $k: relcol $r collisions/s, EDMD $e collisions/s, relcol/EDMD $q"
     done
+    med_r[$1]=$(printf '%s\n' "${rs[@]}" | median)
+    med_e[$1]=$(printf '%s\n' "${es[@]}" | median)
     printf '%s\n' "${ratios[@]}" | sort -g | awk -v n="$1" '{ a[NR] = $1 }
         END { m = NR % 2 ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2;
               printf "median relcol/EDMD at N ~ %s: %.2f (range %.2f-%.2f; target >= 1.5)\n", n, m, a[1], a[NR] }'
 }
+# time per collision at N as a multiple of N = 1e4's: the ratio of the median rates
+growth() { # $1 N
+    awk -v n="$1" -v r4="${med_r[10000]}" -v r="${med_r[$1]}" -v e4="${med_e[10000]}" -v e="${med_e[$1]}" \
+        'BEGIN { printf "time per collision, N ~ %s / N ~ 1e4: relcol %.2f, EDMD %.2f (target <= 1.5 up to 1e6)\n", n, r4 / r, e4 / e }'
+}
 compare 10000 10976 12 "$pairs4" 300
 compare 100000 108000 3 "$pairs5" 30
+((pairs6 > 0)) && compare 1000000 1048576 2.5 "$pairs6" 3
+((pairs4 > 0 && pairs5 > 0)) && growth 100000
+((pairs4 > 0 && pairs6 > 0)) && growth 1000000
+exit 0
