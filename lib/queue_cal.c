@@ -142,13 +142,21 @@ static void place(eng_queue *q, uint32_t i)
     list_push(q, (uint32_t)(b & (int64_t)(q->nb - 1)), i);
 }
 
-/* Spread the overflow list over the calendar's new span [cur, cur + nb). */
-static void redistribute(eng_queue *q)
+/* A new span [cur, cur + nb) with an empty overflow list, which the caller fills again;
+ * returns the list it held. */
+static int32_t new_span(eng_queue *q)
 {
-    int32_t k = q->head[list_over(q)];
+    const int32_t k = q->head[list_over(q)];
     q->head[list_over(q)] = -1;
     q->over_min = INFINITY;
     q->redist = q->cur + (int64_t)q->nb;
+    return k;
+}
+
+/* Spread the overflow list over the calendar's new span [cur, cur + nb). */
+static void redistribute(eng_queue *q)
+{
+    int32_t k = new_span(q);
     while (k >= 0) {
         const int32_t nx = q->e[k].next;
         place(q, (uint32_t)k);
@@ -164,9 +172,7 @@ static void redistribute(eng_queue *q)
  * lists' order within a bucket changes, the pop order does not (the heap orders). */
 static void redistribute_all(eng_queue *q)
 {
-    q->head[list_over(q)] = -1;
-    q->over_min = INFINITY;
-    q->redist = q->cur + (int64_t)q->nb;
+    (void)new_span(q);
     for (size_t i = 0; i < q->n; i++)
         if (q->e[i].key < INFINITY)
             place(q, (uint32_t)i);

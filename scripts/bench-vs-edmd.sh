@@ -10,17 +10,18 @@
 #
 # EDMD_DIR: a checkout of that repository (its Single/ variant is used: neighbour lists,
 # one event per particle, the paper's fastest). It is copied to a temporary directory and
-# its parameters set there, its own sources untouched: 3-D, FCC start at packing 0.45,
-# N = 10976, 108000 or 1048576 (4 n^3 near relcol's 1e4, 1e5 and 1e6), no thermostat, no snapshots, and
-# a CPU-time clock (CLOCK_PROCESS_CPUTIME_ID, as bench_engine) started after 2 time units
-# (~28 collisions a particle, the lattice melted). It is built with its own Makefile's
-# flags. relcol's side is `bench_engine N PER` from a release build (build-rel/, made if
-# missing): CPU time of PER collisions a ball after melting 5, PER chosen so that both
-# time about 3 M collisions. Each pair runs both, the first alternating; printed are the
-# rates, the ratio relcol/EDMD per pair and its median. Last, each code's time per
-# collision at the larger N as a multiple of its own at N ~ 1e4 (medians of its rates;
-# the sizes run one after the other, so the machine's drift between them enters these).
-# pairs_1e6 (default 0: skipped) adds N ~ 1e6: ~0.5 GB and ~3 minutes a pair.
+# its parameters set there, its own sources untouched: 3-D, FCC start at packing 0.45, N =
+# 10976, 108000 or 1048576 (4 n^3 near relcol's 1e4, 1e5 and 1e6), no thermostat, no
+# snapshots, and a CPU-time clock (CLOCK_PROCESS_CPUTIME_ID, as bench_engine) started
+# after 2 time units (~28 collisions a particle, the lattice melted). It is built with its
+# own Makefile's flags. relcol's side is `bench_engine N PER` from a release build
+# (build-rel/, made if missing): CPU time of PER collisions a ball after melting 5, PER
+# chosen so that both time about 3 M collisions. Each pair runs both, the first
+# alternating; printed are the rates, the ratio relcol/EDMD per pair and its median. Last,
+# each code's time per collision at the larger N as a multiple of its own at N ~ 1e4
+# (medians of its rates; the sizes run one after the other, so the machine's drift between
+# them enters these). pairs_1e6 (default 0: skipped) adds N ~ 1e6: ~0.5 GB and ~3 minutes
+# a pair.
 # (EDMD's box is periodic, relcol's has walls: ~7 % of relcol's events are wall hits.)
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -74,9 +75,12 @@ compare() { # $1 relcol N, $2 EDMD N, $3 EDMD maxtime, $4 pairs, $5 relcol colli
     done
     med_r[$1]=$(printf '%s\n' "${rs[@]}" | median)
     med_e[$1]=$(printf '%s\n' "${es[@]}" | median)
-    printf '%s\n' "${ratios[@]}" | sort -g | awk -v n="$1" '{ a[NR] = $1 }
-        END { m = NR % 2 ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2;
-              printf "median relcol/EDMD at N ~ %s: %.2f (range %.2f-%.2f; target >= 1.5)\n", n, m, a[1], a[NR] }'
+    local lo hi m
+    lo=$(printf '%s\n' "${ratios[@]}" | sort -g | head -1)
+    hi=$(printf '%s\n' "${ratios[@]}" | sort -g | tail -1)
+    m=$(printf '%s\n' "${ratios[@]}" | median)
+    awk -v n="$1" -v m="$m" -v lo="$lo" -v hi="$hi" \
+        'BEGIN { printf "median relcol/EDMD at N ~ %s: %.2f (range %.2f-%.2f; target >= 1.5)\n", n, m, lo, hi }'
 }
 # time per collision at N as a multiple of N = 1e4's: the ratio of the median rates
 growth() { # $1 N
