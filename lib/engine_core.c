@@ -71,7 +71,9 @@ static int have_contact(const rc_sim *s, size_t nc, int a, int b)
 
 static int add_contact(rc_sim *s, size_t *nc, int a, int b, rc_vec3 n)
 {
-    if (grow((void **)&s->grp_con, &s->grp_con_cap, *nc + 1, sizeof *s->grp_con) != RC_OK)
+    size_t cap = s->grp_con_cap;
+    if (grow((void **)&s->grp_j, &cap, *nc + 1, sizeof *s->grp_j) != RC_OK ||
+        grow((void **)&s->grp_con, &s->grp_con_cap, *nc + 1, sizeof *s->grp_con) != RC_OK)
         return RC_ENOMEM;
     rc_contact *c = &s->grp_con[(*nc)++];
     c->a = a;
@@ -173,7 +175,45 @@ static double kinetic(const rc_particle *b, double inv_c2)
 
 
 static double contact_eps(rc_sim *s, const rc_contact *c);
-static void finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int kind, int done);
+static void finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int kind, int done,
+                   const double *J);
+
+/* Surface gap of group member mi to wall w at the members' time (negative: the shape
+ * crosses the wall), relative to the ball's rest radius. */
+static double wall_gap_rel(const rc_sim *s, int mi, int w)
+{
+    const int32_t i = s->grp_ball[mi];
+    const int d = w / 2;
+    const double x = rc_v3_get(s->b[i].x, d), h = rc_eng_wall_support(s, i, d);
+    return ((w & 1) ? s->L[d] - h - x : x - h) / s->b[i].r;
+}
+
+/* Count the contacts of the group that the overlap policy decides (shapes deeper in
+ * each other or in a wall than overlap_tol), contacts from .. nc, on the states before
+ * the collision: the event's own ball contact is counted by collide() from the frame's
+ * verdict; here its wall contact and the other contacts of a group, by kind. A contracted frame's group contacts are never overlapping ones
+ * (narrow_conflict asks the frame for a contact within sim_tol of now). */
+static void count_overlaps(rc_sim *s, size_t from, size_t nc)
+{
+    const double tol = s->def.overlap_tol;
+    for (size_t j = from; j < nc; j++) {
+        const rc_contact *c = &s->grp_con[j];
+        int kind = j == 0 ? 1 : 2;
+        if (c->b < 0) {
+            if (!(wall_gap_rel(s, c->a, ENG_WALL_INDEX(c->b)) < -tol))
+                continue;
+        } else {
+            if (j == 0 || s->narrow)
+                continue;
+            const eng_ball *ba = &s->b[s->grp_ball[c->a]], *bb = &s->b[s->grp_ball[c->b]];
+            const double sig = (ba->r + bb->r) * (1.0 - tol);
+            if (!(rc_v3_norm2(rc_v3_sub(bb->x, ba->x)) < sig * sig))
+                continue;
+        }
+        s->overlaps++;
+        s->overlap_kind[kind]++;
+    }
+}
 
 /* The common case: the event's own contact alone. Resolve it, then predict both balls
  * while checking that no other contact was simultaneous with it; if one was, undo
@@ -233,7 +273,7 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T)
     }
     for (size_t j = 0; j < nm; j++)
         P[j] = Q[j];
-    finish(s, nm, 1, k0, p0, bp >= 0 ? RC_SIM_EV_BALL : RC_SIM_EV_WALL, 1);
+    finish(s, nm, 1, k0, p0, bp >= 0 ? RC_SIM_EV_BALL : RC_SIM_EV_WALL, 1, NULL);
     return 1;
 }
 
@@ -253,6 +293,7 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
         const rc_vec3 n = s->ev_n[i];
         if (isnan(n.x)) {
             s->overlaps++;
+            s->overlap_kind[0]++;
         } else {
             n0 = n;
             frame_normal = 1;
@@ -267,8 +308,10 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
         double len = rc_v3_norm(dx);
         if (!frame_normal)
             n0 = len > 0.0 ? rc_v3_scale(1.0 / len, dx) : rc_v3(1.0, 0.0, 0.0);
-        if (!s->narrow && len < (s->b[i].r + s->b[bp].r) * (1.0 - s->def.overlap_tol))
+        if (!s->narrow && len < (s->b[i].r + s->b[bp].r) * (1.0 - s->def.overlap_tol)) {
             s->overlaps++;
+            s->overlap_kind[0]++;
+        }
         if (add_contact(s, &nc, 0, 1, n0) != RC_OK)
             return RC_ENOMEM;
     } else {
@@ -277,6 +320,7 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
         rc_v3_set(&n0, d, (w & 1) ? 1.0 : -1.0);
         if (add_contact(s, &nc, 0, bp, n0) != RC_OK)
             return RC_ENOMEM;
+        count_overlaps(s, 0, 1); /* (before the collision changes the shape) */
     }
     if (try_single(s, nm, bp, T))
         return RC_OK;
@@ -284,6 +328,7 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
         int st = grow_group(s, &nm, &nc, T);
         if (st != RC_OK)
             return st;
+        count_overlaps(s, 1, nc);
     }
     /* states before, TC model per contact */
     rc_particle *P = s->grp_part;
@@ -312,7 +357,7 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
     } else {
         /* members may be many: the solver works on the group's local indices */
         kind = RC_SIM_EV_MULTI;
-        int st = rc_contacts_resolve(s->inv_c2, nm, P, nc, s->grp_con, NULL);
+        int st = rc_contacts_resolve(s->inv_c2, nm, P, nc, s->grp_con, s->grp_j);
         if (st != RC_OK) {
             /* dependent normals (or no convergence): resolve the event's own contact,
              * the others become events of their own at the same time */
@@ -343,7 +388,7 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
             }
         }
     }
-    finish(s, nm, nc, k0, p0, kind, 0);
+    finish(s, nm, nc, k0, p0, kind, 0, kind == RC_SIM_EV_MULTI ? s->grp_j : NULL);
     return RC_OK;
 }
 
@@ -365,7 +410,44 @@ static double contact_eps(rc_sim *s, const rc_contact *c)
 
 /* Write the group's new states (P) back, account heat and wall impulse, and predict
  * every member. In the single-contact path states, counters and predictions are done. */
-static void finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int kind, int single)
+/* The momentum the walls took in this event, wall by wall (s->wallw). Per axis the total
+ * is exact: the ball contacts of a group pass momentum only between its balls. It goes to
+ * the one wall of that axis in the group; only a group touching both walls of an axis (a
+ * chain of balls across the box) needs the solver's impulses J to share it: each wall
+ * its own J n_d, and what the relativistic rest-mass step adds to the total shared
+ * equally -- counted in wall_shared, since that split is a choice. */
+static void account_walls(rc_sim *s, size_t nc, rc_vec3 p0, rc_vec3 p1, const double *J)
+{
+    unsigned sides[3] = {0, 0, 0};
+    for (size_t j = 0; j < nc; j++)
+        if (s->grp_con[j].b < 0) {
+            const int w = ENG_WALL_INDEX(s->grp_con[j].b);
+            sides[w / 2] |= 1u << (w & 1);
+        }
+    for (int d = 0; d < 3; d++) {
+        const double taken = rc_v3_get(p0, d) - rc_v3_get(p1, d);
+        if (sides[d] == 1u || sides[d] == 2u) {
+            const int w = 2 * d + (sides[d] == 2u);
+            kahan(&s->wallw[w], &s->wallw_c[w], taken);
+        } else if (sides[d] == 3u) {
+            double rest = taken;
+            for (size_t j = 0; j < nc; j++) {
+                const rc_contact *c = &s->grp_con[j];
+                if (c->b >= 0 || ENG_WALL_INDEX(c->b) / 2 != d)
+                    continue;
+                const double part = J ? J[j] * rc_v3_get(c->n, d) : 0.0;
+                kahan(&s->wallw[ENG_WALL_INDEX(c->b)], &s->wallw_c[ENG_WALL_INDEX(c->b)], part);
+                rest -= part;
+            }
+            kahan(&s->wallw[2 * d], &s->wallw_c[2 * d], 0.5 * rest);
+            kahan(&s->wallw[2 * d + 1], &s->wallw_c[2 * d + 1], 0.5 * rest);
+            s->wall_shared++;
+        }
+    }
+}
+
+static void finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int kind, int single,
+                   const double *J)
 {
     const rc_particle *P = s->grp_part;
     s->events[kind]++;
@@ -391,6 +473,7 @@ static void finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int k
     kahan(&s->wall[0], &s->wall_c[0], p0.x - p1.x);
     kahan(&s->wall[1], &s->wall_c[1], p0.y - p1.y);
     kahan(&s->wall[2], &s->wall_c[2], p0.z - p1.z);
+    account_walls(s, nc, p0, p1, J);
     for (size_t j = 0; j < nm; j++) {
         if (single)
             rc_eng_queue_update(&s->q, (uint32_t)s->grp_ball[j], key_of(&s->a[s->grp_ball[j]]));

@@ -91,6 +91,10 @@ int rc_sim_diagnostics(const rc_sim *s, rc_sim_diag *d)
     d->energy = d->kinetic + s->heat;
     d->wall_impulse = rc_v3(s->wall[0], s->wall[1], s->wall[2]);
     d->overlaps = s->overlaps;
+    memcpy(d->overlaps_by_kind, s->overlap_kind, sizeof d->overlaps_by_kind);
+    for (int w = 0; w < 6; w++)
+        d->wall_impulse_by_wall[w] = s->wallw[w];
+    d->wall_shared = s->wall_shared;
     d->collisions = s->collisions;
     memcpy(d->events, s->events, sizeof d->events);
     d->max_group = s->max_group;

@@ -217,7 +217,12 @@ struct rc_sim {
     /* conservation bookkeeping (Kahan-compensated sums) */
     double heat, heat_c;
     double wall[3], wall_c[3];
+    /* per wall (index 2 d + side, side 1 the far wall x_d = L_d): the momentum along e_d
+     * it has taken, attributed contact by contact (rc_sim_diag.wall_impulse_by_wall) */
+    double wallw[6], wallw_c[6];
+    uint64_t wall_shared;
     uint64_t overlaps;
+    uint64_t overlap_kind[3]; /* overlaps by the kind of contact: ball, wall, group */
     uint64_t collisions;
     uint64_t events[RC_SIM_EV_NKINDS];
     size_t max_group;
@@ -227,12 +232,17 @@ struct rc_sim {
     int32_t *grp_ball;
     rc_particle *grp_part;
     rc_contact *grp_con;
+    double *grp_j; /* the group solver's impulses, grp_con_cap entries */
     size_t grp_ball_cap, grp_con_cap;
 };
 
 /* A per-ball array of `bytes` (engine_mem.c): cache-line aligned, on transparent huge
  * pages where it spans some; NULL if out of memory. Released with free(). */
 void *rc_eng_alloc(size_t bytes);
+
+/* Allocate the state of n balls (engine_setup.c), replacing any held: per-ball arrays,
+ * cells sized for the largest rest radius rmax, queue; bookkeeping cleared. */
+int rc_eng_alloc_state(rc_sim *s, size_t n, double rmax);
 
 /* Velocity p / M and inverse Lorentz factor of a state. */
 static inline double eng_mass_rel(double m, rc_vec3 p, double inv_c2)

@@ -169,6 +169,7 @@ void rc_sim_free(rc_sim **sp)
     free(s->grp_ball);
     free(s->grp_part);
     free(s->grp_con);
+    free(s->grp_j);
     rc_toi_workspace_free(&s->ws);
     free(s->cand);
     free(s);
@@ -242,8 +243,12 @@ int rc_sim_sync(rc_sim *s)
     memcpy(wall_c, s->wall_c, sizeof wall_c);
     uint64_t overlaps = s->overlaps, collisions = s->collisions, fallbacks = s->group_fallbacks;
     size_t max_group = s->max_group;
-    uint64_t events[RC_SIM_EV_NKINDS];
+    uint64_t events[RC_SIM_EV_NKINDS], kinds[3], shared = s->wall_shared;
     memcpy(events, s->events, sizeof events);
+    memcpy(kinds, s->overlap_kind, sizeof kinds);
+    double wallw[6], wallw_c[6];
+    memcpy(wallw, s->wallw, sizeof wallw);
+    memcpy(wallw_c, s->wallw_c, sizeof wallw_c);
     int st = load_balls(s, n, b, NULL, 0);
     free(b);
     if (st != RC_OK)
@@ -257,7 +262,69 @@ int rc_sim_sync(rc_sim *s)
     s->group_fallbacks = fallbacks;
     s->max_group = max_group;
     memcpy(s->events, events, sizeof events);
+    memcpy(s->overlap_kind, kinds, sizeof kinds);
+    memcpy(s->wallw, wallw, sizeof wallw);
+    memcpy(s->wallw_c, wallw_c, sizeof wallw_c);
+    s->wall_shared = shared;
     return RC_OK;
+}
+
+/* Allocate the state of n balls (the largest rest radius rmax sizes the cells), replacing
+ * any balls held, with the bookkeeping started afresh: shared by rc_sim_set_balls and
+ * rc_sim_checkpoint_read. On failure nothing is held. */
+int rc_eng_alloc_state(rc_sim *s, size_t n, double rmax)
+{
+    const int dim = s->def.dim;
+    release_balls(s);
+    /* a new set of balls starts its bookkeeping afresh */
+    s->heat = s->heat_c = 0.0;
+    for (int d = 0; d < 3; d++)
+        s->wall[d] = s->wall_c[d] = 0.0;
+    for (int w = 0; w < 6; w++)
+        s->wallw[w] = s->wallw_c[w] = 0.0;
+    memset(s->overlap_kind, 0, sizeof s->overlap_kind);
+    s->wall_shared = 0;
+    s->overlaps = s->collisions = s->group_fallbacks = s->since_reorder = 0;
+    s->max_group = 0;
+    memset(s->events, 0, sizeof s->events);
+    int st = RC_ENOMEM;
+    /* each 64-byte record on one cache line, not straddling two (rc_eng_alloc aligns to 64):
+     * every neighbour test loads one whole record */
+    s->b = rc_eng_alloc(n * sizeof *s->b);
+    s->a = rc_eng_alloc(n * sizeof *s->a);
+    s->clk = rc_eng_alloc(n * sizeof *s->clk);
+    if (!s->b || !s->a || !s->clk)
+        goto fail;
+    double edge = 2.0 * rmax * (1.0 + CELL_MARGIN + 2.0 * s->def.sim_tol);
+    if (s->def.cell_size > edge)
+        edge = s->def.cell_size;
+    if (!(edge > 0.0))
+        edge = 1.0;
+    if ((st = rc_eng_cells_init(&s->g, dim, s->def.box, edge, n)) != RC_OK)
+        goto fail;
+    if ((st = rc_eng_queue_init(&s->q, n)) != RC_OK)
+        goto fail;
+    s->n = n;
+    /* Store balls in cell order (stable): neighbours then share cache lines and the
+     * prefetcher, which matters more than anything else once N no longer fits in cache.
+     * id[] / slot[] translate to and from the caller's indices. */
+    s->cnt = rc_eng_alloc(n * sizeof *s->cnt);
+    if (s->cnt)
+        memset(s->cnt, 0, n * sizeof *s->cnt);
+    s->id = rc_eng_alloc(n * sizeof *s->id);
+    s->slot = rc_eng_alloc(n * sizeof *s->slot);
+    if (s->narrow && !(s->ev_n = rc_eng_alloc(n * sizeof *s->ev_n))) {
+        st = RC_ENOMEM;
+        goto fail;
+    }
+    if (!s->id || !s->slot || !s->cnt) {
+        st = RC_ENOMEM;
+        goto fail;
+    }
+    return RC_OK;
+fail:
+    release_balls(s);
+    return st;
 }
 
 static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, int validate)
@@ -300,47 +367,11 @@ static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, i
         if (b->r > rmax)
             rmax = b->r;
     }
-    release_balls(s);
-    /* a new set of balls starts its bookkeeping afresh */
-    s->heat = s->heat_c = 0.0;
-    for (int d = 0; d < 3; d++)
-        s->wall[d] = s->wall_c[d] = 0.0;
-    s->overlaps = s->collisions = s->group_fallbacks = s->since_reorder = 0;
-    s->max_group = 0;
-    memset(s->events, 0, sizeof s->events);
-    int st = RC_ENOMEM;
-    /* each 64-byte record on one cache line, not straddling two (rc_eng_alloc aligns to 64):
-     * every neighbour test loads one whole record */
-    s->b = rc_eng_alloc(n * sizeof *s->b);
-    s->a = rc_eng_alloc(n * sizeof *s->a);
-    s->clk = rc_eng_alloc(n * sizeof *s->clk);
-    if (!s->b || !s->a || !s->clk)
-        goto fail;
-    double edge = 2.0 * rmax * (1.0 + CELL_MARGIN + 2.0 * s->def.sim_tol);
-    if (s->def.cell_size > edge)
-        edge = s->def.cell_size;
-    if (!(edge > 0.0))
-        edge = 1.0;
-    if ((st = rc_eng_cells_init(&s->g, dim, s->def.box, edge, n)) != RC_OK)
-        goto fail;
-    if ((st = rc_eng_queue_init(&s->q, n)) != RC_OK)
-        goto fail;
-    s->n = n;
-    /* Store balls in cell order (stable): neighbours then share cache lines and the
-     * prefetcher, which matters more than anything else once N no longer fits in cache.
-     * id[] / slot[] translate to and from the caller's indices. */
-    s->cnt = rc_eng_alloc(n * sizeof *s->cnt);
-    if (s->cnt)
-        memset(s->cnt, 0, n * sizeof *s->cnt);
-    s->id = rc_eng_alloc(n * sizeof *s->id);
-    s->slot = rc_eng_alloc(n * sizeof *s->slot);
-    if (s->narrow && !(s->ev_n = rc_eng_alloc(n * sizeof *s->ev_n))) {
-        st = RC_ENOMEM;
-        goto fail;
-    }
+    int st = rc_eng_alloc_state(s, n, rmax);
+    if (st != RC_OK)
+        return st;
     int32_t *cellof = malloc((n ? n : 1) * sizeof *cellof);
-    if (!s->id || !s->slot || !s->cnt || !cellof) {
-        free(cellof);
+    if (!cellof) {
         st = RC_ENOMEM;
         goto fail;
     }

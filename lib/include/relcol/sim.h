@@ -115,12 +115,24 @@ typedef struct rc_sim_diag {
     double energy;          /* kinetic + heat: conserved for every c and restitution */
     double rest_mass;       /* sum of rest masses */
     rc_vec3 momentum;       /* sum of ball momenta */
-    rc_vec3 wall_impulse;   /* momentum taken by the walls so far */
+    rc_vec3 wall_impulse;   /* momentum taken by the walls so far (all walls together) */
+    /* ... and by each wall, w = 2 d + side (side 1 the far wall x_d = L_d): the component
+     * along e_d of the momentum wall w took (negative on the near walls of a gas pushing
+     * out). Exact per axis; see wall_shared for the one case where two walls share it. */
+    double wall_impulse_by_wall[6];
+    uint64_t wall_shared;   /* groups that touched both walls of one axis (a chain of balls
+                               across the box): the axis's momentum was split between them
+                               by the group solver's impulses, the rest-mass step's share
+                               equally -- a choice, not a measurement */
     double momentum_scale;  /* sum of |p_i| (scale for relative momentum checks) */
     double max_overlap;     /* deepest sphere overlap now, relative to ri + rj (0 if none;
                                NAN with a contracted frame, whose bounding spheres may
                                overlap while the shapes do not) */
-    uint64_t overlaps;      /* overlaps deeper than overlap_tol met by the engine */
+    uint64_t overlaps;      /* overlaps deeper than overlap_tol met by the engine: contacts
+                               decided by the overlap policy, not found by the contact model */
+    uint64_t overlaps_by_kind[3]; /* the same by the contact's kind: [0] the event's own
+                               ball contact, [1] a ball-wall contact, [2] another ball
+                               contact of a group of simultaneous contacts */
     uint64_t collisions;    /* contacts resolved (each contact of a group counts) */
     uint64_t events[RC_SIM_EV_NKINDS];
     size_t max_group;       /* most contacts resolved together */
