@@ -243,6 +243,8 @@ void *rc_eng_alloc(size_t bytes);
 /* Allocate the state of n balls (engine_setup.c), replacing any held: per-ball arrays,
  * cells sized for the largest rest radius rmax, queue; bookkeeping cleared. */
 int rc_eng_alloc_state(rc_sim *s, size_t n, double rmax);
+/* Release the balls' state (the engine then holds none). */
+void rc_eng_release_state(rc_sim *s);
 
 /* Velocity p / M and inverse Lorentz factor of a state. */
 static inline double eng_mass_rel(double m, rc_vec3 p, double inv_c2)

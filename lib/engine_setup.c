@@ -160,6 +160,8 @@ static void release_balls(rc_sim *s)
     s->n = 0;
 }
 
+void rc_eng_release_state(rc_sim *s) { release_balls(s); }
+
 void rc_sim_free(rc_sim **sp)
 {
     if (!sp || !*sp)

@@ -20,6 +20,8 @@ const char *rc_strerror(int status)
     case RC_EUNKNOWN: return "unknown name";
     case RC_ERADIUS: return "radius must be > 0";
     case RC_EDIM: return "dimension must be 1, 2 or 3";
+    case RC_ECORRUPT: return "not a whole, undamaged relcol checkpoint";
+    case RC_EMISMATCH: return "checkpoint written by another run definition, format or machine";
     default: return "unknown status code";
     }
 }

@@ -166,10 +166,30 @@ int rc_sim_set_balls(rc_sim *s, size_t n, const rc_sim_ball *balls, size_t *bad)
 /* Bring every ball to the engine's time and plan all events afresh from that state alone
  * (diagnostic counters are kept). Afterwards the run's future depends only on what
  * rc_sim_get_ball returns, so a state written now and loaded into a new engine with
- * rc_sim_set_time + rc_sim_set_balls continues bit for bit as this engine does (that is
- * how relcol-sim makes its final state a restart point). Without sync, advancing in
- * pieces gives the same bits as advancing in one go. */
+ * rc_sim_set_time + rc_sim_set_balls continues bit for bit as this engine does. But the
+ * re-planning itself rounds event times differently: the run after a sync differs in its
+ * bits from the run without one. To stop and continue a run without changing it, use a
+ * checkpoint (below); advancing in pieces, and reading balls or diagnostics between
+ * them, gives the same bits as advancing in one go. */
 int rc_sim_sync(rc_sim *s);
+
+/* ---- checkpoints: stopping and continuing without changing the run -------------- */
+
+/* The engine's whole state as bytes: every ball at its own clock, every scheduled event,
+ * the cells' order, the numbering, the bookkeeping (diagnostics continue too). Read into
+ * an engine made from an equal definition (every field that changes the physics or the
+ * event order: dim, box, c, restitutions, t_c, law and frame by name, tolerances, cell
+ * size, density), it continues bit for bit as the engine that wrote it: a run stopped,
+ * written, read and continued equals the run that never stopped, in every bit
+ * (test_engine_checkpoint). The bytes are for machines of this one's byte order and
+ * record layout, carry a checksum, and are checked ball by ball on reading, so damaged or
+ * foreign bytes are refused (RC_ECORRUPT, RC_EMISMATCH), never run.
+ *   size: the bytes a checkpoint of s takes now;
+ *   write: exactly that many into buf;
+ *   read: replaces s's balls and time; on failure s holds no balls. */
+int rc_sim_checkpoint_size(const rc_sim *s, size_t *bytes);
+int rc_sim_checkpoint_write(const rc_sim *s, void *buf, size_t bytes);
+int rc_sim_checkpoint_read(rc_sim *s, const void *buf, size_t bytes);
 
 /* Process events in time order until the next one would be later than t_end (then all
  * balls are at t_end) or max_events events were processed (0 = no limit). */

@@ -27,7 +27,9 @@ enum rc_status {
     RC_ENOCONVERGE = -10,  /* an iterative solver did not converge */
     RC_EUNKNOWN = -11,     /* unknown name (law, frame, ...) */
     RC_ERADIUS = -12,      /* radius not strictly positive */
-    RC_EDIM = -13          /* dimension outside 1..3 or inconsistent */
+    RC_EDIM = -13,         /* dimension outside 1..3 or inconsistent */
+    RC_ECORRUPT = -14,     /* bytes that are not a whole, undamaged relcol checkpoint */
+    RC_EMISMATCH = -15     /* a checkpoint of another run definition, format or machine */
 };
 
 /* A short English description of a status code (static storage, never NULL). */

@@ -1,0 +1,380 @@
+/* engine_checkpoint.c — the engine's whole state as bytes, and back: what makes a run
+ * stopped and continued (Ctrl-C included) bit-identical to one that never stopped.
+ *
+ * Why the whole state and not the balls: a ball's scheduled event was predicted when it
+ * was last touched, from its own clock and its neighbours' states then; a new engine
+ * given the same balls predicts every event afresh, from other clocks, and rounds its
+ * times differently. So the bytes carry every ball at its own clock, every scheduled
+ * event, the cells' slot order (which neighbour a tie of equal times goes to), the
+ * numbering and its renumbering clock, and the bookkeeping. The queue is not carried: its
+ * pop order is the exact (time, ball) order of the keys, whatever its buckets.
+ *
+ * Layout (native byte order and record sizes, both checked on reading): a header, the
+ * scalars, the per-ball arrays, the cells, and an FNV-1a checksum of all before it. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "engine_private.h"
+#include "relcol/status.h"
+
+#define CK_MAGIC "relcolck"
+#define CK_VERSION 1u
+#define CK_ORDER 0x01020304u
+
+typedef struct ck_header {
+    char magic[8];
+    uint32_t version, order;
+    uint32_t size_ball, size_aux, size_clock, dim;
+    uint64_t def_print; /* fingerprint of the definition (def_print) */
+    uint64_t n, ncells;
+    uint32_t has_normals, reserved;
+} ck_header;
+
+/* A cursor over the bytes; with p == NULL it only counts. */
+typedef struct ck_cursor {
+    unsigned char *p;
+    const unsigned char *q;
+    size_t at, size;
+} ck_cursor;
+
+static void put(ck_cursor *c, const void *x, size_t bytes)
+{
+    if (c->p && bytes)
+        memcpy(c->p + c->at, x, bytes);
+    c->at += bytes;
+}
+
+static int get(ck_cursor *c, void *x, size_t bytes)
+{
+    if (bytes > c->size - c->at)
+        return RC_ECORRUPT;
+    if (bytes)
+        memcpy(x, c->q + c->at, bytes);
+    c->at += bytes;
+    return RC_OK;
+}
+
+static uint64_t fnv_bytes(uint64_t h, const void *x, size_t bytes)
+{
+    const unsigned char *c = x;
+    for (size_t k = 0; k < bytes; k++) {
+        h ^= c[k];
+        h *= 0x100000001b3ULL;
+    }
+    return h;
+}
+
+static uint64_t fnv_double(uint64_t h, double x) { return fnv_bytes(h, &x, sizeof x); }
+
+static uint64_t fnv_string(uint64_t h, const char *str)
+{
+    return fnv_bytes(h, str ? str : "", strlen(str ? str : "") + 1);
+}
+
+/* What a continued run must share with the one that wrote the state: every field of the
+ * definition that changes the physics or the event order. (restart only relaxes what
+ * rc_sim_set_balls accepts.) */
+static uint64_t def_print(const rc_sim *s)
+{
+    const rc_sim_def *d = &s->def;
+    uint64_t h = 0xcbf29ce484222325ULL;
+    const uint32_t dim = (uint32_t)d->dim;
+    h = fnv_bytes(h, &dim, sizeof dim);
+    h = fnv_double(h, d->box.x);
+    h = fnv_double(h, d->box.y);
+    h = fnv_double(h, d->box.z);
+    h = fnv_double(h, d->c);
+    h = fnv_double(h, d->eps_ball);
+    h = fnv_double(h, d->eps_wall);
+    h = fnv_double(h, d->t_c);
+    h = fnv_string(h, d->law->name);
+    h = fnv_string(h, d->frame ? d->frame->name : NULL);
+    h = fnv_double(h, d->toi.touch_tol);
+    h = fnv_double(h, d->toi.graze_tol);
+    h = fnv_double(h, d->toi.lambda_tol);
+    const int32_t it = (int32_t)d->toi.max_iter;
+    h = fnv_bytes(h, &it, sizeof it);
+    h = fnv_double(h, d->sim_tol);
+    h = fnv_double(h, d->approach_tol);
+    h = fnv_double(h, d->overlap_tol);
+    h = fnv_double(h, d->cell_size);
+    h = fnv_double(h, d->density);
+    return h;
+}
+
+/* The cells' chain links with every entry outside a chain set to -1 (the engine leaves
+ * a removed ball's link as it was): the bytes are a function of the state alone. */
+static int32_t *chain_links(const rc_sim *s)
+{
+    const eng_cells *g = &s->g;
+    int32_t *next = malloc((s->n ? s->n : 1) * sizeof *next);
+    if (!next)
+        return NULL;
+    for (size_t k = 0; k < s->n; k++)
+        next[k] = -1;
+    for (size_t j = 0; j < g->ncells * ENG_CELL_CAP; j++)
+        if (g->slot[j] < -1)
+            for (int32_t k = ENG_CHAIN_HEAD(g->slot[j]); k >= 0; k = g->next[k])
+                next[k] = g->next[k];
+    return next;
+}
+
+/* Everything but the checksum, to c (counting only if c->p is NULL; next: the chain
+ * links, as chain_links gives them). */
+static void write_all(const rc_sim *s, ck_cursor *c, const int32_t *next)
+{
+    ck_header hd;
+    memset(&hd, 0, sizeof hd);
+    memcpy(hd.magic, CK_MAGIC, sizeof hd.magic);
+    hd.version = CK_VERSION;
+    hd.order = CK_ORDER;
+    hd.size_ball = sizeof(eng_ball);
+    hd.size_aux = sizeof(eng_aux);
+    hd.size_clock = sizeof(eng_clock);
+    hd.dim = (uint32_t)s->def.dim;
+    hd.def_print = def_print(s);
+    hd.n = s->n;
+    hd.ncells = s->n ? s->g.ncells : 0;
+    hd.has_normals = s->ev_n != NULL;
+    put(c, &hd, sizeof hd);
+    const size_t n = s->n;
+    put(c, &s->now, sizeof s->now);
+    put(c, &s->heat, sizeof s->heat);
+    put(c, &s->heat_c, sizeof s->heat_c);
+    put(c, s->wall, sizeof s->wall);
+    put(c, s->wall_c, sizeof s->wall_c);
+    put(c, s->wallw, sizeof s->wallw);
+    put(c, s->wallw_c, sizeof s->wallw_c);
+    const uint64_t counts[6] = {s->overlaps, s->collisions, s->max_group, s->group_fallbacks,
+                                s->since_reorder, s->wall_shared};
+    put(c, counts, sizeof counts);
+    put(c, s->overlap_kind, sizeof s->overlap_kind);
+    put(c, s->events, sizeof s->events);
+    put(c, s->b, n * sizeof *s->b);
+    put(c, s->a, n * sizeof *s->a);
+    put(c, s->clk, n * sizeof *s->clk);
+    put(c, s->id, n * sizeof *s->id);
+    put(c, s->cnt, n * sizeof *s->cnt);
+    if (s->ev_n)
+        put(c, s->ev_n, n * sizeof *s->ev_n);
+    if (n) {
+        put(c, s->g.slot, s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot);
+        put(c, next, n * sizeof *next);
+    }
+}
+
+int rc_sim_checkpoint_size(const rc_sim *s, size_t *bytes)
+{
+    if (!s || !bytes)
+        return RC_EINVAL;
+    ck_cursor c = {NULL, NULL, 0, 0};
+    write_all(s, &c, NULL);
+    *bytes = c.at + sizeof(uint64_t);
+    return RC_OK;
+}
+
+int rc_sim_checkpoint_write(const rc_sim *s, void *buf, size_t bytes)
+{
+    size_t need;
+    if (!s || !buf || rc_sim_checkpoint_size(s, &need) != RC_OK || bytes != need)
+        return RC_EINVAL;
+    int32_t *next = chain_links(s);
+    if (!next)
+        return RC_ENOMEM;
+    ck_cursor c = {buf, NULL, 0, bytes};
+    write_all(s, &c, next);
+    free(next);
+    const uint64_t sum = fnv_bytes(0xcbf29ce484222325ULL, buf, c.at);
+    put(&c, &sum, sizeof sum);
+    return RC_OK;
+}
+
+/* Every scheduled event and clock as the engine itself could have left it. */
+static int check_ball(const rc_sim *s, size_t k)
+{
+    const eng_ball *b = &s->b[k];
+    const eng_aux *a = &s->a[k];
+    const eng_clock *t = &s->clk[k];
+    const int dim = s->def.dim;
+    if (!rc_v3_isfinite(b->x) || !rc_v3_isfinite(b->v) || !isfinite(b->t) || !(b->t <= s->now) ||
+        !isfinite(b->r) || !(b->r > 0.0) || !rc_v3_isfinite(a->p) || !isfinite(a->m) ||
+        !(a->m > 0.0) || !isfinite(t->tau) || isnan(t->tau_last) || t->tau_last == INFINITY)
+        return RC_ECORRUPT;
+    if (dim == 2 && (b->x.z != 0.0 || a->p.z != 0.0))
+        return RC_ECORRUPT;
+    /* v is derived from p and m, the same way every time the engine sets it */
+    const rc_vec3 v = rc_v3_scale(1.0 / eng_mass_rel(a->m, a->p, s->inv_c2), a->p);
+    if (memcmp(&v, &b->v, sizeof v) != 0)
+        return RC_ECORRUPT;
+    /* events are never in the past: the queue pops them in time order from now on */
+    if (isnan(a->ev_t) || isnan(a->cross_t) || a->ev_t < s->now || a->cross_t < s->now)
+        return RC_ECORRUPT;
+    const int32_t p = a->ev_partner;
+    if (!(p == ENG_NONE || (p >= 0 && (size_t)p < s->n && (size_t)p != k) ||
+          (p < 0 && ENG_WALL_INDEX(p) < 2 * dim)))
+        return RC_ECORRUPT;
+    if (!(a->cross_code >= -1 && a->cross_code < 2 * dim) || a->cell < 0 ||
+        (size_t)a->cell >= s->g.ncells)
+        return RC_ECORRUPT;
+    return RC_OK;
+}
+
+/* The cells hold every ball exactly once, each in the cell its record names, and every
+ * link outside a chain is -1 (a slot or link out of range, a ball twice, a cycle:
+ * damaged). Walked here with bounds checks, not with cell_next, which trusts its links. */
+static int check_cells(const rc_sim *s)
+{
+    const eng_cells *g = &s->g;
+    const size_t n = s->n;
+    unsigned char *seen = calloc(n ? n : 1, 1);
+    if (!seen)
+        return RC_ENOMEM;
+    size_t count = 0, in_chains = 0;
+    int st = RC_OK;
+    for (size_t j = 0; j < g->ncells * ENG_CELL_CAP && st == RC_OK; j++) {
+        const int32_t v = g->slot[j];
+        const int32_t cell = (int32_t)(j / ENG_CELL_CAP);
+        if (v == -1)
+            continue;
+        int32_t k = v >= 0 ? v : ENG_CHAIN_HEAD(v);
+        const int chain = v < -1;
+        size_t len = 0;
+        while (st == RC_OK) {
+            if (k < 0 || (size_t)k >= n || seen[k] || s->a[k].cell != cell) {
+                st = RC_ECORRUPT;
+                break;
+            }
+            seen[k] = 1;
+            count++;
+            len++;
+            if (!chain)
+                break;
+            in_chains++;
+            if (g->next[k] == -1)
+                break;
+            k = g->next[k];
+        }
+        if (st == RC_OK && chain && len < 2)
+            st = RC_ECORRUPT; /* a chain keeps at least two balls */
+    }
+    size_t linked = 0;
+    for (size_t k = 0; k < n; k++)
+        linked += g->next[k] != -1;
+    free(seen);
+    if (st != RC_OK)
+        return st;
+    /* each chain has one -1 at its end: the links that are not -1 are the chains' others */
+    return count == n && linked <= in_chains ? RC_OK : RC_ECORRUPT;
+}
+
+static int read_all(rc_sim *s, ck_cursor *c)
+{
+    ck_header hd;
+    if (get(c, &hd, sizeof hd) != RC_OK || memcmp(hd.magic, CK_MAGIC, sizeof hd.magic) != 0)
+        return RC_ECORRUPT;
+    if (hd.version != CK_VERSION || hd.order != CK_ORDER || hd.size_ball != sizeof(eng_ball) ||
+        hd.size_aux != sizeof(eng_aux) || hd.size_clock != sizeof(eng_clock))
+        return RC_EMISMATCH; /* another format, byte order or build */
+    if (hd.dim != (uint32_t)s->def.dim || hd.def_print != def_print(s) ||
+        hd.has_normals != (s->narrow != 0))
+        return RC_EMISMATCH;
+    if (hd.n > (uint64_t)INT32_MAX)
+        return RC_ECORRUPT;
+    const size_t n = (size_t)hd.n;
+    /* the sizes must add up before anything is allocated for them */
+    const size_t per_ball = sizeof(eng_ball) + sizeof(eng_aux) + sizeof(eng_clock) +
+                            2 * sizeof(uint32_t) + (hd.has_normals ? sizeof(rc_vec3) : 0) +
+                            sizeof(int32_t);
+    if (n > (c->size - c->at) / per_ball)
+        return RC_ECORRUPT;
+    double now, heat, heat_c, wall[3], wall_c[3], wallw[6], wallw_c[6];
+    uint64_t counts[6], kinds[3], events[RC_SIM_EV_NKINDS];
+    if (get(c, &now, sizeof now) || get(c, &heat, sizeof heat) || get(c, &heat_c, sizeof heat_c) ||
+        get(c, wall, sizeof wall) || get(c, wall_c, sizeof wall_c) || get(c, wallw, sizeof wallw) ||
+        get(c, wallw_c, sizeof wallw_c) || get(c, counts, sizeof counts) ||
+        get(c, kinds, sizeof kinds) || get(c, events, sizeof events))
+        return RC_ECORRUPT;
+    if (!isfinite(now) || !isfinite(heat) || !isfinite(heat_c))
+        return RC_ECORRUPT;
+    for (int d = 0; d < 6; d++)
+        if (!isfinite(wallw[d]) || !isfinite(wallw_c[d]) || (d < 3 && (!isfinite(wall[d]) ||
+                                                                      !isfinite(wall_c[d]))))
+            return RC_ECORRUPT;
+    /* the largest radius sizes the cells: read it off the records before allocating */
+    double rmax = 0.0;
+    for (size_t k = 0; k < n; k++) {
+        eng_ball b;
+        memcpy(&b, c->q + c->at + k * sizeof b, sizeof b);
+        if (!(b.r > 0.0 && b.r < INFINITY))
+            return RC_ECORRUPT;
+        rmax = b.r > rmax ? b.r : rmax;
+    }
+    int st = rc_eng_alloc_state(s, n, rmax);
+    if (st != RC_OK)
+        return st;
+    if ((n ? s->g.ncells : 0) != hd.ncells)
+        return RC_ECORRUPT;
+    s->now = now;
+    if (get(c, s->b, n * sizeof *s->b) || get(c, s->a, n * sizeof *s->a) ||
+        get(c, s->clk, n * sizeof *s->clk) || get(c, s->id, n * sizeof *s->id) ||
+        get(c, s->cnt, n * sizeof *s->cnt) ||
+        (s->ev_n && get(c, s->ev_n, n * sizeof *s->ev_n)))
+        return RC_ECORRUPT;
+    if (n && (get(c, s->g.slot, s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot) ||
+              get(c, s->g.next, n * sizeof *s->g.next)))
+        return RC_ECORRUPT;
+    if (c->at != c->size)
+        return RC_ECORRUPT;
+    /* id is a permutation; slot its inverse */
+    for (size_t k = 0; k < n; k++)
+        s->slot[k] = UINT32_MAX;
+    for (size_t k = 0; k < n; k++) {
+        if (s->id[k] >= n || s->slot[s->id[k]] != UINT32_MAX)
+            return RC_ECORRUPT;
+        s->slot[s->id[k]] = (uint32_t)k;
+    }
+    for (size_t k = 0; k < n; k++)
+        if ((st = check_ball(s, k)) != RC_OK)
+            return st;
+    if (n && (st = check_cells(s)) != RC_OK)
+        return st;
+    s->heat = heat;
+    s->heat_c = heat_c;
+    memcpy(s->wall, wall, sizeof wall);
+    memcpy(s->wall_c, wall_c, sizeof wall_c);
+    memcpy(s->wallw, wallw, sizeof wallw);
+    memcpy(s->wallw_c, wallw_c, sizeof wallw_c);
+    s->overlaps = counts[0];
+    s->collisions = counts[1];
+    s->max_group = (size_t)counts[2];
+    s->group_fallbacks = counts[3];
+    s->since_reorder = counts[4];
+    s->wall_shared = counts[5];
+    memcpy(s->overlap_kind, kinds, sizeof kinds);
+    memcpy(s->events, events, sizeof events);
+    for (size_t k = 0; k < n; k++)
+        s->q.e[k].key = key_of(&s->a[k]);
+    rc_eng_queue_rebuild(&s->q, s->now);
+    return RC_OK;
+}
+
+int rc_sim_checkpoint_read(rc_sim *s, const void *buf, size_t bytes)
+{
+    if (!s || !buf)
+        return RC_EINVAL;
+    if (bytes < sizeof(ck_header) + sizeof(uint64_t))
+        return RC_ECORRUPT;
+    uint64_t sum;
+    memcpy(&sum, (const unsigned char *)buf + bytes - sizeof sum, sizeof sum);
+    if (sum != fnv_bytes(0xcbf29ce484222325ULL, buf, bytes - sizeof sum))
+        return RC_ECORRUPT;
+    ck_cursor c = {NULL, buf, 0, bytes - sizeof sum};
+    const double was = s->now;
+    const int st = read_all(s, &c);
+    if (st != RC_OK) {
+        rc_eng_release_state(s); /* no half-loaded state is ever left behind */
+        s->now = was;
+    }
+    return st;
+}
