@@ -327,10 +327,11 @@ static int cmp_double(const void *a, const void *b)
 
 static int parse_outputs(const ctx *c, const cJSON *o, scn_scenario *s)
 {
-    static const char *const keys[] = {"dir", "snapshots", "xyz_every", "plots", "gif",
-                                       "summary", NULL};
+    static const char *const keys[] = {"dir", "snapshots", "xyz_every", "xyz_from", "plots",
+                                       "gif", "summary", NULL};
     scn_outputs *out = &s->out;
     out->plots = 1;
+    out->xyz_from = s->time;
     out->gif = s->dim == 2;
     out->summary = 1;
     const char *dir = "out/sim";
@@ -341,6 +342,7 @@ static int parse_outputs(const ctx *c, const cJSON *o, scn_scenario *s)
             return -1;
         if (get_str(c, o, "outputs", "dir", dir, &dir) ||
             get_num(c, o, "outputs", "xyz_every", 0, 0, 0, &out->xyz_every) ||
+            get_num(c, o, "outputs", "xyz_from", 0, s->time, 0, &out->xyz_from) ||
             get_bool(c, o, "outputs", "plots", 1, &out->plots) ||
             get_bool(c, o, "outputs", "gif", s->dim == 2, &out->gif) ||
             get_bool(c, o, "outputs", "summary", 1, &out->summary))
@@ -349,6 +351,9 @@ static int parse_outputs(const ctx *c, const cJSON *o, scn_scenario *s)
             return bad(c, "outputs.dir", "is empty");
         if (out->xyz_every < 0)
             return bad(c, "outputs.xyz_every", "must be >= 0 (0: no trajectory)");
+        if (!(out->xyz_from <= s->time))
+            return bad(c, "outputs.xyz_from", "must be <= the start time %.17g (the grid's "
+                       "origin)", s->time);
         if (out->gif && s->dim != 2)
             return bad(c, "outputs.gif", "the animated table is for 2-D runs");
         const cJSON *sn = cJSON_GetObjectItemCaseSensitive(o, "snapshots");
@@ -398,7 +403,8 @@ int scn_parse(const char *text, const char *name, scn_scenario *s, char *err)
 {
     static const char *const keys[] = {"relcol", "dim", "box", "c", "law", "restitution",
                                        "contact_frame", "tc", "seed", "time", "t_end",
-                                       "restart", "balls", "generate", "outputs", NULL};
+                                       "restart", "checkpoint", "balls", "generate",
+                                       "outputs", NULL};
     memset(s, 0, sizeof *s);
     ctx c = {name, err};
     cJSON *root = cJSON_Parse(text);
@@ -487,6 +493,23 @@ int scn_parse(const char *text, const char *name, scn_scenario *s, char *err)
     s->seed = (uint64_t)seed;
     if (get_bool(&c, root, "", "restart", 0, &s->restart))
         goto done;
+    const char *ck = NULL;
+    if (get_str(&c, root, "", "checkpoint", NULL, &ck))
+        goto done;
+    if (ck) {
+        if (!*ck || strchr(ck, '/')) {
+            bad(&c, "checkpoint", "must be a file name beside the scenario (no folder)");
+            goto done;
+        }
+        if (!s->restart) {
+            bad(&c, "checkpoint", "belongs to a restart file (\"restart\": true)");
+            goto done;
+        }
+        if (!(s->checkpoint = strdup(ck))) {
+            bad(&c, "checkpoint", "out of memory");
+            goto done;
+        }
+    }
     if (!(s->t_end > s->time)) {
         bad(&c, "t_end", "must be later than the start time %g", s->time);
         goto done;
@@ -599,6 +622,7 @@ void scn_free(scn_scenario *s)
 {
     free(s->balls);
     free(s->out.dir);
+    free(s->checkpoint);
     memset(s, 0, sizeof *s);
 }
 
@@ -661,11 +685,18 @@ int scn_write(FILE *f, const scn_scenario *s, double t, double t_end, size_t n,
     fprintf(f, " \"contact_frame\": \"%s\", \"tc\": %.17g, \"seed\": %llu,\n", s->frame, s->t_c,
             (unsigned long long)s->seed);
     fprintf(f, " \"time\": %.17g, \"t_end\": %.17g, \"restart\": true,\n", t, t_end);
+    if (s->checkpoint) {
+        fprintf(f, " \"checkpoint\": ");
+        put_string(f, s->checkpoint);
+        fprintf(f, ",\n");
+    }
     fprintf(f, " \"outputs\": {\"dir\": ");
     put_string(f, s->out.dir);
     fprintf(f, ", \"xyz_every\": %.17g, \"plots\": %s, \"gif\": %s, \"summary\": %s",
             s->out.xyz_every, s->out.plots ? "true" : "false", s->out.gif ? "true" : "false",
             s->out.summary ? "true" : "false");
+    if (s->out.xyz_every > 0)
+        fprintf(f, ", \"xyz_from\": %.17g", s->out.xyz_from);
     /* the snapshot times still ahead (a run interrupted before them takes them along); at
      * the scenario's own start (--dump) one at t is ahead too, later it has been written */
     int first = 1;

@@ -18,6 +18,8 @@ typedef struct scn_outputs {
     size_t n_snap;             /* snapshot times (CSV), ascending */
     double snap[SCN_MAX_SNAPSHOTS];
     double xyz_every;          /* extended-XYZ frame interval; 0 = no trajectory */
+    double xyz_from;           /* frames at xyz_from + k xyz_every, those >= time (a
+                                  continued run keeps the grid of the run it continues) */
     int plots;                 /* trajectory PNG (and GIF for 2-D) when gnuplot exists */
     int gif;                   /* animated GIF for 2-D runs */
     int summary;               /* summary.txt */
@@ -35,6 +37,9 @@ typedef struct scn_scenario {
     double time;               /* start time (a restart carries the time it stopped at) */
     double t_end;
     int restart;               /* the balls are a state relcol-sim wrote (final.json) */
+    char *checkpoint;          /* the engine's whole state, a file relative to the
+                                  scenario's folder (final.json names final.ckpt); NULL:
+                                  none, events are planned afresh from the balls */
     size_t n;                  /* balls */
     rc_sim_ball *balls;        /* n balls (momentum, rest mass resolved) */
     char generator[16];        /* "" (explicit balls), "rack" or "gas": how balls were made */

@@ -4,6 +4,7 @@
  * stopping), trajectory and animation figures through gnuplot. Ctrl-C writes the restart
  * state and exits cleanly. Every file is written atomically (temporary name, rename).
  * Exit status: 0 done, 2 bad scenario or option, 1 run or I/O failure, 130 interrupted. */
+#include <errno.h>
 #include <math.h>
 #include <signal.h>
 #include <stdlib.h>
@@ -42,11 +43,16 @@ static void usage(FILE *f)
 "  --dump          print the scenario as relcol reads it (JSON) and exit\n"
 "\n"
 "Writes into the output folder: snapshots/snap-NNNN.csv at the scenario's snapshot times,\n"
-"trajectory.xyz (extended XYZ, when outputs.xyz_every > 0), summary.txt, final.json (the\n"
-"final state as a scenario: `relcol-sim DIR/final.json` continues the run bit-identically,\n"
-"writing into DIR.1, then DIR.2, ...: the run it continues keeps its files),\n"
+"trajectory.xyz (extended XYZ, when outputs.xyz_every > 0), summary.txt, summary.json\n"
+"(the same for programs), final.json (the final state as a scenario) and final.ckpt (the\n"
+"engine's whole state, which final.json names): `relcol-sim DIR/final.json` continues\n"
+"the run, writing into DIR.1, then DIR.2, ... (the run it continues keeps its files),\n"
 "and with gnuplot trajectories.png and, for 2-D runs, table.gif. A progress bar shows on\n"
 "a terminal. Ctrl-C stops at the next event batch, writes final.json and the files so far.\n"
+"\n"
+"Exact: the run's trajectory, every bit, does not depend on the outputs written nor on\n"
+"where it was stopped and continued (at its end or by Ctrl-C); a continued run's frames\n"
+"lie on the uninterrupted run's time grid.\n"
 "\n"
 "exit status: 0 done; 2 bad scenario or option (one line naming the JSON path and the\n"
 "reason); 1 run or I/O failure; 130 interrupted (restart state written).\n");
@@ -54,6 +60,86 @@ static void usage(FILE *f)
 
 /* "relcol-sim: message" on stderr, returning the exit status code */
 #define fail(code, ...) app_fail(prog, (code), __VA_ARGS__)
+
+/* The whole file at path, malloc'ed (*bytes its length); NULL with errno on failure. */
+static unsigned char *read_file(const char *path, size_t *bytes)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return NULL;
+    size_t cap = 1 << 20, n = 0;
+    unsigned char *buf = malloc(cap);
+    while (buf) {
+        n += fread(buf + n, 1, cap - n, f);
+        if (n < cap || ferror(f))
+            break;
+        unsigned char *nb = cap < ((size_t)1 << 40) ? realloc(buf, cap *= 2) : NULL;
+        if (!nb) {
+            free(buf);
+            errno = ENOMEM;
+        }
+        buf = nb;
+    }
+    if (buf && ferror(f)) {
+        free(buf);
+        buf = NULL;
+        errno = EIO;
+    }
+    fclose(f);
+    *bytes = n;
+    return buf;
+}
+
+/* Continue from the checkpoint the scenario names (beside the scenario file): the engine
+ * takes the whole state it holds, which must be the state of the scenario's balls, to the
+ * bit (the balls are the readable copy; the checkpoint alone carries the scheduled events
+ * that make the continuation exact). 0, or -1 with the reason in err. */
+static int load_checkpoint(rc_sim *sim, const scn_scenario *s, const char *file, char *err)
+{
+    const char *slash = strrchr(file, '/');
+    char *dir = slash ? strndup(file, (size_t)(slash - file) + (slash == file)) : strdup(".");
+    char *path = dir ? app_path_join(dir, s->checkpoint) : NULL;
+    free(dir);
+    if (!path) {
+        app_errf(err, "out of memory");
+        return -1;
+    }
+    size_t bytes = 0;
+    unsigned char *buf = read_file(path, &bytes);
+    int r = -1;
+    if (!buf) {
+        app_errf(err, "%s: checkpoint: cannot read %s: %s", file, path, strerror(errno));
+        goto done;
+    }
+    int st = rc_sim_checkpoint_read(sim, buf, bytes);
+    if (st != RC_OK) {
+        app_errf(err, "%s: checkpoint: %s: %s", file, path, rc_strerror(st));
+        goto done;
+    }
+    if (rc_sim_count(sim) != s->n || rc_sim_time(sim) != s->time) {
+        app_errf(err, "%s: checkpoint: %s holds %zu balls at t = %.17g, the scenario %zu at "
+                 "t = %.17g: not this run's state", file, path, rc_sim_count(sim),
+                 rc_sim_time(sim), s->n, s->time);
+        goto done;
+    }
+    for (size_t i = 0; i < s->n; i++) {
+        rc_sim_ball b;
+        const rc_sim_ball *w = &s->balls[i];
+        rc_sim_get_ball(sim, i, &b);
+        if (memcmp(&b.x, &w->x, sizeof b.x) || memcmp(&b.p, &w->p, sizeof b.p) ||
+            b.r != w->r || b.m != w->m || b.tau != w->tau) {
+            app_errf(err, "%s: balls[%zu]: differs from the state in the checkpoint %s (edit "
+                     "the balls and delete the \"checkpoint\" key to start afresh from them)",
+                     file, i, path);
+            goto done;
+        }
+    }
+    r = 0;
+done:
+    free(buf);
+    free(path);
+    return r;
+}
 
 static double now(void)
 {
@@ -140,9 +226,19 @@ int main(int argc, char **argv)
         return fail(2, "cannot create the simulation: %s", rc_strerror(st));
     }
     size_t badi = 0;
-    st = rc_sim_set_time(sim, s.time);
-    if (st == RC_OK)
-        st = rc_sim_set_balls(sim, s.n, s.balls, &badi);
+    if (s.checkpoint) {
+        /* (a builtin has none: only a file can name one) */
+        if (load_checkpoint(sim, &s, file, err)) {
+            rc_sim_free(&sim);
+            scn_free(&s);
+            return fail(2, "%s", err);
+        }
+        st = RC_OK;
+    } else {
+        st = rc_sim_set_time(sim, s.time);
+        if (st == RC_OK)
+            st = rc_sim_set_balls(sim, s.n, s.balls, &badi);
+    }
     if (st != RC_OK) {
         rc_sim_free(&sim);
         scn_free(&s);
@@ -186,12 +282,8 @@ int main(int argc, char **argv)
         }
         if (rc)
             break;
-        /* an output time: re-plan from the state alone, so that a state written here is
-         * an exact restart point (rc_sim_sync) */
-        if (rc_sim_time(sim) >= next && (st = rc_sim_sync(sim)) != RC_OK) {
-            rc = fail(1, "cannot synchronise at t = %.17g: %s", rc_sim_time(sim), rc_strerror(st));
-            break;
-        }
+        /* an output time: outputs only read the engine (the run's bits do not depend on
+         * them) */
         if (rc_sim_time(sim) >= next && simout_at(&o, sim, err)) {
             rc = fail(1, "%s", err);
             break;

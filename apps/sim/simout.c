@@ -5,6 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <cjson/cJSON.h>
+
 #include "simout.h"
 
 static const char *const axes = "xyz";
@@ -14,7 +16,19 @@ int simout_open(sim_output *o, const scn_scenario *s, const char *prog, char *er
     memset(o, 0, sizeof *o);
     o->s = s;
     o->prog = prog;
-    o->next_frame = s->out.xyz_every > 0 ? s->time : INFINITY;
+    o->next_frame = INFINITY;
+    if (s->out.xyz_every > 0) {
+        /* the first point of the grid xyz_from + k xyz_every at or after the start, by the
+         * same expression that places every later frame (so on the uninterrupted run's) */
+        const double from = s->out.xyz_from, dt = s->out.xyz_every;
+        double k = fmax(0.0, ceil((s->time - from) / dt));
+        while (k > 0.0 && from + dt * (k - 1.0) >= s->time)
+            k -= 1.0;
+        while (from + dt * k < s->time)
+            k += 1.0;
+        o->frame_k = k;
+        o->next_frame = from + dt * k <= s->t_end ? from + dt * k : INFINITY;
+    }
     if (app_mkdir_p(s->out.dir, err))
         return -1;
     if (s->out.n_snap) {
@@ -137,15 +151,49 @@ int simout_at(sim_output *o, const rc_sim *sim, char *err)
     }
     if (o->have_xyz && o->next_frame <= t) {
         write_frame(o, sim);
-        o->next_frame = s->time + s->out.xyz_every * (double)o->frame_no;
+        o->frame_k += 1.0;
+        o->next_frame = s->out.xyz_from + s->out.xyz_every * o->frame_k;
         if (o->next_frame > s->t_end)
             o->next_frame = INFINITY;
     }
     return 0;
 }
 
+/* final.ckpt: the engine's whole state (rc_sim_checkpoint_write), which final.json names:
+ * continuing from it changes no bit of the run. */
+static int write_checkpoint(const sim_output *o, const rc_sim *sim, char *err)
+{
+    size_t bytes = 0;
+    unsigned char *buf = NULL;
+    char *path = app_path_join(o->s->out.dir, SIMOUT_CHECKPOINT);
+    app_atomic a;
+    int r = -1, st = rc_sim_checkpoint_size(sim, &bytes);
+    if (!path || st != RC_OK || !(buf = malloc(bytes))) {
+        app_errf(err, "cannot make the checkpoint: %s", st != RC_OK ? rc_strerror(st) : "out of memory");
+        goto done;
+    }
+    if ((st = rc_sim_checkpoint_write(sim, buf, bytes)) != RC_OK) {
+        app_errf(err, "cannot make the checkpoint: %s", rc_strerror(st));
+        goto done;
+    }
+    if (app_atomic_open(&a, path, err))
+        goto done;
+    if (fwrite(buf, 1, bytes, a.f) != bytes) {
+        app_atomic_abort(&a);
+        app_errf(err, "cannot write %s", path);
+        goto done;
+    }
+    r = app_atomic_commit(&a, err);
+done:
+    free(buf);
+    free(path);
+    return r;
+}
+
 static int write_final(const sim_output *o, const rc_sim *sim, int interrupted, char *err)
 {
+    if (write_checkpoint(o, sim, err))
+        return -1;
     const scn_scenario *s = o->s;
     size_t n = rc_sim_count(sim);
     rc_sim_ball *b = malloc((n ? n : 1) * sizeof *b);
@@ -173,6 +221,7 @@ static int write_final(const sim_output *o, const rc_sim *sim, int interrupted, 
         goto done;
     }
     next.out.dir = next_dir;
+    next.checkpoint = SIMOUT_CHECKPOINT;
     if (scn_write(a.f, &next, t, t_end, n, b)) {
         app_atomic_abort(&a);
         app_errf(err, "cannot write %s", path);
@@ -184,6 +233,97 @@ done:
     free(b);
     free(path);
     return r;
+}
+
+/* summary.json: the run's results for programs (what summary.txt says to a person), numbers
+ * in round-trip precision (cJSON prints %.15g, or %.17g where that would not read back);
+ * counts and impulses are this run's, from its start time to t. */
+static cJSON *num(double x)
+{
+    /* (JSON has no infinity or NaN: c = inf as in a scenario, an undefined ratio as null) */
+    return isinf(x) && x > 0 ? cJSON_CreateString("inf")
+           : isfinite(x)     ? cJSON_CreateNumber(x)
+                             : cJSON_CreateNull();
+}
+
+static void add(cJSON *o, const char *key, double x) { cJSON_AddItemToObject(o, key, num(x)); }
+
+static int write_summary_json(const sim_output *o, const rc_sim *sim, const rc_sim_diag *d,
+                              double dE, double dPrel, double wall, int interrupted, char *err)
+{
+    const scn_scenario *s = o->s;
+    const rc_sim_diag *d0 = &o->d0;
+    static const char *const ev[RC_SIM_EV_NKINDS] = {"ball", "wall", "group", "cell", "stale", "tc"};
+    static const char *const walls[6] = {"x-", "x+", "y-", "y+", "z-", "z+"};
+    cJSON *j = cJSON_CreateObject(), *x;
+    if (!j)
+        goto nomem;
+    add(j, "relcol", 1);
+    cJSON_AddStringToObject(j, "program", o->prog);
+    cJSON_AddBoolToObject(j, "interrupted", interrupted);
+    add(j, "dim", s->dim);
+    add(j, "n", (double)rc_sim_count(sim));
+    cJSON_AddItemToObject(j, "box", x = cJSON_CreateArray());
+    for (int k = 0; x && k < s->dim; k++)
+        cJSON_AddItemToArray(x, num(rc_v3_get(s->box, k)));
+    add(j, "c", s->c);
+    cJSON_AddStringToObject(j, "law", s->law->name);
+    cJSON_AddStringToObject(j, "contact_frame", s->frame);
+    cJSON_AddItemToObject(j, "restitution", x = cJSON_CreateObject());
+    add(x, "ball", s->eps_ball);
+    add(x, "wall", s->eps_wall);
+    add(j, "tc", s->t_c);
+    add(j, "t_start", s->time);
+    add(j, "t", rc_sim_time(sim));
+    /* collisions: events resolved alone (ball, wall), groups resolved together, and the
+     * contacts of all of them */
+    cJSON_AddItemToObject(j, "collisions", x = cJSON_CreateObject());
+    for (int k = RC_SIM_EV_BALL; k <= RC_SIM_EV_MULTI; k++)
+        add(x, ev[k], (double)(d->events[k] - d0->events[k]));
+    add(x, "contacts", (double)(d->collisions - d0->collisions));
+    add(x, "largest_group", (double)d->max_group);
+    add(x, "group_fallbacks", (double)(d->group_fallbacks - d0->group_fallbacks));
+    cJSON_AddItemToObject(j, "overlaps_resolved", x = cJSON_CreateObject());
+    static const char *const okind[3] = {"ball", "wall", "group"};
+    for (int k = 0; k < 3; k++)
+        add(x, okind[k], (double)(d->overlaps_by_kind[k] - d0->overlaps_by_kind[k]));
+    add(x, "total", (double)(d->overlaps - d0->overlaps));
+    add(j, "energy_error", dE);
+    add(j, "momentum_error", dPrel);
+    add(j, "energy", d->energy);
+    add(j, "kinetic_energy", d->kinetic);
+    add(j, "heat", d->heat - d0->heat);
+    add(j, "rest_mass_total", d->rest_mass);
+    add(j, "rest_mass_start", d0->rest_mass);
+    cJSON_AddItemToObject(j, "wall_impulse", x = cJSON_CreateObject());
+    for (int w = 0; w < 2 * s->dim; w++)
+        add(x, walls[w], d->wall_impulse_by_wall[w] - d0->wall_impulse_by_wall[w]);
+    add(j, "wall_shared", (double)(d->wall_shared - d0->wall_shared));
+    add(j, "cell_crossings", (double)(d->events[RC_SIM_EV_CELL] - d0->events[RC_SIM_EV_CELL]));
+    cJSON_AddItemToObject(j, "events", x = cJSON_CreateObject());
+    for (int k = 0; k < RC_SIM_EV_NKINDS; k++)
+        add(x, ev[k], (double)(d->events[k] - d0->events[k]));
+    add(j, "wall_clock_seconds", wall);
+    char *text = cJSON_Print(j);
+    cJSON_Delete(j);
+    if (!text)
+        goto nomem;
+    char *path = app_path_join(s->out.dir, "summary.json");
+    app_atomic a;
+    int r = -1;
+    if (path && !app_atomic_open(&a, path, err)) {
+        fprintf(a.f, "%s\n", text);
+        r = app_atomic_commit(&a, err);
+    } else if (!path) {
+        app_errf(err, "out of memory");
+    }
+    free(path);
+    free(text);
+    return r;
+nomem:
+    cJSON_Delete(j);
+    app_errf(err, "out of memory writing summary.json");
+    return -1;
 }
 
 static int write_summary(sim_output *o, const rc_sim *sim, double wall, int interrupted,
@@ -254,7 +394,9 @@ static int write_summary(sim_output *o, const rc_sim *sim, double wall, int inte
                 (unsigned long long)d.overlaps, d.max_overlap);
     fprintf(f, "proper time      min %.9g, mean %.9g, max %.9g\n", tau_min, tau_sum / (double)n, tau_max);
     fprintf(f, "wall clock       %.3f s, %.4g collisions/s\n", wall, wall > 0 ? (double)coll / wall : 0.0);
-    return app_atomic_commit(&a, err);
+    if (app_atomic_commit(&a, err))
+        return -1;
+    return write_summary_json(o, sim, &d, dE, dPrel, wall, interrupted, err);
 }
 
 /* paths.dat: frames.dat regrouped by ball (one block per ball), for the trajectory lines. */

@@ -6,12 +6,16 @@
 #include "app.h"
 #include "scenario.h"
 
+/* The engine's state beside final.json, which names it. */
+#define SIMOUT_CHECKPOINT "final.ckpt"
+
 typedef struct sim_output {
     const scn_scenario *s;
     const char *prog;
     size_t next_snap;     /* index of the next snapshot time */
     double next_frame;    /* time of the next XYZ frame (INFINITY if none) */
-    size_t frame_no;
+    double frame_k;       /* its place on the grid: next_frame = xyz_from + frame_k xyz_every */
+    size_t frame_no;      /* frames written */
     app_atomic xyz;       /* trajectory.xyz, committed at the end */
     app_atomic frames;    /* frames.dat (x y r per ball, one block per frame) for figures */
     int have_xyz;

@@ -100,10 +100,11 @@ else
 fi
 
 # restart identity: 0 -> 20 -> (final.json) -> 40 equals 0 -> 40 with a stop at 20
+# (the edited copy stays beside final.ckpt, the checkpoint final.json names)
 sed 's/"t_end": 40/"t_end": 20/' "$tmp/run.json" > "$tmp/half.json"
 "$sim" "$tmp/half.json" --out "$tmp/half" > /dev/null 2>&1
-sed 's/"t_end": [0-9.e+-]*/"t_end": 40/' "$tmp/half/final.json" > "$tmp/cont.json"
-"$sim" "$tmp/cont.json" --out "$tmp/cont" > /dev/null 2> "$tmp/err"
+sed 's/"t_end": [0-9.e+-]*/"t_end": 40/' "$tmp/half/final.json" > "$tmp/half/cont.json"
+"$sim" "$tmp/half/cont.json" --out "$tmp/cont" > /dev/null 2> "$tmp/err"
 sed -n '/"balls"/,$p' "$tmp/full/final.json" > "$tmp/a"
 sed -n '/"balls"/,$p' "$tmp/cont/final.json" > "$tmp/b"
 if [ -s "$tmp/a" ] && cmp -s "$tmp/a" "$tmp/b"; then
@@ -117,6 +118,45 @@ sed -n '/"balls"/,$p' "$tmp/again/final.json" > "$tmp/c"
 cmp -s "$tmp/a" "$tmp/c" && ok "same scenario twice -> identical final state" \
     || ko "two runs of one scenario differ"
 
+# the outputs do not change the run: no outputs at all, and outputs at irregular times
+sed 's/"outputs": {[^}]*}/"outputs": {"plots": false, "gif": false, "summary": false}/' "$tmp/run.json" > "$tmp/quiet.json"
+sed 's/"snapshots": \[10, 20\], "xyz_every": 5/"snapshots": [0.3, 1.7, 2.71828, 19.99, 33.3], "xyz_every": 0.37/' "$tmp/run.json" > "$tmp/busy.json"
+"$sim" "$tmp/quiet.json" --out "$tmp/quiet" > /dev/null 2>&1
+"$sim" "$tmp/busy.json" --out "$tmp/busy" > /dev/null 2>&1
+sed -n '/"balls"/,$p' "$tmp/quiet/final.json" > "$tmp/q"
+sed -n '/"balls"/,$p' "$tmp/busy/final.json" > "$tmp/b2"
+[ -s "$tmp/q" ] && cmp -s "$tmp/a" "$tmp/q" && cmp -s "$tmp/a" "$tmp/b2" \
+    && ok "outputs change no bit: no outputs, every 5, 109 frames and 5 snapshots at odd times" \
+    || ko "the outputs changed the run"
+
+# a checkpoint that is not this state, or not there: refused, naming why
+sed '0,/"tau": [0-9.e+-]*/s//"tau": 12345/' "$tmp/half/final.json" > "$tmp/half/edited.json"
+"$sim" "$tmp/half/edited.json" --out "$tmp/edited" > /dev/null 2> "$tmp/err"; st=$?
+[ $st -eq 2 ] && grep -q 'balls\[0\]: differs from the state in the checkpoint' "$tmp/err" \
+    && ok "an edited ball against its checkpoint -> exit 2: $(cat "$tmp/err")" \
+    || ko "edited ball: exit $st: $(cat "$tmp/err")"
+cp "$tmp/half/final.json" "$tmp/moved.json"
+"$sim" "$tmp/moved.json" --out "$tmp/moved" > /dev/null 2> "$tmp/err"; st=$?
+[ $st -eq 2 ] && grep -q 'checkpoint: cannot read' "$tmp/err" \
+    && ok "final.json away from its checkpoint -> exit 2: $(cat "$tmp/err")" \
+    || ko "missing checkpoint: exit $st: $(cat "$tmp/err")"
+head -c 100 "$tmp/half/final.ckpt" > "$tmp/cut.ckpt"
+sed 's/"checkpoint": "final.ckpt"/"checkpoint": "cut.ckpt"/' "$tmp/half/final.json" > "$tmp/cut.json"
+"$sim" "$tmp/cut.json" --out "$tmp/cut" > /dev/null 2> "$tmp/err"; st=$?
+[ $st -eq 2 ] && grep -q 'not a whole, undamaged relcol checkpoint' "$tmp/err" \
+    && ok "a cut checkpoint -> exit 2" || ko "cut checkpoint: exit $st: $(cat "$tmp/err")"
+
+# summary.json: the machine-readable results, with the counts summary.txt gives
+j="$tmp/full/summary.json"
+for k in '"t":' '"collisions":' '"ball":' '"wall":' '"group":' '"overlaps_resolved":' \
+         '"energy_error":' '"momentum_error":' '"rest_mass_total":' '"x-":' '"y+":' \
+         '"cell_crossings":' '"events":'; do
+    grep -q "$k" "$j" || { ko "summary.json lacks $k"; break; }
+done
+coll=$(sed -n 's/^collisions *\([0-9]*\).*/\1/p' "$tmp/full/summary.txt")
+grep -q "\"contacts\":[[:space:]]*$coll," "$j" && ok "summary.json: $coll contacts, as summary.txt" \
+    || ko "summary.json's contacts differ from summary.txt's $coll"
+
 # Ctrl-C: a long run interrupted writes a restart state that reads back, and exits 130
 sed 's/"t_end": 40/"t_end": 1e9/; s/"snapshots": \[10, 20\], /"snapshots": {"every": 1e8}, /' "$tmp/run.json" > "$tmp/long.json"
 "$sim" "$tmp/long.json" --out "$tmp/long" > /dev/null 2> "$tmp/err" &
@@ -128,6 +168,36 @@ wait $pid; st=$?
 "$sim" "$tmp/long/final.json" --dump > /dev/null 2> "$tmp/err" && ok "Ctrl-C: final.json reads back as a scenario" \
     || ko "Ctrl-C: final.json does not read back: $(cat "$tmp/err")"
 grep -q 'interrupted' "$tmp/long/summary.txt" && ok "Ctrl-C: summary written" || ko "Ctrl-C: no summary"
+# ... continuing from it equals the run that was never stopped (same end, same bits), and
+# its frames stay on the uninterrupted run's grid
+sed 's/"t_end": 40/"t_end": 300/; s/"snapshots": \[10, 20\], "xyz_every": 5/"xyz_every": 0.7/' "$tmp/run.json" > "$tmp/mid.json"
+"$sim" "$tmp/mid.json" --out "$tmp/mid-full" > /dev/null 2>&1
+i=0; st=0
+while [ $i -lt 6 ]; do # the machine's speed varies: interrupt early enough to land mid-run
+    rm -rf "$tmp/mid" "$tmp/mid.1"
+    "$sim" "$tmp/mid.json" --out "$tmp/mid" > /dev/null 2>&1 &
+    pid=$!
+    sleep 0.0$((2 + i))
+    kill -INT $pid 2>/dev/null
+    wait $pid; st=$?
+    [ $st -eq 130 ] && break
+    i=$((i + 1))
+done
+if [ $st -eq 130 ]; then
+    "$sim" "$tmp/mid/final.json" > /dev/null 2> "$tmp/err"
+    sed -n '/"balls"/,$p' "$tmp/mid-full/final.json" > "$tmp/m1"
+    sed -n '/"balls"/,$p' "$tmp/mid.1/final.json" > "$tmp/m2"
+    [ -s "$tmp/m1" ] && cmp -s "$tmp/m1" "$tmp/m2" \
+        && ok "stopped by SIGINT at t = $(sed -n 's/.*"time": \([^,]*\),.*/\1/p' "$tmp/mid/final.json") and continued: bit-identical at t = 300" \
+        || ko "SIGINT restart differs: $(cat "$tmp/err")"
+    grep '^Lattice=' "$tmp/mid-full/trajectory.xyz" | grep -o 'Time=[^ ]*' > "$tmp/t-full"
+    cat "$tmp/mid/trajectory.xyz" "$tmp/mid.1/trajectory.xyz" | grep '^Lattice=' | grep -o 'Time=[^ ]*' | sort -u -t= -k2 -g > "$tmp/t-parts"
+    cmp -s "$tmp/t-full" "$tmp/t-parts" && ok "the frames of the two parts are the uninterrupted run's ($(wc -l < "$tmp/t-full") times)" \
+        || ko "frame times differ: $(diff "$tmp/t-full" "$tmp/t-parts" | head -3 | tr '\n' ' ')"
+else
+    ko "could not interrupt the 300 s run mid-way (exit $st)"
+fi
+
 # ... and takes the snapshot times still ahead along (here all ten: every 1e8 up to 1e9)
 nsnap=$(grep -o '"snapshots": \[[^]]*\]' "$tmp/long/final.json" | tr ',' '\n' | grep -c '[0-9]')
 [ "$nsnap" -eq 10 ] && ok "Ctrl-C: final.json carries the 10 snapshot times ahead" \
