@@ -1,8 +1,15 @@
 #!/bin/sh
-# Fails if librelcol exports a defined symbol without the rc_ prefix.
+# check_prefix.sh LIB — fails if librelcol exports a defined symbol without the rc_ prefix,
+# or one of the functions its files share among themselves (rc_eng_*, the soft model's
+# private steps): the exports are the public headers' names (lib/public-symbols.sh).
 lib="$1"
-bad=$(nm -D --defined-only "$lib" | awk '$2 ~ /^[TDBR]$/ {print $3}' | grep -v '^rc_' | grep -v '^_')
+syms=$(nm -D --defined-only "$lib" | awk '$2 ~ /^[TDBR]$/ {print $3}')
+bad=$(echo "$syms" | grep -v '^rc_' | grep -v '^_')
 if [ -n "$bad" ]; then
   echo "symbols without the rc_ prefix:"; echo "$bad"; exit 1
 fi
-echo "all exported symbols carry the rc_ prefix"
+internal=$(echo "$syms" | grep -E '^rc_(eng_|soft_(rhs|geometry|observe|switch|done|overlap|approaching|max_step|shape_overlaps)$|boost_g$)')
+if [ -n "$internal" ]; then
+  echo "internal functions exported:"; echo "$internal"; exit 1
+fi
+echo "all $(echo "$syms" | wc -l) exported symbols carry the rc_ prefix; no internal one is exported"

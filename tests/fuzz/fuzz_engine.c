@@ -6,7 +6,10 @@
  * then run 300 events without crashing, hanging or leaving a bad number: every state
  * finite, inside the box, slower than light; energy (kinetic + heat) and momentum (with
  * the walls' impulse) conserved to 1e-9 relative; no heat lost; and a state written
- * after 150 events (rc_sim_sync, read out, loaded with restart = 1) continues bit for bit. Built and run by
+ * after 150 events (rc_sim_sync, read out, loaded with restart = 1) continues bit for bit;
+ * so does its checkpoint, read into a new engine, as the run that never stopped; and the
+ * checkpoint with one byte changed by the input (its checksum made right again) is read
+ * or refused with a documented status, never crashing. Built and run by
  * scripts/fuzz.sh engine. */
 #include <math.h>
 #include <stdint.h>
@@ -20,6 +23,16 @@
  * collisions with compensated sums, far below any real leak (test_engine_conservation
  * holds 1e-10 over 1e6 collisions). */
 #define CONS_TOL 1e-9
+
+static uint64_t fnv(const unsigned char *p, size_t n)
+{
+    uint64_t h = 0xcbf29ce484222325ULL;
+    for (size_t k = 0; k < n; k++) {
+        h ^= p[k];
+        h *= 0x100000001b3ULL;
+    }
+    return h;
+}
 
 typedef struct reader {
     const uint8_t *p;
@@ -38,6 +51,42 @@ static void fail(const char *what, int st)
 {
     fprintf(stderr, "fuzz_engine: %s (status %d: %s)\n", what, st, rc_strerror(st));
     abort();
+}
+
+/* After s's first 150 events: its checkpoint continues as the run that never stopped (a
+ * fresh engine from the same balls, 300 events), and one byte of it changed (resealed) is
+ * read or refused. */
+static void checkpoint_checks(const rc_sim_def *d, const rc_sim *s, size_t n,
+                              const rc_sim_ball *b, reader *R)
+{
+    size_t bytes = 0;
+    int st = rc_sim_checkpoint_size(s, &bytes);
+    unsigned char *buf = st == RC_OK ? malloc(bytes) : NULL;
+    if (!buf || (st = rc_sim_checkpoint_write(s, buf, bytes)) != RC_OK)
+        fail("checkpoint write", st);
+    rc_sim *c = NULL, *ref = NULL;
+    if ((st = rc_sim_create(d, &c)) != RC_OK || (st = rc_sim_checkpoint_read(c, buf, bytes)) != RC_OK)
+        fail("a checkpoint was refused", st);
+    if ((st = rc_sim_create(d, &ref)) != RC_OK || (st = rc_sim_set_balls(ref, n, b, NULL)) != RC_OK)
+        fail("the reference run", st);
+    if ((st = rc_sim_advance(ref, INFINITY, 300)) != RC_OK || (st = rc_sim_advance(c, INFINITY, 150)) != RC_OK)
+        fail("advance failed", st);
+    if (rc_sim_hash(ref) != rc_sim_hash(c) || rc_sim_time(ref) != rc_sim_time(c))
+        fail("a checkpoint did not continue as the run that never stopped", 0);
+    rc_sim_free(&c);
+    rc_sim_free(&ref);
+    const size_t hi = next(R), lo = next(R);
+    const size_t at = (hi << 8 | lo) % (bytes - 8);
+    buf[at] ^= (unsigned char)(next(R) | 1u);
+    const uint64_t h = fnv(buf, bytes - 8);
+    memcpy(buf + bytes - 8, &h, 8);
+    if ((st = rc_sim_create(d, &c)) != RC_OK)
+        fail("create", st);
+    st = rc_sim_checkpoint_read(c, buf, bytes);
+    if (!(st == RC_OK || st == RC_ECORRUPT || st == RC_EMISMATCH))
+        fail("a changed checkpoint: undocumented status", st);
+    rc_sim_free(&c);
+    free(buf);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -86,6 +135,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     st = rc_sim_advance(s, INFINITY, 150);
     if (st != RC_OK)
         fail("advance failed", st);
+    checkpoint_checks(&d, s, n, b, &R);
     /* restart identity: the state written now (sync, then the balls read out) continues in
      * a new engine bit for bit as this one does */
     if ((st = rc_sim_sync(s)) != RC_OK)
