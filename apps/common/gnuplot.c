@@ -30,6 +30,45 @@ int app_have_gnuplot(void)
     return found;
 }
 
+/* Is the figure gnuplot left at path whole? gnuplot can exit 0 with a figure cut short (a
+ * full disk: cairo's write errors are not its exit status), so the file is read back:
+ * a PNG must end with its IEND chunk, a GIF with its trailer byte, an SVG with </svg>;
+ * any other kind, non-empty. 0 or -1 with the reason in err. */
+static int figure_whole(const char *path, const char *name, char *err)
+{
+    static const unsigned char png_sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    static const unsigned char png_end[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xae, 0x42, 0x60, 0x82};
+    const char *ext = strrchr(name, '.');
+    FILE *f = fopen(path, "rb");
+    unsigned char head[8] = {0}, tail[16] = {0};
+    long size = -1;
+    if (f && fseek(f, 0, SEEK_END) == 0)
+        size = ftell(f);
+    if (size > 0 && fseek(f, 0, SEEK_SET) == 0 && fread(head, 1, sizeof head, f) &&
+        fseek(f, size >= 16 ? size - 16 : 0, SEEK_SET) == 0)
+        (void)!fread(tail + (size >= 16 ? 0 : 16 - size), 1, size >= 16 ? 16 : (size_t)size, f);
+    if (f)
+        fclose(f);
+    const char *why = NULL;
+    if (size <= 0)
+        why = "it is empty";
+    else if (ext && !strcmp(ext, ".png") &&
+             (size < 20 || memcmp(head, png_sig, 8) || memcmp(tail + 4, png_end, 12)))
+        why = "the PNG does not end with its IEND chunk (cut short: a full disk?)";
+    else if (ext && !strcmp(ext, ".gif") && (memcmp(head, "GIF8", 4) || tail[15] != 0x3b))
+        why = "the GIF does not end with its trailer (cut short: a full disk?)";
+    else if (ext && !strcmp(ext, ".svg")) {
+        const char *t = (const char *)tail;
+        if (!memmem(t, 16, "</svg>", 6))
+            why = "the SVG does not end with </svg> (cut short: a full disk?)";
+    }
+    if (why) {
+        app_errf(err, "gnuplot's %s is not whole: %s; not renamed into place (a previous %s, if any, is kept)", name, why, name);
+        return -1;
+    }
+    return 0;
+}
+
 int app_gnuplot_run(const char *prog, const char *dir, const char *script_name,
                     const char *out_name, int *made, char *err)
 {
@@ -96,12 +135,11 @@ int app_gnuplot_run(const char *prog, const char *dir, const char *script_name,
                  WIFEXITED(status) ? WEXITSTATUS(status) : WTERMSIG(status));
         goto out;
     }
+    if (figure_whole(tmp, out_name, err))
+        goto out; /* (the old figure, if any, stays) */
     fd = open(tmp, O_RDONLY);
-    struct stat st;
-    if (fd < 0 || fstat(fd, &st) != 0 || st.st_size == 0) {
-        app_errf(err, "gnuplot wrote no figure to %s", tmp);
-        if (fd >= 0)
-            close(fd);
+    if (fd < 0) {
+        app_errf(err, "gnuplot's figure %s cannot be read back: %s", tmp, strerror(errno));
         goto out;
     }
     (void)fsync(fd);

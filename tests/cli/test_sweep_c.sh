@@ -42,6 +42,30 @@ st=$?
     ok || bad "without gnuplot: exit $st, stderr: $(cat "$T/stderr")"
 slope_ok velocities
 
+# a gnuplot that exits 0 with its figure cut short (what a full disk does): refused, exit
+# non-zero, the previous figure kept byte for byte, no temporary left
+if [ -f "$T/a/b/sweep-c.png" ]; then
+    mkdir -p "$T/fakebin"
+    cat > "$T/fakebin/gnuplot" <<'SH'
+#!/bin/sh
+# writes the PNG signature and 100 more bytes, no IEND chunk, to the outfile it is given
+out=$(printf '%s' "$2" | sed "s/^outfile='\(.*\)'$/\1/")
+printf '\211PNG\r\n\032\n' > "$out"
+head -c 100 /dev/zero >> "$out"
+exit 0
+SH
+    chmod +x "$T/fakebin/gnuplot"
+    cksum < "$T/a/b/sweep-c.png" > "$T/png-before"
+    PATH="$T/fakebin:$PATH" "$S" --example --out "$T/a/b" > "$T/stdout" 2> "$T/stderr"
+    st=$?
+    cksum < "$T/a/b/sweep-c.png" > "$T/png-after"
+    [ "$st" -ne 0 ] && grep -q "sweep-c.png is not whole: the PNG does not end with its IEND" "$T/stderr" &&
+        cmp -s "$T/png-before" "$T/png-after" && ok ||
+        bad "cut PNG: exit $st, stderr: $(cat "$T/stderr"), figure changed: $(cmp "$T/png-before" "$T/png-after")"
+    left=$(ls -A "$T/a/b" | grep -c '^\.') || true
+    [ "$left" -eq 0 ] && ok || bad "temporaries left after a cut figure: $(ls -A "$T/a/b")"
+fi
+
 # eps = 1: nothing becomes rest mass; the heat column is nan and no slope is claimed
 printf 'm,vx\n1,0.9\n3,-0.2\n' > "$T/in.csv"
 "$S" --input "$T/in.csv" --out "$T/el" --points 7 > "$T/stdout" 2> "$T/stderr"
