@@ -224,6 +224,7 @@ struct rc_sim {
     uint64_t events[RC_SIM_EV_NKINDS];
     size_t max_group;
     uint64_t group_fallbacks;
+    uint64_t group_sequential;
     uint64_t since_reorder; /* collisions and crossings since the balls were last renumbered */
     /* scratch for contact groups */
     int32_t *grp_ball;

@@ -243,6 +243,7 @@ int rc_sim_sync(rc_sim *s)
     memcpy(wall, s->wall, sizeof wall);
     memcpy(wall_c, s->wall_c, sizeof wall_c);
     uint64_t overlaps = s->overlaps, collisions = s->collisions, fallbacks = s->group_fallbacks;
+    const uint64_t sequential = s->group_sequential;
     size_t max_group = s->max_group;
     uint64_t events[RC_SIM_EV_NKINDS];
     memcpy(events, s->events, sizeof events);
@@ -257,6 +258,7 @@ int rc_sim_sync(rc_sim *s)
     s->overlaps = overlaps;
     s->collisions = collisions;
     s->group_fallbacks = fallbacks;
+    s->group_sequential = sequential;
     s->max_group = max_group;
     memcpy(s->events, events, sizeof events);
     return RC_OK;
@@ -308,6 +310,7 @@ static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, i
     for (int d = 0; d < 3; d++)
         s->wall[d] = s->wall_c[d] = 0.0;
     s->overlaps = s->collisions = s->group_fallbacks = s->since_reorder = 0;
+    s->group_sequential = 0;
     s->max_group = 0;
     memset(s->events, 0, sizeof s->events);
     int st = RC_ENOMEM;
