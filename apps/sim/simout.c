@@ -230,7 +230,7 @@ static int write_summary(sim_output *o, const rc_sim *sim, double wall, int inte
     else
         fprintf(f, "c                %.17g\n", s->c);
     fprintf(f, "law              %s, restitution ball %g wall %g, contact frame %s, t_c %g\n",
-            s->law->name, s->eps_ball, s->eps_wall, s->frame, s->t_c);
+            s->law->name, s->eps_ball, s->eps_wall, s->frame->name, s->t_c);
     fprintf(f, "time             %.17g -> %.17g\n", s->time, rc_sim_time(sim));
     fprintf(f, "collisions       %llu (largest simultaneous group %zu)\n", (unsigned long long)coll,
             d.max_group);

@@ -15,7 +15,8 @@
  * engine and the apps read the properties and never name a frame. A frame need not live
  * in the library: any `const rc_toi_frame` can be given to rc_toi() and rc_sim_def.frame
  * (README "Adding a contact frame"); to make it built-in, define it in a new lib/toi_*.c,
- * declare it here and add it to rc_toi_frames[] in lib/toi_frames.c. The derivation and every tolerance decision are in papers/time-of-impact.md.
+ * declare it here and add it to rc_toi_frames[] in lib/toi_frames.c. The derivation
+ * and every tolerance decision are in papers/time-of-impact.md.
  *
  * Outcomes (every entry point): RC_OK with a contact at t >= 0; RC_MISS when there is
  * no contact in the future — including "touching but separating" (touching within
