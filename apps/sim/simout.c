@@ -239,6 +239,9 @@ static int write_summary(sim_output *o, const rc_sim *sim, double wall, int inte
     for (int k = 0; k < RC_SIM_EV_NKINDS; k++)
         fprintf(f, "%s %llu%s", kinds[k], (unsigned long long)(d.events[k] - d0->events[k]),
                 k + 1 < RC_SIM_EV_NKINDS ? ", " : "\n");
+    if (d.group_sequential > d0->group_sequential) /* (only a law without a group solver) */
+        fprintf(f, "groups one by one %llu (law %s has no group solver: order-dependent)\n",
+                (unsigned long long)(d.group_sequential - d0->group_sequential), s->law->name);
     fprintf(f, "energy           kinetic + heat %.17g, relative change %.3g\n", d.energy, dE);
     fprintf(f, "kinetic energy   %.17g (heat made so far %.17g)\n", d.kinetic, d.heat);
     if (!isinf(s->c))
