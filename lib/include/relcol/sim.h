@@ -51,12 +51,15 @@ typedef struct rc_sim_def {
      * contact at a time (rc_sim_diag.group_sequential). A law's failure (a negative code
      * from collide) ends rc_sim_advance with that code. */
     const rc_law *law;
-    /* Contact geometry (relcol/toi.h): NULL or &rc_toi_frame_sphere = uncontracted
-     * spheres (the engine's own inlined exact kernel); any other frame (table, zmf, or a
+    /* Contact geometry (relcol/toi.h), chosen by the frame's declared properties: NULL or
+     * a frame with contracted = 0 (sphere) = uncontracted spheres (the engine's own
+     * inlined exact kernel, toi never called); a contracted frame (table, zmf, or a
      * user's) is called as the narrow phase after the exact bounding-sphere test says
-     * the balls can touch first, and gives the contact normal. Walls see the contracted
-     * support r sqrt(1 - (v.n)^2/c^2) when frame->wall_contracted. toi.inv_c2 is set by
-     * the engine; the other fields are the frame's tolerances. */
+     * the balls can touch first, and gives the contact normal -- through its direct
+     * solver frame->shapes if it declares one, its root finds deferred if it declares
+     * deferrable. Walls see the contracted support r sqrt(1 - (v.n)^2/c^2) when
+     * frame->wall_contracted. toi.inv_c2 is set by the engine; the other fields are the
+     * frame's tolerances. */
     const rc_toi_frame *frame;
     rc_toi_params toi;
     /* Simultaneous contacts: at an event, every other contact whose surface gap is at
