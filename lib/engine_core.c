@@ -329,12 +329,12 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
          * (the event's own first, then as grow_group found them), each on the states the
          * previous ones left -- the outcome depends on that order (relcol/sim.h) */
         kind = RC_SIM_EV_MULTI;
-        s->group_sequential++;
         for (size_t j = 0; j < nc; j++) {
             const int st = resolve_contact(s, P, &s->grp_con[j]);
             if (st != RC_OK)
                 return st;
         }
+        s->group_sequential++;
     } else {
         /* members may be many: the solver works on the group's local indices */
         kind = RC_SIM_EV_MULTI;
