@@ -191,8 +191,8 @@ static double wall_gap_rel(const rc_sim *s, int mi, int w)
 /* Count the contacts of the group that the overlap policy decides (shapes deeper in
  * each other or in a wall than overlap_tol), contacts from .. nc, on the states before
  * the collision: the event's own ball contact is counted by collide() from the frame's
- * verdict; here its wall contact and the other contacts of a group, by kind. A contracted frame's group contacts are never overlapping ones
- * (narrow_conflict asks the frame for a contact within sim_tol of now). */
+ * verdict; here its wall contact and the other contacts of a group, by kind. A
+ * contracted frame's group contacts are never overlapping ones (narrow_conflict asks the frame for a contact within sim_tol of now). */
 static void count_overlaps(rc_sim *s, size_t from, size_t nc)
 {
     const double tol = s->def.overlap_tol;
@@ -215,9 +215,28 @@ static void count_overlaps(rc_sim *s, size_t from, size_t nc)
     }
 }
 
+/* The one law-or-wall dispatch: contact c of the group among P[] with restitution c->eps,
+ * by the run's law (ball-ball) or the wall law. RC_OK and RC_NO_COLLISION (not
+ * approaching along n: the states are left as they were) are outcomes; any other code is
+ * the law's failure, which ends the event loop with that status (rc_sim_advance) rather
+ * than leaving a state the law did not stand behind. */
+static int resolve_contact(rc_sim *s, rc_particle *P, const rc_contact *c)
+{
+    int st;
+    if (c->b >= 0) {
+        s->prm.eps = c->eps;
+        st = s->def.law->collide(&s->prm, &P[c->a], &P[c->b], c->n);
+    } else {
+        st = rc_collide_wall(s->inv_c2, c->eps, &P[c->a], c->n);
+    }
+    return st == RC_OK || st == RC_NO_COLLISION ? RC_OK : (st < 0 ? st : RC_EINVAL);
+}
+
+
 /* The common case: the event's own contact alone. Resolve it, then predict both balls
  * while checking that no other contact was simultaneous with it; if one was, undo
- * (return 0) so the caller resolves the whole group. 1 when done. */
+ * (return 0) so the caller resolves the whole group. 1 when done; the law's failure
+ * (negative, nothing written back). */
 static int try_single(rc_sim *s, size_t nm, int32_t bp, double T)
 {
     rc_particle *P = s->grp_part;
@@ -234,13 +253,12 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T)
     }
     rc_contact *c = &s->grp_con[0];
     const uint64_t tc_before = s->events[RC_SIM_EV_TC];
-    double eps = contact_eps(s, c);
+    c->eps = contact_eps(s, c);
     rc_particle Q[2] = {P[0], nm > 1 ? P[1] : P[0]};
-    if (bp >= 0) {
-        s->prm.eps = eps;
-        s->def.law->collide(&s->prm, &Q[0], &Q[1], c->n);
-    } else {
-        rc_collide_wall(s->inv_c2, eps, &Q[0], c->n);
+    const int st = resolve_contact(s, Q, c);
+    if (st != RC_OK) {
+        s->events[RC_SIM_EV_TC] = tc_before;
+        return st;
     }
     for (size_t j = 0; j < nm; j++) {
         int32_t b = s->grp_ball[j];
@@ -322,8 +340,9 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
             return RC_ENOMEM;
         count_overlaps(s, 0, 1); /* (before the collision changes the shape) */
     }
-    if (try_single(s, nm, bp, T))
-        return RC_OK;
+    const int single = try_single(s, nm, bp, T);
+    if (single != 0)
+        return single > 0 ? RC_OK : single;
     if (s->def.sim_tol > 0.0) {
         int st = grow_group(s, &nm, &nc, T);
         if (st != RC_OK)
@@ -344,20 +363,29 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
     for (size_t j = 0; j < nc; j++)
         s->grp_con[j].eps = contact_eps(s, &s->grp_con[j]);
     int kind;
+    const double *J = NULL; /* the group solver's impulses, once it has solved */
     if (nc == 1) {
         const rc_contact *c = &s->grp_con[0];
-        if (c->b >= 0) {
-            s->prm.eps = c->eps;
-            s->def.law->collide(&s->prm, &P[0], &P[1], c->n);
-            kind = RC_SIM_EV_BALL;
-        } else {
-            rc_collide_wall(s->inv_c2, c->eps, &P[0], c->n);
-            kind = RC_SIM_EV_WALL;
+        const int st = resolve_contact(s, P, c);
+        if (st != RC_OK)
+            return st;
+        kind = c->b >= 0 ? RC_SIM_EV_BALL : RC_SIM_EV_WALL;
+    } else if (!s->def.law->group) {
+        /* a law without a group solver: the contacts one at a time, in the group's order
+         * (the event's own first, then as grow_group found them), each on the states the
+         * previous ones left -- the outcome depends on that order (relcol/sim.h) */
+        kind = RC_SIM_EV_MULTI;
+        for (size_t j = 0; j < nc; j++) {
+            const int st = resolve_contact(s, P, &s->grp_con[j]);
+            if (st != RC_OK)
+                return st;
         }
+        s->group_sequential++;
     } else {
         /* members may be many: the solver works on the group's local indices */
         kind = RC_SIM_EV_MULTI;
-        int st = rc_contacts_resolve(s->inv_c2, nm, P, nc, s->grp_con, s->grp_j);
+        int st = s->def.law->group(&s->prm, nm, P, nc, s->grp_con, s->grp_j);
+        J = st == RC_OK ? s->grp_j : NULL;
         if (st != RC_OK) {
             /* dependent normals (or no convergence): resolve the event's own contact,
              * the others become events of their own at the same time */
@@ -366,13 +394,8 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
                 P[j].m = s->a[s->grp_ball[j]].m;
                 P[j].p = s->a[s->grp_ball[j]].p;
             }
-            const rc_contact *c = &s->grp_con[0];
-            if (c->b >= 0) {
-                s->prm.eps = c->eps;
-                s->def.law->collide(&s->prm, &P[0], &P[1], c->n);
-            } else {
-                rc_collide_wall(s->inv_c2, c->eps, &P[0], c->n);
-            }
+            if ((st = resolve_contact(s, P, &s->grp_con[0])) != RC_OK)
+                return st;
             nm = bp >= 0 ? 2 : 1;
             nc = 1;
             kind = bp >= 0 ? RC_SIM_EV_BALL : RC_SIM_EV_WALL;
@@ -388,7 +411,7 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
             }
         }
     }
-    finish(s, nm, nc, k0, p0, kind, 0, kind == RC_SIM_EV_MULTI ? s->grp_j : NULL);
+    finish(s, nm, nc, k0, p0, kind, 0, J);
     return RC_OK;
 }
 

@@ -99,6 +99,7 @@ int rc_sim_diagnostics(const rc_sim *s, rc_sim_diag *d)
     memcpy(d->events, s->events, sizeof d->events);
     d->max_group = s->max_group;
     d->group_fallbacks = s->group_fallbacks;
+    d->group_sequential = s->group_sequential;
     return RC_OK;
 }
 

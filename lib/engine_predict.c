@@ -76,12 +76,12 @@ __attribute__((always_inline)) static inline double pair_time_dx(
         rc_toi_contact out;
         int st;
         if (s->table) {
-            /* the table frame's own call, from the states as stored: the same bits as
-             * through rc_toi_frame_table (its masses, velocities and shapes are these),
-             * without the contact point, which the engine does not use */
+            /* the frame's direct solver, from the states as stored: the same bits as
+             * through its toi (its masses, velocities and shapes are these), without the
+             * contact point, which the engine does not use */
             const rc_toi_shape h0 = shape_of(s, b0), h1 = shape_of(s, b1);
-            st = rc_toi_shapes_rel(&h0, &h1, d01, rc_v3_sub(b1->v, b0->v), &s->toi, s->ws,
-                                   &out.t, NULL, &out.n);
+            st = s->shapes(&h0, &h1, d01, rc_v3_sub(b1->v, b0->v), &s->toi, s->ws,
+                           &out.t, NULL, &out.n);
         } else {
             rc_toi_ball A = {rc_v3(0, 0, 0), b0->r, a0->m, a0->p};
             rc_toi_ball B = {d01, b1->r, a1->m, a1->p};
@@ -438,8 +438,8 @@ static int narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc
     rc_toi_contact out;
     int st;
     if (s->table) { /* (as in pair_time_dx; chk->vold is the old p / M, as stored) */
-        st = rc_toi_shapes_rel(&ho, &hk, dx, rc_v3_sub(bk->v, chk->vold), &s->toi, s->ws,
-                               &out.t, NULL, &out.n);
+        st = s->shapes(&ho, &hk, dx, rc_v3_sub(bk->v, chk->vold), &s->toi, s->ws,
+                       &out.t, NULL, &out.n);
     } else {
         rc_toi_ball A = {rc_v3(0, 0, 0), bi->r, chk->old.m, chk->old.p};
         rc_toi_ball B = {dx, bk->r, ak->m, ak->p};

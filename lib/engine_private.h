@@ -205,10 +205,12 @@ struct rc_sim {
     rc_collision_params prm;
     /* contact geometry: narrow != 0 calls def.frame after the sphere test */
     int narrow;
-    /* the table frame's ball events are stored deferred (eng_defer) */
+    /* the frame's ball events are stored deferred (eng_defer): frame->deferrable */
     int defer;
-    /* the frame is the table frame: the engine calls its solver directly */
+    /* the frame's contact is the table-frame shapes' (frame->shapes declared): the engine
+     * calls shapes directly and uses the table-frame shape bounds */
     int table;
+    rc_toi_shapes_fn shapes;
     int wall_contracted;
     rc_toi_params toi;
     rc_toi_workspace *ws;
@@ -227,6 +229,7 @@ struct rc_sim {
     uint64_t events[RC_SIM_EV_NKINDS];
     size_t max_group;
     uint64_t group_fallbacks;
+    uint64_t group_sequential;
     uint64_t since_reorder; /* collisions and crossings since the balls were last renumbered */
     /* scratch for contact groups */
     int32_t *grp_ball;

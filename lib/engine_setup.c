@@ -89,11 +89,11 @@ static int choose_simd(void)
 }
 
 /* Defer the frame's root finds (eng_defer) where the broad phase bounds its contact
- * times from below: the table frame, whose contact is simultaneous in the table frame.
- * (The zmf frame's is simultaneous in the pair's own frame: a pair can overlap there
- * while its bounding spheres are apart here, and the overlap policy resolves it at the
- * time of the prediction, which deferring would move.) RELCOL_DEFER=0 in the
- * environment asks the frame at once; the bits are the same (test_engine_defer), the
+ * times from below: frames that declare it (rc_toi_frame.deferrable; the table frame,
+ * whose contact is simultaneous in the table frame. The zmf frame's is simultaneous in
+ * the pair's own frame: a pair can overlap there while its bounding spheres are apart
+ * here, and the overlap policy resolves it at the time of the prediction, which
+ * deferring would move). RELCOL_DEFER=0 in the environment asks the frame at once; the bits are the same (test_engine_defer), the
  * variable exists to show it and to time the two. */
 static int defer_wanted(void)
 {
@@ -125,9 +125,11 @@ int rc_sim_create(const rc_sim_def *def, rc_sim **out)
     s->toi = def->toi;
     s->toi.inv_c2 = s->inv_c2;
     s->simd = choose_simd();
-    s->narrow = def->frame && strcmp(def->frame->name, "sphere") != 0;
-    s->table = def->frame == &rc_toi_frame_table;
-    s->defer = s->table && defer_wanted();
+    /* the frame's declared properties choose the paths (relcol/toi.h) */
+    s->narrow = def->frame && def->frame->contracted;
+    s->table = s->narrow && def->frame->shapes;
+    s->shapes = s->table ? def->frame->shapes : NULL;
+    s->defer = s->narrow && def->frame->deferrable && defer_wanted();
     s->wall_contracted = def->frame && def->frame->wall_contracted && s->inv_c2 > 0.0;
     if (s->narrow) {
         if (!def->frame->toi || !(s->ws = rc_toi_workspace_alloc())) {
@@ -193,7 +195,7 @@ int rc_sim_set_time(rc_sim *s, double t)
 /* Does the contact frame see contracted shapes (walls and pairs)? */
 static int contracted(const rc_sim *s)
 {
-    return s->inv_c2 > 0.0 && s->def.frame && s->def.frame != &rc_toi_frame_sphere;
+    return s->inv_c2 > 0.0 && s->narrow;
 }
 
 /* Do balls i and k (storage slots, states at s->now) overlap by more than overlap_tol in
@@ -244,6 +246,7 @@ int rc_sim_sync(rc_sim *s)
     memcpy(wall, s->wall, sizeof wall);
     memcpy(wall_c, s->wall_c, sizeof wall_c);
     uint64_t overlaps = s->overlaps, collisions = s->collisions, fallbacks = s->group_fallbacks;
+    const uint64_t sequential = s->group_sequential;
     size_t max_group = s->max_group;
     uint64_t events[RC_SIM_EV_NKINDS], kinds[3], shared = s->wall_shared;
     memcpy(events, s->events, sizeof events);
@@ -262,6 +265,7 @@ int rc_sim_sync(rc_sim *s)
     s->overlaps = overlaps;
     s->collisions = collisions;
     s->group_fallbacks = fallbacks;
+    s->group_sequential = sequential;
     s->max_group = max_group;
     memcpy(s->events, events, sizeof events);
     memcpy(s->overlap_kind, kinds, sizeof kinds);
@@ -287,6 +291,7 @@ int rc_eng_alloc_state(rc_sim *s, size_t n, double rmax)
     memset(s->overlap_kind, 0, sizeof s->overlap_kind);
     s->wall_shared = 0;
     s->overlaps = s->collisions = s->group_fallbacks = s->since_reorder = 0;
+    s->group_sequential = 0;
     s->max_group = 0;
     memset(s->events, 0, sizeof s->events);
     int st = RC_ENOMEM;

@@ -50,7 +50,7 @@ static inline double table_radius_along(const rc_sim *s, const eng_ball *b, rc_v
 static inline int parting_settled(const rc_sim *s, const rc_toi_shape *shi, const eng_ball *bi,
                                   const eng_ball *bk, rc_vec3 dx, double d2, double *lam)
 {
-    if (s->def.frame != &rc_toi_frame_table)
+    if (!s->table)
         return 0;
     if (!(d2 > 0.0))
         return 1; /* coincident centres: overlapping */
@@ -220,7 +220,7 @@ static inline int parting_open(const rc_sim *s, const rc_toi_shape *shi, const e
     double lam = 0.5;
     if (parting_settled(s, shi, bi, bk, dx, d2, &lam))
         return 0;
-    if (s->def.frame == &rc_toi_frame_table && parting_pw(s, bi, bk, dx, d2, tref, best, lam))
+    if (s->table && parting_pw(s, bi, bk, dx, d2, tref, best, lam))
         return 0;
     return 1;
 }

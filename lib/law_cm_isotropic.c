@@ -80,7 +80,13 @@ static int cm_isotropic_collide(const rc_collision_params *prm, rc_particle *a,
 }
 
 const rc_law rc_law_cm_isotropic = {
-    "cm-isotropic",
-    "seed 002: elastic at impact angle alpha in the ZMF, then ZMF momentum scaled by R",
-    cm_isotropic_collide,
+    .name = "cm-isotropic",
+    .summary =
+        "seed 002: elastic at impact angle alpha in the ZMF, then ZMF momentum scaled by R",
+    .collide = cm_isotropic_collide,
+    /* no group solver: seed 002's rule is defined for one pair (the engine resolves a
+     * group's contacts one at a time, rc_sim_diag.group_sequential) */
+    .group = NULL,
+    .uses_angle = 1,
+    .keeps_zmf_energy = 1,
 };

@@ -9,6 +9,7 @@
 #include <math.h>
 
 #include "relcol/law.h"
+#include "relcol/sim.h"
 #include "relcol/status.h"
 
 static int zmf_collide(const rc_collision_params *prm, rc_particle *a, rc_particle *b,
@@ -36,8 +37,19 @@ static int zmf_collide(const rc_collision_params *prm, rc_particle *a, rc_partic
     return RC_OK;
 }
 
+/* The group solver: the same restitution condition on every contact, solved together
+ * (lib/sim_contacts.c). */
+static int zmf_group(const rc_collision_params *prm, size_t nballs, rc_particle *balls,
+                     size_t k, const rc_contact *contacts, double *jout)
+{
+    return rc_contacts_resolve(prm->inv_c2, nballs, balls, k, contacts, jout);
+}
+
 const rc_law rc_law_zmf = {
-    "zmf",
-    "four-impulse along n; ZMF energies kept, ZMF normal momentum scaled by -eps",
-    zmf_collide,
+    .name = "zmf",
+    .summary = "four-impulse along n; ZMF energies kept, ZMF normal momentum scaled by -eps",
+    .collide = zmf_collide,
+    .group = zmf_group,
+    .uses_angle = 0,
+    .keeps_zmf_energy = 1,
 };

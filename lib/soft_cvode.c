@@ -9,8 +9,8 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include "relcol/soft.h"
 #include "relcol/status.h"
-#include "soft_private.h"
 
 static int cv_rhs(sunrealtype t, N_Vector y, N_Vector ydot, void *user)
 {
@@ -39,7 +39,10 @@ static void cv_silent(int code, const char *module, const char *function, char *
 
 static int cvode_integrate(rc_soft_sys *s)
 {
-    const sunindextype ny = (sunindextype)s->ny;
+    rc_soft_sys_info in;
+    rc_soft_sys_get_info(s, &in);
+    double *const y = rc_soft_sys_state(s);
+    const sunindextype ny = (sunindextype)in.ny;
     SUNContext ctx = NULL;
     void *mem = NULL;
     N_Vector yv = NULL, atol = NULL;
@@ -50,14 +53,14 @@ static int cvode_integrate(rc_soft_sys *s)
 
     if (SUNContext_Create(NULL, &ctx) != 0)
         return RC_ENOMEM;
-    yv = N_VMake_Serial(ny, s->y, ctx); /* CVODE writes the solution into s->y */
+    yv = N_VMake_Serial(ny, y, ctx); /* CVODE writes the solution into y */
     atol = N_VNew_Serial(ny, ctx);
-    roots = malloc(s->npair * sizeof *roots);
+    roots = malloc(in.npair * sizeof *roots);
     if (!yv || !atol || !roots)
         goto out;
     double *a = N_VGetArrayPointer(atol);
-    for (size_t i = 0; i < s->ny; i++)
-        a[i] = s->rtol * s->abs_scale[i];
+    for (size_t i = 0; i < in.ny; i++)
+        a[i] = in.rtol * in.abs_scale[i];
     mem = CVodeCreate(CV_BDF, ctx);
     if (!mem)
         goto out;
@@ -69,39 +72,39 @@ static int cvode_integrate(rc_soft_sys *s)
     if (CVodeSetErrHandlerFn(mem, cv_silent, NULL) != CV_SUCCESS ||
         CVodeInit(mem, cv_rhs, 0.0, yv) != CV_SUCCESS ||
         CVodeSetUserData(mem, s) != CV_SUCCESS ||
-        CVodeSVtolerances(mem, s->rtol, atol) != CV_SUCCESS ||
+        CVodeSVtolerances(mem, in.rtol, atol) != CV_SUCCESS ||
         CVodeSetLinearSolver(mem, LS, A) != CV_SUCCESS ||
-        CVodeRootInit(mem, (int)s->npair, cv_root) != CV_SUCCESS ||
+        CVodeRootInit(mem, (int)in.npair, cv_root) != CV_SUCCESS ||
         CVodeSetNoInactiveRootWarn(mem) != CV_SUCCESS)
         goto out;
     /* one step per call: tout only fixes the direction and bounds the first step */
-    const sunrealtype tout = isfinite(s->t_max) ? s->t_max : 1e300;
+    const sunrealtype tout = isfinite(in.t_max) ? in.t_max : 1e300;
     sunrealtype t = 0.0;
-    rc_soft_observe(s, s->y);
-    while (!rc_soft_done(s, s->y) && t < s->t_max) {
-        if (s->n_steps >= s->max_steps)
+    rc_soft_observe(s, y);
+    while (!rc_soft_done(s, y) && t < in.t_max) {
+        if (!rc_soft_sys_budget_left(s))
             goto out;
         /* a free flight is integrated exactly, so CVODE's steps would grow past whole
          * contacts (the root finder sees only sign changes at step ends): cap each step
          * with a stop time, which CVODE enforces on the step it is about to take (a new
          * maximum step size would only shape the steps after it) */
-        const double tcap = fmin(s->t_max, t + rc_soft_max_step(s, s->y));
+        const double tcap = fmin(in.t_max, t + rc_soft_max_step(s, y));
         if (isfinite(tcap) && CVodeSetStopTime(mem, tcap) != CV_SUCCESS)
             goto out;
         const int flag = CVode(mem, tout, yv, &t, CV_ONE_STEP);
         if (flag < 0)
             goto out;
-        s->n_steps++;
+        rc_soft_sys_count_step(s);
         if (flag == CV_ROOT_RETURN) {
             if (CVodeGetRootInfo(mem, roots) != CV_SUCCESS)
                 goto out;
             int switched = 0;
-            for (size_t q = 0; q < s->npair; q++) {
+            for (size_t q = 0; q < in.npair; q++) {
                 if (roots[q] == 0)
                     continue;
-                const int want = rc_soft_approaching(s, q, s->y);
-                if (want != s->on[q]) {
-                    rc_soft_switch(s, q, want, s->y);
+                const int want = rc_soft_approaching(s, q, y);
+                if (want != rc_soft_sys_contact(s, q)) {
+                    rc_soft_switch(s, q, want, y);
                     switched = 1;
                 }
             }
@@ -109,10 +112,10 @@ static int cvode_integrate(rc_soft_sys *s)
             if (switched && CVodeReInit(mem, t, yv) != CV_SUCCESS)
                 goto out;
         }
-        rc_soft_shape_overlaps(s, s->y);
-        rc_soft_observe(s, s->y);
+        rc_soft_shape_overlaps(s, y);
+        rc_soft_observe(s, y);
     }
-    s->t = t;
+    rc_soft_sys_finish(s, t);
     st = RC_OK;
 out:
     CVodeFree(&mem);

@@ -10,8 +10,8 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
 
+#include "relcol/soft.h"
 #include "relcol/status.h"
-#include "soft_private.h"
 
 /* Event times are located to this many ulps of the bracket's end time: far below the
  * contact duration for any stiffness the tolerance can resolve. */
@@ -21,6 +21,7 @@
 
 typedef struct gsl_run {
     rc_soft_sys *s;
+    size_t ny;
     gsl_odeiv2_system sys;
     gsl_odeiv2_step *step;
     gsl_odeiv2_control *ctrl;
@@ -38,12 +39,14 @@ static int gsl_rhs(double t, const double y[], double dydt[], void *user)
 static int advance(gsl_run *g, double t_from, const double *y_from, double t_to,
                    double *y_out)
 {
-    memcpy(y_out, y_from, g->s->ny * sizeof *y_out);
+    memcpy(y_out, y_from, g->ny * sizeof *y_out);
     gsl_odeiv2_evolve_reset(g->ev);
     gsl_odeiv2_step_reset(g->step);
     double t = t_from, h = t_to - t_from;
     while (t < t_to) {
-        if (g->s->n_steps++ >= g->s->max_steps)
+        const int spent = !rc_soft_sys_budget_left(g->s);
+        rc_soft_sys_count_step(g->s);
+        if (spent)
             return RC_ENOCONVERGE;
         if (gsl_odeiv2_evolve_apply(g->ev, g->ctrl, g->step, &g->sys, &t, t_to, &h, y_out) !=
             GSL_SUCCESS)
@@ -59,7 +62,7 @@ static int locate(gsl_run *g, size_t q, int start, double ta, const double *ya, 
                   const double *yb, double *tr, double *yr, double *ybuf, double *gbuf)
 {
     rc_soft_sys *s = g->s;
-    const size_t ny = s->ny;
+    const size_t ny = g->ny;
     double *yl = ybuf, *ym = ybuf + ny;
     memcpy(yl, ya, ny * sizeof *yl);
     memcpy(yr, yb, ny * sizeof *yr);
@@ -102,39 +105,33 @@ static int locate(gsl_run *g, size_t q, int start, double ta, const double *ya, 
 
 static int gsl_integrate(rc_soft_sys *s, const gsl_odeiv2_step_type *type)
 {
-    const size_t ny = s->ny, np = s->npair;
-    gsl_run g = {s, {gsl_rhs, NULL, ny, s}, NULL, NULL, NULL};
+    rc_soft_sys_info in;
+    rc_soft_sys_get_info(s, &in);
+    const size_t ny = in.ny, np = in.npair;
+    gsl_run g = {s, ny, {gsl_rhs, NULL, ny, s}, NULL, NULL, NULL};
     double *buf = malloc((6 * ny + 3 * np) * sizeof *buf);
     g.step = gsl_odeiv2_step_alloc(type, ny);
-    g.ctrl = gsl_odeiv2_control_scaled_new(s->rtol, s->rtol, 1.0, 0.0, s->abs_scale, ny);
+    g.ctrl = gsl_odeiv2_control_scaled_new(in.rtol, in.rtol, 1.0, 0.0, in.abs_scale, ny);
     g.ev = gsl_odeiv2_evolve_alloc(ny);
     int st = RC_ENOMEM;
     if (!buf || !g.step || !g.ctrl || !g.ev)
         goto out;
     double *ya = buf, *yr = buf + ny, *ybest = buf + 2 * ny, *ybuf = buf + 3 * ny;
     double *gb = buf + 5 * ny, *gtmp = gb + np, *g0 = gtmp + np;
-    double *y = s->y;
-    const double t1 = isfinite(s->t_max) ? s->t_max : DBL_MAX;
-    /* first step: a hundredth of the time the fastest ball takes to cross the smallest
-     * radius; the controller adapts it at once */
-    double vmax = 0.0, rmin = INFINITY;
-    for (size_t i = 0; i < s->n; i++) {
-        rmin = fmin(rmin, s->r[i]);
-        const double *yi = y + RC_SOFT_NY * i;
-        const double m = s->m0[i] + yi[6] * s->inv_c2;
-        const double p2 = yi[3] * yi[3] + yi[4] * yi[4] + yi[5] * yi[5];
-        vmax = fmax(vmax, sqrt(p2) / sqrt(m * m + p2 * s->inv_c2));
-    }
-    double h = vmax > 0.0 ? 0.01 * rmin / vmax : 1.0;
+    double *y = rc_soft_sys_state(s);
+    const double t1 = isfinite(in.t_max) ? in.t_max : DBL_MAX;
+    double h = in.h0; /* (the controller adapts it at once) */
     double t = 0.0;
     rc_soft_observe(s, y);
     st = RC_ENOCONVERGE;
-    while (!rc_soft_done(s, y) && t < s->t_max) {
-        if (s->n_steps++ >= s->max_steps)
+    while (!rc_soft_done(s, y) && t < in.t_max) {
+        const int spent = !rc_soft_sys_budget_left(s);
+        rc_soft_sys_count_step(s);
+        if (spent)
             goto out;
         const double ta = t;
         memcpy(ya, y, ny * sizeof *ya);
-        if (s->shape != RC_SOFT_SPHERE)
+        if (in.ghosts)
             rc_soft_overlap(s, y, g0);
         /* cap the step as soft_cvode.c does, so no contact is stepped over unseen */
         const double tcap = fmin(t1, t + rc_soft_max_step(s, y));
@@ -148,12 +145,12 @@ static int gsl_integrate(rc_soft_sys *s, const gsl_odeiv2_step_type *type)
             /* contracted shapes: a pair out of contact that already overlapped at the
              * step's start (a shape change made it: rc_soft_shape_overlaps) has no entry
              * to locate (spheres keep their original test exactly) */
-            const int ghost = s->shape != RC_SOFT_SPHERE && g0[q] > 0.0;
-            const int crossed = s->on[q] ? gb[q] < 0.0 : gb[q] > 0.0 && !ghost;
+            const int ghost = in.ghosts && g0[q] > 0.0;
+            const int crossed = rc_soft_sys_contact(s, q) ? gb[q] < 0.0 : gb[q] > 0.0 && !ghost;
             if (!crossed)
                 continue;
             double tr;
-            int rs = locate(&g, q, !s->on[q], ta, ya, t, y, &tr, yr, ybuf, gtmp);
+            int rs = locate(&g, q, !rc_soft_sys_contact(s, q), ta, ya, t, y, &tr, yr, ybuf, gtmp);
             if (rs != RC_OK) {
                 st = rs;
                 goto out;
@@ -168,14 +165,14 @@ static int gsl_integrate(rc_soft_sys *s, const gsl_odeiv2_step_type *type)
             /* continue from the earliest event; later crossings are found again */
             t = tbest;
             memcpy(y, ybest, ny * sizeof *y);
-            rc_soft_switch(s, qbest, !s->on[qbest], y);
+            rc_soft_switch(s, qbest, !rc_soft_sys_contact(s, qbest), y);
             gsl_odeiv2_evolve_reset(g.ev);
             gsl_odeiv2_step_reset(g.step);
         }
         rc_soft_shape_overlaps(s, y);
         rc_soft_observe(s, y);
     }
-    s->t = t;
+    rc_soft_sys_finish(s, t);
     st = RC_OK;
 out:
     if (g.ev)

@@ -1,6 +1,6 @@
 /* soft_private.h — the state of one soft-sphere run, shared by the model (soft_model.c)
- * and the steppers (soft_cvode.c, soft_gsl.c): the steppers only see y, the right-hand
- * side, the overlap functions and the contact switches. */
+ * and its contact geometry (soft_shape.c). The steppers (soft_cvode.c, soft_gsl.c) see it
+ * only through relcol/soft.h's rc_soft_sys functions, as an outside stepper would. */
 #ifndef RELCOL_SOFT_PRIVATE_H
 #define RELCOL_SOFT_PRIVATE_H
 
@@ -40,8 +40,6 @@ struct rc_soft_sys {
     long n_steps, n_rhs, n_pw;
 };
 
-typedef struct rc_soft_sys rc_soft_sys;
-
 /* Contact geometry of pair q = (i, j) at y (soft_shape.c): overlap depth *delta (> 0 when
  * the shapes overlap), unit normal *n from i to j, gauge *mu (the factor by which both
  * shapes must be scaled about their centres to touch). Spheres: delta = r_i + r_j - |d|,
@@ -51,31 +49,5 @@ typedef struct rc_soft_sys rc_soft_sys;
  * for contracted shapes that are exact spheres: c = inf). */
 int rc_soft_geometry(rc_soft_sys *s, size_t q, size_t i, size_t j, const double *y,
                      double *delta, rc_vec3 *n, double *mu);
-/* dy/dt at y with the current contact switches. */
-void rc_soft_rhs(rc_soft_sys *s, const double *y, double *dy);
-/* Overlap delta of every pair (npair values): the root functions. */
-void rc_soft_overlap(rc_soft_sys *s, const double *y, double *g);
-/* 1 if pair q's centres approach at y: at a zero of its overlap the contact is on exactly
- * when they approach (decided from the state, not from a root's reported direction,
- * which is unreliable for a root found again at the restart point). */
-int rc_soft_approaching(rc_soft_sys *s, size_t q, const double *y);
-/* Contracted shapes change with the momenta, so a pair out of contact can come to
- * overlap without approaching (another contact changed a ball's shape). Such a pair feels
- * no force until its overlap has ended (switching it on would release at once an elastic
- * energy kappa delta^2/2 that was never stored); count each such episode in
- * s->n_shape_overlaps (called after every accepted step and event). */
-void rc_soft_shape_overlaps(rc_soft_sys *s, const double *y);
-/* Contact of pair q starts (start = 1) or ends (0) at state y. */
-void rc_soft_switch(rc_soft_sys *s, size_t q, int start, const double *y);
-/* Largest step that cannot carry an approaching pair that is not in contact through a
- * whole contact unseen: its gap over its closing speed (free flight), floored at rtol
- * times the radius crossing time; for a pair in contact, half its 1/omega.
- * INFINITY when no pair approaches or touches. */
-double rc_soft_max_step(rc_soft_sys *s, const double *y);
-/* 1 when no pair is in contact and every pair is receding: nothing more can happen. */
-int rc_soft_done(rc_soft_sys *s, const double *y);
-/* Record the conservation errors at y and release the frozen shapes of pairs that are
- * apart in their current shapes too (after every accepted step and event). */
-void rc_soft_observe(rc_soft_sys *s, const double *y);
 
 #endif

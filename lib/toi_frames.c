@@ -1,6 +1,7 @@
 /* toi_frames.c — the table of contact frames, the "table" and "sphere" frames, default
- * parameters and the validating entry point rc_toi(). Add a frame: one line in
- * rc_toi_frames[] (the zmf frame lives in toi_zmf.c). */
+ * parameters and the validating entry point rc_toi(). A built-in frame: its entry with
+ * its declared properties (relcol/toi.h) and one line in rc_toi_frames[] (the zmf frame
+ * lives in toi_zmf.c). */
 #include <math.h>
 #include <string.h>
 
@@ -61,10 +62,25 @@ static int sphere_toi(const rc_toi_params *prm, const rc_toi_ball *a, const rc_t
 }
 
 const rc_toi_frame rc_toi_frame_table = {
-    "table", "contact of the shapes contracted along their table-frame velocities",
-    table_toi, 1};
+    .name = "table",
+    .summary = "contact of the shapes contracted along their table-frame velocities",
+    .toi = table_toi,
+    .wall_contracted = 1,
+    .contracted = 1,
+    .covariant = 0,
+    .deferrable = 1,
+    .shapes = rc_toi_shapes_rel,
+};
 const rc_toi_frame rc_toi_frame_sphere = {
-    "sphere", "contraction ignored: uncontracted spheres (the naive model)", sphere_toi, 0};
+    .name = "sphere",
+    .summary = "contraction ignored: uncontracted spheres (the naive model)",
+    .toi = sphere_toi,
+    .wall_contracted = 0,
+    .contracted = 0,
+    .covariant = 0,
+    .deferrable = 0, /* (never asked: the engine's own sphere kernel decides) */
+    .shapes = NULL,
+};
 
 const rc_toi_frame *const rc_toi_frames[] = {
     &rc_toi_frame_table,

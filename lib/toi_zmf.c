@@ -83,5 +83,14 @@ static int zmf_toi(const rc_toi_params *prm, const rc_toi_ball *a, const rc_toi_
 }
 
 const rc_toi_frame rc_toi_frame_zmf = {
-    "zmf", "contact found in the pair's zero-momentum frame, event and normal boosted back",
-    zmf_toi, 1};
+    .name = "zmf",
+    .summary = "contact found in the pair's zero-momentum frame, event and normal boosted back",
+    .toi = zmf_toi,
+    .wall_contracted = 1,
+    .contracted = 1,
+    .covariant = 1,
+    /* not deferrable: a pair can overlap in its ZMF while its bounding spheres are apart
+     * in the table frame, so the spheres' contact time is no lower bound */
+    .deferrable = 0,
+    .shapes = NULL,
+};

@@ -13,8 +13,21 @@ static const char *const prog = "relcol-collide";
 
 enum { EXIT_BAD_INPUT = 2, EXIT_NO_COLLISION = 3 };
 
+/* "a or b": the laws of the table that read an impact angle (rc_law.uses_angle) */
+static const char *angle_laws(char *buf, size_t n)
+{
+    buf[0] = '\0';
+    for (size_t i = 0; rc_laws[i]; i++)
+        if (rc_laws[i]->uses_angle) {
+            size_t l = strlen(buf);
+            snprintf(buf + l, n - l, "%s%s", l ? " or --law " : "", rc_laws[i]->name);
+        }
+    return buf[0] ? buf : "(none)";
+}
+
 static void usage(FILE *f)
 {
+    char al[256];
     fprintf(f,
 "usage: relcol-collide [--c C|inf] [--eps E] [--law LAW] [--normal X[,Y[,Z]]]\n"
 "                      [--alpha A|random [--seed N] [--azimuth PHI]] [--format csv|json]\n"
@@ -40,10 +53,11 @@ static void usage(FILE *f)
     fprintf(f,
 "  --normal X[,Y[,Z]] contact normal from ball 0 to ball 1 (any length > 0; missing\n"
 "                    components are 0, more than the dimension is an error)\n"
-"  --alpha A         cm-isotropic only: impact angle in radians, |A| < pi/2, between\n"
-"                    ball 0's ZMF direction of motion and the ZMF normal (replaces the\n"
-"                    normal); 'random' draws it for a uniform impact parameter\n"
-"                    (rc_impact_angle_draw) from --seed N (default 1). Must be 0 in 1-D.\n"
+"  --alpha A         --law %s only (laws that take an impact angle): impact\n"
+"                    angle in radians, |A| < pi/2, between ball 0's ZMF direction of\n"
+"                    motion and the ZMF normal (replaces the normal); 'random' draws it\n"
+"                    for a uniform impact parameter (rc_impact_angle_draw) from --seed N\n"
+"                    (default 1). Must be 0 in 1-D.\n"
 "  --azimuth PHI     3-D only, with a numeric --alpha: azimuth of the normal (radians)\n"
 "  --format csv|json output format (default csv)\n"
 "  --help            this text\n"
@@ -57,7 +71,8 @@ static void usage(FILE *f)
 "\n"
 "exit status: 0 collided; 2 bad input or option (one line on stderr naming the row,\n"
 "column or option and the reason); 3 no collision: the balls are separating (or\n"
-"tangent) along the normal, nothing printed on stdout; 1 I/O error.\n");
+"tangent) along the normal, nothing printed on stdout; 1 I/O error.\n",
+            angle_laws(al, sizeof al));
 }
 
 /* every input error: "relcol-collide: message" and exit status 2 */
@@ -135,9 +150,10 @@ static int parse_options(int argc, char **argv, options *o)
         return fail("--c: %s", err);
     if (!(o->eps >= 0.0 && o->eps <= 1.0))
         return fail("--eps: eps = %s outside [0, 1]", app_fmt(o->eps, f));
-    const int cm = strcmp(o->law->name, "cm-isotropic") == 0;
-    if (o->alpha_given && !cm)
-        return fail("--alpha: only with --law cm-isotropic (law is %s)", o->law->name);
+    char al[256];
+    if (o->alpha_given && !o->law->uses_angle)
+        return fail("--alpha: only with --law %s (law is %s)", angle_laws(al, sizeof al),
+                    o->law->name);
     if (o->alpha_given && o->n_normal > 0)
         return fail("--alpha: conflicts with --normal (the impact angle fixes the normal)");
     if (o->alpha_given && !o->alpha_random && !(fabs(o->alpha) < M_PI / 2))

@@ -1,6 +1,6 @@
 /* frames.c — relcol-frames: how much a rigid-ball prediction depends on the frame in which
  * contact is decided. A family of oblique 2-D collisions (impact parameter from head-on to
- * grazing) is run at many c with each contact frame of the library (table, zmf, sphere)
+ * grazing) is run at many c with each contact frame of the library's table (rc_toi_frames)
  * feeding its normal to the zmf law; the app plots how far the outcomes differ and fits
  * the order p of |difference| ~ (v/c)^p as c -> inf. */
 #include <math.h>
@@ -12,12 +12,11 @@
 static const char *const prog = "relcol-frames";
 
 enum { EXIT_BAD_INPUT = 2 };
-enum { NF = 3, NPAIR = 3, NOBS = 3 };
+enum { NOBS = 3 };
 
 /* impact parameters b/R: head-on to grazing (R = r0 + r1 = 2) */
 static const double impacts[] = {0.0, 0.25, 0.5, 0.75, 0.9, 0.99};
 enum { NB = sizeof impacts / sizeof impacts[0] };
-static const int pair_a[NPAIR] = {0, 0, 1}, pair_b[NPAIR] = {1, 2, 2};
 static const char *const obs_name[NOBS] = {"angle", "vel", "heat"};
 /* fits use c/v >= FIT_FROM: the asymptotic regime (the next order is (v/c)^2 smaller,
  * 1% at c/v = 10) */
@@ -167,8 +166,34 @@ static void differences(const outcome *A, const outcome *B, double d[NOBS])
     d[2] = fmax(fabs(A->q[0] - B->q[0]), fabs(A->q[1] - B->q[1])) / 0.5; /* m v^2/2 = 1/2 */
 }
 
-static int write_script(const char *path, const options *o, char *err)
+/* Every pair of the nf frames, a < b, in table order: (0, 1), (0, 2), ..., (1, 2), ... */
+static size_t pair_count(size_t nf) { return nf * (nf - 1) / 2; }
+static void pair_of(size_t nf, size_t pr, size_t *a, size_t *b)
 {
+    size_t i = 0;
+    while (pr >= nf - 1 - i) {
+        pr -= nf - 1 - i;
+        i++;
+    }
+    *a = i;
+    *b = i + 1 + pr;
+}
+
+/* The figure shows frame 0 against each other frame: solid against frames that ignore
+ * the contraction, dashed (then dotted ...) against contracting ones. */
+static int line_dash(size_t fi)
+{
+    if (!rc_toi_frames[fi]->contracted)
+        return 1;
+    int dt = 2;
+    for (size_t g = 1; g < fi; g++)
+        dt += rc_toi_frames[g]->contracted;
+    return dt;
+}
+
+static int write_script(const char *path, const options *o, size_t nf, char *err)
+{
+    const size_t npair = pair_count(nf);
     app_atomic a;
     if (app_atomic_open(&a, path, err) != 0)
         return -1;
@@ -184,10 +209,19 @@ static int write_script(const char *path, const options *o, char *err)
 "set xlabel 'c / v'\n"
 "set key bottom left spacing 1.1 font ',10'\n"
 "set multiplot layout 1,3 title \"Contact frame dependence of a rigid-ball collision"
-" (v = 1 onto a ball at rest, zmf law, ε = %s)\\n"
-"{/*0.8 solid: table vs sphere (contraction ignored)   dashed: table vs zmf"
-"   grey: (v/c)^2 and (v/c)^4}\"\n",
+" (v = 1 onto a ball at rest, zmf law, ε = %s)\\n{/*0.8 ",
             app_fmt(o->eps, fe));
+    static const char *const dash_name[] = {"", "solid", "dashed", "dotted", "dash-dotted"};
+    for (int pass = 0; pass < 2; pass++) /* solid first, as plotted */
+    for (size_t fi = 1; fi < nf; fi++) {
+        const int dt = line_dash(fi);
+        if ((dt == 1) != (pass == 0))
+            continue;
+        fprintf(f, "%s: %s vs %s%s   ", dt <= 4 ? dash_name[dt] : "dt", rc_toi_frames[0]->name,
+                rc_toi_frames[fi]->name,
+                rc_toi_frames[fi]->contracted ? "" : " (contraction ignored)");
+    }
+    fprintf(f, "grey: (v/c)^2 and (v/c)^4}\"\n");
     static const char *const ylab[NOBS] = {
         "|Δθ| deflection of ball 0 (rad)", "max |Δv′| / v", "max |ΔQ| / (m v^2/2)"};
     static const char *const colors[] = {"#999999", "#1f77b4", "#2ca02c", "#ff7f0e",
@@ -200,14 +234,24 @@ static int write_script(const char *path, const options *o, char *err)
                    "3:(1/$3**4) with lines lw 2 dt 3 lc rgb '#888888' notitle",
                 o->points - 1, o->points - 1);
         for (int ib = 1; ib < NB; ib++) {
-            /* column of table-sphere (pair 1) and table-zmf (pair 0) for this observable */
-            const int col_ts = 4 + ob * NPAIR + 1, col_tz = 4 + ob * NPAIR + 0;
-            fprintf(f, ", \\\n     '' skip 1 using 3:($1 == %g && $%d > 0 ? $%d : 1/0) with "
-                       "lines lw 2 lc rgb '%s' title 'b/R = %g'",
-                    impacts[ib], col_ts, col_ts, colors[ib], impacts[ib]);
-            fprintf(f, ", \\\n     '' skip 1 using 3:($1 == %g && $%d > 0 ? $%d : 1/0) with "
-                       "lines lw 2 dt 2 lc rgb '%s' notitle",
-                    impacts[ib], col_tz, col_tz, colors[ib]);
+            /* frame 0 against frame fi is pair fi - 1; solid lines first (they carry the
+             * key) */
+            int titled = 0;
+            for (int pass = 0; pass < 2; pass++)
+                for (size_t fi = 1; fi < nf; fi++) {
+                    const int dt = line_dash(fi);
+                    if ((dt == 1) != (pass == 0))
+                        continue;
+                    const int col = 4 + ob * (int)npair + (int)(fi - 1);
+                    char key[64] = "notitle";
+                    if (!titled)
+                        snprintf(key, sizeof key, "title 'b/R = %g'", impacts[ib]);
+                    titled = 1;
+                    fprintf(f, ", \\\n     '' skip 1 using 3:($1 == %g && $%d > 0 ? $%d : 1/0) "
+                               "with lines lw 2%s%.0d lc rgb '%s' %s",
+                            impacts[ib], col, col, dt > 1 ? " dt " : "", dt > 1 ? dt : 0,
+                            colors[ib], key);
+                }
         }
         fprintf(f, "\n");
     }
@@ -226,39 +270,50 @@ int main(int argc, char **argv)
         return st;
     char err[APP_ERR_LEN];
     const size_t N = (size_t)o.points;
+    /* the library's frames, however many its table holds */
+    size_t nf = 0;
+    while (rc_toi_frames[nf])
+        nf++;
+    const size_t npair = pair_count(nf);
     int rc = 1;
     double *cs = malloc(N * sizeof *cs);
-    /* d[((ib * N + j) * NOBS + ob) * NPAIR + pr] */
-    double *d = malloc(NB * N * NOBS * NPAIR * sizeof *d);
-    double *th = malloc(NB * N * NF * sizeof *th);
+    /* d[((ib * N + j) * NOBS + ob) * npair + pr] */
+    double *d = malloc(NB * N * NOBS * npair * sizeof *d);
+    double *th = malloc(NB * N * nf * sizeof *th);
     double *xs = malloc(N * sizeof *xs), *ys = malloc(N * sizeof *ys);
     char *csv = app_path_join(o.out, "frames.csv"), *gp = app_path_join(o.out, "frames.gp");
     rc_toi_workspace *ws = rc_toi_workspace_alloc();
-    if (!cs || !d || !th || !xs || !ys || !csv || !gp || !ws) {
+    outcome *res = malloc(nf * sizeof *res);
+    size_t *pair_a = malloc((npair + 1) * sizeof *pair_a);
+    size_t *pair_b = malloc((npair + 1) * sizeof *pair_b);
+    double *pmin = malloc((npair + 1) * sizeof *pmin), *pmax = malloc((npair + 1) * sizeof *pmax);
+    int *nfit = malloc((npair + 1) * sizeof *nfit);
+    if (!cs || !d || !th || !xs || !ys || !csv || !gp || !ws || !res || !pair_a || !pair_b ||
+        !pmin || !pmax || !nfit) {
         fprintf(stderr, "%s: out of memory\n", prog);
         goto out;
     }
-    const rc_toi_frame *frames[NF] = {&rc_toi_frame_table, &rc_toi_frame_zmf,
-                                      &rc_toi_frame_sphere};
+    const rc_toi_frame *const *frames = rc_toi_frames;
+    for (size_t pr = 0; pr < npair; pr++)
+        pair_of(nf, pr, &pair_a[pr], &pair_b[pr]);
     app_progress bar;
     app_progress_init(&bar, "frames", NB * N);
     for (size_t j = 0; j < N; j++)
         cs[j] = o.from * pow(o.to / o.from, (double)j / (double)(N - 1));
     for (int ib = 0; ib < NB; ib++)
         for (size_t j = 0; j < N; j++) {
-            outcome res[NF];
-            for (int fi = 0; fi < NF; fi++) {
+            for (size_t fi = 0; fi < nf; fi++) {
                 if (run_one(frames[fi], cs[j], impacts[ib], o.eps, ws, &res[fi], err) != 0) {
                     fprintf(stderr, "%s: %s\n", prog, err);
                     goto out;
                 }
-                th[(ib * N + j) * NF + fi] = res[fi].theta;
+                th[(ib * N + j) * nf + fi] = res[fi].theta;
             }
-            for (int pr = 0; pr < NPAIR; pr++) {
+            for (size_t pr = 0; pr < npair; pr++) {
                 double dd[NOBS];
                 differences(&res[pair_a[pr]], &res[pair_b[pr]], dd);
                 for (int ob = 0; ob < NOBS; ob++)
-                    d[((ib * N + j) * NOBS + ob) * NPAIR + pr] = dd[ob];
+                    d[((ib * N + j) * NOBS + ob) * npair + pr] = dd[ob];
             }
             app_progress_update(&bar, ib * N + j + 1);
         }
@@ -275,26 +330,26 @@ int main(int argc, char **argv)
     }
     fprintf(a.f, "b_over_R,c,c_over_v");
     for (int ob = 0; ob < NOBS; ob++)
-        for (int pr = 0; pr < NPAIR; pr++)
+        for (size_t pr = 0; pr < npair; pr++)
             fprintf(a.f, ",d_%s_%s_%s", obs_name[ob], frames[pair_a[pr]]->name,
                     frames[pair_b[pr]]->name);
-    for (int fi = 0; fi < NF; fi++)
+    for (size_t fi = 0; fi < nf; fi++)
         fprintf(a.f, ",theta_%s", frames[fi]->name);
     fprintf(a.f, "\n");
     for (int ib = 0; ib < NB; ib++)
         for (size_t j = 0; j < N; j++) {
             fprintf(a.f, "%g,%.17g,%.17g", impacts[ib], cs[j], cs[j]);
-            for (int k = 0; k < NOBS * NPAIR; k++)
-                fprintf(a.f, ",%.17g", d[(ib * N + j) * NOBS * NPAIR + k]);
-            for (int fi = 0; fi < NF; fi++)
-                fprintf(a.f, ",%.17g", th[(ib * N + j) * NF + fi]);
+            for (size_t k = 0; k < NOBS * npair; k++)
+                fprintf(a.f, ",%.17g", d[(ib * N + j) * NOBS * npair + k]);
+            for (size_t fi = 0; fi < nf; fi++)
+                fprintf(a.f, ",%.17g", th[(ib * N + j) * nf + fi]);
             fprintf(a.f, "\n");
         }
     if (app_atomic_commit(&a, err) != 0) {
         fprintf(stderr, "%s: %s\n", prog, err);
         goto out;
     }
-    if (write_script(gp, &o, err) != 0) {
+    if (write_script(gp, &o, nf, err) != 0) {
         fprintf(stderr, "%s: %s\n", prog, err);
         goto out;
     }
@@ -313,10 +368,11 @@ int main(int argc, char **argv)
         printf("wrote %s, %s (no figure: gnuplot is not installed)\n", csv, gp);
     printf("fitted order p of |difference| ~ (v/c)^p (least squares on log-log, c >= %g v, "
            "differences > %g):\n", FIT_FROM, FIT_FLOOR);
-    printf("  b/R   observable   table-zmf  table-sphere  zmf-sphere\n");
-    double pmin[NPAIR], pmax[NPAIR];
-    int nfit[NPAIR];
-    for (int pr = 0; pr < NPAIR; pr++) {
+    printf("  b/R   observable");
+    for (size_t pr = 0; pr < npair; pr++)
+        printf("%*s%s-%s", 3, "", frames[pair_a[pr]]->name, frames[pair_b[pr]]->name);
+    printf("\n");
+    for (size_t pr = 0; pr < npair; pr++) {
         pmin[pr] = INFINITY;
         pmax[pr] = -INFINITY;
         nfit[pr] = 0;
@@ -324,11 +380,11 @@ int main(int argc, char **argv)
     for (int ib = 0; ib < NB; ib++)
         for (int ob = 0; ob < NOBS; ob++) {
             printf("  %-5g %-10s", impacts[ib], obs_name[ob]);
-            for (int pr = 0; pr < NPAIR; pr++) {
+            for (size_t pr = 0; pr < npair; pr++) {
                 size_t n = 0;
                 int zero = 1;
                 for (size_t j = 0; j < N; j++) {
-                    const double y = d[((ib * N + j) * NOBS + ob) * NPAIR + pr];
+                    const double y = d[((ib * N + j) * NOBS + ob) * npair + pr];
                     zero &= y == 0.0;
                     if (cs[j] >= FIT_FROM && y > FIT_FLOOR) {
                         xs[n] = cs[j];
@@ -338,7 +394,9 @@ int main(int argc, char **argv)
                 }
                 double slope = NAN, sd = NAN;
                 size_t used = 0;
-                const int width = pr == 0 ? 12 : (pr == 1 ? 14 : 12);
+                /* right-aligned under "  A-B" */
+                const int width = (int)(strlen(frames[pair_a[pr]]->name) +
+                                        strlen(frames[pair_b[pr]]->name) + 3);
                 if (app_loglog_slope(xs, ys, n, &slope, NULL, &sd, &used) == 0) {
                     printf("%*.3f", width, -slope);
                     pmin[pr] = fmin(pmin[pr], -slope);
@@ -352,7 +410,7 @@ int main(int argc, char **argv)
             }
             printf("\n");
         }
-    for (int pr = 0; pr < NPAIR; pr++) {
+    for (size_t pr = 0; pr < npair; pr++) {
         if (nfit[pr] > 0)
             printf("%s vs %s: frame differences vanish as (v/c)^p, p in [%.3f, %.3f] "
                    "(%d fits)\n", frames[pair_a[pr]]->name, frames[pair_b[pr]]->name,
@@ -371,5 +429,11 @@ out:
     free(ys);
     free(csv);
     free(gp);
+    free(res);
+    free(pair_a);
+    free(pair_b);
+    free(pmin);
+    free(pmax);
+    free(nfit);
     return rc;
 }

@@ -13,6 +13,48 @@
 #include "app.h"
 #include "scenario.h"
 
+/* ---- laws and frames: the library's tables, then the caller's --------------------- */
+
+static const rc_law *find_law(const scn_tables *x, const char *name)
+{
+    const rc_law *l = rc_law_find(name);
+    for (size_t i = 0; !l && x && x->laws && x->laws[i]; i++)
+        if (strcmp(x->laws[i]->name, name) == 0)
+            l = x->laws[i];
+    return l;
+}
+
+static const rc_toi_frame *find_frame(const scn_tables *x, const char *name)
+{
+    const rc_toi_frame *f = rc_toi_frame_find(name);
+    for (size_t i = 0; !f && x && x->frames && x->frames[i]; i++)
+        if (strcmp(x->frames[i]->name, name) == 0)
+            f = x->frames[i];
+    return f;
+}
+
+/* "a, b, c": the names of the library's laws (frames 0) or frames (1), then the caller's */
+static const char *name_list(const scn_tables *x, int frames, char *buf, size_t n)
+{
+    buf[0] = '\0';
+    for (int t = 0; t < 2; t++)
+        for (size_t i = 0;; i++) {
+            const char *nm = NULL;
+            if (frames) {
+                const rc_toi_frame *const *tab = t ? (x ? x->frames : NULL) : rc_toi_frames;
+                nm = tab && tab[i] ? tab[i]->name : NULL;
+            } else {
+                const rc_law *const *tab = t ? (x ? x->laws : NULL) : rc_laws;
+                nm = tab && tab[i] ? tab[i]->name : NULL;
+            }
+            if (!nm)
+                break;
+            size_t l = strlen(buf);
+            snprintf(buf + l, n - l, "%s%s", l ? ", " : "", nm);
+        }
+    return buf;
+}
+
 /* ---- small checked readers ------------------------------------------------------- */
 
 typedef struct ctx {
@@ -401,6 +443,12 @@ static int parse_outputs(const ctx *c, const cJSON *o, scn_scenario *s)
 
 int scn_parse(const char *text, const char *name, scn_scenario *s, char *err)
 {
+    return scn_parse_ext(text, name, NULL, s, err);
+}
+
+int scn_parse_ext(const char *text, const char *name, const scn_tables *extra,
+                  scn_scenario *s, char *err)
+{
     static const char *const keys[] = {"relcol", "dim", "box", "c", "law", "restitution",
                                        "contact_frame", "tc", "seed", "time", "t_end",
                                        "restart", "checkpoint", "balls", "generate",
@@ -444,8 +492,10 @@ int scn_parse(const char *text, const char *name, scn_scenario *s, char *err)
     const char *law = NULL;
     if (get_str(&c, root, "", "law", "zmf", &law))
         goto done;
-    if (!(s->law = rc_law_find(law))) {
-        bad(&c, "law", "unknown collision law '%s'", law);
+    if (!(s->law = find_law(extra, law))) {
+        char list[256];
+        bad(&c, "law", "unknown collision law '%s' (expected %s)", law,
+            name_list(extra, 0, list, sizeof list));
         goto done;
     }
     const cJSON *rest = cJSON_GetObjectItemCaseSensitive(root, "restitution");
@@ -473,11 +523,12 @@ int scn_parse(const char *text, const char *name, scn_scenario *s, char *err)
     const char *frame = NULL;
     if (get_str(&c, root, "", "contact_frame", "table", &frame))
         goto done;
-    if (strcmp(frame, "sphere") && strcmp(frame, "table") && strcmp(frame, "zmf")) {
-        bad(&c, "contact_frame", "unknown frame '%s' (expected table, zmf or sphere)", frame);
+    if (!(s->frame = find_frame(extra, frame))) {
+        char list[256];
+        bad(&c, "contact_frame", "unknown frame '%s' (expected %s)", frame,
+            name_list(extra, 1, list, sizeof list));
         goto done;
     }
-    snprintf(s->frame, sizeof s->frame, "%s", frame);
     if (get_num(&c, root, "", "tc", 0, 0, 0, &s->t_c) || get_num(&c, root, "", "seed", 0, 1, 0, &seed) ||
         get_num(&c, root, "", "time", 0, 0, 0, &s->time) ||
         get_num(&c, root, "", "t_end", 1, 0, 0, &s->t_end))
@@ -555,6 +606,11 @@ done:
 
 int scn_load(const char *path, scn_scenario *s, char *err)
 {
+    return scn_load_ext(path, NULL, s, err);
+}
+
+int scn_load_ext(const char *path, const scn_tables *extra, scn_scenario *s, char *err)
+{
     FILE *f = fopen(path, "rb");
     if (!f) {
         app_errf(err, "%s: cannot open: %s", path, strerror(errno));
@@ -590,7 +646,7 @@ int scn_load(const char *path, scn_scenario *s, char *err)
         app_errf(err, "%s: (document): contains a NUL byte: not a JSON text file", path);
         return -1;
     }
-    int rc = scn_parse(buf, path, s, err);
+    int rc = scn_parse_ext(buf, path, extra, s, err);
     free(buf);
     return rc;
 }
@@ -682,7 +738,7 @@ int scn_write(FILE *f, const scn_scenario *s, double t, double t_end, size_t n,
         fprintf(f, ",\n \"c\": %.17g", s->c);
     fprintf(f, ", \"law\": \"%s\", \"restitution\": {\"ball\": %.17g, \"wall\": %.17g},\n",
             s->law->name, s->eps_ball, s->eps_wall);
-    fprintf(f, " \"contact_frame\": \"%s\", \"tc\": %.17g, \"seed\": %llu,\n", s->frame, s->t_c,
+    fprintf(f, " \"contact_frame\": \"%s\", \"tc\": %.17g, \"seed\": %llu,\n", s->frame->name, s->t_c,
             (unsigned long long)s->seed);
     fprintf(f, " \"time\": %.17g, \"t_end\": %.17g, \"restart\": true,\n", t, t_end);
     if (s->checkpoint) {

@@ -31,7 +31,7 @@ typedef struct scn_scenario {
     double c;                  /* INFINITY classical */
     const rc_law *law;
     double eps_ball, eps_wall;
-    char frame[16];            /* contact frame: sphere | table | zmf */
+    const rc_toi_frame *frame; /* contact frame (the library's or the caller's table) */
     double t_c;                /* TC model, proper time; 0 off */
     uint64_t seed;
     double time;               /* start time (a restart carries the time it stopped at) */
@@ -46,10 +46,23 @@ typedef struct scn_scenario {
     scn_outputs out;
 } scn_scenario;
 
+/* Laws and contact frames a reader accepts by name beside the library's tables (rc_laws,
+ * rc_toi_frames), given by its caller -- a program or a test with models of its own; the
+ * library keeps no registry. NULL-terminated tables; either may be NULL. A name is looked
+ * up in the library's table first, then in the caller's. */
+typedef struct scn_tables {
+    const rc_law *const *laws;
+    const rc_toi_frame *const *frames;
+} scn_tables;
+
 /* Parse JSON text (name is used in messages). On failure returns -1 with
- * "NAME: PATH: reason" in err (APP_ERR_LEN) and leaves *s empty. */
+ * "NAME: PATH: reason" in err (APP_ERR_LEN) and leaves *s empty. extra: the caller's
+ * laws and frames (NULL: the library's only). */
+int scn_parse_ext(const char *text, const char *name, const scn_tables *extra,
+                  scn_scenario *s, char *err);
 int scn_parse(const char *text, const char *name, scn_scenario *s, char *err);
 /* Read and parse a file. */
+int scn_load_ext(const char *path, const scn_tables *extra, scn_scenario *s, char *err);
 int scn_load(const char *path, scn_scenario *s, char *err);
 /* A built-in scenario: "rack" or "gas" with its defaults (the same as the files in
  * data/scenarios/). */

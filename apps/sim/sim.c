@@ -13,7 +13,6 @@
 #include <unistd.h>
 
 #include "app.h"
-#include "frames.h"
 #include "scenario.h"
 #include "simout.h"
 
@@ -215,10 +214,7 @@ int main(int argc, char **argv)
     def.t_c = s.t_c;
     def.law = s.law;
     def.restart = s.restart;
-    if (sim_frame_apply(s.frame, &def, err)) {
-        scn_free(&s);
-        return fail(2, "contact_frame: %s", err);
-    }
+    def.frame = s.frame;
     rc_sim *sim = NULL;
     int st = rc_sim_create(&def, &sim);
     if (st != RC_OK) {

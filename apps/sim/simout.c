@@ -268,7 +268,7 @@ static int write_summary_json(const sim_output *o, const rc_sim *sim, const rc_s
         cJSON_AddItemToArray(x, num(rc_v3_get(s->box, k)));
     add(j, "c", s->c);
     cJSON_AddStringToObject(j, "law", s->law->name);
-    cJSON_AddStringToObject(j, "contact_frame", s->frame);
+    cJSON_AddStringToObject(j, "contact_frame", s->frame->name);
     cJSON_AddItemToObject(j, "restitution", x = cJSON_CreateObject());
     add(x, "ball", s->eps_ball);
     add(x, "wall", s->eps_wall);
@@ -370,7 +370,7 @@ static int write_summary(sim_output *o, const rc_sim *sim, double wall, int inte
     else
         fprintf(f, "c                %.17g\n", s->c);
     fprintf(f, "law              %s, restitution ball %g wall %g, contact frame %s, t_c %g\n",
-            s->law->name, s->eps_ball, s->eps_wall, s->frame, s->t_c);
+            s->law->name, s->eps_ball, s->eps_wall, s->frame->name, s->t_c);
     fprintf(f, "time             %.17g -> %.17g\n", s->time, rc_sim_time(sim));
     fprintf(f, "collisions       %llu (largest simultaneous group %zu)\n", (unsigned long long)coll,
             d.max_group);
@@ -379,6 +379,9 @@ static int write_summary(sim_output *o, const rc_sim *sim, double wall, int inte
     for (int k = 0; k < RC_SIM_EV_NKINDS; k++)
         fprintf(f, "%s %llu%s", kinds[k], (unsigned long long)(d.events[k] - d0->events[k]),
                 k + 1 < RC_SIM_EV_NKINDS ? ", " : "\n");
+    if (d.group_sequential > d0->group_sequential) /* (only a law without a group solver) */
+        fprintf(f, "groups one by one %llu (law %s has no group solver: order-dependent)\n",
+                (unsigned long long)(d.group_sequential - d0->group_sequential), s->law->name);
     fprintf(f, "energy           kinetic + heat %.17g, relative change %.3g\n", d.energy, dE);
     fprintf(f, "kinetic energy   %.17g (heat made so far %.17g)\n", d.kinetic, d.heat);
     if (!isinf(s->c))

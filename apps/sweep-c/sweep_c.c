@@ -45,9 +45,10 @@ static void usage(FILE *f)
 "  dev_velocity  max over balls |v'(c) - v'(inf)| / max over balls |v'(inf)|\n"
 "  dev_heat      |Q(c) - dK| / dK: Q(c) = sum (m' - m) c^2 is the heat that became rest\n"
 "                mass, computed without cancellation as (m'^2 - m^2) c^2 / (m' + m) with\n"
-"                (m'^2 - m^2) c^2 = |pbar|^2 - |pbar'|^2 (ZMF momenta; the laws keep each\n"
-"                ball's ZMF energy); dK is the kinetic energy lost at c = inf. With eps = 1\n"
-"                both are 0: the column is nan and not plotted.\n"
+"                (m'^2 - m^2) c^2 = |pbar|^2 - |pbar'|^2 (ZMF momenta; for laws that keep\n"
+"                each ball's ZMF energy, as zmf and cm-isotropic declare, else directly);\n"
+"                dK is the kinetic energy lost at c = inf. With eps = 1 both are 0: the\n"
+"                column is nan and not plotted.\n"
 "and writes, atomically, DIR/sweep-c.csv, DIR/sweep-c.gp and, if gnuplot is installed,\n"
 "DIR/sweep-c.png; then prints the fitted log-log slopes (expect -2).\n"
 "exit status: 0 ok; 2 bad input; 3 the balls do not collide; 1 I/O error.\n",
@@ -110,8 +111,10 @@ static int parse_options(int argc, char **argv, options *o)
             o->eps_given = 1;
         } else if (strcmp(name, "--law") == 0) {
             o->law = rc_law_find(val);
+            char list[256];
             if (!o->law)
-                return fail("--law: unknown law '%s'", val);
+                return fail("--law: unknown law '%s' (expected %s)", val,
+                            app_law_list(list, sizeof list));
         }
     }
     char f[APP_FMT_LEN];
@@ -297,8 +300,10 @@ int main(int argc, char **argv)
             d = fmax(d, rc_v3_norm(rc_v3_sub(v, vr)));
         }
         dv[j] = d / vscale;
-        q[j] = rc_pair_heat(pin, pout, k, NULL);
         qd[j] = ((pout[0].m - pin[0].m) + (pout[1].m - pin[1].m)) * cs[j] * cs[j];
+        /* the cancellation-free form only for a law that declares it keeps each ball's
+         * ZMF energy (rc_pair_heat's premise); else the direct difference */
+        q[j] = o.law->keeps_zmf_energy ? rc_pair_heat(pin, pout, k, NULL) : qd[j];
         dq[j] = have_heat ? fabs(q[j] - dK) / dK : NAN;
         app_progress_update(&bar, j + 1);
     }

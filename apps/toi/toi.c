@@ -73,7 +73,7 @@ static int parse_options(int argc, char **argv, options *o)
 {
     char err[APP_ERR_LEN], f1[APP_FMT_LEN], f2[APP_FMT_LEN];
     o->c = INFINITY;
-    o->frame = &rc_toi_frame_table;
+    o->frame = rc_toi_frame_find("table"); /* (the default of every app) */
     static const char *const known[] = {"--c", "--frame", "--wall", NULL};
     app_opts it;
     app_opts_init(&it, prog, argc, argv, known, NULL, "input is read from stdin; see --help");
@@ -253,8 +253,7 @@ int main(int argc, char **argv)
     st = rc_toi(o.frame, &prm, &ball[0], &ball[1], ws, &c);
     if (st == RC_EOVERLAP) {
         fail("lines %ld and %ld (balls 0 and 1): the %s overlap at time 0", t.line[0],
-             t.line[1], !isinf(o.c) && o.frame != &rc_toi_frame_sphere ? "contracted shapes"
-                                                                         : "balls");
+             t.line[1], !isinf(o.c) && o.frame->contracted ? "contracted shapes" : "balls");
         goto out;
     }
     if (st == RC_MISS) {

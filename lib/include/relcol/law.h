@@ -3,10 +3,14 @@
  * A law maps the pre-collision states of two balls (rest mass, momentum), a unit contact
  * normal n from ball 0 to ball 1 and the law's parameters to the post-collision states,
  * rest-mass change included. Laws are `const rc_law` objects (like GSL's
- * gsl_root_fsolver_brent); rc_laws[] lists the built-in ones by name. To add a law:
- * write one file defining `const rc_law rc_law_mine = {"mine", "...", mine_collide}`,
- * declare it below and add its address to rc_laws[] in lib/law_table.c — nothing else
- * changes; rc_law_find(), relcol-collide --law and the law tests pick it up by name. */
+ * gsl_root_fsolver_brent) with declared properties; rc_laws[] lists the built-in ones by
+ * name. The engine and the apps read the properties and never name a law. A law need not
+ * live in the library: any `const rc_law` can be given to rc_collide() and
+ * rc_sim_def.law (README "Adding a collision law"). To make it built-in: write one file
+ * defining `const rc_law rc_law_mine = {.name = "mine", .summary = "...", .collide =
+ * mine_collide, ...}`, declare it below and add its address to rc_laws[] in
+ * lib/law_table.c; rc_law_find(), relcol-collide --law, relcol-sim's "law" key and the
+ * law tests pick it up by name. */
 #ifndef RELCOL_LAW_H
 #define RELCOL_LAW_H
 
@@ -35,10 +39,43 @@ typedef struct rc_collision_params {
 typedef int (*rc_law_fn)(const rc_collision_params *prm, rc_particle *a, rc_particle *b,
                          rc_vec3 n);
 
+/* A contact of a group: ball a against ball b (b >= 0) or against a wall (b < 0), with
+ * unit normal n from a towards b (or into the wall) and restitution eps. */
+typedef struct rc_contact {
+    int a, b;
+    rc_vec3 n;
+    double eps;
+} rc_contact;
+
+/* Group solver: resolve k simultaneous contacts among balls[0, nballs) together (each
+ * contact's own eps; prm->eps is not used; walls infinitely massive). RC_OK when
+ * resolved; any other code when it cannot (balls[] may then hold anything: the engine
+ * reloads the states and resolves only the event's own contact, counted in
+ * rc_sim_diag.group_fallbacks). Trusted input (unit normals, valid states). jout (may be
+ * NULL, k entries): each contact's impulse along its normal, as far as the law defines
+ * one (the engine shares the momentum of two walls of one axis by them). */
+typedef int (*rc_law_group_fn)(const rc_collision_params *prm, size_t nballs,
+                               rc_particle *balls, size_t k, const rc_contact *contacts,
+                               double *jout);
+
+/* A law: its kernel and its declared properties. Fields after collide that an
+ * initialiser leaves out are 0 / NULL: the conservative choice for each. */
 typedef struct rc_law {
     const char *name;    /* as on the command line */
     const char *summary; /* one line for --help */
     rc_law_fn collide;
+    /* Optional (NULL: none): resolves a group of simultaneous contacts together, order
+     * independent (zmf: rc_contacts_resolve). Without one the engine resolves a group's
+     * contacts one at a time with collide (and the wall law) in a fixed order, which
+     * makes the outcome depend on that order (relcol/sim.h, rc_sim_diag.group_sequential;
+     * papers/simultaneous-contacts.md). */
+    rc_law_group_fn group;
+    /* Whether the law reads prm->alpha and prm->azimuth (an impact angle given apart from
+     * the normal: cm-isotropic); apps offer --alpha only for such laws. */
+    int uses_angle;
+    /* Whether each ball's energy in the pair's ZMF is kept, so that rc_pair_heat gives
+     * the collision's heat (zmf, cm-isotropic). */
+    int keeps_zmf_energy;
 } rc_law;
 
 /* The four-impulse law of shared/DESIGN.md: impulse J (u.n/c^2, n) with

@@ -46,13 +46,20 @@ typedef struct rc_sim_def {
     /* TC model against inelastic collapse: a contact in which a ball's proper time since
      * its previous collision is < t_c is elastic. Proper time, time units; 0 = off. */
     double t_c;
-    const rc_law *law;  /* two-ball law (rc_law_zmf by default, see relcol/law.h) */
-    /* Contact geometry (relcol/toi.h): NULL or &rc_toi_frame_sphere = uncontracted
-     * spheres (the engine's own inlined exact kernel); any other frame (table, zmf, or a
+    /* two-ball law (rc_law_zmf by default, see relcol/law.h); a group of simultaneous
+     * contacts goes to its group solver (law->group), or without one is resolved one
+     * contact at a time (rc_sim_diag.group_sequential). A law's failure (a negative code
+     * from collide) ends rc_sim_advance with that code. */
+    const rc_law *law;
+    /* Contact geometry (relcol/toi.h), chosen by the frame's declared properties: NULL or
+     * a frame with contracted = 0 (sphere) = uncontracted spheres (the engine's own
+     * inlined exact kernel, toi never called); a contracted frame (table, zmf, or a
      * user's) is called as the narrow phase after the exact bounding-sphere test says
-     * the balls can touch first, and gives the contact normal. Walls see the contracted
-     * support r sqrt(1 - (v.n)^2/c^2) when frame->wall_contracted. toi.inv_c2 is set by
-     * the engine; the other fields are the frame's tolerances. */
+     * the balls can touch first, and gives the contact normal -- through its direct
+     * solver frame->shapes if it declares one, its root finds deferred if it declares
+     * deferrable. Walls see the contracted support r sqrt(1 - (v.n)^2/c^2) when
+     * frame->wall_contracted. toi.inv_c2 is set by the engine; the other fields are the
+     * frame's tolerances. */
     const rc_toi_frame *frame;
     rc_toi_params toi;
     /* Simultaneous contacts: at an event, every other contact whose surface gap is at
@@ -139,6 +146,14 @@ typedef struct rc_sim_diag {
     uint64_t group_fallbacks; /* groups whose joint solve failed (singular normals, or no
                                  rest-mass-keeping outcome): only the event's own contact
                                  was resolved, the rest follow as events of their own */
+    /* Groups resolved one contact at a time because the law declares no group solver
+     * (rc_law.group == NULL): the contacts in the group's order -- the event's own
+     * first, then as the engine found them (each member in the order it joined: its
+     * walls by axis, then its neighbours in the engine's cell order) -- each on the
+     * states the previous ones left. What it costs: the outcome depends on that order
+     * (a ball between two others ends differently if either contact goes first), which
+     * is not physical; each group counted here is one where that happened. */
+    uint64_t group_sequential;
 } rc_sim_diag;
 
 /* A new engine. Its neighbour test runs in AVX-512 lanes (eight pairs at a time) or AVX2
@@ -192,7 +207,9 @@ int rc_sim_checkpoint_write(const rc_sim *s, void *buf, size_t bytes);
 int rc_sim_checkpoint_read(rc_sim *s, const void *buf, size_t bytes);
 
 /* Process events in time order until the next one would be later than t_end (then all
- * balls are at t_end) or max_events events were processed (0 = no limit). */
+ * balls are at t_end) or max_events events were processed (0 = no limit). A collision law
+ * that fails (a negative code other than from its group solver) stops the run with its
+ * code; the event's balls keep their states from before it. */
 int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events);
 
 size_t rc_sim_count(const rc_sim *s);
@@ -208,15 +225,11 @@ size_t rc_sim_bytes(const rc_sim *s);
 
 /* ---- simultaneous contacts ------------------------------------------------------ */
 
-/* A contact of a group: ball a against ball b (b >= 0) or against a wall (b < 0), with
- * unit normal n from a towards b (or into the wall) and restitution eps. */
-typedef struct rc_contact {
-    int a, b;
-    rc_vec3 n;
-    double eps;
-} rc_contact;
+/* (rc_contact, a contact of a group, is defined in relcol/law.h beside the law's group
+ * solver type rc_law_group_fn.) */
 
-/* Resolve k contacts among balls[] together (papers/simultaneous-contacts.md): contact
+/* The zmf law's group solver (rc_law_zmf.group calls it).
+ * Resolve k contacts among balls[] together (papers/simultaneous-contacts.md): contact
  * j gives ball b the four-impulse J_j q_j and ball a -J_j q_j, q_j = (u_j.n_j/c^2, n_j)
  * with u_j the pair's zero-momentum velocity before the group (q = (0, n) for a wall), and
  * the J_j solve, by Newton's method, the k restitution conditions of the zmf law: each

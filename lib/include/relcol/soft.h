@@ -19,7 +19,9 @@
  * ZMF restitution exactly eps at any stiffness and the kappa -> inf limit is rc_law_zmf.
  *
  * Steppers are `const rc_soft_stepper` objects (CVODE BDF and GSL odeiv2 ones), listed in
- * rc_soft_steppers[] and found by name, as the collision laws are.
+ * rc_soft_steppers[] and found by name, as the collision laws are. A stepper sees a run
+ * only through the public rc_soft_sys functions below, so one can be written outside the
+ * library and given to rc_soft_collide.
  *
  * Contact shapes (rc_soft_params.shape): RC_SOFT_SPHERE (default) takes each ball as the
  * uncontracted sphere of radius r in the integration frame. The contracted options take
@@ -81,13 +83,75 @@ typedef struct rc_soft_result {
     long n_pw;            /* Perram-Wertheim Newton evaluations (contracted shapes) */
 } rc_soft_result;
 
-struct rc_soft_sys; /* a run's private state (lib/soft_private.h) */
+/* ---- a run as its stepper sees it ---------------------------------------------------
+ * The piecewise smooth ODE y' = f(y) (ny components, the integration frame, from time 0)
+ * with one switching function per pair of balls (its overlap) and one contact switch per
+ * pair: the force of a pair is on exactly while its switch is. The model (the library)
+ * owns the equations and the switches; the stepper owns the loop: */
+typedef struct rc_soft_sys rc_soft_sys; /* opaque: a run's state */
 
-/* A stepper drives the integration of a run from start to finish (events included). */
+typedef struct rc_soft_sys_info {
+    size_t ny;               /* state components */
+    size_t npair;            /* pairs: switching functions */
+    double rtol;             /* relative tolerance */
+    const double *abs_scale; /* per component: absolute tolerance / rtol */
+    double t_max;            /* stop when t reaches it (INFINITY: only when done) */
+    /* A first step: a hundredth of the time the fastest ball takes to cross the smallest
+     * radius (1 if no ball moves); an adaptive controller adapts it at once. */
+    double h0;
+    /* 1 if a pair can overlap while out of contact (contracted shapes: a shape change
+     * made it, see rc_soft_shape_overlaps): a pair out of contact whose overlap was
+     * already positive at a step's start has no contact start to locate in that step. */
+    int ghosts;
+} rc_soft_sys_info;
+
+void rc_soft_sys_get_info(const rc_soft_sys *s, rc_soft_sys_info *info);
+/* The state y (ny values): the start on entry, integrated in place by the stepper; on
+ * return from integrate it must hold the state at the time given to rc_soft_sys_finish. */
+double *rc_soft_sys_state(rc_soft_sys *s);
+/* The step budget: 1 while fewer steps than rc_soft_params.max_steps were counted. A
+ * stepper counts every step it takes with rc_soft_sys_count_step and returns
+ * RC_ENOCONVERGE when the budget is spent. */
+int rc_soft_sys_budget_left(const rc_soft_sys *s);
+void rc_soft_sys_count_step(rc_soft_sys *s);
+/* Pair q's contact switch: 1 while its force is on. */
+int rc_soft_sys_contact(const rc_soft_sys *s, size_t q);
+/* The stepper ends at integration time t (the state is rc_soft_sys_state's). */
+void rc_soft_sys_finish(rc_soft_sys *s, double t);
+/* dy/dt at y with the current contact switches. */
+void rc_soft_rhs(rc_soft_sys *s, const double *y, double *dy);
+/* Overlap of every pair (npair values, > 0 overlapping): the switching functions. */
+void rc_soft_overlap(rc_soft_sys *s, const double *y, double *g);
+/* 1 if pair q's centres approach at y: at a zero of its overlap the contact is on exactly
+ * when they approach (decided from the state, not from a root's reported direction,
+ * which is unreliable for a root found again at the restart point). */
+int rc_soft_approaching(rc_soft_sys *s, size_t q, const double *y);
+/* Contact of pair q starts (start = 1) or ends (0) at state y. */
+void rc_soft_switch(rc_soft_sys *s, size_t q, int start, const double *y);
+/* Contracted shapes change with the momenta, so a pair out of contact can come to
+ * overlap without approaching (another contact changed a ball's shape). Such a pair feels
+ * no force until its overlap has ended (switching it on would release at once an elastic
+ * energy kappa delta^2/2 that was never stored); counts each such episode (call after
+ * every accepted step and event). */
+void rc_soft_shape_overlaps(rc_soft_sys *s, const double *y);
+/* Largest step that cannot carry an approaching pair that is not in contact through a
+ * whole contact unseen: its gap over its closing speed (free flight), floored at rtol
+ * times the radius crossing time; for a pair in contact, half its 1/omega.
+ * INFINITY when no pair approaches or touches. Cap every step with it. */
+double rc_soft_max_step(rc_soft_sys *s, const double *y);
+/* 1 when no pair is in contact and every pair is receding: nothing more can happen. */
+int rc_soft_done(rc_soft_sys *s, const double *y);
+/* Record the conservation errors at y and release the frozen shapes of pairs that are
+ * apart in their current shapes too (call at the start and after every accepted step and
+ * event). */
+void rc_soft_observe(rc_soft_sys *s, const double *y);
+
+/* A stepper drives the integration of a run from start to finish (events included):
+ * RC_OK, or RC_ENOCONVERGE / RC_ENOMEM. */
 typedef struct rc_soft_stepper {
     const char *name;    /* as on the command line */
     const char *summary; /* one line for --help */
-    int (*integrate)(struct rc_soft_sys *sys);
+    int (*integrate)(rc_soft_sys *sys);
 } rc_soft_stepper;
 
 /* SUNDIALS CVODE, BDF with the dense direct linear solver, contacts by CVodeRootInit. */

@@ -11,9 +11,12 @@
  * Contact frames are `const rc_toi_frame` objects (GSL style, like rc_law): "table"
  * finds contact between the table-frame shapes, "zmf" finds it in the pair's
  * zero-momentum frame and transforms the event and the normal back, "sphere" ignores
- * the contraction. To add a frame: define `const rc_toi_frame rc_toi_frame_mine` in a
- * new lib/toi_*.c, declare it here and add it to rc_toi_frames[] in lib/toi_frames.c.
- * The derivation and every tolerance decision are in papers/time-of-impact.md.
+ * the contraction. A frame is one table entry with declared properties (below); the
+ * engine and the apps read the properties and never name a frame. A frame need not live
+ * in the library: any `const rc_toi_frame` can be given to rc_toi() and rc_sim_def.frame
+ * (README "Adding a contact frame"); to make it built-in, define it in a new lib/toi_*.c,
+ * declare it here and add it to rc_toi_frames[] in lib/toi_frames.c. The derivation
+ * and every tolerance decision are in papers/time-of-impact.md.
  *
  * Outcomes (every entry point): RC_OK with a contact at t >= 0; RC_MISS when there is
  * no contact in the future — including "touching but separating" (touching within
@@ -117,6 +120,14 @@ typedef int (*rc_toi_frame_fn)(const rc_toi_params *prm, const rc_toi_ball *a,
                                const rc_toi_ball *b, rc_toi_workspace *ws,
                                rc_toi_contact *out);
 
+/* Direct solver of a frame whose contact is that of the two table-frame shapes: the
+ * signature of rc_toi_shapes_rel (shapes and relative coordinates; y0 may be NULL). */
+typedef int (*rc_toi_shapes_fn)(const rc_toi_shape *s0, const rc_toi_shape *s1, rc_vec3 d,
+                                rc_vec3 w, const rc_toi_params *prm, rc_toi_workspace *ws,
+                                double *t, rc_vec3 *y0, rc_vec3 *n);
+
+/* A contact frame: its kernel and its declared properties. Fields after toi that an
+ * initialiser leaves out are 0 / NULL: the conservative choice for each. */
 typedef struct rc_toi_frame {
     const char *name;    /* as on the command line */
     const char *summary; /* one line for --help */
@@ -124,6 +135,27 @@ typedef struct rc_toi_frame {
     /* Whether walls see the contracted shape. A wall is infinitely massive, so its
      * rest frame is both the table and the ball-wall ZMF: table and zmf say 1. */
     int wall_contracted;
+    /* Whether pairs see contracted shapes at finite c. 0 declares that toi finds the
+     * contact of the uncontracted spheres of rest radius r: the engine then uses its
+     * own exact sphere kernel and never calls toi (sphere says 0). */
+    int contracted;
+    /* Whether the contact event is frame independent: the same event whichever
+     * inertial frame the balls are given in (zmf says 1; table and sphere decide
+     * contact at one table-frame instant and say 0). Informational: read by apps. */
+    int covariant;
+    /* Whether the engine may defer this frame's root finds: the contact of a pair can
+     * come no earlier than the contact of its bounding spheres of radius r (true when
+     * contact is decided between shapes inside those spheres at one table instant:
+     * table). Not for zmf, whose contact is simultaneous in the pair's frame. */
+    int deferrable;
+    /* Optional (NULL: none). Non-NULL declares that the frame's contact is exactly the
+     * first contact of the two shapes contracted along their table-frame velocities
+     * (rc_toi_shape_of) at one table time, and that this function finds it from the
+     * shapes and relative coordinates with the same bits as toi: the engine then calls
+     * it directly on its stored states, and may prune and settle pairs with bounds of
+     * those table-frame shapes (centre-line separating axis, overlap certificate).
+     * table says rc_toi_shapes_rel. */
+    rc_toi_shapes_fn shapes;
 } rc_toi_frame;
 
 extern const rc_toi_frame rc_toi_frame_table;  /* contact of the table-frame shapes */
