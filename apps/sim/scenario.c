@@ -455,8 +455,28 @@ int scn_parse_ext(const char *text, const char *name, const scn_tables *extra,
                                        "outputs", NULL};
     memset(s, 0, sizeof *s);
     ctx c = {name, err};
-    cJSON *root = cJSON_Parse(text);
+    /* a UTF-8 byte order mark (editors and spreadsheets write one) is not JSON: skipped */
+    const char *body = strncmp(text, "\xef\xbb\xbf", 3) == 0 ? text + 3 : text;
+    const char *end = NULL;
+    cJSON *root = cJSON_ParseWithOpts(body, &end, 0);
     int rc = -1;
+    if (root && end) {
+        /* one scenario a file: text after it (a second object, a stray word) is refused,
+         * not silently dropped */
+        while (*end == ' ' || *end == '\t' || *end == '\n' || *end == '\r')
+            end++;
+        if (*end) {
+            long line = 1, col = 1;
+            for (const char *p = text; p < end; p++, col++)
+                if (*p == '\n') {
+                    line++;
+                    col = 0;
+                }
+            bad(&c, "(document)", "text after the scenario's closing brace at line %ld, "
+                "column %ld", line, col);
+            goto done;
+        }
+    }
     if (!root) {
         const char *where = cJSON_GetErrorPtr();
         long line = 1;

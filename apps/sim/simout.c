@@ -288,7 +288,9 @@ static int write_summary_json(const sim_output *o, const rc_sim *sim, const rc_s
     for (int k = 0; k < 3; k++)
         add(x, okind[k], (double)(d->overlaps_by_kind[k] - d0->overlaps_by_kind[k]));
     add(x, "total", (double)(d->overlaps - d0->overlaps));
-    add(j, "energy_error", dE);
+    /* (relative; null without energy at the start, whose change is then absolute) */
+    add(j, "energy_error", d0->energy > 0.0 ? dE : NAN);
+    add(j, "energy_change", d->energy - d0->energy);
     add(j, "momentum_error", dPrel);
     add(j, "energy", d->energy);
     add(j, "kinetic_energy", d->kinetic);
@@ -333,7 +335,10 @@ static int write_summary(sim_output *o, const rc_sim *sim, double wall, int inte
     rc_sim_diag d;
     rc_sim_diagnostics(sim, &d);
     const rc_sim_diag *d0 = &o->d0;
-    double dE = (d.energy - d0->energy) / d0->energy;
+    /* relative to the energy at the start; with none (every ball at rest) there is no
+     * scale, and the change is given as it is (absolute), never as a NaN */
+    const int erel = d0->energy > 0.0;
+    double dE = erel ? (d.energy - d0->energy) / d0->energy : d.energy - d0->energy;
     rc_vec3 dP = rc_v3_sub(rc_v3_add(d.momentum, d.wall_impulse),
                            rc_v3_add(d0->momentum, d0->wall_impulse));
     double pscale = fmax(d.momentum_scale, d0->momentum_scale);
@@ -348,8 +353,9 @@ static int write_summary(sim_output *o, const rc_sim *sim, double wall, int inte
         tau_sum += b.tau;
     }
     uint64_t coll = d.collisions - d0->collisions;
-    snprintf(o->line, sizeof o->line, "%llu collisions, energy error %.2g, momentum error %.2g%s",
-             (unsigned long long)coll, dE, dPrel, interrupted ? " (interrupted)" : "");
+    snprintf(o->line, sizeof o->line, "%llu collisions, energy error %.2g%s, momentum error %.2g%s",
+             (unsigned long long)coll, dE, erel ? "" : " (absolute: no energy at the start)",
+             dPrel, interrupted ? " (interrupted)" : "");
     if (!s->out.summary)
         return 0;
     char *path = app_path_join(s->out.dir, "summary.txt");
@@ -382,7 +388,8 @@ static int write_summary(sim_output *o, const rc_sim *sim, double wall, int inte
     if (d.group_sequential > d0->group_sequential) /* (only a law without a group solver) */
         fprintf(f, "groups one by one %llu (law %s has no group solver: order-dependent)\n",
                 (unsigned long long)(d.group_sequential - d0->group_sequential), s->law->name);
-    fprintf(f, "energy           kinetic + heat %.17g, relative change %.3g\n", d.energy, dE);
+    fprintf(f, "energy           kinetic + heat %.17g, %s change %.3g\n", d.energy,
+            erel ? "relative" : "absolute (no energy at the start)", dE);
     fprintf(f, "kinetic energy   %.17g (heat made so far %.17g)\n", d.kinetic, d.heat);
     if (!isinf(s->c))
         fprintf(f, "sum E/c^2        %.17g (start %.17g)\n", d.mass_rel, d0->mass_rel);

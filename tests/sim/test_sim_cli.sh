@@ -52,6 +52,22 @@ reject twiceinner '{"dim": 2, "t_end": 1, "generate": {"kind": "gas", "n": 4, "p
 # classical v_rms was called faster than light
 reject oneball '{"dim": 2, "t_end": 1, "generate": {"kind": "gas", "n": 1, "packing": 0.2, "v_rms": 0.1}}' 'generate.v_rms: must be 0 for a gas of one ball'
 reject hugev '{"dim": 2, "t_end": 1, "generate": {"kind": "gas", "n": 4, "packing": 0.2, "v_rms": 1e200}}' 'generate.v_rms: too large'
+# one scenario a file; a restart keeps the overlap check for spheres (c = inf)
+reject trailing "{$B, \"balls\": [$ball]} xyz" "(document): text after the scenario's closing brace at line 1, column 90"
+reject second "{$B, \"balls\": [$ball]}
+{}" "(document): text after the scenario's closing brace at line 2, column 1"
+reject restartoverlap "{$B, \"restart\": true, \"balls\": [$ball, {\"r\": 1, \"x\": [5.5, 5]}]}" 'balls[1]: overlaps another ball'
+reject checkpointnorestart "{$B, \"checkpoint\": \"final.ckpt\", \"balls\": [$ball]}" 'checkpoint: belongs to a restart file'
+reject checkpointdir "{$B, \"restart\": true, \"checkpoint\": \"../x.ckpt\", \"balls\": [$ball]}" 'checkpoint: must be a file name beside the scenario'
+
+# a byte order mark and CRLF line ends (editors, spreadsheets) are read; a table at rest
+# reports no NaN
+printf '\357\273\277{"dim": 2, "box": [10, 10], "t_end": 1,\r\n "balls": [{"r": 1, "x": [5, 5]}], "outputs": {"plots": false}}\r\n' > "$tmp/bom.json"
+if "$sim" "$tmp/bom.json" --out "$tmp/bom" > "$tmp/out" 2> "$tmp/err" && ! grep -qi nan "$tmp/out" "$tmp/bom/summary.txt" "$tmp/bom/summary.json"; then
+    ok "BOM + CRLF read; at rest: $(cat "$tmp/out")"
+else
+    ko "BOM/CRLF or NaN at rest: $(cat "$tmp/err") $(cat "$tmp/out")"
+fi
 
 # the shipped scenario files are the built-ins
 for b in rack gas; do

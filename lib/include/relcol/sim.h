@@ -81,9 +81,11 @@ typedef struct rc_sim_def {
      * (rc_sim_get_ball after rc_sim_sync), to be continued. Such a state may hold shapes
      * that overlap by the frame's own geometry — shape change after a collision, and in
      * the zmf frame shapes judged at one table time — which the engine itself produced
-     * and handles (see the overlap policy above), so the overlap check is skipped and a
-     * contracted shape may cross a wall as long as its centre is inside the box; every
-     * other check stays. Default 0: overlapping input is rejected. */
+     * and handles (see the overlap policy above), so with contracted shapes the overlap
+     * check is skipped and a contracted shape may cross a wall as long as its centre is
+     * inside the box; every other check stays, and uncontracted spheres (c = inf, the
+     * sphere frame), which no shape change moves, are checked as always. Default 0:
+     * overlapping input is rejected. */
     int restart;
 } rc_sim_def;
 
