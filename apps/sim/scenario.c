@@ -393,6 +393,10 @@ static int parse_outputs(const ctx *c, const cJSON *o, scn_scenario *s)
             return bad(c, "outputs.dir", "is empty");
         if (out->xyz_every < 0)
             return bad(c, "outputs.xyz_every", "must be >= 0 (0: no trajectory)");
+        if (out->xyz_every > 0 && (s->t_end - s->time) / out->xyz_every > SCN_MAX_FRAMES)
+            return bad(c, "outputs.xyz_every", "gives %.3g frames from %g to %g, more than %d",
+                       (s->t_end - s->time) / out->xyz_every, s->time, s->t_end,
+                       SCN_MAX_FRAMES);
         if (!(out->xyz_from <= s->time))
             return bad(c, "outputs.xyz_from", "must be <= the start time %.17g (the grid's "
                        "origin)", s->time);

@@ -12,6 +12,8 @@
 #include "relcol/relcol.h"
 
 #define SCN_MAX_SNAPSHOTS 4096
+/* Trajectory frames a run may write: bounds the output (a frame of 10^4 balls is ~1 MB) */
+#define SCN_MAX_FRAMES 100000
 
 typedef struct scn_outputs {
     char *dir;                 /* output folder */

@@ -57,6 +57,7 @@ reject trailing "{$B, \"balls\": [$ball]} xyz" "(document): text after the scena
 reject second "{$B, \"balls\": [$ball]}
 {}" "(document): text after the scenario's closing brace at line 2, column 1"
 reject restartoverlap "{$B, \"restart\": true, \"balls\": [$ball, {\"r\": 1, \"x\": [5.5, 5]}]}" 'balls[1]: overlaps another ball'
+reject frames "{$B, \"balls\": [$ball], \"outputs\": {\"xyz_every\": 1e-12}}" 'outputs.xyz_every: gives 1e+12 frames from 0 to 1, more than 100000'
 reject checkpointnorestart "{$B, \"checkpoint\": \"final.ckpt\", \"balls\": [$ball]}" 'checkpoint: belongs to a restart file'
 reject checkpointdir "{$B, \"restart\": true, \"checkpoint\": \"../x.ckpt\", \"balls\": [$ball]}" 'checkpoint: must be a file name beside the scenario'
 
@@ -174,7 +175,7 @@ grep -q "\"contacts\":[[:space:]]*$coll," "$j" && ok "summary.json: $coll contac
     || ko "summary.json's contacts differ from summary.txt's $coll"
 
 # Ctrl-C: a long run interrupted writes a restart state that reads back, and exits 130
-sed 's/"t_end": 40/"t_end": 1e9/; s/"snapshots": \[10, 20\], /"snapshots": {"every": 1e8}, /' "$tmp/run.json" > "$tmp/long.json"
+sed 's/"t_end": 40/"t_end": 1e9/; s/"snapshots": \[10, 20\], /"snapshots": {"every": 1e8}, /; s/"xyz_every": 5/"xyz_every": 1e7/; s/"ball": 0.9/"ball": 1/' "$tmp/run.json" > "$tmp/long.json"
 "$sim" "$tmp/long.json" --out "$tmp/long" > /dev/null 2> "$tmp/err" &
 pid=$!
 sleep 1
