@@ -217,6 +217,7 @@ static int write_script(const char *path, const options *o, char *err)
 
 int main(int argc, char **argv)
 {
+    app_init();
     options o;
     memset(&o, 0, sizeof o);
     int st = parse_options(argc, argv, &o);

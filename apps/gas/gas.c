@@ -617,6 +617,7 @@ static int write_script(const char *path, const options *o, int nspec,
 
 int main(int argc, char **argv)
 {
+    app_init();
     options o;
     memset(&o, 0, sizeof o);
     int st = parse_options(argc, argv, &o);
@@ -624,7 +625,6 @@ int main(int argc, char **argv)
         return app_help(usage);
     if (st != 0)
         return st;
-    gsl_set_error_handler_off();
 
     char err[APP_ERR_LEN];
     int rc = 1;

@@ -337,7 +337,7 @@ done:
 
 int main(int argc, char **argv)
 {
-    gsl_set_error_handler_off();
+    app_init();
 #ifdef RELCOL_HAVE_MPI
     MPI_Init(&argc, &argv);
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
