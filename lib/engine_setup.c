@@ -130,7 +130,7 @@ int rc_sim_create(const rc_sim_def *def, rc_sim **out)
     s->defer = s->table && defer_wanted();
     s->wall_contracted = def->frame && def->frame->wall_contracted && s->inv_c2 > 0.0;
     if (s->narrow) {
-        if (!def->frame->toi || !(s->ws = rc_toi_workspace_alloc())) {
+        if (!def->frame->toi || rc_toi_workspace_create(&s->ws) != RC_OK) {
             free(s);
             return def->frame->toi ? RC_ENOMEM : RC_EINVAL;
         }

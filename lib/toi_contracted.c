@@ -48,9 +48,12 @@ struct rc_toi_workspace {
     int unused;
 };
 
-rc_toi_workspace *rc_toi_workspace_alloc(void)
+int rc_toi_workspace_create(rc_toi_workspace **out)
 {
-    return calloc(1, sizeof(rc_toi_workspace));
+    if (!out)
+        return RC_EINVAL;
+    *out = calloc(1, sizeof(rc_toi_workspace));
+    return *out ? RC_OK : RC_ENOMEM;
 }
 
 void rc_toi_workspace_free(rc_toi_workspace **ws)

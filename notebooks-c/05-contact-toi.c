@@ -390,8 +390,7 @@ it by `3·10⁻²` and `7·10⁻³`.
 int main(int argc, char **argv)
 {
     nb_init(argc, argv);
-    ws = rc_toi_workspace_alloc();
-    if (!ws)
+    if (rc_toi_workspace_create(&ws) != RC_OK)
         return 2;
     wall();
     headon();

@@ -234,7 +234,8 @@ int main(int argc, char **argv)
     double *th = malloc(NB * N * NF * sizeof *th);
     double *xs = malloc(N * sizeof *xs), *ys = malloc(N * sizeof *ys);
     char *csv = app_path_join(o.out, "frames.csv"), *gp = app_path_join(o.out, "frames.gp");
-    rc_toi_workspace *ws = rc_toi_workspace_alloc();
+    rc_toi_workspace *ws = NULL;
+    (void)rc_toi_workspace_create(&ws); /* NULL on failure: checked below */
     if (!cs || !d || !th || !xs || !ys || !csv || !gp || !ws) {
         fprintf(stderr, "%s: out of memory\n", prog);
         goto out;

@@ -83,8 +83,8 @@ static int eval_toi(const sweep_setup *s, double k, double *out, char *err)
     }
     rc_toi_params prm = rc_toi_params_default();
     prm.inv_c2 = k;
-    rc_toi_workspace *ws = rc_toi_workspace_alloc();
-    if (!ws) {
+    rc_toi_workspace *ws = NULL;
+    if (rc_toi_workspace_create(&ws) != RC_OK) {
         app_errf(err, "out of memory");
         return -1;
     }

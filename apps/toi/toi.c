@@ -244,8 +244,7 @@ int main(int argc, char **argv)
         goto out;
     }
 
-    ws = rc_toi_workspace_alloc();
-    if (!ws) {
+    if (rc_toi_workspace_create(&ws) != RC_OK) {
         fail("out of memory");
         rc = 1;
         goto out;

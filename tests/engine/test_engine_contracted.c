@@ -71,8 +71,8 @@ static void test_parting_bounding_spheres(void)
     };
     rc_toi_params prm = rc_toi_params_default();
     prm.inv_c2 = 1.0;
-    rc_toi_workspace *ws = rc_toi_workspace_alloc();
-    ENSURE(ws != NULL);
+    rc_toi_workspace *ws = NULL;
+    ENSURE(rc_toi_workspace_create(&ws) == RC_OK);
     if (!ws)
         return;
     for (size_t q = 0; q < sizeof cs / sizeof cs[0]; q++) {

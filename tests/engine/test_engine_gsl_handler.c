@@ -247,8 +247,8 @@ static void test_laws_bad(void)
 /* Every frame and the walls on bad and extreme balls. */
 static void test_toi_bad(void)
 {
-    rc_toi_workspace *ws = rc_toi_workspace_alloc();
-    ENSURE(ws != NULL);
+    rc_toi_workspace *ws = NULL;
+    ENSURE(rc_toi_workspace_create(&ws) == RC_OK);
     const double inv_c2s[] = {0.0, 1.0, 1e300, -1.0, NAN};
     const rc_toi_ball as[] = {{rc_v3(0, 0, 0), 1.0, 1.0, rc_v3(1, 0, 0)},
                               {rc_v3(0, 0, 0), 1.0, 1.0, rc_v3(1e150, 1e150, 0)},

@@ -40,11 +40,12 @@ static int hard_zmf(double k, double eps, const rc_particle p[2], const rc_vec3 
     tp.inv_c2 = k;
     const rc_toi_ball a = {x[0], soft_r[0], p[0].m, p[0].p};
     const rc_toi_ball b = {x[1], soft_r[1], p[1].m, p[1].p};
-    rc_toi_workspace *ws = rc_toi_workspace_alloc();
-    if (!ws)
-        return RC_ENOMEM;
+    rc_toi_workspace *ws = NULL;
+    int st = rc_toi_workspace_create(&ws);
+    if (st != RC_OK)
+        return st;
     rc_toi_contact c;
-    int st = rc_toi(&rc_toi_frame_zmf, &tp, &a, &b, ws, &c);
+    st = rc_toi(&rc_toi_frame_zmf, &tp, &a, &b, ws, &c);
     rc_toi_workspace_free(&ws);
     if (st != RC_OK)
         return st;

@@ -82,7 +82,8 @@ int main(void)
 {
     (void)rc_test_checks; /* only the generator of rc_test.h is used here */
     (void)rc_test_failures;
-    rc_toi_workspace *ws = rc_toi_workspace_alloc();
+    rc_toi_workspace *ws = NULL;
+    (void)rc_toi_workspace_create(&ws); /* NULL on failure: checked below */
     rc_toi_ball *a = malloc(NCASE * sizeof *a), *b = malloc(NCASE * sizeof *b);
     if (!ws || !a || !b)
         return 1;

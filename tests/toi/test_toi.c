@@ -492,8 +492,7 @@ static void test_validation(void)
 
 int main(void)
 {
-    ws = rc_toi_workspace_alloc();
-    if (!ws)
+    if (rc_toi_workspace_create(&ws) != RC_OK)
         return 1;
     RUN_TEST(test_head_on);
     RUN_TEST(test_wall);

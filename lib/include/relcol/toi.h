@@ -83,7 +83,8 @@ typedef struct rc_toi_contact {
 /* Workspace of the contracted root finder (kept for the API; the hand-written Brent
  * needs no state). */
 typedef struct rc_toi_workspace rc_toi_workspace;
-rc_toi_workspace *rc_toi_workspace_alloc(void); /* NULL when out of memory */
+/* *out: a new workspace (RC_OK), or NULL with RC_ENOMEM; RC_EINVAL if out is NULL. */
+int rc_toi_workspace_create(rc_toi_workspace **out);
 void rc_toi_workspace_free(rc_toi_workspace **ws); /* frees and sets *ws = NULL */
 
 /* ---- building blocks (relative coordinates: ball 1 minus ball 0) ---- */
