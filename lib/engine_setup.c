@@ -26,6 +26,7 @@ rc_sim_def rc_sim_def_default(void)
     d.law = &rc_law_zmf;
     d.frame = NULL;
     d.toi = rc_toi_params_default();
+    d.toi.c = NAN; /* the engine's c */
     d.sim_tol = 1e-9;
     d.approach_tol = 1e-10;
     d.overlap_tol = 1e-9;
@@ -60,6 +61,9 @@ static int check_def(const rc_sim_def *d)
                                           t->lambda_tol > 0.0 && t->max_iter > 0))
             return RC_EINVAL;
     }
+    /* one speed of light: the contact solver's copy is the def's (NAN) or equal to it */
+    if (!isnan(d->toi.c) && d->toi.c != d->c)
+        return RC_EINVAL;
     double k;
     return rc_inv_c2(d->c, &k);
 }
@@ -121,9 +125,9 @@ int rc_sim_create(const rc_sim_def *def, rc_sim **out)
     s->L[1] = def->box.y;
     s->L[2] = def->box.z;
     s->prm = rc_collision_params_default();
-    s->prm.inv_c2 = s->inv_c2;
+    s->prm.c = def->c;
     s->toi = def->toi;
-    s->toi.inv_c2 = s->inv_c2;
+    s->toi.c = def->c;
     s->simd = choose_simd();
     s->narrow = def->frame && strcmp(def->frame->name, "sphere") != 0;
     s->table = def->frame == &rc_toi_frame_table;

@@ -36,7 +36,7 @@ static rc_toi_ball ball(rc_vec3 x, double r, rc_vec3 v, double k)
 static rc_toi_params params(double k)
 {
     rc_toi_params prm = rc_toi_params_default();
-    prm.inv_c2 = k;
+    prm.c = (k > 0.0 ? 1.0 / sqrt(k) : INFINITY) /* the c of 1/c^2 = k */;
     return prm;
 }
 

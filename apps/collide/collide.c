@@ -180,7 +180,7 @@ int main(int argc, char **argv)
     rc_particle ball[2];
     rc_vec3 n = rc_v3(1.0, 0.0, 0.0);
     rc_collision_params prm = rc_collision_params_default();
-    rc_inv_c2(o.c, &prm.inv_c2);
+    prm.c = o.c;
     prm.eps = o.eps;
 
     if (o.n_normal > dim) {
@@ -254,7 +254,7 @@ int main(int argc, char **argv)
     }
 
     FILE *out = stdout;
-    const double k = prm.inv_c2;
+    const double k = rc_inv_c2_of(prm.c);
     double E[2];
     rc_vec3 v[2];
     for (int i = 0; i < 2; i++) {

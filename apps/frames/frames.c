@@ -129,8 +129,8 @@ static int run_one(const rc_toi_frame *fr, double c, double bR, double eps,
                    rc_toi_workspace *ws, outcome *res, char *err)
 {
     rc_toi_params prm = rc_toi_params_default();
-    rc_inv_c2(c, &prm.inv_c2);
-    const double k = prm.inv_c2;
+    prm.c = c;
+    const double k = rc_inv_c2_of(c);
     rc_toi_ball a = {rc_v3(-6.0, 2.0 * bR, 0.0), 1.0, 1.0, rc_v3(0, 0, 0)};
     rc_toi_ball b = {rc_v3(0.0, 0.0, 0.0), 1.0, 1.0, rc_v3(0, 0, 0)};
     if (rc_momentum_from_velocity(1.0, rc_v3(1.0, 0.0, 0.0), k, &a.p) != RC_OK) {
@@ -145,7 +145,7 @@ static int run_one(const rc_toi_frame *fr, double c, double bR, double eps,
     }
     rc_particle in[2] = {{a.m, a.p}, {b.m, b.p}}, outp[2] = {in[0], in[1]};
     rc_collision_params cp = rc_collision_params_default();
-    cp.inv_c2 = k;
+    cp.c = c;
     cp.eps = eps;
     st = rc_collide(&rc_law_zmf, &cp, &outp[0], &outp[1], con.n);
     if (st != RC_OK) {

@@ -207,7 +207,7 @@ int main(int argc, char **argv)
         ball[i].p = pt[i].p;
     }
     rc_toi_params prm = rc_toi_params_default();
-    rc_inv_c2(o.c, &prm.inv_c2);
+    prm.c = o.c;
 
     if (wall) {
         /* the first n_wall/2 axes are walled; the others are open */

@@ -196,6 +196,21 @@ static void test_engine_bad_input(void)
     d.c = NAN;
     rc_sim *s = NULL;
     ENSURE(rc_sim_create(&d, &s) != RC_OK);
+    /* one speed of light: the contact solver's copy is the engine's (NAN) or equal */
+    d = rc_sim_def_default();
+    d.c = 2.0;
+    d.frame = &rc_toi_frame_table;
+    ENSURE(isnan(d.toi.c));
+    ENSURE(rc_sim_create(&d, &s) == RC_OK);
+    rc_sim_free(&s);
+    d.toi.c = 2.0;
+    ENSURE(rc_sim_create(&d, &s) == RC_OK);
+    rc_sim_free(&s);
+    d.toi.c = 3.0;
+    ENSURE(rc_sim_create(&d, &s) == RC_EINVAL);
+    d.toi.c = INFINITY;
+    ENSURE(rc_sim_create(&d, &s) == RC_EINVAL);
+    ENSURE(s == NULL);
     d = rc_sim_def_default();
     d.dim = 7;
     ENSURE(rc_sim_create(&d, &s) != RC_OK);
@@ -224,7 +239,8 @@ static void test_engine_bad_input(void)
 /* Every law and the wall law on bad and extreme particles. */
 static void test_laws_bad(void)
 {
-    const double inv_c2s[] = {0.0, 1.0, 1e300, -1.0, NAN, INFINITY};
+    const double cs[] = {INFINITY, 1.0, 1e-150, -1.0, NAN, 0.0};
+    const double ks[] = {0.0, 1.0, 1e300, -1.0, NAN, INFINITY}; /* the wall law's 1/c^2 */
     const rc_particle as[] = {{1.0, rc_v3(1, 0, 0)},   {NAN, rc_v3(1, 0, 0)},
                               {-1.0, rc_v3(1, 0, 0)},  {1.0, rc_v3(1e300, 0, 0)},
                               {1e-300, rc_v3(1, 1, 1)}, {1.0, rc_v3(INFINITY, 0, 0)}};
@@ -234,12 +250,12 @@ static void test_laws_bad(void)
             for (int ia = 0; ia < 6; ia++)
                 for (int in = 0; in < 4; in++) {
                     rc_collision_params prm = rc_collision_params_default();
-                    prm.inv_c2 = inv_c2s[ic];
+                    prm.c = cs[ic];
                     prm.eps = in == 3 ? 2.0 : 0.5;
                     rc_particle a = as[ia], b = {1.0, rc_v3(-1, 0, 0)};
                     (void)rc_collide(rc_laws[l], &prm, &a, &b, ns[in]);
                     rc_particle w = as[ia];
-                    (void)rc_collide_wall(inv_c2s[ic], prm.eps, &w, ns[in]);
+                    (void)rc_collide_wall(ks[ic], prm.eps, &w, ns[in]);
                 }
     ENSURE(1);
 }
@@ -249,7 +265,7 @@ static void test_toi_bad(void)
 {
     rc_toi_workspace *ws = NULL;
     ENSURE(rc_toi_workspace_create(&ws) == RC_OK);
-    const double inv_c2s[] = {0.0, 1.0, 1e300, -1.0, NAN};
+    const double cs[] = {INFINITY, 1.0, 1e-150, -1.0, NAN};
     const rc_toi_ball as[] = {{rc_v3(0, 0, 0), 1.0, 1.0, rc_v3(1, 0, 0)},
                               {rc_v3(0, 0, 0), 1.0, 1.0, rc_v3(1e150, 1e150, 0)},
                               {rc_v3(0, 0, 0), 0.0, 1.0, rc_v3(1, 0, 0)},
@@ -263,7 +279,7 @@ static void test_toi_bad(void)
             for (int ia = 0; ia < 5; ia++)
                 for (int ib = 0; ib < 3; ib++) {
                     rc_toi_params prm = rc_toi_params_default();
-                    prm.inv_c2 = inv_c2s[ic];
+                    prm.c = cs[ic];
                     rc_toi_contact out;
                     (void)rc_toi(rc_toi_frames[f], &prm, &as[ia], &bs[ib], ws, &out);
                     double t;
@@ -288,7 +304,7 @@ static void test_soft_bad(void)
             case 1: prm.rtol = -1.0; break;
             case 2: prm.stiffness = NAN; break;
             case 3: prm.max_steps = 5; prm.stiffness = 1e12; break;
-            case 4: prm.inv_c2 = 1.0 / (1.001 * 1.001); prm.shape = RC_SOFT_CONTRACTED; break;
+            case 4: prm.c = 1.001; prm.shape = RC_SOFT_CONTRACTED; break;
             case 5: prm.t_max = -1.0; break;
             default: prm.eps = 0.0; break;
             }

@@ -51,8 +51,9 @@ typedef struct rc_sim_def {
      * spheres (the engine's own inlined exact kernel); any other frame (table, zmf, or a
      * user's) is called as the narrow phase after the exact bounding-sphere test says
      * the balls can touch first, and gives the contact normal. Walls see the contracted
-     * support r sqrt(1 - (v.n)^2/c^2) when frame->wall_contracted. toi.inv_c2 is set by
-     * the engine; the other fields are the frame's tolerances. */
+     * support r sqrt(1 - (v.n)^2/c^2) when frame->wall_contracted. toi holds the frame's
+     * tolerances; its c is NAN (rc_sim_def_default: the engine's c) or must equal c
+     * (RC_EINVAL otherwise). */
     const rc_toi_frame *frame;
     rc_toi_params toi;
     /* Simultaneous contacts: at an event, every other contact whose surface gap is at
