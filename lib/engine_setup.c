@@ -32,6 +32,8 @@ rc_sim_def rc_sim_def_default(void)
     d.overlap_tol = 1e-9;
     d.cell_size = 0.0;
     d.density = 1.0;
+    d.simd = RC_SIM_SIMD_AUTO;
+    d.defer = RC_SIM_DEFER_AUTO;
     return d;
 }
 
@@ -54,6 +56,9 @@ static int check_def(const rc_sim_def *d)
         return RC_EINVAL;
     if (!d->law || !d->law->collide)
         return RC_EINVAL;
+    if (!(d->simd >= RC_SIM_SIMD_AUTO && d->simd <= RC_SIM_SIMD_SCALAR) ||
+        !(d->defer >= RC_SIM_DEFER_AUTO && d->defer <= RC_SIM_DEFER_OFF))
+        return RC_EINVAL;
     if (d->frame) { /* the engine calls frame->toi directly: validate its settings once */
         const rc_toi_params *t = &d->toi;
         if (!d->frame->toi || !isfinite(t->touch_tol) || !isfinite(t->graze_tol) ||
@@ -69,10 +74,8 @@ static int check_def(const rc_sim_def *d)
 }
 
 /* The widest lanes this CPU has for the neighbour test (AVX-512F with VL for the walk's
- * compress, else AVX2), unless RELCOL_SIMD asks for narrower ones: avx2, or scalar for
- * the scalar loop (the paths give the same bits; the variable exists to show it and to
- * time them). */
-static int choose_simd(void)
+ * compress, else AVX2), up to those the def asks for (the paths give the same bits). */
+static int choose_simd(rc_sim_simd want)
 {
     int best = ENG_SIMD_NONE;
 #ifdef ENG_HAVE_AVX2
@@ -84,10 +87,9 @@ static int choose_simd(void)
         __builtin_cpu_supports("avx512vl"))
         best = ENG_SIMD_AVX512;
 #endif
-    const char *want = getenv("RELCOL_SIMD");
-    if (want && !strcmp(want, "scalar"))
+    if (want == RC_SIM_SIMD_SCALAR)
         return ENG_SIMD_NONE;
-    if (want && !strcmp(want, "avx2") && best > ENG_SIMD_AVX2)
+    if (want == RC_SIM_SIMD_AVX2 && best > ENG_SIMD_AVX2)
         return ENG_SIMD_AVX2;
     return best;
 }
@@ -96,14 +98,10 @@ static int choose_simd(void)
  * times from below: the table frame, whose contact is simultaneous in the table frame.
  * (The zmf frame's is simultaneous in the pair's own frame: a pair can overlap there
  * while its bounding spheres are apart here, and the overlap policy resolves it at the
- * time of the prediction, which deferring would move.) RELCOL_DEFER=0 in the
- * environment asks the frame at once; the bits are the same (test_engine_defer), the
- * variable exists to show it and to time the two. */
-static int defer_wanted(void)
-{
-    const char *want = getenv("RELCOL_DEFER");
-    return !(want && !strcmp(want, "0"));
-}
+ * time of the prediction, which deferring would move.) RC_SIM_DEFER_OFF asks the frame
+ * at once; the bits are the same (test_engine_defer), the choice exists to show it and
+ * to time the two. */
+static int defer_wanted(rc_sim_defer want) { return want != RC_SIM_DEFER_OFF; }
 
 int rc_sim_create(const rc_sim_def *def, rc_sim **out)
 {
@@ -128,10 +126,14 @@ int rc_sim_create(const rc_sim_def *def, rc_sim **out)
     s->prm.c = def->c;
     s->toi = def->toi;
     s->toi.c = def->c;
-    s->simd = choose_simd();
+    s->simd = choose_simd(def->simd);
     s->narrow = def->frame && strcmp(def->frame->name, "sphere") != 0;
     s->table = def->frame == &rc_toi_frame_table;
-    s->defer = s->table && defer_wanted();
+    s->defer = s->table && defer_wanted(def->defer);
+    if (def->defer == RC_SIM_DEFER_ON && !s->defer) {
+        free(s);
+        return RC_EINVAL;
+    }
     s->wall_contracted = def->frame && def->frame->wall_contracted && s->inv_c2 > 0.0;
     if (s->narrow) {
         if (!def->frame->toi || rc_toi_workspace_create(&s->ws) != RC_OK) {
