@@ -245,6 +245,7 @@ static void test_laws_bad(void)
                               {-1.0, rc_v3(1, 0, 0)},  {1.0, rc_v3(1e300, 0, 0)},
                               {1e-300, rc_v3(1, 1, 1)}, {1.0, rc_v3(INFINITY, 0, 0)}};
     const rc_vec3 ns[] = {rc_v3(1, 0, 0), rc_v3(0, 0, 0), rc_v3(NAN, 0, 0), rc_v3(1e-300, 0, 0)};
+    int ok = 0, rejected = 0; /* the inputs do reach the laws, good and bad */
     for (int l = 0; rc_laws[l]; l++)
         for (int ic = 0; ic < 6; ic++)
             for (int ia = 0; ia < 6; ia++)
@@ -253,11 +254,13 @@ static void test_laws_bad(void)
                     prm.c = cs[ic];
                     prm.eps = in == 3 ? 2.0 : 0.5;
                     rc_particle a = as[ia], b = {1.0, rc_v3(-1, 0, 0)};
-                    (void)rc_collide(rc_laws[l], &prm, &a, &b, ns[in]);
+                    const int st = rc_collide(rc_laws[l], &prm, &a, &b, ns[in]);
+                    ok += st == RC_OK;
+                    rejected += st < 0;
                     rc_particle w = as[ia];
                     (void)rc_collide_wall(ks[ic], prm.eps, &w, ns[in]);
                 }
-    ENSURE(1);
+    ENSURE_MSG(ok > 0 && rejected > 0, "%d collided, %d rejected", ok, rejected);
 }
 
 /* Every frame and the walls on bad and extreme balls. */
@@ -266,6 +269,7 @@ static void test_toi_bad(void)
     rc_toi_workspace *ws = NULL;
     ENSURE(rc_toi_workspace_create(&ws) == RC_OK);
     const double cs[] = {INFINITY, 1.0, 1e-150, -1.0, NAN};
+    int ok = 0, rejected = 0;
     const rc_toi_ball as[] = {{rc_v3(0, 0, 0), 1.0, 1.0, rc_v3(1, 0, 0)},
                               {rc_v3(0, 0, 0), 1.0, 1.0, rc_v3(1e150, 1e150, 0)},
                               {rc_v3(0, 0, 0), 0.0, 1.0, rc_v3(1, 0, 0)},
@@ -281,13 +285,16 @@ static void test_toi_bad(void)
                     rc_toi_params prm = rc_toi_params_default();
                     prm.c = cs[ic];
                     rc_toi_contact out;
-                    (void)rc_toi(rc_toi_frames[f], &prm, &as[ia], &bs[ib], ws, &out);
+                    const int st = rc_toi(rc_toi_frames[f], &prm, &as[ia], &bs[ib], ws, &out);
+                    ok += st == RC_OK;
+                    rejected += st < 0;
                     double t;
                     rc_vec3 x;
                     (void)rc_toi_wall(&prm, 1, &as[ia], rc_v3(1, 0, 0), 10.0, &t, &x);
                 }
     rc_toi_workspace_free(&ws);
     ENSURE(ws == NULL);
+    ENSURE_MSG(ok > 0 && rejected > 0, "%d contacts, %d rejected", ok, rejected);
 }
 
 /* Both GSL steppers (and CVODE) with bad parameters, and with extreme ones that must end
@@ -297,7 +304,7 @@ static void test_soft_bad(void)
 {
     const double r[2] = {0.5, 0.5};
     for (int k = 0; rc_soft_steppers[k]; k++)
-        for (int ip = 0; ip < 7; ip++) {
+        for (int ip = 0; ip < 8; ip++) {
             rc_soft_params prm = rc_soft_params_default();
             switch (ip) {
             case 0: prm.rtol = 0.0; break;
@@ -306,7 +313,8 @@ static void test_soft_bad(void)
             case 3: prm.max_steps = 5; prm.stiffness = 1e12; break;
             case 4: prm.c = 1.001; prm.shape = RC_SOFT_CONTRACTED; break;
             case 5: prm.t_max = -1.0; break;
-            default: prm.eps = 0.0; break;
+            case 6: prm.eps = 0.0; break;
+            default: prm.c = 2.0; break; /* valid: the steppers run */
             }
             rc_particle b[2] = {{1.0, rc_v3(1, 0.1, 0)}, {1.0, rc_v3(-1, 0, 0)}};
             if (ip == 4) {
@@ -315,9 +323,13 @@ static void test_soft_bad(void)
             }
             rc_vec3 x[2] = {rc_v3(0, 0, 0), rc_v3(1.5, 0, 0)};
             rc_soft_result res;
-            (void)rc_soft_collide(rc_soft_steppers[k], &prm, 2, b, x, r, NULL, &res);
+            const int st = rc_soft_collide(rc_soft_steppers[k], &prm, 2, b, x, r, NULL, &res);
+            if (ip == 7)
+                ENSURE_MSG(st == RC_OK, "%s: %d", rc_soft_steppers[k]->name, st);
+            else if (ip != 3 && ip != 4) /* invalid parameters */
+                ENSURE_MSG(st == RC_EINVAL || st == RC_ENONFINITE || st == RC_ERESTITUTION,
+                           "%s, case %d: %d", rc_soft_steppers[k]->name, ip, st);
         }
-    ENSURE(1);
 }
 
 int main(void)
