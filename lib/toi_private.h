@@ -54,8 +54,8 @@ static inline rc_vec3 rc_toi_support_point_(const rc_toi_shape *s, rc_vec3 n, do
     return rc_v3_scale(s->r * s->r / h, rc_shape_form_mul_(s->g2, s->beta, n));
 }
 
-/* The matrix P of a shape (shape_math.h), lengths in units of r / s->r: r = s->r unless
- * the caller rescales. */
+/* The matrix P of a shape (shape_math.h) given its radius r in the caller's length unit
+ * (s->r itself, or s->r scaled by the caller to keep the products in range). */
 static inline rc_sym3 rc_toi_shape_matrix_(const rc_toi_shape *s, double r)
 {
     return rc_shape_matrix_(r * r, s->g2, s->beta);
