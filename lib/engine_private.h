@@ -175,8 +175,8 @@ typedef struct eng_cand {
 } eng_cand;
 
 /* Lanes of the neighbour test (engine_pairs.h) and of the cells' walk (engine_walk.h):
- * chosen once per engine from the CPU, narrower with RELCOL_SIMD=avx2 or scalar in the
- * environment (to compare the paths: same bits). */
+ * chosen once per engine from the CPU, narrower if rc_sim_def.simd asks (to compare the
+ * paths: same bits). */
 enum { ENG_SIMD_NONE = 0, ENG_SIMD_AVX2 = 2, ENG_SIMD_AVX512 = 3 };
 
 struct rc_sim {

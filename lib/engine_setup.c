@@ -26,11 +26,14 @@ rc_sim_def rc_sim_def_default(void)
     d.law = &rc_law_zmf;
     d.frame = NULL;
     d.toi = rc_toi_params_default();
+    d.toi.c = NAN; /* the engine's c */
     d.sim_tol = 1e-9;
     d.approach_tol = 1e-10;
     d.overlap_tol = 1e-9;
     d.cell_size = 0.0;
     d.density = 1.0;
+    d.simd = RC_SIM_SIMD_AUTO;
+    d.defer = RC_SIM_DEFER_AUTO;
     return d;
 }
 
@@ -53,6 +56,9 @@ static int check_def(const rc_sim_def *d)
         return RC_EINVAL;
     if (!d->law || !d->law->collide)
         return RC_EINVAL;
+    if (!(d->simd >= RC_SIM_SIMD_AUTO && d->simd <= RC_SIM_SIMD_SCALAR) ||
+        !(d->defer >= RC_SIM_DEFER_AUTO && d->defer <= RC_SIM_DEFER_OFF))
+        return RC_EINVAL;
     if (d->frame) { /* the engine calls frame->toi directly: validate its settings once */
         const rc_toi_params *t = &d->toi;
         if (!d->frame->toi || !isfinite(t->touch_tol) || !isfinite(t->graze_tol) ||
@@ -60,15 +66,16 @@ static int check_def(const rc_sim_def *d)
                                           t->lambda_tol > 0.0 && t->max_iter > 0))
             return RC_EINVAL;
     }
+    /* one speed of light: the contact solver's copy is the def's (NAN) or equal to it */
+    if (!isnan(d->toi.c) && d->toi.c != d->c)
+        return RC_EINVAL;
     double k;
     return rc_inv_c2(d->c, &k);
 }
 
 /* The widest lanes this CPU has for the neighbour test (AVX-512F with VL for the walk's
- * compress, else AVX2), unless RELCOL_SIMD asks for narrower ones: avx2, or scalar for
- * the scalar loop (the paths give the same bits; the variable exists to show it and to
- * time them). */
-static int choose_simd(void)
+ * compress, else AVX2), up to those the def asks for (the paths give the same bits). */
+static int choose_simd(rc_sim_simd want)
 {
     int best = ENG_SIMD_NONE;
 #ifdef ENG_HAVE_AVX2
@@ -80,26 +87,21 @@ static int choose_simd(void)
         __builtin_cpu_supports("avx512vl"))
         best = ENG_SIMD_AVX512;
 #endif
-    const char *want = getenv("RELCOL_SIMD");
-    if (want && !strcmp(want, "scalar"))
+    if (want == RC_SIM_SIMD_SCALAR)
         return ENG_SIMD_NONE;
-    if (want && !strcmp(want, "avx2") && best > ENG_SIMD_AVX2)
+    if (want == RC_SIM_SIMD_AVX2 && best > ENG_SIMD_AVX2)
         return ENG_SIMD_AVX2;
     return best;
 }
 
 /* Defer the frame's root finds (eng_defer) where the broad phase bounds its contact
- * times from below: frames that declare it (rc_toi_frame.deferrable; the table frame,
+ * times from below: frames that declare it (rc_toi_frame.deferrable: the table frame,
  * whose contact is simultaneous in the table frame. The zmf frame's is simultaneous in
  * the pair's own frame: a pair can overlap there while its bounding spheres are apart
  * here, and the overlap policy resolves it at the time of the prediction, which
- * deferring would move). RELCOL_DEFER=0 in the environment asks the frame at once; the bits are the same (test_engine_defer), the
- * variable exists to show it and to time the two. */
-static int defer_wanted(void)
-{
-    const char *want = getenv("RELCOL_DEFER");
-    return !(want && !strcmp(want, "0"));
-}
+ * deferring would move). RC_SIM_DEFER_OFF asks the frame at once; the bits are the same
+ * (test_engine_defer), the choice exists to show it and to time the two. */
+static int defer_wanted(rc_sim_defer want) { return want != RC_SIM_DEFER_OFF; }
 
 int rc_sim_create(const rc_sim_def *def, rc_sim **out)
 {
@@ -121,18 +123,22 @@ int rc_sim_create(const rc_sim_def *def, rc_sim **out)
     s->L[1] = def->box.y;
     s->L[2] = def->box.z;
     s->prm = rc_collision_params_default();
-    s->prm.inv_c2 = s->inv_c2;
+    s->prm.c = def->c;
     s->toi = def->toi;
-    s->toi.inv_c2 = s->inv_c2;
-    s->simd = choose_simd();
+    s->toi.c = def->c;
+    s->simd = choose_simd(def->simd);
     /* the frame's declared properties choose the paths (relcol/toi.h) */
     s->narrow = def->frame && def->frame->contracted;
     s->table = s->narrow && def->frame->shapes;
     s->shapes = s->table ? def->frame->shapes : NULL;
-    s->defer = s->narrow && def->frame->deferrable && defer_wanted();
+    s->defer = s->narrow && def->frame->deferrable && defer_wanted(def->defer);
+    if (def->defer == RC_SIM_DEFER_ON && !s->defer) {
+        free(s);
+        return RC_EINVAL;
+    }
     s->wall_contracted = def->frame && def->frame->wall_contracted && s->inv_c2 > 0.0;
     if (s->narrow) {
-        if (!def->frame->toi || !(s->ws = rc_toi_workspace_alloc())) {
+        if (!def->frame->toi || rc_toi_workspace_create(&s->ws) != RC_OK) {
             free(s);
             return def->frame->toi ? RC_ENOMEM : RC_EINVAL;
         }

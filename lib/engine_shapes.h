@@ -11,6 +11,7 @@
 
 #include "engine_pairs.h"
 #include "engine_private.h"
+#include "shape_math.h"
 #include "toi_private.h"
 
 /* A ball's table-frame shape (relcol/toi.h's, r, g = 1/gamma, beta = v/c), from its
@@ -104,7 +105,7 @@ static inline pw_shape pw_shape_of(const rc_sim *s, const eng_ball *b, double sc
  * a sum of non-negative terms (no cancellation for flat shapes) */
 static inline double pw_quad_P(const pw_shape *q, rc_vec3 y)
 {
-    return q->r2w * (rc_v3_norm2(y) + rc_v3_norm2(rc_v3_cross(q->a, y)));
+    return q->r2w * rc_shape_form_(1.0, q->a, y, rc_v3_norm2(y));
 }
 
 /* x^T P^-1 x = (|x|^2 + (a.x)^2) / r^2: < 1 inside the shape */
@@ -117,8 +118,7 @@ static inline double pw_quad_Q(const pw_shape *q, rc_vec3 x)
 static inline rc_vec3 pw_mul_P(const pw_shape *q, rc_vec3 y)
 {
     /* r^2 w ((1 + a^2) y - (a.y) a) */
-    const double s2 = 1.0 + rc_v3_norm2(q->a);
-    return rc_v3_scale(q->r2w, rc_v3_axpy(rc_v3_scale(s2, y), -rc_v3_dot(q->a, y), q->a));
+    return rc_v3_scale(q->r2w, rc_shape_form_mul_(1.0, q->a, y));
 }
 
 /* A parting pair that the centre line left open (parting_settled), settled from the
@@ -151,37 +151,17 @@ static int pw_certify(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, r
     const pw_shape q0 = pw_shape_of(s, bi, sc), q1 = pw_shape_of(s, bk, sc);
     const double d = sqrt(d2);
     const double inside = 1.0 - 2.0 * PW_MARGIN;
-    /* the matrices P_i, P_k: xx yy zz xy xz yz */
-    double P0[6], P1[6];
-    {
-        const pw_shape *qs[2] = {&q0, &q1};
-        double *Ps[2] = {P0, P1};
-        for (int j = 0; j < 2; j++) {
-            const rc_vec3 a = qs[j]->a;
-            const double f = qs[j]->r2w;
-            Ps[j][0] = f * (1.0 + a.y * a.y + a.z * a.z);
-            Ps[j][1] = f * (1.0 + a.x * a.x + a.z * a.z);
-            Ps[j][2] = f * (1.0 + a.x * a.x + a.y * a.y);
-            Ps[j][3] = -f * a.x * a.y;
-            Ps[j][4] = -f * a.x * a.z;
-            Ps[j][5] = -f * a.y * a.z;
-        }
-    }
+    const rc_sym3 P0 = rc_shape_matrix_(q0.r2w, 1.0, q0.a);
+    const rc_sym3 P1 = rc_shape_matrix_(q1.r2w, 1.0, q1.a);
     for (int it = 0; it < PW_STEPS; it++) {
         const double l1 = 1.0 - lam;
-        const double cxx = l1 * P0[0] + lam * P1[0], cyy = l1 * P0[1] + lam * P1[1];
-        const double czz = l1 * P0[2] + lam * P1[2], cxy = l1 * P0[3] + lam * P1[3];
-        const double cxz = l1 * P0[4] + lam * P1[4], cyz = l1 * P0[5] + lam * P1[5];
-        const double axx = cyy * czz - cyz * cyz, ayy = cxx * czz - cxz * cxz;
-        const double azz = cxx * cyy - cxy * cxy, axy = cxz * cyz - cxy * czz;
-        const double axz = cxy * cyz - cxz * cyy, ayz = cxy * cxz - cxx * cyz;
-        const double det = cxx * axx + cxy * axy + cxz * axz;
+        const rc_sym3 C = rc_sym3_blend_(&P0, &P1, lam, 0);
+        rc_sym3 A;
+        const double det = rc_sym3_adj_(&C, &A, 0);
         if (!(det > 0.0))
             return PW_OPEN;
         /* y = adj(C) dx = det C^-1 dx (the scale cancels in the tests below) */
-        const rc_vec3 y = rc_v3(axx * dx.x + axy * dx.y + axz * dx.z,
-                                axy * dx.x + ayy * dx.y + ayz * dx.z,
-                                axz * dx.x + ayz * dx.y + azz * dx.z);
+        const rc_vec3 y = rc_sym3_mul_(&A, dx, 0);
         const double ny = rc_v3_norm(y);
         const double h0 = sqrt(pw_quad_P(&q0, y)), h1 = sqrt(pw_quad_P(&q1, y));
         const double gap = rc_v3_dot(dx, y) - h0 - h1; /* times |y| */

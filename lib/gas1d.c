@@ -24,7 +24,7 @@ struct rc_gas1d {
 
 rc_gas1d_def rc_gas1d_def_default(void)
 {
-    rc_gas1d_def d = {0, 1.0, 0.0, 0.0, NULL, NULL, NULL, NULL};
+    rc_gas1d_def d = {0, 1.0, INFINITY, 0.0, NULL, NULL, NULL, NULL};
     return d;
 }
 
@@ -110,7 +110,8 @@ int rc_gas1d_create(const rc_gas1d_def *def, rc_gas1d **out, size_t *bad)
         return RC_ENONFINITE;
     if (!(def->length > 0.0))
         return RC_EINVAL;
-    if (!(def->inv_c2 >= 0.0) || isinf(def->inv_c2))
+    double k;
+    if (rc_inv_c2(def->c, &k) != RC_OK)
         return RC_ESPEEDOFLIGHT;
     const size_t n = def->n;
     for (size_t i = 0; i < n; i++) {
@@ -142,11 +143,11 @@ int rc_gas1d_create(const rc_gas1d_def *def, rc_gas1d **out, size_t *bad)
     g->n = n;
     g->leaves = leaves;
     g->L = def->length;
-    g->inv_c2 = def->inv_c2;
+    g->inv_c2 = k;
     g->t = def->t0;
     g->law = def->law ? def->law : &rc_law_zmf;
     g->prm = rc_collision_params_default();
-    g->prm.inv_c2 = def->inv_c2;
+    g->prm.c = def->c;
     g->prm.eps = 1.0;
     g->x = buf;
     g->tl = buf + n;

@@ -6,11 +6,13 @@
 #include "relcol/status.h"
 #include "kinematics_private.h"
 
+double rc_inv_c2_of(double c) { return isinf(c) ? 0.0 : 1.0 / (c * c); }
+
 int rc_inv_c2(double c, double *inv_c2)
 {
     if (!(c > 0.0))
         return RC_ESPEEDOFLIGHT;
-    *inv_c2 = isinf(c) ? 0.0 : 1.0 / (c * c);
+    *inv_c2 = rc_inv_c2_of(c);
     if (*inv_c2 == 0.0 && !isinf(c))
         return RC_ESPEEDOFLIGHT; /* c so large that 1/c^2 underflows: use inf */
     if (isinf(*inv_c2))

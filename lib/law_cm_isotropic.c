@@ -25,7 +25,7 @@ static void perp_frame(rc_vec3 phat, rc_vec3 *e1, rc_vec3 *e2)
 static int cm_isotropic_collide(const rc_collision_params *prm, rc_particle *a,
                                 rc_particle *b, rc_vec3 n)
 {
-    const double k = prm->inv_c2, R = prm->eps;
+    const double k = rc_inv_c2_of(prm->c), R = prm->eps;
     const double M0 = rc_mass_rel(a->m, a->p, k), M1 = rc_mass_rel(b->m, b->p, k);
     const double Mt = M0 + M1;
     const rc_vec3 P = rc_v3_add(a->p, b->p);

@@ -24,7 +24,7 @@ const rc_law *rc_law_find(const char *name)
 
 rc_collision_params rc_collision_params_default(void)
 {
-    rc_collision_params p = {0.0, 1.0, NAN, 0.0};
+    rc_collision_params p = {INFINITY, 1.0, NAN, 0.0};
     return p;
 }
 
@@ -36,13 +36,13 @@ int rc_collide(const rc_law *law, const rc_collision_params *prm, rc_particle *a
     int st;
     if ((st = rc_particle_check(a)) != RC_OK || (st = rc_particle_check(b)) != RC_OK)
         return st;
-    if (!(prm->inv_c2 >= 0.0) || isinf(prm->inv_c2))
+    double k;
+    if (rc_inv_c2(prm->c, &k) != RC_OK)
         return RC_ESPEEDOFLIGHT;
     if (!(prm->eps >= 0.0 && prm->eps <= 1.0))
         return RC_ERESTITUTION;
     /* m^2 + p^2/c^2 must not overflow: the kernels' comparisons would see NaN */
-    if (!isfinite(rc_mass_rel(a->m, a->p, prm->inv_c2)) ||
-        !isfinite(rc_mass_rel(b->m, b->p, prm->inv_c2)) ||
+    if (!isfinite(rc_mass_rel(a->m, a->p, k)) || !isfinite(rc_mass_rel(b->m, b->p, k)) ||
         !isfinite(rc_v3_norm2(rc_v3_add(a->p, b->p))))
         return RC_ENONFINITE;
     if (!isnan(prm->alpha) &&

@@ -15,7 +15,7 @@
 static int zmf_collide(const rc_collision_params *prm, rc_particle *a, rc_particle *b,
                        rc_vec3 n)
 {
-    const double k = prm->inv_c2, eps = prm->eps;
+    const double k = rc_inv_c2_of(prm->c), eps = prm->eps;
     const double M0 = sqrt(a->m * a->m + rc_v3_norm2(a->p) * k);
     const double M1 = sqrt(b->m * b->m + rc_v3_norm2(b->p) * k);
     const double Mt = M0 + M1;
@@ -42,7 +42,7 @@ static int zmf_collide(const rc_collision_params *prm, rc_particle *a, rc_partic
 static int zmf_group(const rc_collision_params *prm, size_t nballs, rc_particle *balls,
                      size_t k, const rc_contact *contacts, double *jout)
 {
-    return rc_contacts_resolve(prm->inv_c2, nballs, balls, k, contacts, jout);
+    return rc_contacts_resolve(rc_inv_c2_of(prm->c), nballs, balls, k, contacts, jout);
 }
 
 const rc_law rc_law_zmf = {

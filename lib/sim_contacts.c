@@ -1,15 +1,11 @@
 /* sim_contacts.c — simultaneous contacts resolved together, independent of their order
  * (papers/simultaneous-contacts.md): one four-impulse J_j q_j per contact, the J_j found
  * by Newton's method on the k restitution conditions of the zmf law (a k x k linear
- * system each step, GSL LU); classically the conditions are linear and one step is exact. */
+ * system each step, solved by LU); classically the conditions are linear and one step is exact. */
 #include <float.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
-
-#include <gsl/gsl_linalg.h>
-#include <gsl/gsl_matrix.h>
-#include <gsl/gsl_permutation.h>
-#include <gsl/gsl_vector.h>
 
 #include "relcol/kinematics.h"
 #include "relcol/sim.h"
@@ -88,9 +84,75 @@ static double jacobian(const cwork *w, size_t j, size_t l)
     return dMb * pan + Mb * dpan - dMa * pbn - Ma * dpbn + c->eps * w->a0[j] * (dMa + dMb);
 }
 
+/* LU factorisation with partial pivoting of the m x m row-major A, in place, and the
+ * solve with it: the arithmetic of GSL 2.7's gsl_linalg_LU_decomp (its unblocked
+ * algorithm, which GSL uses up to 24 unknowns) and gsl_linalg_LU_svx with GSL's CBLAS,
+ * operation for operation, so that groups keep their bits. Written out because GSL's
+ * versions allocate and call GSL's error handler (which aborts by default) when that
+ * fails or the matrix is singular; here a zero pivot is a status. piv: m entries. */
+static int lu_factor(double *A, size_t m, size_t *piv)
+{
+    for (size_t j = 0; j < m; j++) {
+        size_t jp = j; /* the first largest |A(i, j)|, i >= j */
+        double amax = 0.0;
+        for (size_t i = j; i < m; i++)
+            if (fabs(A[i * m + j]) > amax) {
+                amax = fabs(A[i * m + j]);
+                jp = i;
+            }
+        piv[j] = jp;
+        if (!(A[jp * m + j] != 0.0))
+            return RC_ENOCONVERGE; /* singular (or not finite) */
+        if (jp != j)
+            for (size_t k = 0; k < m; k++) {
+                const double t = A[j * m + k];
+                A[j * m + k] = A[jp * m + k];
+                A[jp * m + k] = t;
+            }
+        const double ajj = A[j * m + j];
+        if (fabs(ajj) >= DBL_MIN) {
+            const double inv = 1.0 / ajj;
+            for (size_t i = j + 1; i < m; i++)
+                A[i * m + j] *= inv;
+        } else {
+            for (size_t i = j + 1; i < m; i++)
+                A[i * m + j] /= ajj;
+        }
+        for (size_t i = j + 1; i < m; i++) {
+            const double t = -1.0 * A[i * m + j];
+            for (size_t k = j + 1; k < m; k++)
+                A[i * m + k] += A[j * m + k] * t;
+        }
+    }
+    return RC_OK;
+}
+
+static void lu_solve(const double *LU, size_t m, const size_t *piv, double *x)
+{
+    for (size_t i = 0; i < m; i++)
+        if (piv[i] != i) {
+            const double t = x[i];
+            x[i] = x[piv[i]];
+            x[piv[i]] = t;
+        }
+    for (size_t i = 1; i < m; i++) { /* L c = P b, L unit lower */
+        double t = x[i];
+        for (size_t j = 0; j < i; j++)
+            t -= LU[i * m + j] * x[j];
+        x[i] = t;
+    }
+    x[m - 1] = x[m - 1] / LU[(m - 1) * m + (m - 1)];
+    for (size_t i = m - 1; i-- > 0;) { /* U x = c */
+        double t = x[i];
+        for (size_t j = i + 1; j < m; j++)
+            t -= LU[i * m + j] * x[j];
+        x[i] = t / LU[i * m + i];
+    }
+}
+
 /* Newton on the active contacts; J of inactive ones stays 0. */
 static int newton(cwork *w, size_t nb, double *J, double *A, double *rhs, size_t *idx,
-                  gsl_permutation *perm)
+                  size_t *piv)
 {
     double pscale = 0.0;
     for (size_t i = 0; i < nb; i++)
@@ -113,15 +175,12 @@ static int newton(cwork *w, size_t nb, double *J, double *A, double *rhs, size_t
             if (fabs(A[r * m + r]) > dmax)
                 dmax = fabs(A[r * m + r]);
         }
-        gsl_matrix_view Av = gsl_matrix_view_array(A, m, m);
-        gsl_vector_view bv = gsl_vector_view_array(rhs, m);
-        perm->size = m;
-        int sgn;
-        gsl_linalg_LU_decomp(&Av.matrix, perm, &sgn);
+        if (lu_factor(A, m, piv) != RC_OK)
+            return RC_ENOCONVERGE;
         for (size_t r = 0; r < m; r++)
             if (!(fabs(A[r * m + r]) > PIVOT_REL_TOL * dmax))
-                return RC_ENOCONVERGE; /* singular: never hand it to GSL (it would abort) */
-        gsl_linalg_LU_svx(&Av.matrix, perm, &bv.vector);
+                return RC_ENOCONVERGE; /* singular */
+        lu_solve(A, m, piv, rhs);
         double step = 0.0, jmax = 0.0;
         for (size_t r = 0; r < m; r++) {
             J[idx[r]] += rhs[r];
@@ -276,12 +335,14 @@ int rc_contacts_resolve(double inv_c2, size_t nballs, rc_particle *balls, size_t
     double *M0 = malloc(nballs * sizeof *M0), *Mp = malloc(nballs * sizeof *Mp);
     rc_vec3 *pp = malloc(nballs * sizeof *pp);
     double *qt = malloc(k * sizeof *qt), *a0 = malloc(k * sizeof *a0);
-    double *J = malloc(k * sizeof *J), *A = malloc(k * k * sizeof *A);
+    /* (k x k doubles must not wrap around) */
+    double *J = malloc(k * sizeof *J);
+    double *A = k <= SIZE_MAX / sizeof(double) / k ? malloc(k * k * sizeof *A) : NULL;
     double *rhs = malloc(k * sizeof *rhs);
     size_t *idx = malloc(k * sizeof *idx);
     int *active = malloc(k * sizeof *active);
-    gsl_permutation *perm = gsl_permutation_alloc(k);
-    if (!M0 || !Mp || !pp || !qt || !a0 || !J || !A || !rhs || !idx || !active || !perm)
+    size_t *piv = malloc(k * sizeof *piv);
+    if (!M0 || !Mp || !pp || !qt || !a0 || !J || !A || !rhs || !idx || !active || !piv)
         goto done;
 
     for (size_t i = 0; i < nballs; i++)
@@ -303,7 +364,7 @@ int rc_contacts_resolve(double inv_c2, size_t nballs, rc_particle *balls, size_t
     cwork w = {k, contacts, active, balls, M0, qt, a0, Mp, pp};
     /* Active set: solve, drop the most pulling contact, repeat (at most k times). */
     for (;;) {
-        st = newton(&w, nballs, J, A, rhs, idx, perm);
+        st = newton(&w, nballs, J, A, rhs, idx, piv);
         if (st != RC_OK)
             goto done;
         size_t worst = k;
@@ -364,9 +425,6 @@ done:
     free(rhs);
     free(idx);
     free(active);
-    if (perm) {
-        perm->size = k;
-        gsl_permutation_free(perm);
-    }
+    free(piv);
     return st;
 }

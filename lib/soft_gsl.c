@@ -1,7 +1,10 @@
 /* soft_gsl.c — the soft-sphere steppers on GSL odeiv2 (explicit Runge-Kutta pairs). odeiv2
  * has no event detection: after each step, a contact switch inside it is bracketed and
  * located by Illinois regula falsi on the overlap, re-integrating from the bracket's left
- * end, and the stepper restarts at the event because the force switches there. */
+ * end, and the stepper restarts at the event because the force switches there.
+ * GSL's error handler: every argument these calls check is valid by construction (rtol
+ * and the scales positive, ny > 0, steps forward), so only an allocation failing inside
+ * GSL's odeiv2 allocators can reach it (relcol/soft.h: applications turn it off). */
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>

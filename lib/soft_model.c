@@ -30,7 +30,7 @@ const rc_soft_stepper *rc_soft_stepper_find(const char *name)
 
 rc_soft_params rc_soft_params_default(void)
 {
-    rc_soft_params p = {0.0, 1e6, 1.0, 1e-10, INFINITY, 1000000L, RC_SOFT_SPHERE};
+    rc_soft_params p = {INFINITY, 1e6, 1.0, 1e-10, INFINITY, 1000000L, RC_SOFT_SPHERE};
     return p;
 }
 
@@ -358,7 +358,8 @@ void rc_soft_observe(rc_soft_sys *s, const double *y)
 
 static int check_params(const rc_soft_params *prm)
 {
-    if (!(prm->inv_c2 >= 0.0) || isinf(prm->inv_c2))
+    double k;
+    if (rc_inv_c2(prm->c, &k) != RC_OK)
         return RC_ESPEEDOFLIGHT;
     if (!(prm->eps > 0.0 && prm->eps <= 1.0))
         return RC_ERESTITUTION;
@@ -391,7 +392,7 @@ int rc_soft_collide(const rc_soft_stepper *stepper, const rc_soft_params *prm, s
         if (!(r[i] > 0.0))
             return RC_ERADIUS;
     }
-    const double k = prm->inv_c2;
+    const double k = rc_inv_c2_of(prm->c);
     const size_t ny = RC_SOFT_NY * n, npair = n * (n - 1) / 2;
     double *buf = calloc(3 * n + 2 * ny + 2 * npair, sizeof *buf);
     int *on = calloc(3 * npair, sizeof *on);

@@ -18,56 +18,21 @@
 
 static rc_vec3 vget(const double *y) { return rc_v3(y[0], y[1], y[2]); }
 
-/* Symmetric 3x3 matrix: xx, yy, zz, xy, xz, yz. */
-typedef struct sym3 {
-    double xx, yy, zz, xy, xz, yz;
-} sym3;
-
-static sym3 shape_matrix(const rc_toi_shape *sh, double scale)
-{
-    /* P = r^2 (g2 I + beta^2 I - beta beta^T), lengths in units of `scale`: diagonal
-     * entries are sums of squares (no 1 - beta^2 by subtraction), as in toi_contracted.c */
-    const rc_vec3 b = sh->beta;
-    const double r = sh->r / scale, r2 = r * r;
-    sym3 P = {r2 * (sh->g2 + b.y * b.y + b.z * b.z), r2 * (sh->g2 + b.x * b.x + b.z * b.z),
-              r2 * (sh->g2 + b.x * b.x + b.y * b.y), -r2 * b.x * b.y, -r2 * b.x * b.z,
-              -r2 * b.y * b.z};
-    return P;
-}
-
-static rc_vec3 sym_mul(const sym3 *A, rc_vec3 v)
-{
-    return rc_v3(A->xx * v.x + A->xy * v.y + A->xz * v.z,
-                 A->xy * v.x + A->yy * v.y + A->yz * v.z,
-                 A->xz * v.x + A->yz * v.y + A->zz * v.z);
-}
-
 /* At lambda: F = k d^T M d (k = lambda (1 - lambda), M = C^-1, C = (1-lambda) P0 +
  * lambda P1), f = dF/dlambda = (1 - 2 lambda) d.y - k y.dP y with y = M d, and
  *   f' = -2 d.y - 2 (1 - 2 lambda) y.dP y + 2 k (dP y).M (dP y)
  * (dM/dlambda = -M dP M). F is concave in lambda (a minimum of functions affine in
  * lambda, Perram & Wertheim), so f is decreasing and f' < 0. */
-static void pw_eval(const sym3 *P0, const sym3 *dP, rc_vec3 d, double lam, double *F,
+static void pw_eval(const rc_sym3 *P0, const rc_sym3 *dP, rc_vec3 d, double lam, double *F,
                     double *f, double *fp, rc_vec3 *y)
 {
-    sym3 C, A;
-    C.xx = P0->xx + lam * dP->xx;
-    C.yy = P0->yy + lam * dP->yy;
-    C.zz = P0->zz + lam * dP->zz;
-    C.xy = P0->xy + lam * dP->xy;
-    C.xz = P0->xz + lam * dP->xz;
-    C.yz = P0->yz + lam * dP->yz;
-    A.xx = C.yy * C.zz - C.yz * C.yz;
-    A.yy = C.xx * C.zz - C.xz * C.xz;
-    A.zz = C.xx * C.yy - C.xy * C.xy;
-    A.xy = C.xz * C.yz - C.xy * C.zz;
-    A.xz = C.xy * C.yz - C.xz * C.yy;
-    A.yz = C.xy * C.xz - C.xx * C.yz;
-    const double det = C.xx * A.xx + C.xy * A.xy + C.xz * A.xz;
-    const rc_vec3 yy = rc_v3_scale(1.0 / det, sym_mul(&A, d));
-    const rc_vec3 dy = sym_mul(dP, yy);
+    const rc_sym3 C = rc_sym3_axpy_(P0, lam, dP);
+    rc_sym3 A;
+    const double det = rc_sym3_adj_(&C, &A, 0);
+    const rc_vec3 yy = rc_v3_scale(1.0 / det, rc_sym3_mul_(&A, d, 0));
+    const rc_vec3 dy = rc_sym3_mul_(dP, yy, 0);
     const double k = lam * (1.0 - lam), dMd = rc_v3_dot(d, yy), ydy = rc_v3_dot(yy, dy);
-    const double dyMdy = rc_v3_dot(dy, sym_mul(&A, dy)) / det;
+    const double dyMdy = rc_v3_dot(dy, rc_sym3_mul_(&A, dy, 0)) / det;
     *F = k * dMd;
     *f = (1.0 - 2.0 * lam) * dMd - k * ydy;
     *fp = -2.0 * dMd - 2.0 * (1.0 - 2.0 * lam) * ydy + 2.0 * k * dyMdy;
@@ -100,9 +65,9 @@ int rc_soft_geometry(rc_soft_sys *s, size_t q, size_t i, size_t j, const double 
         double hi = s->r[i] / (s->r[i] + s->r[j] * sj.g);
         if (lo < hi) {
             /* lengths in units of R: P and d of order 1 whatever the user's units */
-            const sym3 P0 = shape_matrix(&si, R), P1 = shape_matrix(&sj, R);
-            const sym3 dP = {P1.xx - P0.xx, P1.yy - P0.yy, P1.zz - P0.zz,
-                             P1.xy - P0.xy, P1.xz - P0.xz, P1.yz - P0.yz};
+            const rc_sym3 P0 = rc_toi_shape_matrix_(&si, si.r / R);
+            const rc_sym3 P1 = rc_toi_shape_matrix_(&sj, sj.r / R);
+            const rc_sym3 dP = rc_sym3_sub_(&P1, &P0);
             const rc_vec3 dd = rc_v3_scale(1.0 / R, d);
             double lam = s->lam[q];
             if (!(lam > lo && lam < hi)) {

@@ -48,9 +48,12 @@ struct rc_toi_workspace {
     int unused;
 };
 
-rc_toi_workspace *rc_toi_workspace_alloc(void)
+int rc_toi_workspace_create(rc_toi_workspace **out)
 {
-    return calloc(1, sizeof(rc_toi_workspace));
+    if (!out)
+        return RC_EINVAL;
+    *out = calloc(1, sizeof(rc_toi_workspace));
+    return *out ? RC_OK : RC_ENOMEM;
 }
 
 void rc_toi_workspace_free(rc_toi_workspace **ws)
@@ -88,35 +91,10 @@ static inline double pow2(int k)
     return x;
 }
 
-/* Symmetric 3x3 matrix: xx, yy, zz, xy, xz, yz. */
-typedef struct sym3 {
-    double xx, yy, zz, xy, xz, yz;
-} sym3;
-
-static sym3 shape_matrix(const rc_toi_shape *s)
-{
-    /* P = r^2 (g2 I + beta^2 I - beta beta^T): diagonal terms are sums of squares. */
-    const rc_vec3 b = s->beta;
-    const double r2 = s->r * s->r;
-    sym3 P = {r2 * (s->g2 + b.y * b.y + b.z * b.z), r2 * (s->g2 + b.x * b.x + b.z * b.z),
-              r2 * (s->g2 + b.x * b.x + b.y * b.y), -r2 * b.x * b.y, -r2 * b.x * b.z,
-              -r2 * b.y * b.z};
-    return P;
-}
-
-static inline rc_vec3 sym_mul(const sym3 *A, rc_vec3 v, int planar)
-{
-    if (planar)
-        return rc_v3(A->xx * v.x + A->xy * v.y, A->xy * v.x + A->yy * v.y, 0.0);
-    return rc_v3(A->xx * v.x + A->xy * v.y + A->xz * v.z,
-                 A->xy * v.x + A->yy * v.y + A->yz * v.z,
-                 A->xz * v.x + A->yz * v.y + A->zz * v.z);
-}
-
 /* State of one contact problem: the shapes, the relative motion, and the best (smallest
  * |h|) evaluation so far, so the converged lambda needs no extra evaluation. */
 typedef struct pw_problem {
-    sym3 P0, P1, dP; /* dP = P1 - P0 */
+    rc_sym3 P0, P1, dP; /* dP = P1 - P0 */
     rc_vec3 d, w, dxw;
     double q0, q1; /* (dxw)^T P0 (dxw), (dxw)^T P1 (dxw): 3-D only */
     int planar;   /* all z components zero: use the 2x2 formulas */
@@ -138,31 +116,11 @@ typedef struct pw_problem {
  * four det coefficients) costs ~490, at ~5 evaluations per solve: rc_toi_shapes_rel
  * +6.6 % (engine gas, 3-D) and +9 % (2-D cases). Forms quadratic in y (y.(P1-P0)y as a
  * polynomial in den, num) would also square the cancellation in den d + num w. */
-static inline double pw_matrix(const pw_problem *p, double lam, sym3 *C, sym3 *A,
+static inline double pw_matrix(const pw_problem *p, double lam, rc_sym3 *C, rc_sym3 *A,
                                const int planar)
 {
-    const double l1 = 1.0 - lam;
-    C->xx = l1 * p->P0.xx + lam * p->P1.xx;
-    C->yy = l1 * p->P0.yy + lam * p->P1.yy;
-    C->xy = l1 * p->P0.xy + lam * p->P1.xy;
-    if (planar) {
-        C->zz = C->xz = C->yz = 0.0;
-        A->xx = C->yy;
-        A->yy = C->xx;
-        A->xy = -C->xy;
-        A->zz = A->xz = A->yz = 0.0;
-        return C->xx * C->yy - C->xy * C->xy;
-    }
-    C->zz = l1 * p->P0.zz + lam * p->P1.zz;
-    C->xz = l1 * p->P0.xz + lam * p->P1.xz;
-    C->yz = l1 * p->P0.yz + lam * p->P1.yz;
-    A->xx = C->yy * C->zz - C->yz * C->yz;
-    A->yy = C->xx * C->zz - C->xz * C->xz;
-    A->zz = C->xx * C->yy - C->xy * C->xy;
-    A->xy = C->xz * C->yz - C->xy * C->zz;
-    A->xz = C->xy * C->yz - C->xz * C->yy;
-    A->yz = C->xy * C->xz - C->xx * C->yz;
-    return C->xx * A->xx + C->xy * A->xy + C->xz * A->xz;
+    *C = rc_sym3_blend_(&p->P0, &p->P1, lam, planar);
+    return rc_sym3_adj_(C, A, planar);
 }
 
 /* dF/dlambda, F = k r^T C^-1 r, k = lambda (1 - lambda), at the point r on E_lambda's
@@ -181,15 +139,15 @@ static inline double pw_matrix(const pw_problem *p, double lam, sym3 *C, sym3 *A
 __attribute__((always_inline)) static inline double pw_eval(pw_problem *p, double lam,
                                                             const int planar)
 {
-    sym3 C, A;
+    rc_sym3 C, A;
     const double det = pw_matrix(p, lam, &C, &A, planar);
     const double k = lam * (1.0 - lam);
-    const rc_vec3 Ad = sym_mul(&A, p->d, planar);
+    const rc_vec3 Ad = rc_sym3_mul_(&A, p->d, planar);
     const double dad = rc_v3_dot(p->d, Ad);
     double num = 0.0, den = 1.0, h;
     rc_vec3 y = Ad;
     if (!p->at_rest) {
-        const rc_vec3 Aw = sym_mul(&A, p->w, planar);
+        const rc_vec3 Aw = rc_sym3_mul_(&A, p->w, planar);
         const double waw = rc_v3_dot(p->w, Aw);
         const double daw = rc_v3_dot(p->d, Aw);
         /* (dxw)^T C (dxw) is linear in lambda like C: from the two end values, both
@@ -211,11 +169,11 @@ __attribute__((always_inline)) static inline double pw_eval(pw_problem *p, doubl
             den = k * waw;
         }
         y = rc_v3_axpy(rc_v3_scale(den, Ad), num, Aw);
-        const double ydy = rc_v3_dot(y, sym_mul(&p->dP, y, planar));
+        const double ydy = rc_v3_dot(y, rc_sym3_mul_(&p->dP, y, planar));
         const double kdd = k / (det * den);
         h = (1.0 - 2.0 * lam) - kdd * kdd * ydy;
     } else {
-        const double ydy = rc_v3_dot(y, sym_mul(&p->dP, y, planar));
+        const double ydy = rc_v3_dot(y, rc_sym3_mul_(&p->dP, y, planar));
         h = (1.0 - 2.0 * lam) * det * dad - k * ydy;
     }
     if (!isfinite(h)) { /* only for inputs beyond double range (gamma ~ 1e150) */
@@ -458,20 +416,15 @@ int rc_toi_shapes_rel(const rc_toi_shape *s0, const rc_toi_shape *s1, rc_vec3 d,
     u0.r *= sl;
     u1.r *= sl;
     pw_problem p;
-    p.P0 = shape_matrix(&u0);
-    p.P1 = shape_matrix(&u1);
-    p.dP.xx = p.P1.xx - p.P0.xx;
-    p.dP.yy = p.P1.yy - p.P0.yy;
-    p.dP.zz = p.P1.zz - p.P0.zz;
-    p.dP.xy = p.P1.xy - p.P0.xy;
-    p.dP.xz = p.P1.xz - p.P0.xz;
-    p.dP.yz = p.P1.yz - p.P0.yz;
+    p.P0 = rc_toi_shape_matrix_(&u0, u0.r);
+    p.P1 = rc_toi_shape_matrix_(&u1, u1.r);
+    p.dP = rc_sym3_sub_(&p.P1, &p.P0);
     p.d = rc_v3_scale(sl, d);
     p.w = rc_v3_scale(sv, w);
     p.dxw = rc_v3_cross(p.d, p.w);
     p.planar = d.z == 0.0 && w.z == 0.0 && s0->beta.z == 0.0 && s1->beta.z == 0.0;
-    p.q0 = p.planar ? 0.0 : rc_v3_dot(p.dxw, sym_mul(&p.P0, p.dxw, 0));
-    p.q1 = p.planar ? 0.0 : rc_v3_dot(p.dxw, sym_mul(&p.P1, p.dxw, 0));
+    p.q0 = p.planar ? 0.0 : rc_v3_dot(p.dxw, rc_sym3_mul_(&p.P0, p.dxw, 0));
+    p.q1 = p.planar ? 0.0 : rc_v3_dot(p.dxw, rc_sym3_mul_(&p.P1, p.dxw, 0));
     p.miss = 0;
     p.bad = 0;
     const double dn = rc_v3_norm(d);

@@ -12,7 +12,7 @@
 rc_toi_params rc_toi_params_default(void)
 {
     rc_toi_params p;
-    p.inv_c2 = 0.0;
+    p.c = INFINITY;
     p.touch_tol = 1e-12;
     p.graze_tol = 1e-9;
     p.lambda_tol = 1e-14;
@@ -24,7 +24,7 @@ rc_toi_params rc_toi_params_default(void)
 static int table_toi(const rc_toi_params *prm, const rc_toi_ball *a, const rc_toi_ball *b,
                      rc_toi_workspace *ws, rc_toi_contact *out)
 {
-    const double k = prm->inv_c2;
+    const double k = rc_inv_c2_of(prm->c);
     const double M0 = rc_mass_rel(a->m, a->p, k), M1 = rc_mass_rel(b->m, b->p, k);
     /* v = p/M exactly as rc_velocity computes it (the frames compare with ==) */
     const rc_vec3 v0 = rc_v3_scale(1.0 / M0, a->p), v1 = rc_v3_scale(1.0 / M1, b->p);
@@ -47,7 +47,7 @@ static int sphere_toi(const rc_toi_params *prm, const rc_toi_ball *a, const rc_t
                       rc_toi_workspace *ws, rc_toi_contact *out)
 {
     (void)ws;
-    const double k = prm->inv_c2;
+    const double k = rc_inv_c2_of(prm->c);
     const rc_vec3 v0 = rc_velocity(a->m, a->p, k), v1 = rc_velocity(b->m, b->p, k);
     double t;
     rc_vec3 n;
@@ -114,7 +114,8 @@ int rc_toi(const rc_toi_frame *frame, const rc_toi_params *prm, const rc_toi_bal
 {
     if (!frame || !prm || !a || !b || !out || !ws)
         return RC_EINVAL;
-    if (!(prm->inv_c2 >= 0.0) || isinf(prm->inv_c2))
+    double k;
+    if (rc_inv_c2(prm->c, &k) != RC_OK)
         return RC_ESPEEDOFLIGHT;
     if (!(prm->touch_tol >= 0.0 && prm->touch_tol < 1.0) || !(prm->graze_tol >= 0.0) ||
         !(prm->lambda_tol > 0.0) || prm->max_iter < 1)

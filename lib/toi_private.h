@@ -2,7 +2,10 @@
 #ifndef RELCOL_TOI_PRIVATE_H
 #define RELCOL_TOI_PRIVATE_H
 
+#include <math.h>
+
 #include "relcol/toi.h"
+#include "shape_math.h"
 
 /* Shape of a ball state whose relativistic mass M = sqrt(m^2 + p^2/c^2) is known, given
  * 1/c (sqrt(inv_c2)) as well (for callers that make many shapes). */
@@ -33,24 +36,29 @@ static inline rc_vec3 rc_toi_point_(rc_vec3 x0, rc_vec3 v0, double t, rc_vec3 y0
 }
 
 /* Support distance along unit n (rc_toi_support's body, inline for the contracted solver,
- * which takes four per call): 1 - (beta.n)^2 = g2 + |beta x n|^2, non-negative terms. */
+ * which takes four per call): r sqrt(1 - (beta.n)^2), shape_math.h's form. */
 static inline double rc_toi_support_(const rc_toi_shape *s, rc_vec3 n)
 {
-    return s->r * sqrt(s->g2 + rc_v3_norm2(rc_v3_cross(s->beta, n)));
+    return s->r * sqrt(rc_shape_form_(s->g2, s->beta, n, 1.0));
 }
 
 /* The same along any u, times |u| (u2 = |u|^2): no normalising square root. */
 static inline double rc_toi_support_scaled_(const rc_toi_shape *s, rc_vec3 u, double u2)
 {
-    return s->r * sqrt(s->g2 * u2 + rc_v3_norm2(rc_v3_cross(s->beta, u)));
+    return s->r * sqrt(rc_shape_form_(s->g2, s->beta, u, u2));
 }
 
 /* Support point of a shape along unit n, relative to its centre: P n / h(n). */
 static inline rc_vec3 rc_toi_support_point_(const rc_toi_shape *s, rc_vec3 n, double h)
 {
-    const double b2 = rc_v3_norm2(s->beta), bn = rc_v3_dot(s->beta, n);
-    const double r2h = s->r * s->r / h;
-    return rc_v3_scale(r2h, rc_v3_axpy(rc_v3_scale(s->g2 + b2, n), -bn, s->beta));
+    return rc_v3_scale(s->r * s->r / h, rc_shape_form_mul_(s->g2, s->beta, n));
+}
+
+/* The matrix P of a shape (shape_math.h) given its radius r in the caller's length unit
+ * (s->r itself, or s->r scaled by the caller to keep the products in range). */
+static inline rc_sym3 rc_toi_shape_matrix_(const rc_toi_shape *s, double r)
+{
+    return rc_shape_matrix_(r * r, s->g2, s->beta);
 }
 
 #endif

@@ -11,10 +11,11 @@
 static int wall_core(const rc_toi_params *prm, int contracted, const rc_toi_ball *a,
                      rc_vec3 n, double offset, double *t, rc_vec3 *x)
 {
-    const rc_vec3 v = rc_velocity(a->m, a->p, prm->inv_c2);
+    const double k = rc_inv_c2_of(prm->c);
+    const rc_vec3 v = rc_velocity(a->m, a->p, k);
     /* A wall's rest frame is the table (and the ball-wall ZMF: the wall is infinitely
      * massive), so the shape is the table-frame one, or the sphere if not contracted. */
-    const rc_toi_shape s = rc_toi_shape_of(a->r, a->m, a->p, contracted ? prm->inv_c2 : 0.0);
+    const rc_toi_shape s = rc_toi_shape_of(a->r, a->m, a->p, contracted ? k : 0.0);
     const double h = rc_toi_support(&s, n);
     const double gap = offset - rc_v3_dot(n, a->x); /* centre-to-plane distance */
     const double vn = rc_v3_dot(v, n);
@@ -42,7 +43,8 @@ static int check_ball(const rc_toi_params *prm, const rc_toi_ball *a)
 {
     if (!prm || !a)
         return RC_EINVAL;
-    if (!(prm->inv_c2 >= 0.0) || isinf(prm->inv_c2))
+    double k;
+    if (rc_inv_c2(prm->c, &k) != RC_OK)
         return RC_ESPEEDOFLIGHT;
     if (!(prm->touch_tol >= 0.0 && prm->touch_tol < 1.0) || !(prm->graze_tol >= 0.0))
         return RC_EINVAL;

@@ -26,7 +26,7 @@ static rc_vec3 boost_velocity_correction(rc_vec3 v, rc_vec3 u, double gu, double
 static int zmf_toi(const rc_toi_params *prm, const rc_toi_ball *a, const rc_toi_ball *b,
                    rc_toi_workspace *ws, rc_toi_contact *out)
 {
-    const double k = prm->inv_c2;
+    const double k = rc_inv_c2_of(prm->c);
     const double M0 = rc_mass_rel(a->m, a->p, k), M1 = rc_mass_rel(b->m, b->p, k);
     const rc_vec3 v0 = rc_velocity(a->m, a->p, k), v1 = rc_velocity(b->m, b->p, k);
     const rc_vec3 u = rc_v3_scale(1.0 / (M0 + M1), rc_v3_add(a->p, b->p));

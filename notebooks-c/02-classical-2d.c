@@ -110,7 +110,7 @@ static outcome by_relcol(const rc_law *law, const pair2d *P, double eps, double 
     rc_momentum_from_velocity(a.m, P->v[0], k, &a.p);
     rc_momentum_from_velocity(b.m, P->v[1], k, &b.p);
     rc_collision_params prm = rc_collision_params_default();
-    prm.inv_c2 = k;
+    prm.c = (k > 0.0 ? 1.0 / sqrt(k) : INFINITY) /* the c of 1/c^2 = k */;
     prm.eps = eps;
     prm.alpha = alpha;
     prm.azimuth = 0.0;

@@ -240,7 +240,7 @@ static void sequential(const Ball b[3], double eps, int first, double out[2])
     for (int i = 0; i < 3; i++)
         P[i] = (rc_particle){pow(b[i].radius, 3), rc_v3(pow(b[i].radius, 3) * b[i].v, pow(b[i].radius, 3) * b[i].w, 0)};
     rc_collision_params prm = rc_collision_params_default();
-    prm.inv_c2 = 0;
+    prm.c = INFINITY;
     prm.eps = eps;
     for (int r = 0; r < 2; r++) {
         int k = r == 0 ? first : 3 - first;

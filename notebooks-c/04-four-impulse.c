@@ -37,7 +37,7 @@ static collision make(rc_vec3 v0, rc_vec3 v1, double m0, double m1, rc_vec3 n, d
     C.a1 = C.a;
     C.b1 = C.b;
     rc_collision_params prm = rc_collision_params_default();
-    prm.inv_c2 = k;
+    prm.c = (k > 0.0 ? 1.0 / sqrt(k) : INFINITY) /* the c of 1/c^2 = k */;
     prm.eps = eps;
     rc_collide(&rc_law_zmf, &prm, &C.a1, &C.b1, n);
     return C;

@@ -36,7 +36,7 @@ static rc_toi_ball ball(rc_vec3 x, double r, rc_vec3 v, double k)
 static rc_toi_params params(double k)
 {
     rc_toi_params prm = rc_toi_params_default();
-    prm.inv_c2 = k;
+    prm.c = (k > 0.0 ? 1.0 / sqrt(k) : INFINITY) /* the c of 1/c^2 = k */;
     return prm;
 }
 
@@ -390,8 +390,7 @@ it by `3·10⁻²` and `7·10⁻³`.
 int main(int argc, char **argv)
 {
     nb_init(argc, argv);
-    ws = rc_toi_workspace_alloc();
-    if (!ws)
+    if (rc_toi_workspace_create(&ws) != RC_OK)
         return 2;
     wall();
     headon();

@@ -43,7 +43,7 @@ normal, and returns the largest of `|p_soft − p_hard|/Σ|p_in|` and `|m_soft �
 static rc_soft_params params(double c, double eps, double kappa)
 {
     rc_soft_params prm = rc_soft_params_default();
-    rc_inv_c2(c, &prm.inv_c2);
+    prm.c = c;
     prm.eps = eps;
     prm.stiffness = kappa;
     prm.rtol = RTOL;
@@ -82,7 +82,7 @@ static void headon(void)
                 rc_particle p[2];
                 rc_vec3 x[2];
                 double err = NAN;
-                ok = ok && soft_case(prm.inv_c2, beta(cs[ic], 0.7, 0.3, -0.2), beta(cs[ic], -0.5, 0.1, 0.4), 0.0,
+                ok = ok && soft_case(rc_inv_c2_of(prm.c), beta(cs[ic], 0.7, 0.3, -0.2), beta(cs[ic], -0.5, 0.1, 0.4), 0.0,
                                      p, x) == 0;
                 ok = ok && soft_vs_hard(&rc_soft_cvode_bdf, &prm, p, x, NULL, &err, NULL) == RC_OK;
                 printf("  %10.3e", err);
@@ -127,7 +127,7 @@ static void oblique(void)
             rc_soft_params prm = params(c, eps, kap[ik]);
             rc_particle p[2];
             rc_vec3 x[2];
-            ok = ok && soft_case(prm.inv_c2, beta(c, 0.6, 0.1, 0.0), beta(c, -0.3, 0.05, 0.1), 0.3, p, x) == 0;
+            ok = ok && soft_case(rc_inv_c2_of(prm.c), beta(c, 0.6, 0.1, 0.0), beta(c, -0.3, 0.05, 0.1), 0.3, p, x) == 0;
             err[s][ik] = NAN;
             ok = ok && soft_vs_hard(&rc_soft_cvode_bdf, &prm, p, x, NULL, &err[s][ik], NULL) == RC_OK;
             double lx = log(kap[ik]), ly = log(err[s][ik]);
@@ -285,7 +285,7 @@ static void steppers(void)
     prm.rtol = 1e-10;
     rc_particle p[2];
     rc_vec3 x[2];
-    ok = ok && soft_case(prm.inv_c2, beta(1.0, 0.6, 0.1, 0.0), beta(1.0, -0.3, 0.05, 0.1), 0.3, p, x) == 0;
+    ok = ok && soft_case(rc_inv_c2_of(prm.c), beta(1.0, 0.6, 0.1, 0.0), beta(1.0, -0.3, 0.05, 0.1), 0.3, p, x) == 0;
     for (int i = 0; i < 3; i++) {
         rc_soft_result res;
         memset(&res, 0, sizeof res);
@@ -301,7 +301,7 @@ static void steppers(void)
             hard[0] = p[0];
             hard[1] = p[1];
             rc_collision_params cp = rc_collision_params_default();
-            cp.inv_c2 = 1.0;
+            cp.c = 1.0;
             cp.eps = 0.7;
             code = rc_collide(&rc_law_zmf, &cp, &hard[0], &hard[1], res.normal);
             ok = ok && code == RC_OK;

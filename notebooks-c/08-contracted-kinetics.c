@@ -91,7 +91,7 @@ static result kac(int contracted, double per, uint64_t seed)
         b[i + 1] = (rc_particle){1.0, rc_v3(-p0 * cos(phi), -p0 * sin(phi), 0.0)};
     }
     rc_collision_params prm = rc_collision_params_default();
-    prm.inv_c2 = 1.0;
+    prm.c = 1.0;
     prm.eps = 1.0;
     /* Majorant of W: |w| <= 2 (c = 1) times rho_i + rho_j <= 2 r gamma^2 (an ellipse's
      * tip). gamma is bounded only by the whole gas's energy, so a cap that holds in

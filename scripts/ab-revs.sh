@@ -13,6 +13,7 @@
 # two gases each sit in memory their own way, which biases one run by up to ~5 % (one
 # library against itself: 0.956, 0.991, 1.030 at N = 1e5; 1.012, 0.954, 0.990 at 1e4).
 # Both revisions must agree on the public structures ab_engine passes (relcol/sim.h).
+# RELCOL_SIMD=avx2|scalar and RELCOL_DEFER=0 in the environment force those paths in both.
 # Example: RUNS=5 scripts/ab-revs.sh HEAD~1 HEAD 100000 3 10
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)

@@ -51,6 +51,13 @@ static long rc_test_checks, rc_test_failures;
         return rc_test_failures == 0 && rc_test_checks > 0 ? 0 : 1;               \
     } while (0)
 
+/* The c whose 1/c^2 is inv_c2 (0: INFINITY; < 0 or NaN: NAN, which the library rejects),
+ * for tests written in terms of inv_c2; 1/c^2 of the result is inv_c2 up to rounding. */
+static inline double rc_test_c_of(double inv_c2)
+{
+    return inv_c2 > 0.0 ? 1.0 / sqrt(inv_c2) : inv_c2 == 0.0 ? INFINITY : NAN;
+}
+
 /* Deterministic generator for tests: splitmix64. */
 typedef struct { uint64_t s; } rc_test_rng;
 static inline uint64_t rc_test_next(rc_test_rng *r)

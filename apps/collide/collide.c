@@ -173,6 +173,7 @@ static void print_vec(FILE *out, rc_vec3 v, int dim, const char *sep)
 
 int main(int argc, char **argv)
 {
+    app_init();
     options o;
     memset(&o, 0, sizeof o);
     int st = parse_options(argc, argv, &o);
@@ -195,7 +196,7 @@ int main(int argc, char **argv)
     rc_particle ball[2];
     rc_vec3 n = rc_v3(1.0, 0.0, 0.0);
     rc_collision_params prm = rc_collision_params_default();
-    rc_inv_c2(o.c, &prm.inv_c2);
+    prm.c = o.c;
     prm.eps = o.eps;
 
     if (o.n_normal > dim) {
@@ -269,7 +270,7 @@ int main(int argc, char **argv)
     }
 
     FILE *out = stdout;
-    const double k = prm.inv_c2;
+    const double k = rc_inv_c2_of(prm.c);
     double E[2];
     rc_vec3 v[2];
     for (int i = 0; i < 2; i++) {

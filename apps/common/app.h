@@ -28,6 +28,11 @@ void app_errf(char *err, const char *fmt, ...);
 
 /* ---- command line ----------------------------------------------------------------- */
 
+/* Every app's first call: turns GSL's default error handler (which prints and aborts) off,
+ * so that a GSL failure in the app's own numerics (fits, roots, special functions) comes
+ * back as a status code the app reports, as relcol's own functions do. */
+void app_init(void);
+
 /* Print "prog: message\n" on stderr (fmt as printf, no newline) and return code, so that
  * an app's error paths read `return app_fail(prog, 2, "--eps: %s", err);`. */
 #if defined(__GNUC__)

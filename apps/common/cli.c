@@ -4,7 +4,11 @@
 #include <stdarg.h>
 #include <string.h>
 
+#include <gsl/gsl_errno.h>
+
 #include "app.h"
+
+void app_init(void) { gsl_set_error_handler_off(); }
 
 int app_vfail(const char *prog, int code, const char *fmt, va_list ap)
 {

@@ -128,8 +128,8 @@ static int run_one(const rc_toi_frame *fr, double c, double bR, double eps,
                    rc_toi_workspace *ws, outcome *res, char *err)
 {
     rc_toi_params prm = rc_toi_params_default();
-    rc_inv_c2(c, &prm.inv_c2);
-    const double k = prm.inv_c2;
+    prm.c = c;
+    const double k = rc_inv_c2_of(c);
     rc_toi_ball a = {rc_v3(-6.0, 2.0 * bR, 0.0), 1.0, 1.0, rc_v3(0, 0, 0)};
     rc_toi_ball b = {rc_v3(0.0, 0.0, 0.0), 1.0, 1.0, rc_v3(0, 0, 0)};
     if (rc_momentum_from_velocity(1.0, rc_v3(1.0, 0.0, 0.0), k, &a.p) != RC_OK) {
@@ -144,7 +144,7 @@ static int run_one(const rc_toi_frame *fr, double c, double bR, double eps,
     }
     rc_particle in[2] = {{a.m, a.p}, {b.m, b.p}}, outp[2] = {in[0], in[1]};
     rc_collision_params cp = rc_collision_params_default();
-    cp.inv_c2 = k;
+    cp.c = c;
     cp.eps = eps;
     st = rc_collide(&rc_law_zmf, &cp, &outp[0], &outp[1], con.n);
     if (st != RC_OK) {
@@ -261,6 +261,7 @@ static int write_script(const char *path, const options *o, size_t nf, char *err
 
 int main(int argc, char **argv)
 {
+    app_init();
     options o;
     memset(&o, 0, sizeof o);
     int st = parse_options(argc, argv, &o);
@@ -282,7 +283,8 @@ int main(int argc, char **argv)
     double *th = malloc(NB * N * nf * sizeof *th);
     double *xs = malloc(N * sizeof *xs), *ys = malloc(N * sizeof *ys);
     char *csv = app_path_join(o.out, "frames.csv"), *gp = app_path_join(o.out, "frames.gp");
-    rc_toi_workspace *ws = rc_toi_workspace_alloc();
+    rc_toi_workspace *ws = NULL;
+    (void)rc_toi_workspace_create(&ws); /* NULL on failure: checked below */
     outcome *res = malloc(nf * sizeof *res);
     size_t *pair_a = malloc((npair + 1) * sizeof *pair_a);
     size_t *pair_b = malloc((npair + 1) * sizeof *pair_b);

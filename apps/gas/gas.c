@@ -370,7 +370,7 @@ static int run_gas1d(const options *o, samples *S, char *err)
     rc_gas1d_def d = rc_gas1d_def_default();
     d.n = n;
     d.length = (double)n;
-    d.inv_c2 = 1.0 / (o->c * o->c);
+    d.c = o->c;
     d.x = x;
     d.m = m;
     d.p = p;
@@ -384,7 +384,7 @@ static int run_gas1d(const options *o, samples *S, char *err)
             st = rc_gas1d_get(g, NULL, m, p);
         double e = 0.0;
         for (size_t i = 0; i < n && st == RC_OK; i++) {
-            const double u = p[i] * p[i] * d.inv_c2 / (m[i] * m[i]);
+            const double u = p[i] * p[i] * rc_inv_c2_of(d.c) / (m[i] * m[i]);
             S->u[(j - 1) * n + i] = u;
             e += m[i] * sqrt(1.0 + u);
             S->mass_drift = fmax(S->mass_drift, fabs(m[i] - mix_mass[S->spec[i]]) /
@@ -617,6 +617,7 @@ static int write_script(const char *path, const options *o, int nspec,
 
 int main(int argc, char **argv)
 {
+    app_init();
     options o;
     memset(&o, 0, sizeof o);
     int st = parse_options(argc, argv, &o);
@@ -624,7 +625,6 @@ int main(int argc, char **argv)
         return app_help(usage);
     if (st != 0)
         return st;
-    gsl_set_error_handler_off();
 
     char err[APP_ERR_LEN];
     int rc = 1;

@@ -136,7 +136,7 @@ static int collide_at(const options *o, const app_balls *b, rc_vec3 n, double c,
     if (app_balls_particles(b, c, in, err) != 0)
         return RC_EINVAL;
     rc_collision_params prm = rc_collision_params_default();
-    rc_inv_c2(c, &prm.inv_c2);
+    prm.c = c;
     prm.eps = o->eps;
     outp[0] = in[0];
     outp[1] = in[1];
@@ -188,6 +188,7 @@ static int write_script(const char *path, const options *o, const app_balls *b,
 
 int main(int argc, char **argv)
 {
+    app_init();
     options o;
     memset(&o, 0, sizeof o);
     int st = parse_options(argc, argv, &o);

@@ -44,8 +44,9 @@ static int sphere_normal(const sweep_setup *s, rc_vec3 *n, char *err)
     return 0;
 }
 
-static int eval_collide(const sweep_setup *s, double k, double *out, char *err)
+static int eval_collide(const sweep_setup *s, double c, double *out, char *err)
 {
+    const double k = rc_inv_c2_of(c);
     rc_particle b[2], a[2];
     rc_vec3 n;
     if (particles(s, k, b, err) || sphere_normal(s, &n, err))
@@ -53,7 +54,7 @@ static int eval_collide(const sweep_setup *s, double k, double *out, char *err)
     a[0] = b[0];
     a[1] = b[1];
     rc_collision_params prm = rc_collision_params_default();
-    prm.inv_c2 = k;
+    prm.c = c;
     prm.eps = s->eps;
     int st = rc_collide(&rc_law_zmf, &prm, &a[0], &a[1], n);
     if (st != RC_OK) {
@@ -69,8 +70,9 @@ static int eval_collide(const sweep_setup *s, double k, double *out, char *err)
     return 0;
 }
 
-static int eval_toi(const sweep_setup *s, double k, double *out, char *err)
+static int eval_toi(const sweep_setup *s, double c, double *out, char *err)
 {
+    const double k = rc_inv_c2_of(c);
     rc_particle b[2];
     if (particles(s, k, b, err))
         return -1;
@@ -82,27 +84,28 @@ static int eval_toi(const sweep_setup *s, double k, double *out, char *err)
         tb[i].p = b[i].p;
     }
     rc_toi_params prm = rc_toi_params_default();
-    prm.inv_c2 = k;
-    rc_toi_workspace *ws = rc_toi_workspace_alloc();
-    if (!ws) {
+    prm.c = c;
+    rc_toi_workspace *ws = NULL;
+    if (rc_toi_workspace_create(&ws) != RC_OK) {
         app_errf(err, "out of memory");
         return -1;
     }
-    rc_toi_contact c;
-    int st = rc_toi(&rc_toi_frame_table, &prm, &tb[0], &tb[1], ws, &c);
+    rc_toi_contact con;
+    int st = rc_toi(&rc_toi_frame_table, &prm, &tb[0], &tb[1], ws, &con);
     rc_toi_workspace_free(&ws);
     if (st != RC_OK) {
         app_errf(err, "time of impact: %s", rc_strerror(st));
         return -1;
     }
-    out[0] = c.t;
-    out[1] = c.n.x;
-    out[2] = c.n.y;
+    out[0] = con.t;
+    out[1] = con.n.x;
+    out[2] = con.n.y;
     return 0;
 }
 
-static int eval_soft(const sweep_setup *s, double k, double *out, char *err)
+static int eval_soft(const sweep_setup *s, double c, double *out, char *err)
 {
+    const double k = rc_inv_c2_of(c);
     rc_particle b[2], a[2];
     if (particles(s, k, b, err))
         return -1;
@@ -110,7 +113,7 @@ static int eval_soft(const sweep_setup *s, double k, double *out, char *err)
     a[1] = b[1];
     rc_vec3 x[2] = {s->x[0], s->x[1]};
     rc_soft_params prm = rc_soft_params_default();
-    prm.inv_c2 = k;
+    prm.c = c;
     prm.stiffness = s->stiffness;
     prm.eps = s->eps;
     prm.rtol = 1e-11;
@@ -135,12 +138,13 @@ static int eval_soft(const sweep_setup *s, double k, double *out, char *err)
  * ball-ball and wall collisions, well separated in time so that no event changes order
  * over the grid (the deviation is then smooth in 1/c^2). Observables: the positions at
  * the end and the heat made. */
-static int eval_engine(const sweep_setup *s, double k, double *out, char *err)
+static int eval_engine(const sweep_setup *s, double c, double *out, char *err)
 {
+    const double k = rc_inv_c2_of(c);
     rc_sim_def d = rc_sim_def_default();
     d.dim = 2;
     d.box = rc_v3(16, 10, 0);
-    d.c = k > 0 ? 1.0 / sqrt(k) : INFINITY;
+    d.c = c;
     d.eps_ball = s->eps;
     d.eps_wall = 1.0;
     d.frame = &rc_toi_frame_table;

@@ -23,7 +23,7 @@ typedef struct sweep_scenario {
     int n_obs;
     const char *obs[OBS_MAX];   /* observable names, for the CSV */
     /* Observable values at inv_c2; returns 0 or -1 with a reason in err (APP_ERR_LEN). */
-    int (*eval)(const sweep_setup *s, double inv_c2, double *out, char *err);
+    int (*eval)(const sweep_setup *s, double c, double *out, char *err);
     /* groups of observables whose deviation is reported together: a vector observable
      * counts as one deviation |a - a_inf| / |a_inf| over its components */
     int n_groups;

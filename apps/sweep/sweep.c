@@ -155,9 +155,9 @@ static int run(int argc, char **argv)
 #pragma omp parallel for schedule(dynamic, 1)
     for (size_t t = lo; t < hi; t++) {
         size_t s = t / (N + 1), j = t % (N + 1);
-        double k = j == N ? 0.0 : 1.0 / (cs[j] * cs[j]);
+        const double c = j == N ? INFINITY : cs[j];
         char e[APP_ERR_LEN];
-        res[t].status = list[s]->eval(&su, k, res[t].obs, e) ? 1.0 : 0.0;
+        res[t].status = list[s]->eval(&su, c, res[t].obs, e) ? 1.0 : 0.0;
 #pragma omp atomic
         done++;
 #ifdef _OPENMP
@@ -191,9 +191,9 @@ static int run(int argc, char **argv)
     for (size_t t = 0; t < ntask; t++)
         if (res[t].status != 0.0) {
             size_t s = t / (N + 1), j = t % (N + 1);
-            double k = j == N ? 0.0 : 1.0 / (cs[j] * cs[j]);
+            const double c = j == N ? INFINITY : cs[j];
             double tmp[OBS_MAX];
-            list[s]->eval(&su, k, tmp, err); /* again, serially, for the message */
+            list[s]->eval(&su, c, tmp, err); /* again, serially, for the message */
             rc = fail(1, "scenario %s at c = %s: %s", list[s]->name,
                       j == N ? "inf" : app_fmt(cs[j], (char[APP_FMT_LEN]){0}), err);
             goto done;
@@ -337,7 +337,7 @@ done:
 
 int main(int argc, char **argv)
 {
-    gsl_set_error_handler_off();
+    app_init();
 #ifdef RELCOL_HAVE_MPI
     MPI_Init(&argc, &argv);
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);

@@ -133,6 +133,7 @@ static void print_header(int dim, int wall)
 
 int main(int argc, char **argv)
 {
+    app_init();
     options o;
     memset(&o, 0, sizeof o);
     int st = parse_options(argc, argv, &o);
@@ -206,7 +207,7 @@ int main(int argc, char **argv)
         ball[i].p = pt[i].p;
     }
     rc_toi_params prm = rc_toi_params_default();
-    rc_inv_c2(o.c, &prm.inv_c2);
+    prm.c = o.c;
 
     if (wall) {
         /* the first n_wall/2 axes are walled; the others are open */
@@ -243,8 +244,7 @@ int main(int argc, char **argv)
         goto out;
     }
 
-    ws = rc_toi_workspace_alloc();
-    if (!ws) {
+    if (rc_toi_workspace_create(&ws) != RC_OK) {
         fail("out of memory");
         rc = 1;
         goto out;

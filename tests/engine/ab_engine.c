@@ -7,7 +7,9 @@
  * 0.5 c), frame (the engine's default, or a contact frame's name: table, zmf). Both gases
  * are built alike and melted (7.5 events a ball; 3 with a frame) before timing; each round
  * times a chunk of events on both, the first one alternating. Prints each library's
- * collisions per CPU second and B/A. scripts/ab-revs.sh builds two revisions for it. */
+ * collisions per CPU second and B/A. scripts/ab-revs.sh builds two revisions for it.
+ * RELCOL_SIMD (avx512, avx2, scalar) and RELCOL_DEFER=0 force a path in both
+ * (env_choices.h; libraries from before rc_sim_def.simd read the variables themselves). */
 #ifndef _GNU_SOURCE
 #define _GNU_SOURCE /* dlmopen */
 #endif
@@ -19,6 +21,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "env_choices.h"
 #include "relcol/relcol.h"
 
 typedef struct lib {
@@ -77,6 +80,7 @@ static rc_sim *make_gas(const lib *l, int dim, size_t n, double c, const char *f
     rc_sim_gas_def g = {dim, n, 0.5, packing, isinf(c) ? 1.0 : 0.5 * c, c, 1.0, 2024};
     rc_sim_ball *b = calloc(n, sizeof *b);
     rc_sim_def d = l->def_default();
+    env_choices(&d); /* (a library older than the fields reads the variables itself) */
     d.dim = dim;
     d.c = c;
     if (frame && !(d.frame = l->frame_find(frame))) {

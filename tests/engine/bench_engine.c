@@ -5,13 +5,15 @@
  * Usage: bench_engine [quick|full|N|2d:N|rel:N|ratio] [collisions per ball]; full adds
  * N = 1e6; N, 2d:N, rel:N run one case, timing 20 (rel: 5) collisions a ball or as many as
  * asked; ratio only the interleaved contracted/classical cost ratio.
- * Figures are CPU time of this process (the wall clock on a shared machine is noisier). */
+ * Figures are CPU time of this process (the wall clock on a shared machine is noisier).
+ * RELCOL_SIMD (avx512, avx2, scalar) and RELCOL_DEFER=0 force a path (env_choices.h). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
+#include "env_choices.h"
 #include "relcol/relcol.h"
 
 static double cpu_s(void)
@@ -34,6 +36,7 @@ static rc_sim *setup(int dim, size_t n, double packing, double c, const char *fr
     rc_sim_gas_def g = {dim, n, 0.5, packing, isinf(c) ? 1.0 : 0.5 * c, c, 1.0, 2024};
     rc_sim_ball *b = calloc(n, sizeof *b); /* zeroed: rc_sim_gas_init leaves collided, tau_last */
     rc_sim_def d = rc_sim_def_default();
+    env_choices(&d);
     d.dim = dim;
     d.c = c;
     if (frame)

@@ -132,7 +132,7 @@ static void test_single_is_zmf_law(void)
                                rc_test_range(&R, -1, 1)));
         double eps = rc_test_uniform(&R);
         rc_collision_params prm = rc_collision_params_default();
-        prm.inv_c2 = k;
+        prm.c = rc_test_c_of(k);
         prm.eps = eps;
         rc_particle la = a, lb = b, P[2] = {a, b};
         int st = rc_law_zmf.collide(&prm, &la, &lb, n);

@@ -70,9 +70,9 @@ static void test_parting_bounding_spheres(void)
         {-2.5, -2.1, -1.4, -1.3, 0.38, -0.8}, {1.3, 2.8, 1.2, 1.6, 0.46, 0.19},
     };
     rc_toi_params prm = rc_toi_params_default();
-    prm.inv_c2 = 1.0;
-    rc_toi_workspace *ws = rc_toi_workspace_alloc();
-    ENSURE(ws != NULL);
+    prm.c = 1.0;
+    rc_toi_workspace *ws = NULL;
+    ENSURE(rc_toi_workspace_create(&ws) == RC_OK);
     if (!ws)
         return;
     for (size_t q = 0; q < sizeof cs / sizeof cs[0]; q++) {

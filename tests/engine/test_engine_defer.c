@@ -9,7 +9,7 @@
  *    fallback is needed: counted, and required to occur), so a prediction that left out
  *    the others' bound lb2 fails here (~230 of the 9000 balls differ). (The settle's own
  *    comparison with lb2 is also made by pair_time's cut-off, which it is given.)
- *  - Whole runs with and without deferring (RELCOL_DEFER=0) agree bit for bit at a given
+ *  - Whole runs with and without deferring (RC_SIM_DEFER_OFF) agree bit for bit at a given
  *    time: the state hash, collisions, groups, crossings, overlaps, TC events. Only the
  *    stale entries differ (a deferred bound is popped and found stale where an exact
  *    time would have been found stale at a crossing): checked to differ, so that the
@@ -37,13 +37,9 @@ static rc_sim_def table_def(int dim, double c, double eps)
 static rc_sim *engine_of(rc_sim_def d, double t, const rc_sim_ball *b, size_t n, int defer)
 {
     d.restart = 1; /* (a melted state holds shape-change overlaps that are separating) */
-    if (defer)
-        unsetenv("RELCOL_DEFER");
-    else
-        ENSURE(setenv("RELCOL_DEFER", "0", 1) == 0);
+    d.defer = defer ? RC_SIM_DEFER_ON : RC_SIM_DEFER_OFF;
     rc_sim *s = NULL;
     ENSURE(rc_sim_create(&d, &s) == RC_OK);
-    unsetenv("RELCOL_DEFER");
     size_t bad = 0;
     int st = s ? rc_sim_set_time(s, t) : RC_OK;
     if (s && (st != RC_OK || (st = rc_sim_set_balls(s, n, b, &bad)) != RC_OK)) {
@@ -146,10 +142,8 @@ static void runs(int dim, size_t n, double packing, double c, double beta, doubl
     rc_sim_diag g[2];
     uint64_t h[2] = {0, 0};
     for (int k = 0; k < 2; k++) {
-        if (k == 0)
-            ENSURE(setenv("RELCOL_DEFER", "0", 1) == 0);
+        d.defer = k == 0 ? RC_SIM_DEFER_OFF : RC_SIM_DEFER_AUTO;
         rc_sim *s = util_gas(d, n, packing, beta * c, 23);
-        unsetenv("RELCOL_DEFER");
         if (!s)
             return;
         ENSURE(s->defer == k);
@@ -191,8 +185,36 @@ static void test_runs(void)
     runs(2, 2000, 0.50, 1.0, 0.9, 1.0, 12.0);
 }
 
+/* The def's choice: on for the table frame, RC_EINVAL where deferring is not allowed (the
+ * zmf frame, uncontracted spheres), off anywhere; values outside the enum are RC_EINVAL. */
+static void test_def_field(void)
+{
+    const char *frames[3] = {"table", "zmf", "sphere"};
+    for (int f = 0; f < 3; f++)
+        for (int k = 0; k < 3; k++) {
+            rc_sim_def d = table_def(3, 2.0, 1.0);
+            d.frame = rc_toi_frame_find(frames[f]);
+            d.defer = k == 0 ? RC_SIM_DEFER_AUTO : k == 1 ? RC_SIM_DEFER_ON : RC_SIM_DEFER_OFF;
+            rc_sim *s = NULL;
+            const int st = rc_sim_create(&d, &s);
+            const int allowed = f == 0 || d.defer != RC_SIM_DEFER_ON;
+            ENSURE_MSG(st == (allowed ? RC_OK : RC_EINVAL), "%s defer %d: %d", frames[f], k, st);
+            if (s)
+                ENSURE(s->defer == (f == 0 && d.defer != RC_SIM_DEFER_OFF));
+            rc_sim_free(&s);
+        }
+    rc_sim_def d = table_def(3, 2.0, 1.0);
+    d.defer = (rc_sim_defer)7;
+    rc_sim *s = NULL;
+    ENSURE(rc_sim_create(&d, &s) == RC_EINVAL);
+    d = table_def(3, 2.0, 1.0);
+    d.simd = (rc_sim_simd)-1;
+    ENSURE(rc_sim_create(&d, &s) == RC_EINVAL);
+}
+
 int main(void)
 {
+    RUN_TEST(test_def_field);
     RUN_TEST(test_settle);
     RUN_TEST(test_runs);
     RC_TEST_MAIN_END();

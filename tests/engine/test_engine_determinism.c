@@ -86,8 +86,8 @@ static void check(double c, const char *frame, double T)
     rc_sim_free(&s4);
 }
 
-/* The neighbour test runs in AVX-512 lanes, AVX2 lanes (RELCOL_SIMD=avx2) or one by one
- * (RELCOL_SIMD=scalar), the variable read when an engine is created: the same operations
+/* The neighbour test runs in AVX-512 lanes, AVX2 lanes (rc_sim_def.simd = RC_SIM_SIMD_AVX2)
+ * or one by one (RC_SIM_SIMD_SCALAR): the same operations
  * in the same order, so the same bits. Uncontracted frames take it for every prediction,
  * contracted ones for their broad phase; 2-D and 3-D, classical and c = 2, with walls,
  * restitution, the TC model and the simultaneity check (sim_tol > 0) in play, and a
@@ -100,13 +100,10 @@ static void lanes(int dim, double c, const char *frame)
     if (frame)
         d.frame = rc_toi_frame_find(frame);
     const size_t n = dim == 3 ? 2000 : N;
-    const char *mode[3] = {"scalar", "avx2", NULL}; /* NULL: the CPU's best */
+    const rc_sim_simd mode[3] = {RC_SIM_SIMD_SCALAR, RC_SIM_SIMD_AVX2, RC_SIM_SIMD_AUTO};
     uint64_t h[3] = {0, 0, 0};
     for (int k = 0; k < 3; k++) {
-        if (mode[k])
-            ENSURE(setenv("RELCOL_SIMD", mode[k], 1) == 0);
-        else
-            unsetenv("RELCOL_SIMD");
+        d.simd = mode[k];
         rc_sim *s = util_gas(d, n, dim == 3 ? 0.4 : 0.6, isinf(c) ? 1.0 : 0.5 * c, 17);
         if (!s)
             continue;
@@ -114,7 +111,6 @@ static void lanes(int dim, double c, const char *frame)
         h[k] = rc_sim_hash(s);
         rc_sim_free(&s);
     }
-    unsetenv("RELCOL_SIMD");
     ENSURE_MSG(h[0] == h[1] && h[1] == h[2], "%dD c=%g %s: scalar %llx avx2 %llx best %llx",
                dim, c, frame ? frame : "sphere", (unsigned long long)h[0],
                (unsigned long long)h[1], (unsigned long long)h[2]);

@@ -23,7 +23,7 @@ static int four_impulse(const rc_collision_params *prm, rc_particle *a, rc_parti
     law_calls++;
     if (fail_after >= 0 && law_calls > fail_after)
         return RC_EMASS; /* a law that gives up: the engine must say so */
-    const double k = prm->inv_c2, eps = prm->eps;
+    const double k = rc_inv_c2_of(prm->c), eps = prm->eps;
     const double M0 = sqrt(a->m * a->m + rc_v3_norm2(a->p) * k);
     const double M1 = sqrt(b->m * b->m + rc_v3_norm2(b->p) * k);
     const double Mt = M0 + M1;
@@ -48,7 +48,7 @@ static int joint(const rc_collision_params *prm, size_t nballs, rc_particle *bal
                  const rc_contact *contacts, double *jout)
 {
     group_calls++;
-    return rc_contacts_resolve(prm->inv_c2, nballs, balls, k, contacts, jout);
+    return rc_contacts_resolve(rc_inv_c2_of(prm->c), nballs, balls, k, contacts, jout);
 }
 
 /* with a group solver (the library's joint solve) ... */
@@ -75,7 +75,7 @@ static int table_shapes(const rc_toi_params *prm, const rc_toi_ball *a, const rc
                         rc_toi_workspace *ws, rc_toi_contact *out)
 {
     frame_calls++;
-    const double k = prm->inv_c2;
+    const double k = rc_inv_c2_of(prm->c);
     const rc_vec3 v0 = rc_velocity(a->m, a->p, k), v1 = rc_velocity(b->m, b->p, k);
     const rc_toi_shape s0 = rc_toi_shape_of(a->r, a->m, a->p, k);
     const rc_toi_shape s1 = rc_toi_shape_of(b->r, b->m, b->p, k);

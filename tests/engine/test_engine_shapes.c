@@ -105,8 +105,9 @@ static void test_certificates(void)
     eng_aux a[2];
     rc_sim s = records_engine(b, a, 2);
     rc_toi_params prm = rc_toi_params_default();
-    prm.inv_c2 = 1.0;
-    rc_toi_workspace *ws = rc_toi_workspace_alloc();
+    prm.c = 1.0;
+    rc_toi_workspace *ws = NULL;
+    ENSURE(rc_toi_workspace_create(&ws) == RC_OK);
     rc_test_rng R = {11};
     size_t count[3] = {0, 0, 0}, bad = 0, near_touch = 0;
     for (int trial = 0; trial < 40000 && ws; trial++) {

@@ -57,7 +57,7 @@ static inline int gas_setup_create(const gas_setup *s, rc_gas1d **g)
     rc_gas1d_def d = rc_gas1d_def_default();
     d.n = s->n;
     d.length = s->L;
-    d.inv_c2 = s->inv_c2;
+    d.c = rc_test_c_of(s->inv_c2);
     d.x = s->x;
     d.m = s->m;
     d.p = s->p;

@@ -31,7 +31,7 @@ static void test_validation(void)
     rc_gas1d_def d = rc_gas1d_def_default();
     d.n = 3;
     d.length = 1.0;
-    d.inv_c2 = 1.0;
+    d.c = 1.0;
     d.x = x;
     d.m = m;
     d.p = p;
@@ -85,9 +85,9 @@ static void test_validation(void)
     e.length = INFINITY;
     ENSURE(rc_gas1d_create(&e, &g, NULL) == RC_ENONFINITE);
     e = d;
-    e.inv_c2 = -1.0;
+    e.c = -1.0;
     ENSURE(rc_gas1d_create(&e, &g, NULL) == RC_ESPEEDOFLIGHT);
-    e.inv_c2 = NAN;
+    e.c = NAN;
     ENSURE(rc_gas1d_create(&e, &g, NULL) == RC_ESPEEDOFLIGHT);
     e = d;
     e.t0 = NAN;
@@ -117,7 +117,7 @@ static void test_single_particle(void)
         rc_gas1d_def d = rc_gas1d_def_default();
         d.n = 1;
         d.length = 1.0;
-        d.inv_c2 = rel ? 1.0 : 0.0;
+        d.c = rel ? 1.0 : INFINITY;
         d.x = &x;
         d.m = &m;
         d.p = &p;
@@ -255,14 +255,14 @@ static void brute_force_run(double inv_c2, uint64_t seed)
     rc_gas1d_def d = rc_gas1d_def_default();
     d.n = N;
     d.length = L;
-    d.inv_c2 = inv_c2;
+    d.c = rc_test_c_of(inv_c2);
     d.x = x;
     d.m = m;
     d.p = p;
     rc_gas1d *g;
     ENSURE(rc_gas1d_create(&d, &g, NULL) == RC_OK);
     rc_collision_params prm = rc_collision_params_default();
-    prm.inv_c2 = inv_c2;
+    prm.c = rc_test_c_of(inv_c2);
     long mismatched = 0, near_ties = 0, wrong_outcome = 0, bad_time = 0, bad_pos = 0;
     for (int step = 0; step < STEPS; step++) {
         const double t = rc_gas1d_time(g);
@@ -472,7 +472,7 @@ static void test_ties(void)
     rc_gas1d_def d = rc_gas1d_def_default();
     d.n = 4;
     d.length = 1.0;
-    d.inv_c2 = 1.0;
+    d.c = 1.0;
     d.x = x;
     d.m = m;
     d.p = p;
@@ -507,7 +507,7 @@ static void test_ties(void)
      * walls together at 0.5, pair at 1.5, walls together at 2.5, ... left wall first. */
     double x2[2] = {0.25, 0.75}, m2[2] = {1, 1}, p2[2] = {-0.5, 0.5};
     d.n = 2;
-    d.inv_c2 = 0.0;
+    d.c = INFINITY;
     d.x = x2;
     d.m = m2;
     d.p = p2;

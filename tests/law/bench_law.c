@@ -29,7 +29,7 @@ static double time_batch(const arrays *x, const rc_law *law, double inv_c2, int 
                          size_t *hits)
 {
     rc_collision_params prm = rc_collision_params_default();
-    prm.inv_c2 = inv_c2;
+    prm.c = rc_test_c_of(inv_c2);
     prm.eps = 0.8;
     double best = 1e300;
     for (int r = 0; r < reps; r++) {

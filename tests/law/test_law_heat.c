@@ -36,7 +36,7 @@ static void run(const rc_law *law, const lu_pair *p, double eps, double c, rc_pa
         out[j] = in[j];
     }
     rc_collision_params prm = rc_collision_params_default();
-    prm.inv_c2 = *k;
+    prm.c = rc_test_c_of(*k);
     prm.eps = eps;
     ENSURE(rc_collide(law, &prm, &out[0], &out[1], p->n) == RC_OK);
 }

@@ -35,7 +35,7 @@ static outcome run(const rc_law *law, const lu_pair *p, double c)
     }
     double K0 = rc_kinetic_energy(b[0].m, b[0].p, k) + rc_kinetic_energy(b[1].m, b[1].p, k);
     rc_collision_params prm = rc_collision_params_default();
-    prm.inv_c2 = k;
+    prm.c = rc_test_c_of(k);
     prm.eps = p->eps;
     rc_particle in[2] = {b[0], b[1]};
     ENSURE(rc_collide(law, &prm, &b[0], &b[1], p->n) == RC_OK);
@@ -144,7 +144,7 @@ static void test_equal_mass_swap(void)
         double sc = lu_max(rc_v3_norm(a0.p), rc_v3_norm(b0.p));
         for (size_t l = 0; rc_laws[l]; l++) {
             rc_collision_params prm = rc_collision_params_default();
-            prm.inv_c2 = k;
+            prm.c = rc_test_c_of(k);
             a = a0, b = b0;
             ENSURE(rc_collide(rc_laws[l], &prm, &a, &b, n) == RC_OK);
             ENSURE_CLOSE(rc_v3_norm(rc_v3_sub(a.p, b0.p)), 0.0, 16 * DBL_EPSILON * g * g, sc);
@@ -178,7 +178,7 @@ static void test_perfectly_inelastic(void)
         ENSURE(rc_zmf(in, 2, k, &u, &minv) == RC_OK);
         for (size_t l = 0; rc_laws[l]; l++) {
             rc_collision_params prm = rc_collision_params_default();
-            prm.inv_c2 = k;
+            prm.c = rc_test_c_of(k);
             prm.eps = 0.0;
             rc_particle a = in[0], b = in[1];
             ENSURE(rc_collide(rc_laws[l], &prm, &a, &b, n) == RC_OK);
@@ -211,7 +211,7 @@ static void test_head_on_any_direction(void)
         ENSURE(rc_inv_c2(c, &k) == RC_OK);
         double g = 1.0 / sqrt(1.0 - vmax * vmax * k);
         rc_collision_params prm = rc_collision_params_default();
-        prm.inv_c2 = k;
+        prm.c = rc_test_c_of(k);
         prm.eps = rc_test_uniform(&r);
         rc_vec3 x = rc_v3(rc_v3_dot(n, rc_v3(1, 0, 0)) > 0 ? 1.0 : -1.0, 0, 0);
         for (size_t l = 0; rc_laws[l]; l++) {
@@ -257,7 +257,7 @@ static void test_heavy_partner_is_wall(void)
         rc_particle w = a;
         const rc_particle w0 = a;
         rc_collision_params prm = rc_collision_params_default();
-        prm.inv_c2 = k;
+        prm.c = rc_test_c_of(k);
         prm.eps = eps;
         ENSURE(rc_collide(&rc_law_zmf, &prm, &a, &heavy, n) == RC_OK);
         ENSURE(rc_collide_wall(k, eps, &w, n) == RC_OK);

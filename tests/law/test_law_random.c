@@ -148,7 +148,7 @@ static void test_law(const rc_law *law, uint64_t seed)
         config cf;
         random_config(&r, &cf, 1 + i % 3);
         rc_collision_params prm = rc_collision_params_default();
-        prm.inv_c2 = cf.k;
+        prm.c = rc_test_c_of(cf.k);
         prm.eps = cf.eps;
         if (!is_zmf && rc_test_uniform(&r) < 0.5) {
             double u1 = rc_test_uniform(&r), u2 = rc_test_uniform(&r);
@@ -261,7 +261,7 @@ static void test_every_law_conserves(void)
             config cf;
             random_config(&r, &cf, 1 + i % 3);
             rc_collision_params prm = rc_collision_params_default();
-            prm.inv_c2 = cf.k;
+            prm.c = rc_test_c_of(cf.k);
             prm.eps = cf.eps;
             rc_particle out[2] = {cf.b[0], cf.b[1]};
             int st = rc_collide(rc_laws[l], &prm, &out[0], &out[1], cf.n);
@@ -357,7 +357,7 @@ static void test_zmf_commutes_with_boosts(void)
         random_config(&r, &cf, 1 + i % 3);
         rc_vec3 w = lu_vec(&r, 3, isinf(cf.c) ? 2.0 : 0.9 * cf.c);
         rc_collision_params prm = rc_collision_params_default();
-        prm.inv_c2 = cf.k;
+        prm.c = rc_test_c_of(cf.k);
         prm.eps = cf.eps;
 
         rc_particle a = cf.b[0], b = cf.b[1];

@@ -49,7 +49,7 @@ static void test_seed000_1d(void)
             ENSURE(rc_momentum_from_velocity(m0, rc_v3(v0, 0, 0), k, &a.p) == RC_OK);
             ENSURE(rc_momentum_from_velocity(m1, rc_v3(v1, 0, 0), k, &b.p) == RC_OK);
             rc_collision_params prm = rc_collision_params_default();
-            prm.inv_c2 = k;
+            prm.c = rc_test_c_of(k);
             prm.eps = eps;
             /* the seed's balls approach: ball 0 behind ball 1 along n = sign(v0 - v1) x */
             int st = rc_collide(rc_laws[l], &prm, &a, &b, rc_v3(v0 > v1 ? 1.0 : -1.0, 0, 0));

@@ -8,11 +8,13 @@
 static void test_readme(void)
 {
     rc_collision_params prm = rc_collision_params_default();   /* c = inf, eps = 1 */
-    rc_inv_c2(1.0, &prm.inv_c2);                                /* c = 1 */
+    prm.c = 1.0;
     prm.eps = 0.0;
+    double k;                                                   /* 1/c^2, for formulas */
+    rc_inv_c2(prm.c, &k);
     rc_particle a = {1.0, {0, 0, 0}}, b = {1.0, {0, 0, 0}};    /* rest mass, momentum */
-    rc_momentum_from_velocity(a.m, rc_v3(0.6, 0, 0), prm.inv_c2, &a.p);
-    rc_momentum_from_velocity(b.m, rc_v3(-0.6, 0, 0), prm.inv_c2, &b.p);
+    rc_momentum_from_velocity(a.m, rc_v3(0.6, 0, 0), k, &a.p);
+    rc_momentum_from_velocity(b.m, rc_v3(-0.6, 0, 0), k, &b.p);
     int st = rc_collide(rc_law_find("zmf"), &prm, &a, &b, rc_v3(1, 0, 0));
     /* st == RC_OK; both at rest; a.m == b.m == 1.25 (the kinetic energy became rest mass) */
     ENSURE(st == RC_OK);

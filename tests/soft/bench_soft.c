@@ -82,7 +82,7 @@ static void time_steppers(double c, const rc_soft_params *prm, double rate[2])
 static void bench(double c, rc_soft_shape shape)
 {
     rc_soft_params prm = rc_soft_params_default();
-    rc_inv_c2(c, &prm.inv_c2);
+    prm.c = c;
     prm.rtol = RTOL;
     prm.eps = 0.8;
     prm.shape = shape;
@@ -138,7 +138,7 @@ static void bench(double c, rc_soft_shape shape)
         nn[i] = rc_v3_sub(x[1], x[0]); /* not the touch normal: timing only */
     }
     rc_collision_params cp = rc_collision_params_default();
-    cp.inv_c2 = prm.inv_c2;
+    cp.c = prm.c;
     cp.eps = prm.eps;
     const int reps = 200;
     double t0 = now();
@@ -168,7 +168,7 @@ int main(void)
     /* live contracted shapes converge to their own limit, not the hard law (section 7.4):
      * timed at eps = 1 (eps < 1 sticks and costs ~kappa steps) and kappa = 1e8 */
     rc_soft_params live = rc_soft_params_default();
-    live.inv_c2 = 1.0;
+    live.c = 1.0;
     live.rtol = RTOL;
     live.eps = 1.0;
     live.stiffness = 1e8;

@@ -67,7 +67,7 @@ static inline int soft_vs_hard(const rc_soft_stepper *st, const rc_soft_params *
     if (rr.n_contacts == 0)
         return RC_MISS;
     rc_collision_params cp = rc_collision_params_default();
-    cp.inv_c2 = prm->inv_c2;
+    cp.c = prm->c;
     cp.eps = prm->eps;
     code = rc_collide(&rc_law_zmf, &cp, &h[0], &h[1], rr.normal);
     if (code != RC_OK)

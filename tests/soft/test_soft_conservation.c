@@ -14,7 +14,7 @@
 static rc_soft_params params(double c, double eps, double kappa, double rtol)
 {
     rc_soft_params prm = rc_soft_params_default();
-    rc_inv_c2(c, &prm.inv_c2);
+    prm.c = c;
     prm.eps = eps;
     prm.stiffness = kappa;
     prm.rtol = rtol;
@@ -69,7 +69,7 @@ static void test_two_balls_conserve(void)
         for (int ie = 0; ie < 3; ie++)
             for (int ib = 0; ib < 3; ib++) {
                 rc_soft_params prm = params(cs[ic], epss[ie], 1e6, RTOL);
-                const double k = prm.inv_c2;
+                const double k = rc_inv_c2_of(prm.c);
                 rc_particle p[2], q[2];
                 rc_vec3 x[2];
                 soft_case(k, beta(cs[ic], 0.6, 0.1, 0.0), beta(cs[ic], -0.3, 0.05, 0.1), bs[ib],
@@ -120,7 +120,7 @@ static void test_energy_error_follows_tolerance(void)
             rc_soft_params prm = params(c, 0.5, 1e6, it ? 1e-10 : 1e-7);
             rc_particle p[2];
             rc_vec3 x[2];
-            soft_case(prm.inv_c2, beta(c, 0.6, 0.1, 0.0), beta(c, -0.3, 0.05, 0.1), 0.3, p, x);
+            soft_case(rc_inv_c2_of(prm.c), beta(c, 0.6, 0.1, 0.0), beta(c, -0.3, 0.05, 0.1), 0.3, p, x);
             rc_soft_result res;
             ENSURE(rc_soft_collide(&rc_soft_cvode_bdf, &prm, 2, p, x, soft_r, NULL, &res) ==
                    RC_OK);
@@ -139,7 +139,7 @@ static void test_three_balls_conserve(void)
         const double c = ic ? 1.0 : INFINITY;
         for (int eps_i = 0; eps_i < 2; eps_i++) {
             rc_soft_params prm = params(c, eps_i ? 0.6 : 1.0, 1e6, RTOL);
-            const double k = prm.inv_c2;
+            const double k = rc_inv_c2_of(prm.c);
             rc_particle p[3] = {{1.0, {0, 0, 0}}, {2.0, {0, 0, 0}}, {1.5, {0, 0, 0}}};
             ENSURE(rc_momentum_from_velocity(1.0, beta(c, 0.5, 0.02, 0), k, &p[0].p) == RC_OK);
             ENSURE(rc_momentum_from_velocity(2.0, beta(c, 0.0, 0.0, 0.01), k, &p[1].p) == RC_OK);
@@ -175,7 +175,7 @@ static void test_sixteen_balls_conserve(void)
         const double c = ic ? 1.0 : INFINITY;
         rc_soft_params prm = params(c, 0.7, 1e4, RTOL);
         prm.t_max = 1.0;
-        const double k = prm.inv_c2;
+        const double k = rc_inv_c2_of(prm.c);
         rc_test_rng g = {2024};
         rc_particle p[N];
         rc_vec3 x[N];
@@ -221,7 +221,7 @@ static void test_steppers_agree(void)
                 rc_soft_params prm = params(cs[ic], epss[ie], 1e5, RTOL);
                 rc_particle p[2], out[3][2];
                 rc_vec3 x[2];
-                soft_case(prm.inv_c2, beta(cs[ic], 0.5, -0.2, 0.1), beta(cs[ic], -0.4, 0.1, 0.0),
+                soft_case(rc_inv_c2_of(prm.c), beta(cs[ic], 0.5, -0.2, 0.1), beta(cs[ic], -0.4, 0.1, 0.0),
                           bs[ib], p, x);
                 const rc_soft_stepper *st[3] = {&rc_soft_cvode_bdf, &rc_soft_gsl_rk8pd,
                                                 &rc_soft_gsl_rkf45};
@@ -281,7 +281,7 @@ static void test_rejects_bad_input(void)
     bad.rtol = NAN;
     ENSURE(rc_soft_collide(st, &bad, 2, q, x, soft_r, NULL, NULL) == RC_ENONFINITE);
     bad = prm;
-    bad.inv_c2 = -1.0;
+    bad.c = -1.0;
     ENSURE(rc_soft_collide(st, &bad, 2, q, x, soft_r, NULL, NULL) == RC_ESPEEDOFLIGHT);
     const double r0[2] = {0.3, 0.0};
     ENSURE(rc_soft_collide(st, &prm, 2, q, x, r0, NULL, NULL) == RC_ERADIUS);

@@ -17,7 +17,7 @@
 static rc_soft_params params(double c, double eps, double kappa, rc_soft_shape shape)
 {
     rc_soft_params prm = rc_soft_params_default();
-    rc_inv_c2(c, &prm.inv_c2);
+    prm.c = c;
     prm.eps = eps;
     prm.stiffness = kappa;
     prm.rtol = RTOL;
@@ -37,20 +37,21 @@ static int hard_zmf(double k, double eps, const rc_particle p[2], const rc_vec3 
                     rc_particle h[2], rc_vec3 *n)
 {
     rc_toi_params tp = rc_toi_params_default();
-    tp.inv_c2 = k;
+    tp.c = rc_test_c_of(k);
     const rc_toi_ball a = {x[0], soft_r[0], p[0].m, p[0].p};
     const rc_toi_ball b = {x[1], soft_r[1], p[1].m, p[1].p};
-    rc_toi_workspace *ws = rc_toi_workspace_alloc();
-    if (!ws)
-        return RC_ENOMEM;
+    rc_toi_workspace *ws = NULL;
+    int st = rc_toi_workspace_create(&ws);
+    if (st != RC_OK)
+        return st;
     rc_toi_contact c;
-    int st = rc_toi(&rc_toi_frame_zmf, &tp, &a, &b, ws, &c);
+    st = rc_toi(&rc_toi_frame_zmf, &tp, &a, &b, ws, &c);
     rc_toi_workspace_free(&ws);
     if (st != RC_OK)
         return st;
     *n = c.n;
     rc_collision_params cp = rc_collision_params_default();
-    cp.inv_c2 = k;
+    cp.c = rc_test_c_of(k);
     cp.eps = eps;
     h[0] = p[0];
     h[1] = p[1];
@@ -63,7 +64,7 @@ static int soft_err(const rc_soft_stepper *st, const rc_soft_params *prm, const 
 {
     rc_particle h[2];
     rc_vec3 n;
-    int code = hard_zmf(prm->inv_c2, prm->eps, p, x, h, &n);
+    int code = hard_zmf(rc_inv_c2_of(prm->c), prm->eps, p, x, h, &n);
     if (code != RC_OK)
         return code;
     rc_vec3 xx[2] = {x[0], x[1]};
@@ -144,7 +145,7 @@ static void test_frozen_converges_to_hard_zmf(void)
                     params(cs[ic], epss[ie], kappas[ik], RC_SOFT_CONTRACTED_FROZEN);
                 rc_particle p[2], out[2];
                 rc_vec3 x[2];
-                soft_case(prm.inv_c2, beta(cs[ic], 0.6, 0.1, 0.0), beta(cs[ic], -0.3, 0.05, 0.1),
+                soft_case(rc_inv_c2_of(prm.c), beta(cs[ic], 0.6, 0.1, 0.0), beta(cs[ic], -0.3, 0.05, 0.1),
                           0.3, p, x);
                 rc_soft_result res;
                 err[ik] = NAN;
@@ -169,7 +170,7 @@ static void test_live_head_on_elastic_exact(void)
         rc_soft_params prm = params(1.0, 1.0, kappa, RC_SOFT_CONTRACTED);
         rc_particle p[2], out[2];
         rc_vec3 x[2];
-        soft_case(prm.inv_c2, rc_v3(0.6, 0.1, 0.0), rc_v3(-0.3, 0.05, 0.1), 0.0, p, x);
+        soft_case(rc_inv_c2_of(prm.c), rc_v3(0.6, 0.1, 0.0), rc_v3(-0.3, 0.05, 0.1), 0.0, p, x);
         double err = NAN;
         rc_soft_result res;
         ENSURE(soft_err(&rc_soft_cvode_bdf, &prm, p, x, out, &err, &res) == RC_OK);
@@ -195,7 +196,7 @@ static void test_live_oblique_limit_is_order_v2_over_c2(void)
             rc_soft_params prm = params(cs[ic], 1.0, ik ? 1e8 : 1e7, RC_SOFT_CONTRACTED);
             rc_particle p[2];
             rc_vec3 x[2];
-            soft_case(prm.inv_c2, rc_v3(0.6, 0.1, 0.0), rc_v3(-0.3, 0.05, 0.1), 0.3, p, x);
+            soft_case(rc_inv_c2_of(prm.c), rc_v3(0.6, 0.1, 0.0), rc_v3(-0.3, 0.05, 0.1), 0.3, p, x);
             rc_soft_result res;
             err[ik] = NAN;
             ENSURE(soft_err(&rc_soft_cvode_bdf, &prm, p, x, out[ik], &err[ik], &res) == RC_OK);
@@ -238,7 +239,7 @@ static void test_contracted_conserve(void)
                 const double kappa = (m == 1 && e) ? 1e4 : 1e6;
                 rc_soft_params prm = params(1.0, e ? 0.4 : 1.0, kappa, (rc_soft_shape)m);
                 prm.rtol = rtol;
-                const double k = prm.inv_c2;
+                const double k = rc_inv_c2_of(prm.c);
                 rc_particle p[2], q[2];
                 rc_vec3 x[2];
                 soft_case(k, rc_v3(0.5, -0.2, 0.1), rc_v3(-0.4, 0.1, 0.0), ib ? 0.45 : 0.2, p, x);
@@ -260,7 +261,7 @@ static void test_contracted_conserve(void)
     for (int m = 1; m <= 2; m++) {
         rc_soft_params prm = params(1.0, 1.0, 1e5, (rc_soft_shape)m);
         prm.rtol = rtol;
-        const double k = prm.inv_c2;
+        const double k = rc_inv_c2_of(prm.c);
         rc_particle p[3] = {{1.0, {0, 0, 0}}, {2.0, {0, 0, 0}}, {1.5, {0, 0, 0}}};
         ENSURE(rc_momentum_from_velocity(1.0, rc_v3(0.5, 0.02, 0), k, &p[0].p) == RC_OK);
         ENSURE(rc_momentum_from_velocity(2.0, rc_v3(0.0, 0.0, 0.01), k, &p[1].p) == RC_OK);
@@ -294,7 +295,7 @@ static void test_contracted_steppers_agree(void)
             prm.rtol = rtol;
             rc_particle p[2], out[3][2];
             rc_vec3 x[2];
-            soft_case(prm.inv_c2, beta(1.5, 0.5, -0.2, 0.1), beta(1.5, -0.4, 0.1, 0.0), 0.45, p,
+            soft_case(rc_inv_c2_of(prm.c), beta(1.5, 0.5, -0.2, 0.1), beta(1.5, -0.4, 0.1, 0.0), 0.45, p,
                       x);
             for (int s = 0; s < 3; s++) {
                 rc_vec3 xx[2] = {x[0], x[1]};
@@ -321,7 +322,7 @@ static void test_rejects_bad_shape(void)
     prm.shape = (rc_soft_shape)7;
     rc_particle p[2], q[2];
     rc_vec3 x[2];
-    soft_case(prm.inv_c2, rc_v3(0.5, 0, 0), rc_v3(-0.5, 0, 0), 0.0, p, x);
+    soft_case(rc_inv_c2_of(prm.c), rc_v3(0.5, 0, 0), rc_v3(-0.5, 0, 0), 0.0, p, x);
     memcpy(q, p, sizeof q);
     ENSURE(rc_soft_collide(&rc_soft_cvode_bdf, &prm, 2, q, x, soft_r, NULL, NULL) == RC_EINVAL);
     ENSURE(memcmp(q, p, sizeof q) == 0);

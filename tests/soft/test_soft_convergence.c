@@ -16,7 +16,7 @@
 static rc_soft_params params(double c, double eps, double kappa)
 {
     rc_soft_params prm = rc_soft_params_default();
-    rc_inv_c2(c, &prm.inv_c2);
+    prm.c = c;
     prm.eps = eps;
     prm.stiffness = kappa;
     prm.rtol = RTOL;
@@ -47,7 +47,7 @@ static void test_head_on_exact_at_any_stiffness(void)
                 rc_soft_params prm = params(cs[ic], epss[ie], kappas[ik]);
                 rc_particle p[2], out[2] = {{0, {0, 0, 0}}, {0, {0, 0, 0}}};
                 rc_vec3 x[2];
-                ENSURE(soft_case(prm.inv_c2, beta(cs[ic], 0.7, 0.3, -0.2),
+                ENSURE(soft_case(rc_inv_c2_of(prm.c), beta(cs[ic], 0.7, 0.3, -0.2),
                                  beta(cs[ic], -0.5, 0.1, 0.4), 0.0, p, x) == 0);
                 double err = NAN;
                 rc_soft_result res;
@@ -98,7 +98,7 @@ static void test_oblique_converges_at_order_half(void)
                 rc_soft_params prm = params(cs[ic], epss[ie], kappas[ik]);
                 rc_particle p[2];
                 rc_vec3 x[2];
-                soft_case(prm.inv_c2, beta(cs[ic], 0.6, 0.1, 0.0), beta(cs[ic], -0.3, 0.05, 0.1),
+                soft_case(rc_inv_c2_of(prm.c), beta(cs[ic], 0.6, 0.1, 0.0), beta(cs[ic], -0.3, 0.05, 0.1),
                           0.3, p, x);
                 err[ik] = NAN;
                 ENSURE(soft_vs_hard(&rc_soft_cvode_bdf, &prm, p, x, NULL, &err[ik], NULL) ==
@@ -123,7 +123,7 @@ static void test_gsl_stepper_same_limit(void)
         rc_soft_params prm = params(1.0, 0.5, kappa);
         rc_particle p[2];
         rc_vec3 x[2];
-        soft_case(prm.inv_c2, beta(1.0, 0.6, 0.1, 0.0), beta(1.0, -0.3, 0.05, 0.1), 0.3, p, x);
+        soft_case(rc_inv_c2_of(prm.c), beta(1.0, 0.6, 0.1, 0.0), beta(1.0, -0.3, 0.05, 0.1), 0.3, p, x);
         double ec = NAN, eg = NAN;
         ENSURE(soft_vs_hard(&rc_soft_cvode_bdf, &prm, p, x, NULL, &ec, NULL) == RC_OK);
         ENSURE(soft_vs_hard(&rc_soft_gsl_rk8pd, &prm, p, x, NULL, &eg, NULL) == RC_OK);
@@ -142,7 +142,7 @@ static void test_large_c_approaches_classical(void)
         rc_soft_params prm = params(ic ? 1e3 : INFINITY, 0.5, 1e6);
         rc_particle p[2];
         rc_vec3 x[2];
-        soft_case(prm.inv_c2, rc_v3(0.6, 0.1, 0.0), rc_v3(-0.3, 0.05, 0.1), 0.3, p, x);
+        soft_case(rc_inv_c2_of(prm.c), rc_v3(0.6, 0.1, 0.0), rc_v3(-0.3, 0.05, 0.1), 0.3, p, x);
         double err;
         ENSURE(soft_vs_hard(&rc_soft_cvode_bdf, &prm, p, x, out[ic], &err, NULL) == RC_OK);
     }

@@ -81,7 +81,7 @@ static void test_outside_stepper(void)
     const double cs[2] = {INFINITY, 3.0};
     for (int ci = 0; ci < 2; ci++) {
         rc_soft_params prm = rc_soft_params_default();
-        rc_inv_c2(cs[ci], &prm.inv_c2);
+        prm.c = cs[ci];
         prm.eps = 0.8;
         prm.stiffness = 1e4;
         rc_particle b[2][2];

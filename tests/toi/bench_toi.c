@@ -25,7 +25,7 @@ static void make_cases(int dim, rc_toi_ball *a, rc_toi_ball *b, rc_toi_workspace
 {
     rc_test_rng rng = {(uint64_t)dim * 1234567};
     rc_toi_params prm = rc_toi_params_default();
-    prm.inv_c2 = 1.0;
+    prm.c = 1.0;
     int n = 0;
     while (n < NCASE) {
         rc_toi_ball x, y;
@@ -57,7 +57,7 @@ static double rate(const rc_toi_frame *f, const rc_toi_ball *a, const rc_toi_bal
                    rc_toi_workspace *ws, int *hits)
 {
     rc_toi_params prm = rc_toi_params_default();
-    prm.inv_c2 = 1.0;
+    prm.c = 1.0;
     long evals = 0;
     double sink = 0, t0 = now(), t1;
     *hits = 0;
@@ -82,7 +82,8 @@ int main(void)
 {
     (void)rc_test_checks; /* only the generator of rc_test.h is used here */
     (void)rc_test_failures;
-    rc_toi_workspace *ws = rc_toi_workspace_alloc();
+    rc_toi_workspace *ws = NULL;
+    (void)rc_toi_workspace_create(&ws); /* NULL on failure: checked below */
     rc_toi_ball *a = malloc(NCASE * sizeof *a), *b = malloc(NCASE * sizeof *b);
     if (!ws || !a || !b)
         return 1;

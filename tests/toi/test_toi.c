@@ -29,7 +29,7 @@ static rc_toi_ball ball_v(double x, double y, double z, double r, double vx, dou
 static void test_head_on(void)
 {
     rc_toi_params prm = rc_toi_params_default();
-    prm.inv_c2 = 1.0;
+    prm.c = 1.0;
     rc_toi_ball a = ball_v(0, 0, 0, 1, 0.6, 0, 0, 1.0), b = ball_v(10, 0, 0, 1, -0.6, 0, 0, 1.0);
     rc_toi_contact c;
     for (int i = 0; rc_toi_frames[i]; i++) {
@@ -64,7 +64,7 @@ static void test_head_on(void)
 static void test_wall(void)
 {
     rc_toi_params prm = rc_toi_params_default();
-    prm.inv_c2 = 1.0;
+    prm.c = 1.0;
     const double lo[3] = {-10, -20, -30}, hi[3] = {10, 20, 30};
     const double r = 1.5;
     for (int side = 0; side < 6; side++) {
@@ -104,7 +104,7 @@ static void test_wall(void)
     a = ball_v(0, 0, 0, 1, 0, 0.6, 0, 1.0);
     ENSURE(rc_toi_wall(&prm, 1, &a, rc_v3(1, 0, 0), 10, &t, NULL) == RC_MISS);
     /* c = inf: the contracted wall time is the sphere time exactly */
-    prm.inv_c2 = 0.0;
+    prm.c = INFINITY;
     a = ball_v(0.3, 0.1, 0, 0.7, 0.61, -0.2, 0, 0.0);
     double t1, t2;
     rc_vec3 x1, x2;
@@ -202,7 +202,7 @@ static void test_classical_exact(void)
 static void test_outcomes(void)
 {
     rc_toi_params prm = rc_toi_params_default();
-    prm.inv_c2 = 1.0;
+    prm.c = 1.0;
     rc_toi_contact c;
     /* contracted head-on pair placed at contact (gap 1.6) */
     rc_toi_ball a = ball_v(0, 0, 0, 1, 0.6, 0, 0, 1.0), b = ball_v(1.6, 0, 0, 1, -0.6, 0, 0, 1.0);
@@ -262,7 +262,7 @@ static void test_outcomes(void)
     b = ball_v(0, 3, 0, 1, 0.5, 0, 0, 1.0);
     ENSURE(rc_toi(&rc_toi_frame_table, &prm, &a, &b, ws, &c) == RC_MISS);
     /* exactly grazing spheres (impact parameter = R): a miss, never a time */
-    prm.inv_c2 = 0.0;
+    prm.c = INFINITY;
     a = ball_v(0, 0, 0, 1, 1, 0, 0, 0.0);
     b = ball_v(10, 2, 0, 1, 0, 0, 0, 0.0);
     ENSURE(rc_toi(&rc_toi_frame_table, &prm, &a, &b, ws, &c) == RC_MISS);
@@ -276,7 +276,7 @@ static void test_outcomes(void)
 static void test_contraction_miss(void)
 {
     rc_toi_params prm = rc_toi_params_default();
-    prm.inv_c2 = 1.0;
+    prm.c = 1.0;
     const double s = sqrt(0.5), beta = 0.99;
     const double hw = 2 * sqrt(1 - beta * beta / 2);
     /* 1e-6 either side of the contracted half-width: far above the solver's round-off
@@ -309,7 +309,7 @@ static void test_zmf_frame(void)
 {
     rc_toi_params prm = rc_toi_params_default();
     const double k = 1.0;
-    prm.inv_c2 = k;
+    prm.c = rc_test_c_of(k);
     rc_test_rng rng = {99};
     int compared = 0;
     for (int i = 0; i < 1000; i++) {
@@ -389,7 +389,7 @@ static void test_scale_invariance(void)
                                rc_test_range(&rng, -0.4, 0.4),
                                dim == 3 ? rc_test_range(&rng, -0.4, 0.4) : 0, 1.0);
         rc_toi_params prm = rc_toi_params_default();
-        prm.inv_c2 = 1.0;
+        prm.c = 1.0;
         rc_toi_contact c0;
         if (rc_toi(&rc_toi_frame_table, &prm, &a, &b, ws, &c0) != RC_OK)
             continue;
@@ -402,7 +402,7 @@ static void test_scale_invariance(void)
             bs.r *= L;
             as.p = rc_v3_scale(V, a.p); /* m = 1: p scales with v */
             bs.p = rc_v3_scale(V, b.p);
-            prm.inv_c2 = 1.0 / (V * V);
+            prm.c = V;
             rc_toi_contact c;
             ENSURE(rc_toi(&rc_toi_frame_table, &prm, &as, &bs, ws, &c) == RC_OK);
             /* 1e-12: the scaled inputs carry their own rounding (inv_c2, p, x) */
@@ -422,7 +422,7 @@ static void test_no_contact_point(void)
 {
     rc_test_rng rng = {321};
     rc_toi_params prm = rc_toi_params_default();
-    prm.inv_c2 = 1.0;
+    prm.c = 1.0;
     int hits = 0, others = 0;
     for (int i = 0; i < 2000; i++) {
         const int dim = 2 + (i & 1);
@@ -472,7 +472,7 @@ static void test_validation(void)
     bad.p.x = INFINITY;
     ENSURE(rc_toi(&rc_toi_frame_table, &prm, &bad, &b, ws, &c) == RC_ENONFINITE);
     rc_toi_params p2 = prm;
-    p2.inv_c2 = -1;
+    p2.c = -1.0;
     ENSURE(rc_toi(&rc_toi_frame_table, &p2, &a, &b, ws, &c) == RC_ESPEEDOFLIGHT);
     p2 = prm;
     p2.graze_tol = NAN;
@@ -492,8 +492,7 @@ static void test_validation(void)
 
 int main(void)
 {
-    ws = rc_toi_workspace_alloc();
-    if (!ws)
+    if (rc_toi_workspace_create(&ws) != RC_OK)
         return 1;
     RUN_TEST(test_head_on);
     RUN_TEST(test_wall);

@@ -257,9 +257,10 @@ static void random_unit(rc_test_rng *rng, int dim, rc_vec3 *u)
 
 static void run(int dim, int ncases, unsigned long long seed, tally *T)
 {
-    rc_toi_workspace *ws = rc_toi_workspace_alloc();
+    rc_toi_workspace *ws = NULL;
+    ENSURE(rc_toi_workspace_create(&ws) == RC_OK);
     rc_toi_params prm = rc_toi_params_default();
-    prm.inv_c2 = 1.0; /* c = 1 */
+    prm.c = 1.0; /* c = 1 */
     rc_test_rng rng = {seed};
     for (int icase = 0; icase < ncases; icase++) {
         rc_toi_ball a, b;

@@ -1,7 +1,7 @@
 /* relcol/gas1d.h — an exact event-driven 1-D gas of elastic point particles in a box.
  *
  * N point particles with individual rest masses move on [0, L] between two reflecting
- * walls, at any c (inv_c2 = 1/c^2, 0 classical). In 1-D point particles keep their order,
+ * walls, at any c (c = INFINITY classical). In 1-D point particles keep their order,
  * so only neighbours collide: the N-1 neighbour-pair times and the two wall times live in a
  * tournament tree (O(log N) per event), and each particle keeps a local clock (its state
  * is stored at its last event), so an event touches two particles and a handful of tree
@@ -29,7 +29,7 @@ typedef struct rc_gas1d rc_gas1d;
 typedef struct rc_gas1d_def {
     size_t n;          /* number of particles, >= 1 */
     double length;     /* box [0, L], 0 < L < inf */
-    double inv_c2;     /* 1/c^2 >= 0 (0 = classical) */
+    double c;          /* speed of light, > 0; INFINITY (the default) is classical */
     double t0;         /* start time (finite) */
     const double *x;   /* n positions, 0 <= x[0] < x[1] < ... < x[n-1] <= L */
     const double *m;   /* n rest masses, 0 < m < inf */
@@ -42,7 +42,7 @@ rc_gas1d_def rc_gas1d_def_default(void);
 
 /* Copies the arrays. RC_EINVAL: n = 0, NULL arrays, L <= 0, positions outside [0, L] or
  * not strictly increasing (*bad, may be NULL, gets the particle index);
- * RC_ENONFINITE: a NaN/inf input; RC_EMASS: m <= 0; RC_ESPEEDOFLIGHT: bad inv_c2;
+ * RC_ENONFINITE: a NaN/inf input; RC_EMASS: m <= 0; RC_ESPEEDOFLIGHT: bad c;
  * RC_ENOMEM. On failure *out is NULL. */
 int rc_gas1d_create(const rc_gas1d_def *def, rc_gas1d **out, size_t *bad);
 /* Frees and sets *g to NULL (g == NULL and *g == NULL are fine). */

@@ -30,8 +30,12 @@ typedef struct rc_four {
     rc_vec3 x;
 } rc_four;
 
-/* inv_c2 = 1/c^2 from c; c = INFINITY gives 0. RC_ESPEEDOFLIGHT unless c > 0 (NaN too). */
+/* inv_c2 = 1/c^2 from c; c = INFINITY gives 0. RC_ESPEEDOFLIGHT unless c > 0 (NaN too)
+ * and 1/c^2 is a finite non-zero double (or c = INFINITY). */
 int rc_inv_c2(double c, double *inv_c2);
+/* The same 1/c^2 for a c already checked (by an entry point such as rc_collide or rc_toi):
+ * what a law or frame kernel, given the def's c, uses in its formulas. */
+double rc_inv_c2_of(double c);
 
 /* M = E/c^2 = sqrt(m^2 + p^2/c^2); m when inv_c2 = 0. */
 double rc_mass_rel(double m, rc_vec3 p, double inv_c2);

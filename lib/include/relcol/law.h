@@ -24,7 +24,7 @@ extern "C" {
 
 /* Parameters shared by the laws. Make one with rc_collision_params_default(). */
 typedef struct rc_collision_params {
-    double inv_c2;  /* 1/c^2; 0 is the classical limit */
+    double c;       /* speed of light, > 0; INFINITY (the default) is the classical limit */
     double eps;     /* restitution in [0, 1] (zmf: normal ZMF momentum; cm-isotropic: R) */
     /* cm-isotropic only: impact angle alpha in (-pi/2, pi/2) between the ZMF direction
      * of motion of ball 0 and the ZMF contact normal (seed 002), and in 3-D the azimuth
@@ -35,7 +35,8 @@ typedef struct rc_collision_params {
 
 /* Law kernel. On RC_OK, *a and *b hold the outcome. RC_NO_COLLISION (a and b untouched)
  * when the balls do not approach along n. Kernels assume validated input (finite, m > 0,
- * |n| = 1, eps in [0,1]): rc_collide() validates, rc_collide_batch() trusts. */
+ * |n| = 1, eps in [0,1], c valid: 1/c^2 is rc_inv_c2_of(prm->c)): rc_collide() validates,
+ * rc_collide_batch() trusts. */
 typedef int (*rc_law_fn)(const rc_collision_params *prm, rc_particle *a, rc_particle *b,
                          rc_vec3 n);
 
@@ -92,7 +93,7 @@ extern const rc_law *const rc_laws[];
 /* Law by name, NULL if unknown. */
 const rc_law *rc_law_find(const char *name);
 
-rc_collision_params rc_collision_params_default(void); /* classical, eps = 1, alpha NAN */
+rc_collision_params rc_collision_params_default(void); /* c = inf, eps = 1, alpha NAN */
 
 /* Validating entry point: checks the particles, c, eps and n (normalised here; a zero
  * normal is RC_EZERONORMAL), then calls law->collide. */

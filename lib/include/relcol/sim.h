@@ -36,6 +36,24 @@ extern "C" {
 
 typedef struct rc_sim rc_sim;
 
+/* Lanes of the neighbour test (rc_sim_def.simd). All give the same bits (the lanes do the
+ * scalar operations in the same order); the choice exists to show that and to time them. */
+typedef enum rc_sim_simd {
+    RC_SIM_SIMD_AUTO = 0, /* the widest the CPU has: AVX-512 (eight pairs), AVX2 (four) */
+    RC_SIM_SIMD_AVX512,   /* at most AVX-512 (the same as AUTO today) */
+    RC_SIM_SIMD_AVX2,     /* at most AVX2 */
+    RC_SIM_SIMD_SCALAR    /* the scalar loop */
+} rc_sim_simd;
+
+/* Deferred root finds (rc_sim_def.defer): a contact frame whose contact times the broad
+ * phase bounds from below (the table frame) may store a candidate's bound as its event and
+ * ask the frame only when it comes up in the queue. The same bits either way. */
+typedef enum rc_sim_defer {
+    RC_SIM_DEFER_AUTO = 0, /* defer where the frame allows it */
+    RC_SIM_DEFER_ON,       /* defer; RC_EINVAL if the frame does not allow it */
+    RC_SIM_DEFER_OFF       /* ask the frame at once */
+} rc_sim_defer;
+
 /* Definition of a simulation. Make one with rc_sim_def_default() and change fields. */
 typedef struct rc_sim_def {
     int dim;            /* 2 (table: z ignored, kept 0) or 3 */
@@ -58,8 +76,8 @@ typedef struct rc_sim_def {
      * the balls can touch first, and gives the contact normal -- through its direct
      * solver frame->shapes if it declares one, its root finds deferred if it declares
      * deferrable. Walls see the contracted support r sqrt(1 - (v.n)^2/c^2) when
-     * frame->wall_contracted. toi.inv_c2 is set by the engine; the other fields are the
-     * frame's tolerances. */
+     * frame->wall_contracted. toi holds the frame's tolerances; its c is NAN
+     * (rc_sim_def_default: the engine's c) or must equal c (RC_EINVAL otherwise). */
     const rc_toi_frame *frame;
     rc_toi_params toi;
     /* Simultaneous contacts: at an event, every other contact whose surface gap is at
@@ -87,6 +105,8 @@ typedef struct rc_sim_def {
      * sphere frame), which no shape change moves, are checked as always. Default 0:
      * overlapping input is rejected. */
     int restart;
+    rc_sim_simd simd;   /* lanes of the neighbour test (default RC_SIM_SIMD_AUTO) */
+    rc_sim_defer defer; /* deferred root finds (default RC_SIM_DEFER_AUTO) */
 } rc_sim_def;
 
 rc_sim_def rc_sim_def_default(void);
@@ -158,10 +178,10 @@ typedef struct rc_sim_diag {
     uint64_t group_sequential;
 } rc_sim_diag;
 
-/* A new engine. Its neighbour test runs in AVX-512 lanes (eight pairs at a time) or AVX2
- * lanes (four) if the CPU has them; the environment variable RELCOL_SIMD, read here, asks
- * for narrower ones: RELCOL_SIMD=avx2, or RELCOL_SIMD=scalar for the scalar loop. All give
- * the same bits (the lanes do the scalar operations in the same order). */
+/* A new engine. Its neighbour test runs in the widest lanes the CPU has up to def->simd;
+ * the table frame's root finds are deferred as def->defer says. RC_EINVAL for a simd or
+ * defer that is not one of its enum's values, or RC_SIM_DEFER_ON with a frame that cannot
+ * defer. */
 int rc_sim_create(const rc_sim_def *def, rc_sim **out);
 /* Frees and sets *s to NULL (NULL and *s == NULL are fine). */
 void rc_sim_free(rc_sim **s);

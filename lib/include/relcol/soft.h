@@ -55,7 +55,7 @@ typedef enum rc_soft_shape {
 
 /* Parameters of a soft run. Make one with rc_soft_params_default(). */
 typedef struct rc_soft_params {
-    double inv_c2;    /* 1/c^2; 0 is the classical limit */
+    double c;         /* speed of light, > 0; INFINITY (the default) is classical */
     double stiffness; /* kappa > 0: force per unit overlap (mass / time^2) */
     double eps;       /* restitution in (0, 1]: sets the dashpot (eps = 0 would never end) */
     double rtol;      /* relative tolerance of the stepper; absolute tolerances are rtol

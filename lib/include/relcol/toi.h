@@ -55,7 +55,7 @@ typedef struct rc_toi_shape {
 
 /* Tolerances and solver settings. Make one with rc_toi_params_default(). */
 typedef struct rc_toi_params {
-    double inv_c2;     /* 1/c^2 (0: classical) */
+    double c;          /* speed of light, > 0; INFINITY (the default) is classical */
     /* Touching at t = 0 means |mu - 1| <= touch_tol, with mu the factor by which both
      * shapes must be scaled about their centres to touch (dimensionless). Default
      * 1e-12: ~4500 ulp, room for positions that were themselves computed. */
@@ -86,7 +86,8 @@ typedef struct rc_toi_contact {
 /* Workspace of the contracted root finder (kept for the API; the hand-written Brent
  * needs no state). */
 typedef struct rc_toi_workspace rc_toi_workspace;
-rc_toi_workspace *rc_toi_workspace_alloc(void); /* NULL when out of memory */
+/* *out: a new workspace (RC_OK), or NULL with RC_ENOMEM; RC_EINVAL if out is NULL. */
+int rc_toi_workspace_create(rc_toi_workspace **out);
 void rc_toi_workspace_free(rc_toi_workspace **ws); /* frees and sets *ws = NULL */
 
 /* ---- building blocks (relative coordinates: ball 1 minus ball 0) ---- */
@@ -164,7 +165,7 @@ extern const rc_toi_frame rc_toi_frame_sphere; /* contraction ignored (naive mod
 extern const rc_toi_frame *const rc_toi_frames[]; /* NULL-terminated */
 const rc_toi_frame *rc_toi_frame_find(const char *name); /* NULL if unknown */
 
-/* Validating entry point: checks params (inv_c2 >= 0 finite, tolerances >= 0), balls
+/* Validating entry point: checks params (c as rc_inv_c2 does, tolerances >= 0), balls
  * (finite, r > 0, m > 0) and ws, then calls frame->toi. */
 int rc_toi(const rc_toi_frame *frame, const rc_toi_params *prm, const rc_toi_ball *a,
            const rc_toi_ball *b, rc_toi_workspace *ws, rc_toi_contact *out);
