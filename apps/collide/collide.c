@@ -173,7 +173,7 @@ static void print_vec(FILE *out, rc_vec3 v, int dim, const char *sep)
 
 int main(int argc, char **argv)
 {
-    app_init();
+    app_init(prog);
     options o;
     memset(&o, 0, sizeof o);
     int st = parse_options(argc, argv, &o);

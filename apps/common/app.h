@@ -30,8 +30,11 @@ void app_errf(char *err, const char *fmt, ...);
 
 /* Every app's first call: turns GSL's default error handler (which prints and aborts) off,
  * so that a GSL failure in the app's own numerics (fits, roots, special functions) comes
- * back as a status code the app reports, as relcol's own functions do. */
-void app_init(void);
+ * back as a status code the app reports, as relcol's own functions do; and has standard
+ * output checked at exit: an app whose output could not be written (a full disk, a closed
+ * file) says so, "prog: cannot write to standard output: reason", and exits 1 instead of
+ * 0 (as coreutils' close_stdout). */
+void app_init(const char *prog);
 
 /* Print "prog: message\n" on stderr (fmt as printf, no newline) and return code, so that
  * an app's error paths read `return app_fail(prog, 2, "--eps: %s", err);`. */

@@ -1,14 +1,40 @@
 /* cli.c — the apps' command-line plumbing, written once so that every app words its
  * errors alike: "prog: message" on stderr, the "--name value" / "--name=value" option
  * loop, --help, the check of --c, and the lists of names that unknown-name errors show. */
+#include <errno.h>
 #include <stdarg.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include <gsl/gsl_errno.h>
 
 #include "app.h"
 
-void app_init(void) { gsl_set_error_handler_off(); }
+static const char *app_prog = "relcol";
+
+/* At exit: stdout flushed and closed, or the failure reported and the exit status made 1
+ * (an exit handler can only change it by _exit). */
+static void close_stdout(void)
+{
+    errno = 0;
+    const int flushed = fflush(stdout) == 0;
+    const int err = errno;
+    const int bad = !flushed || ferror(stdout);
+    if (fclose(stdout) != 0 || bad) {
+        /* (a write that failed earlier left only the error flag, not its reason) */
+        fprintf(stderr, "%s: cannot write to standard output: %s\n", app_prog,
+                !flushed && err ? strerror(err) : "a write failed");
+        _exit(1);
+    }
+}
+
+void app_init(const char *prog)
+{
+    gsl_set_error_handler_off();
+    app_prog = prog;
+    atexit(close_stdout);
+}
 
 int app_vfail(const char *prog, int code, const char *fmt, va_list ap)
 {
@@ -30,7 +56,7 @@ int app_fail(const char *prog, int code, const char *fmt, ...)
 int app_help(void (*usage)(FILE *))
 {
     usage(stdout);
-    return fflush(stdout) == 0 ? 0 : 1;
+    return 0; /* (a failed write is reported at exit: app_init) */
 }
 
 void app_opts_init(app_opts *it, const char *prog, int argc, char **argv,

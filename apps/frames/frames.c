@@ -261,7 +261,7 @@ static int write_script(const char *path, const options *o, size_t nf, char *err
 
 int main(int argc, char **argv)
 {
-    app_init();
+    app_init(prog);
     options o;
     memset(&o, 0, sizeof o);
     int st = parse_options(argc, argv, &o);

@@ -149,7 +149,7 @@ static double now(void)
 
 int main(int argc, char **argv)
 {
-    app_init();
+    app_init(prog);
     const char *file = NULL, *builtin = NULL, *out_dir = NULL;
     double t_end = NAN;
     int no_plots = 0, dump = 0;

@@ -188,7 +188,7 @@ static int write_script(const char *path, const options *o, const app_balls *b,
 
 int main(int argc, char **argv)
 {
-    app_init();
+    app_init(prog);
     options o;
     memset(&o, 0, sizeof o);
     int st = parse_options(argc, argv, &o);

@@ -337,7 +337,7 @@ done:
 
 int main(int argc, char **argv)
 {
-    app_init();
+    app_init(prog);
 #ifdef RELCOL_HAVE_MPI
     MPI_Init(&argc, &argv);
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);

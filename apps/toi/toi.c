@@ -133,7 +133,7 @@ static void print_header(int dim, int wall)
 
 int main(int argc, char **argv)
 {
-    app_init();
+    app_init(prog);
     options o;
     memset(&o, 0, sizeof o);
     int st = parse_options(argc, argv, &o);

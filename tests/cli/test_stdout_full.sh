@@ -1,0 +1,28 @@
+#!/bin/sh
+# test_stdout_full.sh APP... — every app whose standard output cannot be written (here
+# /dev/full: every write fails with ENOSPC) says so on stderr and exits non-zero, instead
+# of exit 0 with its output lost; --help for each, and a whole run of relcol-sim.
+. "$(dirname "$0")/harness.sh"
+for app in "$@"; do
+    name=$(basename "$app")
+    "$app" --help > /dev/full 2> "$T/err"
+    st=$?
+    if [ "$st" -ne 0 ] && grep -q "^$name: cannot write to standard output: " "$T/err"; then
+        ok
+    else
+        bad "$name --help > /dev/full: exit $st, stderr: $(cat "$T/err")"
+    fi
+    # a real run, where the app has one that is quick and prints to stdout
+    case "$name" in
+    relcol-sim) "$app" --builtin rack --no-plots --out "$T/rack" > /dev/full 2> "$T/err" ;;
+    relcol-collide) printf 'm,vx\n1,0.6\n1,-0.6\n' | "$app" --c 1 > /dev/full 2> "$T/err" ;;
+    *) continue ;;
+    esac
+    st=$?
+    if [ "$st" -ne 0 ] && grep -q "cannot write to standard output" "$T/err"; then
+        ok
+    else
+        bad "$name run > /dev/full: exit $st, stderr: $(cat "$T/err")"
+    fi
+done
+summary "stdout full"
