@@ -13,17 +13,27 @@
  * (12 bytes a cell). */
 #define CELLS_PER_BALL_MAX 3.0
 
-int rc_eng_cells_init(eng_cells *g, int dim, rc_vec3 box, double min_edge, size_t nballs)
+int rc_eng_cells_init(eng_cells *g, int dim, rc_vec3 box, double min_edge, size_t nballs,
+                      const int periodic[3])
 {
     double L[3] = {box.x, box.y, dim == 3 ? box.z : 1.0};
     double edge = min_edge;
     double cap = CELLS_PER_BALL_MAX * (double)nballs + 64.0;
+    /* a periodic axis keeps three cells when min_edge allows them, however sparse the gas
+     * (the walk needs three distinct cells to wrap around) */
+    double least[3];
+    for (int d = 0; d < 3; d++) {
+        const double most = floor(L[d] / min_edge);
+        least[d] = d < dim && periodic[d] ? (most < 3.0 ? most : 3.0) : 1.0;
+        if (least[d] < 1.0)
+            least[d] = 1.0;
+    }
     for (;;) {
         double total = 1.0;
         for (int d = 0; d < 3; d++) {
             double nd = d < dim ? floor(L[d] / edge) : 1.0;
-            if (nd < 1.0)
-                nd = 1.0;
+            if (nd < least[d])
+                nd = least[d];
             total *= nd;
         }
         if (total <= cap)
@@ -33,10 +43,15 @@ int rc_eng_cells_init(eng_cells *g, int dim, rc_vec3 box, double min_edge, size_
     g->ncells = 1;
     for (int d = 0; d < 3; d++) {
         double nd = d < dim ? floor(L[d] / edge) : 1.0;
+        if (nd < least[d])
+            nd = least[d];
         g->n[d] = nd < 1.0 ? 1 : (int)nd;
         g->w[d] = d < dim ? L[d] / g->n[d] : 1.0;
         g->inv_w[d] = 1.0 / g->w[d];
         g->ncells *= (size_t)g->n[d];
+        g->wrap[d] = d < dim && periodic[d];
+        g->up_lim[d] = g->wrap[d] ? g->n[d] : g->n[d] - 1;
+        g->dn_lim[d] = g->wrap[d] ? -1 : 0;
     }
     /* slot indices are int32 (rows are computed in int32 by the walk) */
     if (g->ncells > ((size_t)INT32_MAX - ENG_SLOT_PAD) / ENG_CELL_CAP) {

@@ -92,6 +92,8 @@ static int grow_group(rc_sim *s, size_t *nm, size_t *nc, double T)
         const int32_t i = s->grp_ball[mi];
         /* walls */
         for (int d = 0; d < s->def.dim; d++) {
+            if (!(s->walled >> d & 1u))
+                continue; /* (a periodic axis) */
             const eng_ball *bi = &s->b[i];
             double v = rc_v3_get(bi->v, d), x = rc_v3_get(bi->x, d);
             if (v == 0.0)
@@ -111,18 +113,19 @@ static int grow_group(rc_sim *s, size_t *nm, size_t *nc, double T)
         int c[3];
         cell_coords(&s->g, s->a[i].cell, c);
         const eng_cells *g = &s->g;
-        for (int z = c[2] - 1; z <= c[2] + 1; z++)
-            for (int y = c[1] - 1; y <= c[1] + 1; y++)
-                for (int x = c[0] - 1; x <= c[0] + 1; x++) {
-                    if (x < 0 || y < 0 || z < 0 || x >= g->n[0] || y >= g->n[1] || z >= g->n[2])
+        for (int z = -1; z <= 1; z++)
+            for (int y = -1; y <= 1; y++)
+                for (int x = -1; x <= 1; x++) {
+                    const int32_t cell = cell_at(g, c, x, y, z); /* (wrapped if periodic) */
+                    if (cell < 0)
                         continue;
-                    int32_t cell = (int32_t)(x + g->n[0] * (y + g->n[1] * z));
                     eng_cell_it it;
                     for (int32_t k = cell_first(g, cell, &it); k >= 0; k = cell_next(g, &it)) {
                         if (k == i)
                             continue;
                         const eng_ball *bi = &s->b[i], *bk = &s->b[k];
-                        rc_vec3 dx = rc_v3_sub(rc_v3_axpy(bk->x, T - bk->t, bk->v), bi->x);
+                        rc_vec3 dx = eng_image(s, rc_v3_sub(rc_v3_axpy(bk->x, T - bk->t, bk->v),
+                                                            bi->x));
                         double sig = bi->r + bk->r, lim = sig * (1.0 + stol);
                         double d2 = rc_v3_norm2(dx);
                         if (!(d2 <= lim * lim))
@@ -322,7 +325,7 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
     if (bp >= 0) {
         if (member_of(s, &nm, bp, T) < 0)
             return RC_ENOMEM;
-        rc_vec3 dx = rc_v3_sub(s->b[bp].x, s->b[i].x);
+        rc_vec3 dx = eng_image(s, rc_v3_sub(s->b[bp].x, s->b[i].x));
         double len = rc_v3_norm(dx);
         if (!frame_normal)
             n0 = len > 0.0 ? rc_v3_scale(1.0 / len, dx) : rc_v3(1.0, 0.0, 0.0);
@@ -548,9 +551,18 @@ static void reorder(rc_sim *s)
         eng_aux ca = s->a[i];
         eng_clock cc = s->clk[i];
         uint32_t cid = s->id[i], ccnt = s->cnt[i];
+        int32_t cim[3] = {0, 0, 0};
+        if (s->img)
+            memcpy(cim, s->img + 3 * i, sizeof cim);
         size_t o = i;
         do {
             size_t to = np[o];
+            if (s->img) { /* (periodic boxes: the wrap counters travel with the ball) */
+                int32_t tim[3];
+                memcpy(tim, s->img + 3 * to, sizeof tim);
+                memcpy(s->img + 3 * to, cim, sizeof cim);
+                memcpy(cim, tim, sizeof cim);
+            }
             eng_ball tb = s->b[to];
             eng_aux ta = s->a[to];
             eng_clock tcl = s->clk[to];

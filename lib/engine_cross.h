@@ -11,7 +11,8 @@
 #include "engine_private.h"
 
 /* Ball i's next cell crossing: the earliest time its centre reaches a face of its cell
- * that is not the box's wall (ties: the lower dimension), code 2 d + (direction > 0). */
+ * that is not the box's wall (ties: the lower dimension), code 2 d + (direction > 0). A
+ * periodic face is a crossing (rc_eng_cross wraps the ball). */
 static void cross_event_scalar(rc_sim *s, int32_t i, const int c[3])
 {
     const eng_ball *bi = &s->b[i];
@@ -20,8 +21,8 @@ static void cross_event_scalar(rc_sim *s, int32_t i, const int c[3])
     for (int d = 0; d < s->def.dim; d++) {
         const double v = rc_v3_get(bi->v, d), x = rc_v3_get(bi->x, d);
         const int up = v > 0.0;
-        /* a boundary to cross: not the box's own wall */
-        const int valid = up ? c[d] < s->g.n[d] - 1 : (v < 0.0) & (c[d] > 0);
+        /* a boundary to cross: not the box's own wall (a periodic face is one) */
+        const int valid = up ? c[d] < s->g.up_lim[d] : (v < 0.0) & (c[d] > s->g.dn_lim[d]);
         const double edge = (double)(c[d] + up) * s->g.w[d];
         double t = bi->t + (edge - x) / (valid ? v : 1.0);
         t = t < s->now ? s->now : t;
@@ -47,13 +48,14 @@ __attribute__((target("avx2"))) static void cross_event_avx2(rc_sim *s, int32_t 
     const __m256d v = _mm256_setr_pd(bi->v.x, bi->v.y, dim == 3 ? bi->v.z : 0.0, 0.0);
     const __m256d x = _mm256_setr_pd(bi->x.x, bi->x.y, bi->x.z, 0.0);
     const __m256d cd = _mm256_setr_pd(c[0], c[1], c[2], 0.0);
-    const __m256d last = _mm256_setr_pd(s->g.n[0] - 1, s->g.n[1] - 1, s->g.n[2] - 1, 0.0);
+    const __m256d last = _mm256_setr_pd(s->g.up_lim[0], s->g.up_lim[1], s->g.up_lim[2], 0.0);
+    const __m256d first = _mm256_setr_pd(s->g.dn_lim[0], s->g.dn_lim[1], s->g.dn_lim[2], 0.0);
     const __m256d w = _mm256_setr_pd(s->g.w[0], s->g.w[1], s->g.w[2], 1.0);
     const __m256d up = _mm256_cmp_pd(v, zero, _CMP_GT_OQ);
     const __m256d down = _mm256_cmp_pd(v, zero, _CMP_LT_OQ);
     const __m256d valid =
         _mm256_or_pd(_mm256_and_pd(up, _mm256_cmp_pd(cd, last, _CMP_LT_OQ)),
-                     _mm256_and_pd(down, _mm256_cmp_pd(cd, zero, _CMP_GT_OQ)));
+                     _mm256_and_pd(down, _mm256_cmp_pd(cd, first, _CMP_GT_OQ)));
     const __m256d edge = _mm256_mul_pd(_mm256_add_pd(cd, _mm256_and_pd(up, one)), w);
     __m256d t = _mm256_add_pd(_mm256_set1_pd(bi->t),
                               _mm256_div_pd(_mm256_sub_pd(edge, x),

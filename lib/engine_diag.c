@@ -25,6 +25,30 @@ static void ball_now(const rc_sim *s, size_t i, rc_sim_ball *o)
     o->tau_last = o->collided ? k->tau_last : 0.0;
     if (h != 0.0)
         o->tau += s->inv_c2 == 0.0 ? h : h * (a->m / eng_mass_rel(a->m, a->p, s->inv_c2));
+    for (int d = 0; d < 3; d++) {
+        o->image[d] = 0;
+        if (!s->img || s->walled >> d & 1u || d >= s->def.dim)
+            continue;
+        /* periodic: in [0, L) (a ball exactly at its wrap, not yet processed, may lie a
+         * rounding error outside), with the wrap counted */
+        int32_t im = s->img[3 * i + (size_t)d];
+        double x = rc_v3_get(o->x, d);
+        const double L = s->L[d];
+        if (x >= L) {
+            x -= L;
+            im++;
+        } else if (x < 0.0) {
+            const double y = x + L;
+            if (y < L) {
+                x = y;
+                im--;
+            } else {
+                x = 0.0; /* (within half an ulp of L below 0) */
+            }
+        }
+        rc_v3_set(&o->x, d, x);
+        o->image[d] = im;
+    }
 }
 
 int rc_sim_get_ball(const rc_sim *s, size_t i, rc_sim_ball *out)
@@ -42,20 +66,20 @@ static double overlap_around(const rc_sim *s, size_t i, const rc_vec3 xi)
     int32_t cell = s->a[i].cell;
     int c[3] = {cell % g->n[0], (cell / g->n[0]) % g->n[1], cell / (g->n[0] * g->n[1])};
     double worst = 0.0;
-    for (int z = c[2] - 1; z <= c[2] + 1; z++)
-        for (int y = c[1] - 1; y <= c[1] + 1; y++)
-            for (int x = c[0] - 1; x <= c[0] + 1; x++) {
-                if (x < 0 || y < 0 || z < 0 || x >= g->n[0] || y >= g->n[1] || z >= g->n[2])
+    for (int z = -1; z <= 1; z++)
+        for (int y = -1; y <= 1; y++)
+            for (int x = -1; x <= 1; x++) {
+                const int32_t cl = cell_at(g, c, x, y, z); /* (wraps on periodic axes) */
+                if (cl < 0)
                     continue;
                 eng_cell_it it;
-                for (int32_t k = cell_first(g, x + g->n[0] * (y + g->n[1] * z), &it); k >= 0;
-                     k = cell_next(g, &it)) {
+                for (int32_t k = cell_first(g, cl, &it); k >= 0; k = cell_next(g, &it)) {
                     if ((size_t)k <= i)
                         continue;
                     const eng_ball *bk = &s->b[k];
                     rc_vec3 xk = rc_v3_axpy(bk->x, s->now - bk->t, bk->v);
                     double sig = s->b[i].r + bk->r;
-                    double d = rc_v3_norm(rc_v3_sub(xk, xi));
+                    double d = rc_v3_norm(eng_image(s, rc_v3_sub(xk, xi)));
                     if ((sig - d) / sig > worst)
                         worst = (sig - d) / sig;
                 }

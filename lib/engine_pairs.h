@@ -12,15 +12,17 @@
 #include "engine_private.h"
 
 /* Separation bk - bi at the later of the two balls' clocks, *tref: the earlier ball is
- * advanced, so the result depends only on the two stored states. */
-static inline rc_vec3 pair_sep(const eng_ball *bi, const eng_ball *bk, double *tref)
+ * advanced, so the result depends only on the two stored states. The nearest image in a
+ * periodic box. */
+static inline rc_vec3 pair_sep(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
+                               double *tref)
 {
     if (bi->t >= bk->t) {
         *tref = bi->t;
-        return rc_v3_sub(rc_v3_axpy(bk->x, bi->t - bk->t, bk->v), bi->x);
+        return eng_image(s, rc_v3_sub(rc_v3_axpy(bk->x, bi->t - bk->t, bk->v), bi->x));
     }
     *tref = bk->t;
-    return rc_v3_sub(bk->x, rc_v3_axpy(bi->x, bk->t - bi->t, bi->v));
+    return eng_image(s, rc_v3_sub(bk->x, rc_v3_axpy(bi->x, bk->t - bi->t, bi->v)));
 }
 
 /* Contact time of the bounding spheres of bi and bk, from their separation dx (d2 = |dx|^2)
@@ -59,7 +61,7 @@ static inline double pair_sphere_scalar(const rc_sim *s, const eng_ball *bi, con
                                         double best, double stol, int *near)
 {
     double tref;
-    const rc_vec3 dx = pair_sep(bi, bk, &tref);
+    const rc_vec3 dx = pair_sep(s, bi, bk, &tref);
     const double d2 = rc_v3_norm2(dx), lim = (bi->r + bk->r) * (1.0 + stol);
     *near = d2 <= lim * lim;
     return sphere_time_dx(s, bi, bk, dx, d2, tref, best);
@@ -76,7 +78,7 @@ static inline double pair_sphere_scalar(const rc_sim *s, const eng_ball *bi, con
  * only, so the bits stay. */
 __attribute__((target("avx2"), always_inline)) static inline int pair_sphere_x4(
     const rc_sim *s, const eng_ball *bi, const eng_ball *const k[4], double best, double stol,
-    double out[4], unsigned *nears, const int three, const int latest)
+    double out[4], unsigned *nears, const int three, const int latest, const int per)
 {
     /* transpose four 64-byte records (x, v, t, r): low halves x.x x.y x.z v.x, high halves
      * v.y v.z t r */
@@ -120,6 +122,19 @@ __attribute__((target("avx2"), always_inline)) static inline int pair_sphere_x4(
         dy = _mm256_blendv_pd(by, ay, ge);
         dz = _mm256_blendv_pd(bz, az, ge);
         tref = _mm256_blendv_pd(tk, ti, ge);
+    }
+    if (per) { /* (a compile-time constant) the nearest image, as eng_image */
+        const __m256d big = _mm256_set1_pd(0x1.8p52);
+        const __m256d Lx = _mm256_set1_pd(s->L[0]), Ly = _mm256_set1_pd(s->L[1]);
+        const __m256d Lz = _mm256_set1_pd(s->L[2]);
+        const __m256d ix = _mm256_sub_pd(_mm256_add_pd(_mm256_mul_pd(dx, _mm256_set1_pd(s->inv_L[0])), big), big);
+        const __m256d iy = _mm256_sub_pd(_mm256_add_pd(_mm256_mul_pd(dy, _mm256_set1_pd(s->inv_L[1])), big), big);
+        dx = _mm256_sub_pd(dx, _mm256_mul_pd(Lx, ix));
+        dy = _mm256_sub_pd(dy, _mm256_mul_pd(Ly, iy));
+        if (three) {
+            const __m256d iz = _mm256_sub_pd(_mm256_add_pd(_mm256_mul_pd(dz, _mm256_set1_pd(s->inv_L[2])), big), big);
+            dz = _mm256_sub_pd(dz, _mm256_mul_pd(Lz, iz));
+        }
     }
     /* three == 0 (2-D, every z component 0): the z terms add +0 and are left out (the sums
      * are the same bits unless one is -0, which no comparison below can tell from +0) */
@@ -171,7 +186,7 @@ __attribute__((target("avx2"), always_inline)) static inline int pair_sphere_x4(
  * build contracts nothing, -ffp-contract=off). */
 __attribute__((target("avx512f"), always_inline)) static inline unsigned pair_sphere_x8(
     const rc_sim *s, const eng_ball *bi, const eng_ball *const k[8], double best, double stol,
-    double out[8], unsigned *nears, const int three, const int latest)
+    double out[8], unsigned *nears, const int three, const int latest, const int per)
 {
     __m512d r[8], t[8], u[8];
     for (int l = 0; l < 8; l++)
@@ -213,6 +228,19 @@ __attribute__((target("avx512f"), always_inline)) static inline unsigned pair_sp
         dy = _mm512_mask_blend_pd(ge, by, ay);
         dz = _mm512_mask_blend_pd(ge, bz, az);
         tref = _mm512_mask_blend_pd(ge, tk, ti);
+    }
+    if (per) { /* (a compile-time constant) the nearest image, as eng_image */
+        const __m512d big = _mm512_set1_pd(0x1.8p52);
+        const __m512d Lx = _mm512_set1_pd(s->L[0]), Ly = _mm512_set1_pd(s->L[1]);
+        const __m512d Lz = _mm512_set1_pd(s->L[2]);
+        const __m512d ix = _mm512_sub_pd(_mm512_add_pd(_mm512_mul_pd(dx, _mm512_set1_pd(s->inv_L[0])), big), big);
+        const __m512d iy = _mm512_sub_pd(_mm512_add_pd(_mm512_mul_pd(dy, _mm512_set1_pd(s->inv_L[1])), big), big);
+        dx = _mm512_sub_pd(dx, _mm512_mul_pd(Lx, ix));
+        dy = _mm512_sub_pd(dy, _mm512_mul_pd(Ly, iy));
+        if (three) {
+            const __m512d iz = _mm512_sub_pd(_mm512_add_pd(_mm512_mul_pd(dz, _mm512_set1_pd(s->inv_L[2])), big), big);
+            dz = _mm512_sub_pd(dz, _mm512_mul_pd(Lz, iz));
+        }
     }
     __m512d d2 = _mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy));
     const __m512d dvx = _mm512_sub_pd(vkx, vix), dvy = _mm512_sub_pd(vky, viy);

@@ -35,7 +35,7 @@ __attribute__((always_inline)) static inline double pair_time(const rc_sim *s,
                                                               rc_vec3 *n)
 {
     double tref;
-    rc_vec3 dx = pair_sep(bi, bk, &tref);
+    rc_vec3 dx = pair_sep(s, bi, bk, &tref);
     return pair_time_dx(s, bi, bk, dx, rc_v3_norm2(dx), tref, best, s->narrow, n);
 }
 
@@ -138,7 +138,7 @@ static inline unsigned boundary_dims(const rc_sim *s, const int c[3])
     const int dim = s->def.dim < 3 ? s->def.dim : 3; /* (says so to the compiler) */
     for (int d = 0; d < dim; d++)
         m |= (unsigned)((c[d] == 0) | (c[d] == s->g.n[d] - 1)) << d;
-    return m;
+    return m & s->walled; /* (a periodic axis has no wall) */
 }
 
 static void wall_event(const rc_sim *s, int32_t i, unsigned dims, double *best, int32_t *bp)
@@ -172,7 +172,7 @@ static int approaching_with(const rc_sim *s, const eng_ball *bi, const eng_ball 
                             rc_vec3 vold)
 {
     const double atol = s->def.approach_tol, sig = bi->r + bk->r;
-    const rc_vec3 dx = rc_v3_sub(rc_v3_axpy(bk->x, T - bk->t, bk->v), bi->x);
+    const rc_vec3 dx = eng_image(s, rc_v3_sub(rc_v3_axpy(bk->x, T - bk->t, bk->v), bi->x));
     const rc_vec3 dv = rc_v3_sub(bk->v, vold);
     const double bb = rc_v3_dot(dx, dv);
     return bb < 0.0 && bb * bb > atol * atol * sig * sig * rc_v3_norm2(dv);
@@ -267,7 +267,8 @@ earliest8(const double *t, const int32_t *nb, double *bt, int32_t *bk)
 #define ENG_TEST_LIST(NAME, TARGET, W, PAIR, EARLIEST)                                      \
     __attribute__((target(TARGET), always_inline)) static inline int NAME##_dim(           \
         const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *best, int32_t *bp,      \
-        const rc_vec3 *vold, int32_t partner, double T, const int three, const int latest) \
+        const rc_vec3 *vold, int32_t partner, double T, const int three, const int latest, \
+        const int per)                                                                     \
     {                                                                                      \
         const eng_ball *bi = &s->b[i];                                                     \
         const int check = vold && s->def.sim_tol > 0.0;                                    \
@@ -280,7 +281,7 @@ earliest8(const double *t, const int32_t *nb, double *bt, int32_t *bk)
                 k[l] = &s->b[nb[j + (size_t)l]];                                           \
             double t[W];                                                                   \
             unsigned nears;                                                                \
-            PAIR(s, bi, k, bt, s->def.sim_tol, t, &nears, three, latest);                  \
+            PAIR(s, bi, k, bt, s->def.sim_tol, t, &nears, three, latest, per);             \
             const size_t left = m - j < W ? m - j : W;                                     \
             unsigned near_in = nears & ((1u << left) - 1u);                                \
             if (check && near_in)                                                          \
@@ -303,11 +304,19 @@ earliest8(const double *t, const int32_t *nb, double *bt, int32_t *bk)
                                                     const rc_vec3 *vold, int32_t partner,   \
                                                     double T, int latest)                   \
     {                                                                                      \
-        if (s->def.dim == 3)                                                               \
-            return latest ? NAME##_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 1)      \
-                          : NAME##_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 0);     \
-        return latest ? NAME##_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 1)          \
-                      : NAME##_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 0);         \
+        const int per = s->periodic; /* (each a constant in its own copy) */             \
+        if (s->def.dim == 3) {                                                             \
+            if (per)                                                                       \
+                return latest ? NAME##_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 1, 1) \
+                              : NAME##_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 0, 1); \
+            return latest ? NAME##_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 1, 0)  \
+                          : NAME##_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 0, 0); \
+        }                                                                                  \
+        if (per)                                                                           \
+            return latest ? NAME##_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 1, 1)  \
+                          : NAME##_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 0, 1); \
+        return latest ? NAME##_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 1, 0)      \
+                      : NAME##_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 0, 0);     \
     }
 ENG_TEST_LIST(test_list_avx2, "avx2", 4, pair_sphere_x4, earliest4)
 #ifdef ENG_HAVE_AVX512
@@ -353,7 +362,7 @@ static int test_list(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *
 #define ENG_SPHERE_LANES(NAME, TARGET, W, PAIR)                                            \
     __attribute__((target(TARGET), always_inline)) static inline size_t NAME##_dim(        \
         const rc_sim *s, const eng_ball *bi, int32_t *nb, size_t m, double best, double *t, \
-        uint64_t *hit, uint64_t *near, const int three)                                    \
+        uint64_t *hit, uint64_t *near, const int three, const int per)                     \
     {                                                                                      \
         const size_t mw = pad_lanes(nb, m, (int32_t)(bi - s->b), W);                       \
         size_t j = 0;                                                                      \
@@ -363,7 +372,7 @@ static int test_list(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *
                 k[l] = &s->b[nb[j + (size_t)l]];                                           \
             unsigned nears;                                                                \
             const unsigned h = (unsigned)PAIR(s, bi, k, best, s->def.sim_tol, &t[j],       \
-                                              &nears, three, 0);                           \
+                                              &nears, three, 0, per);                      \
             hit[j / 64] |= (uint64_t)h << (j % 64);                                        \
             near[j / 64] |= (uint64_t)nears << (j % 64);                                   \
         }                                                                                  \
@@ -374,9 +383,12 @@ static int test_list(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *
                                                        double *t, uint64_t *hit,            \
                                                        uint64_t *near)                      \
     {                                                                                      \
+        if (s->periodic)                                                                   \
+            return s->def.dim == 3 ? NAME##_dim(s, bi, nb, m, best, t, hit, near, 1, 1)    \
+                                   : NAME##_dim(s, bi, nb, m, best, t, hit, near, 0, 1);   \
         if (s->def.dim == 3)                                                               \
-            return NAME##_dim(s, bi, nb, m, best, t, hit, near, 1);                        \
-        return NAME##_dim(s, bi, nb, m, best, t, hit, near, 0);                            \
+            return NAME##_dim(s, bi, nb, m, best, t, hit, near, 1, 0);                     \
+        return NAME##_dim(s, bi, nb, m, best, t, hit, near, 0, 0);                         \
     }
 ENG_SPHERE_LANES(sphere_lanes_avx2, "avx2", 4, pair_sphere_x4)
 #endif
@@ -463,7 +475,7 @@ static int overlap_now(const rc_sim *s, const rc_toi_shape *shi, const eng_ball 
                        const eng_ball *bk, double best)
 {
     double tref;
-    const rc_vec3 dx = pair_sep(bi, bk, &tref);
+    const rc_vec3 dx = pair_sep(s, bi, bk, &tref);
     const double d2 = rc_v3_norm2(dx), sig = bi->r + bk->r;
     if (!(d2 <= sig * sig && d2 > 0.0) ||
         !(sphere_time_dx(s, bi, bk, dx, d2, tref, best) < best))
@@ -515,7 +527,7 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
             const int32_t kk = nb[j];
             if (chk && near && kk != chk->partner) {
                 double tref;
-                const rc_vec3 dx = pair_sep(bi, &s->b[kk], &tref);
+                const rc_vec3 dx = pair_sep(s, bi, &s->b[kk], &tref);
                 if (narrow_conflict(s, bi, &s->b[kk], dx, rc_v3_norm2(dx), chk, NULL))
                     return 1;
             }
@@ -814,6 +826,25 @@ int rc_eng_predict_checked(rc_sim *s, int32_t i, rc_vec3 vold, int32_t partner, 
     return 0;
 }
 
+/* Ball i leaves its cell through a periodic face: it comes back through the opposite one.
+ * Its state is first brought to the crossing (so that stored positions stay within a cell
+ * of the box, where eng_image's single fold applies, and a position read at any later
+ * time is the wrapped one), then moved by -dir L_d; its image counter keeps the unwrapped
+ * position. */
+static void wrap_ball(rc_sim *s, int32_t i, int d, int dir)
+{
+    eng_ball *b = &s->b[i];
+    const eng_aux *a = &s->a[i];
+    const double h = s->now - b->t;
+    if (h != 0.0) {
+        b->x = rc_v3_axpy(b->x, h, b->v);
+        s->clk[i].tau += s->inv_c2 == 0.0 ? h : h * (a->m / eng_mass_rel(a->m, a->p, s->inv_c2));
+        b->t = s->now;
+    }
+    rc_v3_set(&b->x, d, rc_v3_get(b->x, d) - dir * s->L[d]);
+    s->img[3 * (size_t)i + (size_t)d] += dir;
+}
+
 /* Ball i enters the next cell: the balls that became neighbours are one slab of cells. */
 void rc_eng_cross(rc_sim *s, int32_t i)
 {
@@ -822,6 +853,10 @@ void rc_eng_cross(rc_sim *s, int32_t i)
     int c[3];
     cell_coords(&s->g, a->cell, c);
     c[d] += dir;
+    if (c[d] < 0 || c[d] >= s->g.n[d]) { /* (only on a periodic axis: cross_event) */
+        c[d] = c[d] < 0 ? s->g.n[d] - 1 : 0;
+        wrap_ball(s, i, d, dir);
+    }
     rc_eng_cells_remove(&s->g, s->a, i);
     rc_eng_cells_insert(&s->g, s->a, i, (int32_t)(c[0] + s->g.n[0] * (c[1] + s->g.n[1] * c[2])));
     s->events[RC_SIM_EV_CELL]++;
@@ -838,7 +873,8 @@ void rc_eng_cross(rc_sim *s, int32_t i)
     if (s->def.dim == 2)
         lo[2] = hi[2] = 0;
     scan_block(s, i, c, lo, hi, &best, &bp, &bn, NULL, s->defer ? &df : NULL);
-    if (c[d] == 0 || c[d] == s->g.n[d] - 1) /* a boundary cell: its wall is now in reach */
+    if ((s->walled >> d & 1u) && (c[d] == 0 || c[d] == s->g.n[d] - 1))
+        /* a boundary cell: its wall is now in reach */
         wall_event_defer(s, i, 1u << d, &best, &bp, &df);
     if (bp != a->ev_partner || best != a->ev_t || df.on)
         store_event(s, i, best, bp, bn, &df);

@@ -118,9 +118,16 @@ typedef struct eng_cells {
     int32_t *next;    /* per ball: next of its overflow chain (-1: the end) */
     size_t ncells;
     int32_t block_rows[9]; /* a full 3^d block's rows, as slot offsets from its first */
+    int wrap[3];      /* periodic axis: the cells wrap around (n >= 3) */
+    /* a ball in cell c[d] moving up crosses a face if c[d] < up_lim[d] (n - 1 walled, n
+     * periodic), moving down if c[d] > dn_lim[d] (0 walled, -1 periodic) */
+    int up_lim[3], dn_lim[3];
 } eng_cells;
 
-int rc_eng_cells_init(eng_cells *g, int dim, rc_vec3 box, double min_edge, size_t nballs);
+/* periodic[d] != 0: axis d wraps, and gets at least three cells if min_edge allows (the
+ * caller checks n[d] >= 3). */
+int rc_eng_cells_init(eng_cells *g, int dim, rc_vec3 box, double min_edge, size_t nballs,
+                      const int periodic[3]);
 void rc_eng_cells_free(eng_cells *g);
 /* Every cell empty again. */
 void rc_eng_cells_clear(eng_cells *g);
@@ -185,6 +192,12 @@ struct rc_sim {
     double inv_c2;
     double inv_c; /* sqrt(inv_c2): contracted shapes' beta = p inv_c / M */
     double L[3];
+    /* periodic boundaries: periodic != 0 if any axis is; inv_L[d] = 1 / L[d] on a periodic
+     * axis, 0 on a walled one (eng_image: the same expression is then exactly dx);
+     * walled: bit d set for a walled axis d < dim (wall events only there) */
+    int periodic;
+    double inv_L[3];
+    unsigned walled;
     double now;
     size_t n;
     eng_ball *b;
@@ -195,6 +208,9 @@ struct rc_sim {
     /* collisions per ball so far: an event naming a ball whose counter moved is stale.
      * Its own compact array: read for every popped event, it stays in cache. */
     uint32_t *cnt;
+    /* periodic boxes only (else NULL): per ball, three wrap counters (rc_sim_ball.image);
+     * cold, read and written only when the ball wraps or is read out */
+    int32_t *img;
     /* contracted frames only (else NULL): per ball, the frame's contact normal of its
      * scheduled ball event, from the same call that predicted the event's time (NAN: the
      * frame found the shapes overlapping), so that resolving the event need not ask the
@@ -253,6 +269,55 @@ void rc_eng_release_state(rc_sim *s);
 static inline double eng_mass_rel(double m, rc_vec3 p, double inv_c2)
 {
     return inv_c2 == 0.0 ? m : sqrt(m * m + rc_v3_norm2(p) * inv_c2);
+}
+
+/* Round to the nearest integer, ties to even (the default rounding mode), for
+ * |y| < 2^51: the same two operations in the scalar code and in the lanes, so the same
+ * bits (no libm call, no dependence on SSE4.1). */
+static inline double eng_rint(double y)
+{
+    const double big = 0x1.8p52;
+    return (y + big) - big;
+}
+
+/* The nearest image of a separation dx of two balls: dx - L round(dx / L) on the
+ * periodic axes; on a walled one inv_L = 0 makes it dx - L * 0 = dx exactly (signed zeros
+ * included), so no axis needs a branch. Valid because touching balls are less than L / 3
+ * apart on a periodic axis (three cells at least). */
+static inline double eng_image1(double dx, double L, double inv_L)
+{
+    return dx - L * eng_rint(dx * inv_L);
+}
+static inline rc_vec3 eng_image(const rc_sim *s, rc_vec3 dx)
+{
+    if (!s->periodic)
+        return dx;
+    dx.x = eng_image1(dx.x, s->L[0], s->inv_L[0]);
+    dx.y = eng_image1(dx.y, s->L[1], s->inv_L[1]);
+    dx.z = eng_image1(dx.z, s->L[2], s->inv_L[2]);
+    return dx;
+}
+
+/* Cell c[d] + o on axis d: wrapped on a periodic axis, -1 off the grid on a walled one. */
+static inline int cell_step(const eng_cells *g, int d, int c, int o)
+{
+    int k = c + o;
+    if (k >= 0 && k < g->n[d])
+        return k;
+    if (!g->wrap[d])
+        return -1;
+    return k < 0 ? k + g->n[d] : k - g->n[d];
+}
+
+/* The cell at offset (ox, oy, oz) from cell coordinates c: wrapped on periodic axes, -1
+ * off the grid (distinct cells for distinct offsets in -1..1: n >= 3 on a periodic axis). */
+static inline int32_t cell_at(const eng_cells *g, const int c[3], int ox, int oy, int oz)
+{
+    const int x = cell_step(g, 0, c[0], ox), y = cell_step(g, 1, c[1], oy),
+              z = cell_step(g, 2, c[2], oz);
+    if (x < 0 || y < 0 || z < 0)
+        return -1;
+    return (int32_t)(x + g->n[0] * (y + g->n[1] * z));
 }
 
 /* Cell coordinates of a cell index. */

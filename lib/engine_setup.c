@@ -59,6 +59,16 @@ static int check_def(const rc_sim_def *d)
     if (!(d->simd >= RC_SIM_SIMD_AUTO && d->simd <= RC_SIM_SIMD_SCALAR) ||
         !(d->defer >= RC_SIM_DEFER_AUTO && d->defer <= RC_SIM_DEFER_OFF))
         return RC_EINVAL;
+    const double L[3] = {d->box.x, d->box.y, d->box.z};
+    for (int k = 0; k < d->dim; k++) {
+        if (d->boundary[k] != RC_SIM_WALLS && d->boundary[k] != RC_SIM_PERIODIC)
+            return RC_EINVAL;
+        /* a periodic axis needs three cells (the automatic cells are checked when the
+         * balls, and so the largest diameter, are known) */
+        if (d->boundary[k] == RC_SIM_PERIODIC && d->cell_size > 0.0 &&
+            !(floor(L[k] / d->cell_size) >= 3.0))
+            return RC_EINVAL;
+    }
     if (d->frame) { /* the engine calls frame->toi directly: validate its settings once */
         const rc_toi_params *t = &d->toi;
         if (!d->frame->toi || !isfinite(t->touch_tol) || !isfinite(t->graze_tol) ||
@@ -122,6 +132,12 @@ int rc_sim_create(const rc_sim_def *def, rc_sim **out)
     s->L[0] = def->box.x;
     s->L[1] = def->box.y;
     s->L[2] = def->box.z;
+    for (int d = 0; d < 3; d++) {
+        const int per = d < def->dim && def->boundary[d] == RC_SIM_PERIODIC;
+        s->periodic |= per;
+        s->inv_L[d] = per ? 1.0 / s->L[d] : 0.0;
+        s->walled |= (unsigned)(d < def->dim && !per) << d;
+    }
     s->prm = rc_collision_params_default();
     s->prm.c = def->c;
     s->toi = def->toi;
@@ -159,6 +175,8 @@ static void release_balls(rc_sim *s)
     s->cnt = NULL;
     free(s->ev_n);
     s->ev_n = NULL;
+    free(s->img);
+    s->img = NULL;
     s->b = NULL;
     s->a = NULL;
     s->id = NULL;
@@ -211,7 +229,8 @@ static int overlapping(rc_sim *s, size_t i, size_t k)
 {
     const eng_ball *bi = &s->b[i], *bk = &s->b[k];
     double sig = (bi->r + bk->r) * (1.0 - s->def.overlap_tol);
-    if (!(rc_v3_norm2(rc_v3_sub(bk->x, bi->x)) < sig * sig))
+    const rc_vec3 dx = eng_image(s, rc_v3_sub(bk->x, bi->x)); /* (nearest image) */
+    if (!(rc_v3_norm2(dx) < sig * sig))
         return 0;
     if (!contracted(s))
         return 1;
@@ -219,14 +238,14 @@ static int overlapping(rc_sim *s, size_t i, size_t k)
     if (prm.touch_tol < s->def.overlap_tol)
         prm.touch_tol = s->def.overlap_tol;
     rc_toi_ball A = {bi->x, bi->r, s->a[i].m, s->a[i].p};
-    rc_toi_ball B = {bk->x, bk->r, s->a[k].m, s->a[k].p};
+    rc_toi_ball B = {s->periodic ? rc_v3_add(bi->x, dx) : bk->x, bk->r, s->a[k].m, s->a[k].p};
     rc_toi_contact out;
     if (s->def.frame->toi(&prm, &A, &B, s->ws, &out) != RC_EOVERLAP)
         return 0;
     /* A ball whose speed changes changes its contracted shape at once, which can leave a
      * separating pair overlapping (the engine counts it and lets it part): such a state is
      * one the engine itself produces, so it is accepted; an approaching overlap is not. */
-    rc_vec3 dx = rc_v3_sub(bk->x, bi->x), dv = rc_v3_sub(bk->v, bi->v);
+    const rc_vec3 dv = rc_v3_sub(bk->v, bi->v);
     return !(rc_v3_dot(dx, dv) > 0.0);
 }
 
@@ -313,8 +332,16 @@ int rc_eng_alloc_state(rc_sim *s, size_t n, double rmax)
         edge = s->def.cell_size;
     if (!(edge > 0.0))
         edge = 1.0;
-    if ((st = rc_eng_cells_init(&s->g, dim, s->def.box, edge, n)) != RC_OK)
+    int periodic[3];
+    for (int d = 0; d < 3; d++)
+        periodic[d] = !(s->walled >> d & 1u) && d < dim;
+    if ((st = rc_eng_cells_init(&s->g, dim, s->def.box, edge, n, periodic)) != RC_OK)
         goto fail;
+    for (int d = 0; d < dim; d++)
+        if (periodic[d] && s->g.n[d] < 3) { /* (sim.h: RC_SIM_PERIODIC) */
+            st = RC_EINVAL;
+            goto fail;
+        }
     if ((st = rc_eng_queue_init(&s->q, n)) != RC_OK)
         goto fail;
     s->n = n;
@@ -327,6 +354,10 @@ int rc_eng_alloc_state(rc_sim *s, size_t n, double rmax)
     s->id = rc_eng_alloc(n * sizeof *s->id);
     s->slot = rc_eng_alloc(n * sizeof *s->slot);
     if (s->narrow && !(s->ev_n = rc_eng_alloc(n * sizeof *s->ev_n))) {
+        st = RC_ENOMEM;
+        goto fail;
+    }
+    if (s->periodic && !(s->img = rc_eng_alloc(3 * n * sizeof *s->img))) {
         st = RC_ENOMEM;
         goto fail;
     }
@@ -366,6 +397,12 @@ static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, i
         rc_toi_shape sh = rc_toi_shape_of(b->r, m, b->p, s->inv_c2);
         int wc = contracted(s) && s->def.frame->wall_contracted;
         for (int d = 0; validate && d < dim; d++) {
+            if (!(s->walled >> d & 1u)) { /* periodic: the centre in [0, L) */
+                const double x = rc_v3_get(b->x, d);
+                if (!(x >= 0.0 && x < s->L[d]))
+                    return RC_EINVAL;
+                continue;
+            }
             rc_vec3 e = rc_v3(d == 0, d == 1, d == 2);
             double h = wc ? rc_toi_support(&sh, e) : b->r, tol = s->def.overlap_tol * b->r;
             /* a restart may hold a contracted shape that a collision's shape change pushed
@@ -411,6 +448,8 @@ static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, i
         e->v = rc_v3_scale(1.0 / M, a->p);
         e->t = s->now;
         e->r = b->r;
+        for (int d = 0; s->img && d < 3; d++) /* (read on periodic axes only) */
+            s->img[3 * k + (size_t)d] = s->walled >> d & 1u || d >= dim ? 0 : b->image[d];
         rc_eng_cells_insert(&s->g, s->a, (int32_t)k, cellof[s->id[k]]);
     }
     free(cellof);
@@ -423,11 +462,9 @@ static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, i
         for (int dz = (dim == 3 ? -1 : 0); dz <= (dim == 3 ? 1 : 0); dz++)
             for (int dy = -1; dy <= 1; dy++)
                 for (int dx = -1; dx <= 1; dx++) {
-                    int x = c[0] + dx, y = c[1] + dy, z = c[2] + dz;
-                    if (x < 0 || y < 0 || z < 0 || x >= s->g.n[0] || y >= s->g.n[1] ||
-                        z >= s->g.n[2])
+                    const int32_t cell = cell_at(&s->g, c, dx, dy, dz); /* (wraps) */
+                    if (cell < 0)
                         continue;
-                    int32_t cell = (int32_t)(x + s->g.n[0] * (y + s->g.n[1] * z));
                     eng_cell_it it;
                     for (int32_t k = cell_first(&s->g, cell, &it); k >= 0;
                          k = cell_next(&s->g, &it)) {

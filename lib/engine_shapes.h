@@ -213,7 +213,7 @@ __attribute__((noinline, unused)) static int parting_candidate(const rc_sim *s,
                                                                const eng_ball *bk, double best)
 {
     double tref;
-    const rc_vec3 dx = pair_sep(bi, bk, &tref);
+    const rc_vec3 dx = pair_sep(s, bi, bk, &tref);
     const double d2 = rc_v3_norm2(dx), sig = bi->r + bk->r;
     return d2 <= sig * sig && parting_open(s, shi, bi, bk, dx, d2, tref, best);
 }
@@ -235,7 +235,7 @@ static inline double line_bound(const rc_sim *s, const rc_toi_shape *shi, const 
                                 const eng_ball *bk)
 {
     double tref;
-    const rc_vec3 dx = pair_sep(bi, bk, &tref);
+    const rc_vec3 dx = pair_sep(s, bi, bk, &tref);
     const double d2 = rc_v3_norm2(dx);
     if (!(d2 > 0.0))
         return -INFINITY;

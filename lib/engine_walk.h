@@ -21,7 +21,8 @@
 
 typedef struct eng_walk {
     const rc_sim *s;
-    int32_t row[9];    /* first slot of each row of the block */
+    int32_t row[27];   /* first slot of each row of the block (a row wrapped around a
+                          periodic x axis: one row a cell) */
     int nrows, nslots; /* rows; slots a row */
     int32_t chain[27]; /* first balls of the overflow chains met in the rows */
     int nchain, ci;    /* chains; the one being walked */
@@ -30,11 +31,60 @@ typedef struct eng_walk {
     int rows_done, done;
 } eng_walk;
 
-/* The block of cells at offsets lo[d]..hi[d] around cell c, clipped to the grid. */
+/* The block of a walk that wraps around a periodic axis (walk_init): rows and planes
+ * taken through cell_step; a row that wraps in x is cut into its cells, each a row of
+ * its own (only blocks at a periodic face come here: the others are walk_init's). */
+static void walk_init_wrapped(eng_walk *w, const rc_sim *s, int32_t skip, const int c[3],
+                              const int lo[3], const int hi[3])
+{
+    const eng_cells *g = &s->g;
+    const int xwrap = g->wrap[0] && (c[0] + lo[0] < 0 || c[0] + hi[0] >= g->n[0]);
+    const int x0 = c[0] + lo[0] > 0 ? c[0] + lo[0] : 0;
+    const int x1 = c[0] + hi[0] < g->n[0] ? c[0] + hi[0] : g->n[0] - 1;
+    w->s = s;
+    w->skip = skip;
+    w->nrows = 0;
+    w->nslots = xwrap ? ENG_CELL_CAP : (x1 - x0 + 1) * ENG_CELL_CAP;
+    for (int oz = lo[2]; oz <= hi[2] && w->nslots > 0; oz++) {
+        const int z = cell_step(g, 2, c[2], oz);
+        for (int oy = lo[1]; oy <= hi[1] && z >= 0; oy++) {
+            const int y = cell_step(g, 1, c[1], oy);
+            if (y < 0)
+                continue;
+            const int32_t row = g->n[0] * (y + g->n[1] * z) * ENG_CELL_CAP;
+            if (!xwrap) {
+                w->row[w->nrows++] = row + x0 * ENG_CELL_CAP;
+                continue;
+            }
+            for (int ox = lo[0]; ox <= hi[0]; ox++)
+                w->row[w->nrows++] = row + cell_step(g, 0, c[0], ox) * ENG_CELL_CAP;
+        }
+    }
+    w->nchain = w->ci = 0;
+    w->k = -1;
+    w->rows_done = w->done = 0;
+}
+
+/* Does the block at offsets lo..hi around c reach past a periodic face? */
+static inline int walk_wraps(const eng_cells *g, const int c[3], const int lo[3],
+                             const int hi[3])
+{
+    int out = 0;
+    for (int d = 0; d < 3; d++)
+        out |= g->wrap[d] & ((c[d] + lo[d] < 0) | (c[d] + hi[d] >= g->n[d]));
+    return out;
+}
+
+/* The block of cells at offsets lo[d]..hi[d] around cell c, clipped to the grid on walled
+ * axes, wrapped around periodic ones. */
 static inline void walk_init(eng_walk *w, const rc_sim *s, int32_t skip, const int c[3],
                              const int lo[3], const int hi[3])
 {
     const eng_cells *g = &s->g;
+    if (s->periodic && walk_wraps(g, c, lo, hi)) {
+        walk_init_wrapped(w, s, skip, c, lo, hi);
+        return;
+    }
     const int x0 = c[0] + lo[0] > 0 ? c[0] + lo[0] : 0;
     const int x1 = c[0] + hi[0] < g->n[0] ? c[0] + hi[0] : g->n[0] - 1;
     const int y0 = c[1] + lo[1] > 0 ? c[1] + lo[1] : 0;
@@ -175,7 +225,7 @@ __attribute__((target("avx512f,avx512vl"))) static size_t gather_rows_avx512(eng
 #endif
 
 /* More balls into nb (at most GATHER_MAX); w->done once the block is finished. The rows
- * first (all in this chunk: at most 9 rows of 9 slots), then the chains. */
+ * first (all in this chunk: at most 9 rows of 6 slots, or 27 of 2 wrapped), then the chains. */
 static inline size_t walk_gather(eng_walk *w, int32_t *nb)
 {
     const rc_sim *s = w->s;

@@ -100,6 +100,7 @@ int rc_sim_gas_init(const rc_sim_gas_def *g, rc_vec3 *box, rc_sim_ball *balls)
         balls[i].tau = 0.0;
         balls[i].collided = 0; /* no collision yet: the TC model starts with no memory */
         balls[i].tau_last = 0.0;
+        balls[i].image[0] = balls[i].image[1] = balls[i].image[2] = 0;
         ptot = rc_v3_add(ptot, balls[i].p);
     }
     free(perm);

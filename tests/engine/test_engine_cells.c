@@ -4,7 +4,8 @@
  * slots (overflow chains of every length, a chain longer than a gather chunk):
  *  - each cell's iterator yields exactly its balls, each once;
  *  - a walk over any block yields exactly the balls of its cells but the scanning ball,
- *    each once, in the same order with the AVX2 and AVX-512 compresses as slot by slot;
+ *    each once, in the same order with the AVX2 and AVX-512 compresses as slot by slot,
+ *    with the block clipped at walled faces and wrapped around periodic ones;
  *  - the Z order balls are numbered in is a permutation of the cells, the Morton code
  *    itself on a power-of-two grid, and plain order along a line of cells. */
 #include <stdlib.h>
@@ -23,13 +24,18 @@ typedef struct world {
     eng_aux *a;
     int32_t *where; /* cell of each ball, -1: not in the grid */
     size_t n;
+    int per[3]; /* periodic axes */
 } world;
 
-static void world_init(world *w, size_t n)
+static void world_init(world *w, size_t n, const int per[3])
 {
     memset(w, 0, sizeof *w);
     w->n = n;
-    ENSURE(rc_eng_cells_init(&w->s.g, 3, rc_v3(NX, NY, NZ), 1.0, n) == RC_OK);
+    for (int d = 0; d < 3; d++) {
+        w->per[d] = per[d];
+        w->s.periodic |= per[d];
+    }
+    ENSURE(rc_eng_cells_init(&w->s.g, 3, rc_v3(NX, NY, NZ), 1.0, n, w->per) == RC_OK);
     ENSURE(w->s.g.n[0] == NX && w->s.g.n[1] == NY && w->s.g.n[2] == NZ);
     w->s.b = calloc(n, sizeof *w->s.b);
     w->a = calloc(n, sizeof *w->a);
@@ -84,6 +90,16 @@ static size_t walk_all(world *w, int simd, const int c[3], const int lo[3], cons
     return total;
 }
 
+/* Offset o of a cell from the block's centre along axis d (n cells): on a periodic axis
+ * the nearest one around the ring. */
+static int offset(const world *w, int d, int o, int n)
+{
+    if (!w->per[d])
+        return o;
+    o = ((o % n) + n) % n;
+    return 2 * o > n ? o - n : o;
+}
+
 /* The walk against the record, both paths, over random blocks (full 3x3x3 blocks and
  * the slabs of a crossing, clipped at the grid's faces). */
 static void check_walks(world *w, rc_test_rng *R, int blocks)
@@ -114,8 +130,10 @@ static void check_walks(world *w, rc_test_rng *R, int blocks)
             if (cell < 0 || (int32_t)i == skip)
                 continue;
             const int x = cell % NX, y = (cell / NX) % NY, z = cell / (NX * NY);
-            const int in = x - c[0] >= lo[0] && x - c[0] <= hi[0] && y - c[1] >= lo[1] &&
-                           y - c[1] <= hi[1] && z - c[2] >= lo[2] && z - c[2] <= hi[2];
+            const int o[3] = {offset(w, 0, x - c[0], NX), offset(w, 1, y - c[1], NY),
+                              offset(w, 2, z - c[2], NZ)};
+            const int in = o[0] >= lo[0] && o[0] <= hi[0] && o[1] >= lo[1] && o[1] <= hi[1] &&
+                           o[2] >= lo[2] && o[2] <= hi[2];
             expect += (size_t)in;
             ok &= seen[i] == in;
         }
@@ -140,10 +158,10 @@ static void check_walks(world *w, rc_test_rng *R, int blocks)
 
 /* Random inserts, removals and moves; cells drawn from a few favourites so that some
  * overflow deeply. */
-static void test_random_churn(void)
+static void test_random_churn(const int per[3])
 {
     world w;
-    world_init(&w, 400);
+    world_init(&w, 400, per);
     rc_test_rng R = {42};
     const int32_t ncells = (int32_t)w.s.g.ncells;
     for (int step = 0; step < 20000; step++) {
@@ -172,10 +190,10 @@ static void test_random_churn(void)
 
 /* One cell holding 300 balls (a chain past a whole gather chunk), then emptied from the
  * middle, the head and the tail of its chain. */
-static void test_long_chain(void)
+static void test_long_chain(const int per[3])
 {
     world w;
-    world_init(&w, 300);
+    world_init(&w, 300, per);
     rc_test_rng R = {7};
     const int32_t cell = (int32_t)(1 + NX * (1 + NY * 1));
     for (int32_t i = 0; i < 300; i++) {
@@ -207,7 +225,7 @@ static void test_long_chain(void)
 static void zorder_case(int nx, int ny, int nz, int morton)
 {
     eng_cells g;
-    ENSURE(rc_eng_cells_init(&g, nz > 1 ? 3 : 2, rc_v3(nx, ny, nz), 1.0, (size_t)(nx * ny * nz)) ==
+    ENSURE(rc_eng_cells_init(&g, nz > 1 ? 3 : 2, rc_v3(nx, ny, nz), 1.0, (size_t)(nx * ny * nz), (const int[3]){0, 0, 0}) ==
            RC_OK);
     ENSURE(g.n[0] == nx && g.n[1] == ny && g.n[2] == nz);
     int32_t *rank = malloc(g.ncells * sizeof *rank);
@@ -242,10 +260,28 @@ static void test_zorder(void)
     zorder_case(37, 23, 1, 0);
 }
 
+static void test_walled(void)
+{
+    static const int walls[3] = {0, 0, 0};
+    test_random_churn(walls);
+    test_long_chain(walls);
+}
+
+/* Periodic axes, alone and mixed with walls (NZ = 3: the fewest cells a periodic axis
+ * may have, where the block's three planes are all the planes there are). */
+static void test_periodic(void)
+{
+    static const int per[][3] = {{1, 1, 1}, {1, 0, 1}, {0, 1, 0}, {0, 0, 1}};
+    for (size_t k = 0; k < sizeof per / sizeof *per; k++) {
+        test_random_churn(per[k]);
+        test_long_chain(per[k]);
+    }
+}
+
 int main(void)
 {
     RUN_TEST(test_zorder);
-    RUN_TEST(test_random_churn);
-    RUN_TEST(test_long_chain);
+    RUN_TEST(test_walled);
+    RUN_TEST(test_periodic);
     RC_TEST_MAIN_END();
 }

@@ -359,9 +359,9 @@ static void test_engine_double_collision(void)
     /* ball 0 (r 1) moving +x hits balls 1 and 2 (r 1) at +-30 degrees at t = 1 */
     double gap = 1.0;
     rc_sim_ball b[3] = {
-        {rc_v3(5 - gap, 10, 0), rc_v3(1, 0, 0), 1, 0, 0, 0, 0},
-        {rc_v3(5 + 2 * cos(M_PI / 6), 10 + 2 * sin(M_PI / 6), 0), rc_v3(0, 0, 0), 1, 0, 0, 0, 0},
-        {rc_v3(5 + 2 * cos(M_PI / 6), 10 - 2 * sin(M_PI / 6), 0), rc_v3(0, 0, 0), 1, 0, 0, 0, 0},
+        {rc_v3(5 - gap, 10, 0), rc_v3(1, 0, 0), 1, 0, 0, 0, 0, {0, 0, 0}},
+        {rc_v3(5 + 2 * cos(M_PI / 6), 10 + 2 * sin(M_PI / 6), 0), rc_v3(0, 0, 0), 1, 0, 0, 0, 0, {0, 0, 0}},
+        {rc_v3(5 + 2 * cos(M_PI / 6), 10 - 2 * sin(M_PI / 6), 0), rc_v3(0, 0, 0), 1, 0, 0, 0, 0, {0, 0, 0}},
     };
     ENSURE(rc_sim_set_balls(s, 3, b, NULL) == RC_OK);
     ENSURE(rc_sim_advance(s, 1.5, 0) == RC_OK);
@@ -412,12 +412,12 @@ static void test_rack_break_symmetric(void)
     ENSURE(rc_sim_create(&d, &s) == RC_OK);
     rc_sim_ball b[16];
     int n = 0, mirror[16];
-    b[n] = (rc_sim_ball){rc_v3(5, 10, 0), rc_v3(5, 0, 0), 0.5, 0, 0, 0, 0};
+    b[n] = (rc_sim_ball){rc_v3(5, 10, 0), rc_v3(5, 0, 0), 0.5, 0, 0, 0, 0, {0, 0, 0}};
     mirror[n++] = 0;
     for (int row = 0; row < 5; row++)
         for (int k = 0; k <= row; k++) {
             b[n++] = (rc_sim_ball){rc_v3(20 + row * sqrt(3.0) * 0.5, 10 + (k - row / 2.0), 0),
-                                   rc_v3(0, 0, 0), 0.5, 0, 0, 0, 0};
+                                   rc_v3(0, 0, 0), 0.5, 0, 0, 0, 0, {0, 0, 0}};
         }
     for (int i = 1, row = 0, k = 0; i < n; i++) { /* ball (row, k) mirrors (row, row - k) */
         mirror[i] = i - k + (row - k);

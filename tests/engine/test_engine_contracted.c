@@ -77,9 +77,9 @@ static void test_parting_bounding_spheres(void)
         return;
     for (size_t q = 0; q < sizeof cs / sizeof cs[0]; q++) {
         const double *c = cs[q];
-        rc_sim_ball b[2] = {{rc_v3(10.0, 10.0, 0.0), rc_v3(c[0], c[1], 0.0), 0.5, 1.0, 0.0, 0, 0.0},
+        rc_sim_ball b[2] = {{rc_v3(10.0, 10.0, 0.0), rc_v3(c[0], c[1], 0.0), 0.5, 1.0, 0.0, 0, 0.0, {0, 0, 0}},
                             {rc_v3(10.0 + c[4], 10.0 + c[5], 0.0), rc_v3(c[2], c[3], 0.0), 0.5,
-                             1.0, 0.0, 0, 0.0}};
+                             1.0, 0.0, 0, 0.0, {0, 0, 0}}};
         /* the premise: centres parting, bounding circles overlapping, shapes to meet */
         const rc_vec3 v0 = rc_velocity(1.0, b[0].p, 1.0), v1 = rc_velocity(1.0, b[1].p, 1.0);
         const rc_vec3 d = rc_v3_sub(b[1].x, b[0].x);

@@ -90,9 +90,9 @@ static void test_set_balls_rejects(void)
     d.box = rc_v3(10, 10, 0);
     rc_sim *s = NULL;
     ENSURE(rc_sim_create(&d, &s) == RC_OK);
-    rc_sim_ball b[3] = {{rc_v3(2, 2, 0), rc_v3(1, 0, 0), 1, 0, 0, 0, 0},
-                        {rc_v3(5, 5, 0), rc_v3(0, 0, 0), 1, 0, 0, 0, 0},
-                        {rc_v3(6.5, 5, 0), rc_v3(0, 0, 0), 1, 0, 0, 0, 0}};
+    rc_sim_ball b[3] = {{rc_v3(2, 2, 0), rc_v3(1, 0, 0), 1, 0, 0, 0, 0, {0, 0, 0}},
+                        {rc_v3(5, 5, 0), rc_v3(0, 0, 0), 1, 0, 0, 0, 0, {0, 0, 0}},
+                        {rc_v3(6.5, 5, 0), rc_v3(0, 0, 0), 1, 0, 0, 0, 0, {0, 0, 0}}};
     size_t bad = 99;
     ENSURE(rc_sim_set_balls(s, 3, b, &bad) == RC_EOVERLAP && bad == 2);
     b[2].x = rc_v3(9.5, 5, 0); /* sticks out of the box */

@@ -121,7 +121,7 @@ static void compare(int dim, double eps, double eps_w, uint64_t seed)
                 continue;
             in[i] = (rc_sim_ball){x, rc_v3(rc_test_range(&R, -1, 1), rc_test_range(&R, -1, 1),
                                            dim == 3 ? rc_test_range(&R, -1, 1) : 0.0),
-                                  r, 0.0, 0.0, 0, 0.0};
+                                  r, 0.0, 0.0, 0, 0.0, {0, 0, 0}};
             break;
         }
     }

@@ -54,6 +54,20 @@ typedef enum rc_sim_defer {
     RC_SIM_DEFER_OFF       /* ask the frame at once */
 } rc_sim_defer;
 
+/* Boundary of one axis of the box (rc_sim_def.boundary). */
+enum rc_sim_boundary {
+    RC_SIM_WALLS = 0,   /* hard walls at 0 and L (restitution eps_wall) */
+    RC_SIM_PERIODIC = 1 /* the faces 0 and L are one: a ball leaving through one comes back
+                           through the other, and balls meet across it (nearest image).
+                           Periodic in the box frame, which is the table frame: its
+                           simultaneity decides the identification. The axis needs at least
+                           three cells (rc_sim_def.cell_size, or automatic: at least one
+                           largest bounding diameter each), so the box edge must be >= 3
+                           cell edges: RC_EINVAL from rc_sim_create (cell_size given) or
+                           rc_sim_set_balls (automatic cells) otherwise. Positions are kept
+                           in [0, L); rc_sim_ball.image counts the wraps. */
+};
+
 /* Definition of a simulation. Make one with rc_sim_def_default() and change fields. */
 typedef struct rc_sim_def {
     int dim;            /* 2 (table: z ignored, kept 0) or 3 */
@@ -107,6 +121,10 @@ typedef struct rc_sim_def {
     int restart;
     rc_sim_simd simd;   /* lanes of the neighbour test (default RC_SIM_SIMD_AUTO) */
     rc_sim_defer defer; /* deferred root finds (default RC_SIM_DEFER_AUTO) */
+    /* per axis (x, y, z; z ignored in 2-D): RC_SIM_WALLS (the default) or RC_SIM_PERIODIC.
+     * Walls and periodic axes mix freely; no wall event and no wall impulse on a periodic
+     * axis (with every axis periodic total momentum is conserved to round-off). */
+    int boundary[3];
 } rc_sim_def;
 
 rc_sim_def rc_sim_def_default(void);
@@ -123,6 +141,11 @@ typedef struct rc_sim_ball {
      * rc_sim_get_ball so that a written state continues exactly. */
     int collided;
     double tau_last;
+    /* Periodic axes: how many times the ball has wrapped across the far face (minus those
+     * across the near one), so that x + image * L is its unwrapped position (diffusion,
+     * mean square displacement). x itself is always in [0, L) on a periodic axis (input
+     * outside: RC_EINVAL). Read only on periodic axes, read back as 0 on walled ones. */
+    int32_t image[3];
 } rc_sim_ball;
 
 /* Event kinds, for rc_sim_diag.events[]. */
