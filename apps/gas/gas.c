@@ -32,7 +32,7 @@ static void usage(FILE *f)
     fprintf(f,
 "usage: relcol-gas [--dim 1|2|3] [--n N] [--c C] [--theta-start T | --v-rms V]\n"
 "                  [--packing P] [--t-equil T] [--t-sample T] [--snapshots K]\n"
-"                  [--seed S] [--frame NAME] [--out DIR]\n"
+"                  [--seed S] [--frame NAME] [--boundary walls|periodic] [--out DIR]\n"
 "\n"
 "Run a relativistic gas from a far-from-equilibrium start (every speed equal, random\n"
 "directions) to equilibrium, and read its temperature theta = kT/(m c^2) two ways:\n"
@@ -45,8 +45,9 @@ static void usage(FILE *f)
 "\n"
 "gases:\n"
 "  --dim 2|3   discs / balls of rest radius 1/2, rest mass 1, in a square / cubic box\n"
-"              with elastic walls: the event-driven engine (relcol/sim.h), elastic\n"
-"              collisions, contact geometry --frame (default table: contracted shapes)\n"
+"              with elastic walls or periodic: the event-driven engine (relcol/sim.h),\n"
+"              elastic collisions, contact geometry --frame (default table: contracted\n"
+"              shapes)\n"
 "  --dim 1     the exact 1-D point gas (relcol/gas1d.h) on [0, N] with elastic walls, a\n"
 "              mixture of rest masses 1 and 2 (one species would never thermalise: equal\n"
 "              masses only swap momenta); theta_start and reported theta are per species,\n"
@@ -70,6 +71,9 @@ static void usage(FILE *f)
         fprintf(f, "                     %-7s %s\n", rc_toi_frames[i]->name,
                 rc_toi_frames[i]->summary);
     fprintf(f,
+"  --boundary B     2-D/3-D: walls (default) or periodic on every axis (periodic in the\n"
+"                   box frame; the balls start in pairs of opposite momenta, so the\n"
+"                   total momentum is zero and the gas settles at rest)\n"
 "  --out DIR        output folder, created if missing (default out/gas)\n"
 "\n"
 "error bars: the K snapshots are cut into %d consecutive blocks and each figure is the\n"
@@ -95,6 +99,7 @@ typedef struct options {
     long n, snapshots;
     double c, theta_start, v_start, packing, t_equil, t_sample;
     int theta_given, v_given, packing_given, frame_given, tequil_given, tsample_given;
+    int periodic, boundary_given;
     uint64_t seed;
     const rc_toi_frame *frame;
     const char *out;
@@ -113,7 +118,7 @@ static int parse_options(int argc, char **argv, options *o)
     o->out = "out/gas";
     static const char *const known[] = {"--dim", "--n", "--c", "--theta-start", "--v-rms",
                                         "--packing", "--t-equil", "--t-sample", "--snapshots",
-                                        "--seed", "--out", "--frame", NULL};
+                                        "--seed", "--out", "--frame", "--boundary", NULL};
     app_opts it;
     app_opts_init(&it, prog, argc, argv, known, NULL, "see --help");
     const char *name, *val;
@@ -148,6 +153,11 @@ static int parse_options(int argc, char **argv, options *o)
                             app_toi_frame_list(list, sizeof list));
             }
             o->frame_given = 1;
+        } else if (strcmp(name, "--boundary") == 0) {
+            if (strcmp(val, "walls") && strcmp(val, "periodic"))
+                return fail("--boundary: '%s' is not walls or periodic", val);
+            o->periodic = strcmp(val, "periodic") == 0;
+            o->boundary_given = 1;
         } else {
             double x;
             if (app_parse_double(val, strcmp(name, "--c") == 0, &x, err) != 0)
@@ -195,6 +205,8 @@ static int parse_options(int argc, char **argv, options *o)
         return fail("--packing: not used with --dim 1 (point particles at unit density)");
     if (o->dim == 1 && o->frame_given)
         return fail("--frame: not used with --dim 1 (point particles have no shape)");
+    if (o->dim == 1 && o->boundary_given)
+        return fail("--boundary: not used with --dim 1 (the 1-D gas has walls)");
     const double pmax = o->dim == 3 ? 0.52 : 0.78; /* rc_sim_gas_init's lattice start */
     if (!o->packing_given)
         o->packing = o->dim == 3 ? 0.2 : 0.25;
@@ -293,13 +305,28 @@ static int run_sim(const options *o, samples *S, char *err)
     for (size_t i = 0; i < n; i++) {
         b[i].p = rc_v3_scale(p0, random_direction(o->dim, &R));
         b[i].m = 1.0;
+        b[i].image[0] = b[i].image[1] = b[i].image[2] = 0;
         S->spec[i] = 0;
+    }
+    /* periodic: no wall takes momentum, so the start has none -- pairs of opposite
+     * momenta (an odd n: the last three at 120 degrees in the xy plane), every speed
+     * still the same */
+    for (size_t i = 1; o->periodic && i + (n % 2 ? 2 : 0) < n; i += 2)
+        b[i].p = rc_v3_scale(-1.0, b[i - 1].p);
+    if (o->periodic && n % 2) {
+        const double a = 2.0 * M_PI * rng_uniform(&R);
+        for (size_t k = 0; k < 3; k++) {
+            const double ak = a + 2.0 * M_PI * (double)k / 3.0;
+            b[n - 3 + k].p = rc_v3(p0 * cos(ak), p0 * sin(ak), 0.0);
+        }
     }
     rc_sim_def d = rc_sim_def_default();
     d.dim = o->dim;
     d.box = box;
     d.c = o->c;
     d.frame = o->frame;
+    for (int k = 0; k < 3; k++)
+        d.boundary[k] = o->periodic ? RC_SIM_PERIODIC : RC_SIM_WALLS;
     rc_sim *s = NULL;
     st = rc_sim_create(&d, &s);
     if (st == RC_OK)
@@ -674,9 +701,9 @@ int main(int argc, char **argv)
         printf("%s: 1-D mixture (m = 1, 2), N = %ld on [0, %ld], c = %s; start: every "
                "gamma = %.6g\n", prog, o.n, o.n, app_fmt(o.c, f1), S.gamma0);
     else
-        printf("%s: %d-D, N = %ld, packing %g (box %.4g), c = %s, frame %s; start: every "
-               "gamma = %.6g\n", prog, o.dim, o.n, o.packing, S.box, app_fmt(o.c, f1),
-               o.frame->name, S.gamma0);
+        printf("%s: %d-D, N = %ld, packing %g (box %.4g%s), c = %s, frame %s; start: every "
+               "gamma = %.6g\n", prog, o.dim, o.n, o.packing, S.box,
+               o.periodic ? ", periodic" : "", app_fmt(o.c, f1), o.frame->name, S.gamma0);
     printf("equilibration to t = %g, then %zu snapshots every %g (%d blocks of %zu); "
            "%llu collisions%s",
            o.t_equil, S.ns, dsnap, NBLOCK, S.ns / NBLOCK, (unsigned long long)S.events,

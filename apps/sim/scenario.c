@@ -188,9 +188,83 @@ static int get_vec(const ctx *c, const cJSON *v, const char *p, int dim, rc_vec3
 
 /* ---- sections -------------------------------------------------------------------- */
 
+/* A ball's image counters: dim whole numbers, 0 on a walled axis. */
+static int get_image(const ctx *c, const cJSON *v, const char *p, const scn_scenario *s,
+                     int32_t image[3])
+{
+    if (!cJSON_IsArray(v) || cJSON_GetArraySize(v) != s->dim)
+        return bad(c, p, "must be an array of %d whole numbers (periodic wraps per axis)",
+                   s->dim);
+    int d = 0;
+    for (const cJSON *e = v->child; e; e = e->next, d++) {
+        const double x = cJSON_IsNumber(e) ? e->valuedouble : NAN;
+        if (!(x == floor(x) && fabs(x) <= 2147483647.0))
+            return bad(c, p, "component %d is not a whole number in 32 bits", d);
+        if (x != 0 && s->boundary[d] != RC_SIM_PERIODIC)
+            return bad(c, p, "component %d must be 0: axis %d has walls", d, d);
+        image[d] = (int32_t)x;
+    }
+    return 0;
+}
+
+/* boundary: "walls" / "periodic" for every axis, or a list of dim of them. */
+static int boundary_of(const ctx *c, const cJSON *v, const char *p, int *out)
+{
+    if (!cJSON_IsString(v))
+        return bad(c, p, "must be \"walls\" or \"periodic\"");
+    if (strcmp(v->valuestring, "walls") == 0)
+        *out = RC_SIM_WALLS;
+    else if (strcmp(v->valuestring, "periodic") == 0)
+        *out = RC_SIM_PERIODIC;
+    else
+        return bad(c, p, "unknown boundary '%s' (expected walls or periodic)", v->valuestring);
+    return 0;
+}
+
+static int parse_boundary(const ctx *c, const cJSON *v, scn_scenario *s)
+{
+    if (cJSON_IsString(v)) {
+        int b;
+        if (boundary_of(c, v, "boundary", &b))
+            return -1;
+        for (int d = 0; d < s->dim; d++)
+            s->boundary[d] = b;
+        return 0;
+    }
+    if (!cJSON_IsArray(v))
+        return bad(c, "boundary", "must be \"walls\", \"periodic\" or a list of %d of them",
+                   s->dim);
+    const int n = cJSON_GetArraySize(v);
+    if (n != s->dim)
+        return bad(c, "boundary", "has %d entries, the scenario is %d-D", n, s->dim);
+    int d = 0;
+    char p[32];
+    for (const cJSON *e = v->child; e; e = e->next, d++) {
+        snprintf(p, sizeof p, "boundary[%d]", d);
+        if (boundary_of(c, e, p, &s->boundary[d]))
+            return -1;
+    }
+    return 0;
+}
+
+/* A periodic axis needs three cells of at least a largest diameter (relcol/sim.h). */
+static int check_periodic_room(const ctx *c, const scn_scenario *s)
+{
+    double rmax = 0;
+    for (size_t i = 0; i < s->n; i++)
+        rmax = s->balls[i].r > rmax ? s->balls[i].r : rmax;
+    for (int d = 0; d < s->dim; d++) {
+        const double L = rc_v3_get(s->box, d), need = 6 * rmax * (1 + 1e-7);
+        if (s->boundary[d] == RC_SIM_PERIODIC && !(L >= need))
+            return bad(c, "boundary", "axis %d is periodic, so its box edge %g must be at "
+                                      "least 3 largest ball diameters (%.9g)", d, L, need);
+    }
+    return 0;
+}
+
 static int parse_balls(const ctx *c, const cJSON *arr, scn_scenario *s)
 {
-    static const char *const keys[] = {"r", "m", "x", "v", "p", "tau", "tau_last", NULL};
+    static const char *const keys[] = {"r", "m", "x", "v", "p", "tau", "tau_last", "image", NULL};
     if (!cJSON_IsArray(arr))
         return bad(c, "balls", "must be an array of ball objects");
     s->n = (size_t)cJSON_GetArraySize(arr);
@@ -234,13 +308,21 @@ static int parse_balls(const ctx *c, const cJSON *arr, scn_scenario *s)
         if (get_vec(c, jx, q, s->dim, &o->x))
             return -1;
         /* the centre in the box here; whether the whole (possibly contracted) shape is
-         * inside is the engine's check, in the contact frame's geometry */
+         * inside is the engine's check, in the contact frame's geometry (a periodic axis:
+         * the centre in [0, L), the shape may reach across the face) */
         for (int d = 0; d < s->dim; d++) {
             double xd = rc_v3_get(o->x, d), L = rc_v3_get(s->box, d);
-            if (!(xd > 0 && xd < L))
+            if (s->boundary[d] == RC_SIM_PERIODIC && !(xd >= 0 && xd < L))
+                return bad(c, q, "the centre is not inside the box along periodic axis %d: "
+                                 "%.17g not in [0, %g)", d, xd, L);
+            if (s->boundary[d] != RC_SIM_PERIODIC && !(xd > 0 && xd < L))
                 return bad(c, q, "the centre is not inside the box along axis %d: %.17g not "
                                  "in (0, %g)", d, xd, L);
         }
+        const cJSON *ji = cJSON_GetObjectItemCaseSensitive(b, "image");
+        snprintf(q, sizeof q, "%s.image", p);
+        if (ji && get_image(c, ji, q, s, o->image))
+            return -1;
         const cJSON *jv = cJSON_GetObjectItemCaseSensitive(b, "v");
         const cJSON *jp = cJSON_GetObjectItemCaseSensitive(b, "p");
         if (jv && jp)
@@ -453,9 +535,9 @@ int scn_parse(const char *text, const char *name, scn_scenario *s, char *err)
 int scn_parse_ext(const char *text, const char *name, const scn_tables *extra,
                   scn_scenario *s, char *err)
 {
-    static const char *const keys[] = {"relcol", "dim", "box", "c", "law", "restitution",
-                                       "contact_frame", "tc", "seed", "time", "t_end",
-                                       "restart", "checkpoint", "balls", "generate",
+    static const char *const keys[] = {"relcol", "dim", "box", "boundary", "c", "law",
+                                       "restitution", "contact_frame", "tc", "seed", "time",
+                                       "t_end", "restart", "checkpoint", "balls", "generate",
                                        "outputs", NULL};
     memset(s, 0, sizeof *s);
     ctx c = {name, err};
@@ -507,6 +589,9 @@ int scn_parse_ext(const char *text, const char *name, const scn_tables *extra,
         goto done;
     }
     s->dim = (int)dim;
+    const cJSON *jbnd = cJSON_GetObjectItemCaseSensitive(root, "boundary");
+    if (jbnd && parse_boundary(&c, jbnd, s))
+        goto done;
     if (get_num(&c, root, "", "c", 0, INFINITY, 1, &s->c))
         goto done;
     if (!(s->c > 0)) {
@@ -617,6 +702,8 @@ int scn_parse_ext(const char *text, const char *name, const scn_tables *extra,
             }
     }
     if (jballs ? parse_balls(&c, jballs, s) : parse_generate(&c, jgen, jbox, s))
+        goto done;
+    if (check_periodic_room(&c, s))
         goto done;
     if (parse_outputs(&c, cJSON_GetObjectItemCaseSensitive(root, "outputs"), s))
         goto done;
@@ -756,6 +843,17 @@ int scn_write(FILE *f, const scn_scenario *s, double t, double t_end, size_t n,
 {
     fprintf(f, "{\"relcol\": 1, \"dim\": %d, \"box\": ", s->dim);
     put_vec(f, s->box, s->dim);
+    int periodic = 0, mixed = 0;
+    for (int d = 0; d < s->dim; d++) {
+        periodic |= s->boundary[d] == RC_SIM_PERIODIC;
+        mixed |= s->boundary[d] != s->boundary[0];
+    }
+    if (periodic && !mixed) /* (walls, the default, are not written) */
+        fprintf(f, ", \"boundary\": \"periodic\"");
+    for (int d = 0; periodic && mixed && d < s->dim; d++)
+        fprintf(f, "%s\"%s\"%s", d ? ", " : ", \"boundary\": [",
+                s->boundary[d] == RC_SIM_PERIODIC ? "periodic" : "walls",
+                d + 1 < s->dim ? "" : "]");
     if (isinf(s->c))
         fprintf(f, ",\n \"c\": \"inf\"");
     else
@@ -797,6 +895,11 @@ int scn_write(FILE *f, const scn_scenario *s, double t, double t_end, size_t n,
         put_vec(f, balls[i].x, s->dim);
         fprintf(f, ", \"p\": ");
         put_vec(f, balls[i].p, s->dim);
+        if (periodic) /* (the wraps: x + image L is the unwrapped position) */
+            fprintf(f, ", \"image\": [%d, %d%s", (int)balls[i].image[0], (int)balls[i].image[1],
+                    s->dim == 3 ? "" : "]");
+        if (periodic && s->dim == 3)
+            fprintf(f, ", %d]", (int)balls[i].image[2]);
         fprintf(f, "}%s\n", i + 1 < n ? "," : "");
     }
     fprintf(f, " ]}\n");

@@ -30,6 +30,7 @@ typedef struct scn_outputs {
 typedef struct scn_scenario {
     int dim;                   /* 2 or 3 */
     rc_vec3 box;               /* edge lengths */
+    int boundary[3];           /* per axis: RC_SIM_WALLS or RC_SIM_PERIODIC */
     double c;                  /* INFINITY classical */
     const rc_law *law;
     double eps_ball, eps_wall;

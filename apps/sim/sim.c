@@ -216,6 +216,8 @@ int main(int argc, char **argv)
     def.law = s.law;
     def.restart = s.restart;
     def.frame = s.frame;
+    for (int d = 0; d < 3; d++)
+        def.boundary[d] = s.boundary[d];
     rc_sim *sim = NULL;
     int st = rc_sim_create(&def, &sim);
     if (st != RC_OK) {

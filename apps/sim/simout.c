@@ -87,7 +87,13 @@ static int write_snapshot(const sim_output *o, const rc_sim *sim, size_t k, char
         fprintf(a.f, ",p%c", axes[d]);
     for (int d = 0; d < s->dim; d++)
         fprintf(a.f, ",v%c", axes[d]);
-    fprintf(a.f, ",m,r,tau,gamma\n");
+    fprintf(a.f, ",m,r,tau,gamma");
+    int periodic = 0; /* periodic axes: each axis's wrap count, x + image L unwrapped */
+    for (int d = 0; d < s->dim; d++)
+        periodic |= s->boundary[d] == RC_SIM_PERIODIC;
+    for (int d = 0; periodic && d < s->dim; d++)
+        fprintf(a.f, ",image_%c", axes[d]);
+    fprintf(a.f, "\n");
     size_t n = rc_sim_count(sim);
     for (size_t i = 0; i < n; i++) {
         rc_sim_ball b;
@@ -100,7 +106,10 @@ static int write_snapshot(const sim_output *o, const rc_sim *sim, size_t k, char
             fprintf(a.f, ",%.17g", rc_v3_get(b.p, d));
         for (int d = 0; d < s->dim; d++)
             fprintf(a.f, ",%.17g", rc_v3_get(v, d));
-        fprintf(a.f, ",%.17g,%.17g,%.17g,%.17g\n", b.m, b.r, b.tau, rc_gamma(b.m, b.p, k2));
+        fprintf(a.f, ",%.17g,%.17g,%.17g,%.17g", b.m, b.r, b.tau, rc_gamma(b.m, b.p, k2));
+        for (int d = 0; periodic && d < s->dim; d++)
+            fprintf(a.f, ",%d", (int)b.image[d]);
+        fprintf(a.f, "\n");
     }
     return app_atomic_commit(&a, err);
 }
@@ -113,8 +122,11 @@ static void write_frame(sim_output *o, const rc_sim *sim)
     double Lz = s->dim == 3 ? s->box.z : 0.0;
     fprintf(o->xyz.f, "%zu\nLattice=\"%.17g 0 0 0 %.17g 0 0 0 %.17g\" Origin=\"0 0 0\" "
                       "Properties=species:S:1:pos:R:3:velo:R:3:radius:R:1:mass:R:1:gamma:R:1 "
-                      "Time=%.17g pbc=\"F F F\"\n",
-            n, s->box.x, s->box.y, Lz, rc_sim_time(sim));
+                      "Time=%.17g pbc=\"%c %c %c\"\n",
+            n, s->box.x, s->box.y, Lz, rc_sim_time(sim),
+            s->boundary[0] == RC_SIM_PERIODIC ? 'T' : 'F',
+            s->boundary[1] == RC_SIM_PERIODIC ? 'T' : 'F',
+            s->dim == 3 && s->boundary[2] == RC_SIM_PERIODIC ? 'T' : 'F');
     int in_gif = o->frame_no % o->gif_stride == 0;
     for (size_t i = 0; i < n; i++) {
         rc_sim_ball b;
@@ -370,7 +382,13 @@ static int write_summary(sim_output *o, const rc_sim *sim, double wall, int inte
     fprintf(f, "balls            %zu (%d-D, box", n, s->dim);
     for (int k = 0; k < s->dim; k++)
         fprintf(f, " %g", rc_v3_get(s->box, k));
-    fprintf(f, ")%s%s\n", *s->generator ? ", generated: " : "", s->generator);
+    fprintf(f, ")%s%s", *s->generator ? ", generated: " : "", s->generator);
+    for (int k = 0, first = 1; k < s->dim; k++)
+        if (s->boundary[k] == RC_SIM_PERIODIC) {
+            fprintf(f, "%s%c", first ? ", periodic in " : " ", "xyz"[k]);
+            first = 0;
+        }
+    fprintf(f, "\n");
     if (isinf(s->c))
         fprintf(f, "c                inf (classical)\n");
     else
