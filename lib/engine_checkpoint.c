@@ -100,6 +100,11 @@ static uint64_t def_print(const rc_sim *s)
     h = fnv_double(h, d->overlap_tol);
     h = fnv_double(h, d->cell_size);
     h = fnv_double(h, d->density);
+    if (s->periodic) /* (walls, the default, leave the print as it was before boundaries) */
+        for (int k = 0; k < d->dim; k++) {
+            const int32_t bk = (int32_t)d->boundary[k];
+            h = fnv_bytes(h, &bk, sizeof bk);
+        }
     return h;
 }
 
@@ -158,6 +163,8 @@ static void write_all(const rc_sim *s, ck_cursor *c, const int32_t *next)
     put(c, s->cnt, n * sizeof *s->cnt);
     if (s->ev_n)
         put(c, s->ev_n, n * sizeof *s->ev_n);
+    if (s->img) /* (periodic boxes: the wrap counters) */
+        put(c, s->img, 3 * n * sizeof *s->img);
     if (n) {
         put(c, s->g.slot, s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot);
         put(c, next, n * sizeof *next);
@@ -212,7 +219,7 @@ static int check_ball(const rc_sim *s, size_t k)
         return RC_ECORRUPT;
     const int32_t p = a->ev_partner;
     if (!(p == ENG_NONE || (p >= 0 && (size_t)p < s->n && (size_t)p != k) ||
-          (p < 0 && ENG_WALL_INDEX(p) < 2 * dim)))
+          (p < 0 && ENG_WALL_INDEX(p) < 2 * dim && (s->walled >> ENG_WALL_INDEX(p) / 2 & 1u))))
         return RC_ECORRUPT;
     if (!(a->cross_code >= -1 && a->cross_code < 2 * dim) || a->cell < 0 ||
         (size_t)a->cell >= s->g.ncells)
@@ -319,7 +326,8 @@ static int read_all(rc_sim *s, ck_cursor *c)
     if (get(c, s->b, n * sizeof *s->b) || get(c, s->a, n * sizeof *s->a) ||
         get(c, s->clk, n * sizeof *s->clk) || get(c, s->id, n * sizeof *s->id) ||
         get(c, s->cnt, n * sizeof *s->cnt) ||
-        (s->ev_n && get(c, s->ev_n, n * sizeof *s->ev_n)))
+        (s->ev_n && get(c, s->ev_n, n * sizeof *s->ev_n)) ||
+        (s->img && get(c, s->img, 3 * n * sizeof *s->img)))
         return RC_ECORRUPT;
     if (n && (get(c, s->g.slot, s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot) ||
               get(c, s->g.next, n * sizeof *s->g.next)))

@@ -6,7 +6,9 @@
  *    periodic axis;
  *  - two balls meeting across each face (nearest image): one collision, at the right time,
  *    with the right outcome;
- *  - a state read back (image counters included) continues bit for bit in a new engine;
+ *  - a state read back (image counters included) continues bit for bit in a new engine
+ *    after rc_sim_sync; a checkpoint continues as the run that never stopped, and a
+ *    walled engine refuses a periodic one's;
  *  - bad periodic input refused: fewer than three cells, a centre outside [0, L), an
  *    unknown boundary;
  *  - conservation over >= 1e6 collisions in all-periodic boxes (3-D and 2-D, classical; a
@@ -239,6 +241,62 @@ static void test_restart(void)
     }
 }
 
+/* Checkpoints of periodic runs (classical, and the table frame at c = 1 with eps < 1 and
+ * TC): stopped at t = 2, written, read into a new engine and continued to t = 5, the
+ * same hash and images as the run that never stopped. */
+static void test_checkpoint(void)
+{
+    for (int k = 0; k < 4; k++) {
+        const int dim = 2 + k % 2, rel = k >= 2;
+        rc_sim_def d = periodic_def(dim, RC_SIM_PERIODIC, k == 1 ? RC_SIM_WALLS : RC_SIM_PERIODIC,
+                                    RC_SIM_PERIODIC);
+        if (rel) {
+            d.c = 1.0;
+            d.frame = &rc_toi_frame_table;
+            d.eps_ball = 0.8;
+            d.t_c = 1e-4;
+        }
+        const size_t n = 400;
+        rc_sim_gas_def g = {dim, n, 0.5, 0.3, rel ? 0.5 : 1.0, d.c, 1.0, 21 + (uint64_t)k};
+        rc_sim_ball *b = malloc(n * sizeof *b);
+        rc_sim *s = NULL, *u = NULL, *t = NULL;
+        ENSURE(rc_sim_gas_init(&g, &d.box, b) == RC_OK);
+        ENSURE(rc_sim_create(&d, &s) == RC_OK && rc_sim_create(&d, &u) == RC_OK &&
+               rc_sim_create(&d, &t) == RC_OK);
+        ENSURE(rc_sim_set_balls(s, n, b, NULL) == RC_OK);
+        ENSURE(rc_sim_set_balls(u, n, b, NULL) == RC_OK);
+        ENSURE(rc_sim_advance(s, 2.0, 0) == RC_OK);
+        size_t bytes = 0;
+        ENSURE(rc_sim_checkpoint_size(s, &bytes) == RC_OK);
+        void *buf = malloc(bytes);
+        ENSURE(buf && rc_sim_checkpoint_write(s, buf, bytes) == RC_OK);
+        ENSURE(rc_sim_checkpoint_read(t, buf, bytes) == RC_OK);
+        ENSURE(rc_sim_advance(t, 5.0, 0) == RC_OK && rc_sim_advance(u, 5.0, 0) == RC_OK);
+        ENSURE_MSG(rc_sim_hash(t) == rc_sim_hash(u), "case %d: the continued run differs", k);
+        long wrapped = 0;
+        for (size_t i = 0; i < n; i++) {
+            rc_sim_ball p, q;
+            rc_sim_get_ball(t, i, &p);
+            rc_sim_get_ball(u, i, &q);
+            ENSURE(!memcmp(p.image, q.image, sizeof p.image));
+            wrapped += labs(p.image[0]) + labs(p.image[1]) + labs(p.image[2]);
+        }
+        ENSURE(wrapped > 0);
+        /* the same box with walls is another definition */
+        rc_sim_def w = d;
+        w.boundary[0] = w.boundary[1] = w.boundary[2] = RC_SIM_WALLS;
+        rc_sim *x = NULL;
+        ENSURE(rc_sim_create(&w, &x) == RC_OK);
+        ENSURE(rc_sim_checkpoint_read(x, buf, bytes) == RC_EMISMATCH);
+        rc_sim_free(&x);
+        free(buf);
+        free(b);
+        rc_sim_free(&s);
+        rc_sim_free(&t);
+        rc_sim_free(&u);
+    }
+}
+
 static void test_refusals(void)
 {
     rc_sim_def d = periodic_def(3, RC_SIM_PERIODIC, RC_SIM_PERIODIC, RC_SIM_PERIODIC);
@@ -353,6 +411,7 @@ int main(void)
     RUN_TEST(test_faces);
     RUN_TEST(test_across_faces);
     RUN_TEST(test_restart);
+    RUN_TEST(test_checkpoint);
     RUN_TEST(test_conservation);
     RC_TEST_MAIN_END();
 }

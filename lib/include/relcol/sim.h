@@ -219,8 +219,10 @@ int rc_sim_set_time(rc_sim *s, double t);
  * touching is fine), both judged in the contact frame's own geometry (contracted shapes
  * for table and zmf at finite c). With contracted shapes an overlapping pair that is
  * separating is accepted: shape change after a collision produces exactly such states
- * (see the overlap policy above), and a restart must read them back. *bad (may be NULL)
- * gets the index. */
+ * (see the overlap policy above), and a restart must read them back. On a periodic axis
+ * the centre must lie in [0, L) (the shape may reach across the face), overlaps are
+ * judged between nearest images, image[] is taken as given, and a box edge below three
+ * cell edges is RC_EINVAL. *bad (may be NULL) gets the index. */
 int rc_sim_set_balls(rc_sim *s, size_t n, const rc_sim_ball *balls, size_t *bad);
 
 /* Bring every ball to the engine's time and plan all events afresh from that state alone
