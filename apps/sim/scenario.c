@@ -224,7 +224,7 @@ static int boundary_of(const ctx *c, const cJSON *v, const char *p, int *out)
 static int parse_boundary(const ctx *c, const cJSON *v, scn_scenario *s)
 {
     if (cJSON_IsString(v)) {
-        int b;
+        int b = RC_SIM_WALLS;
         if (boundary_of(c, v, "boundary", &b))
             return -1;
         for (int d = 0; d < s->dim; d++)
