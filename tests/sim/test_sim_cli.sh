@@ -70,6 +70,16 @@ else
     ko "BOM/CRLF or NaN at rest: $(cat "$tmp/err") $(cat "$tmp/out")"
 fi
 
+# periodic boundaries: the key, each axis, a centre on the face, room for three cells
+reject bndval "{$B, \"boundary\": \"open\", \"balls\": [$ball]}" "boundary: unknown boundary 'open'"
+reject bndlen "{$B, \"boundary\": [\"periodic\"], \"balls\": [$ball]}" 'boundary: has 1 entries, the scenario is 2-D'
+reject bndaxis "{$B, \"boundary\": [\"walls\", 3], \"balls\": [$ball]}" 'boundary[1]: must be "walls" or "periodic"'
+reject bndtype "{$B, \"boundary\": {}, \"balls\": [$ball]}" 'boundary: must be "walls", "periodic" or a list of 2 of them'
+reject bndcentre "{$B, \"boundary\": \"periodic\", \"balls\": [{\"r\": 1, \"x\": [10, 5]}]}" 'balls[0].x: the centre is not inside the box along periodic axis 0'
+reject bndroom "{\"dim\": 2, \"box\": [5.9, 10], \"t_end\": 1, \"boundary\": [\"periodic\", \"walls\"], \"balls\": [$ball]}" 'boundary: axis 0 is periodic, so its box edge 5.9 must be at least 3 largest ball diameters'
+reject bndimage "{$B, \"boundary\": [\"periodic\", \"walls\"], \"balls\": [{\"r\": 1, \"x\": [5, 5], \"image\": [2, 1]}]}" 'balls[0].image: component 1 must be 0: axis 1 has walls'
+reject bndacross "{$B, \"boundary\": \"periodic\", \"balls\": [{\"r\": 1, \"x\": [0.5, 5]}, {\"r\": 1, \"x\": [9, 5]}]}" 'balls[1]: overlaps another ball'
+
 # the shipped scenario files are the built-ins
 for b in rack gas; do
     "$sim" --builtin $b --dump > "$tmp/$b-builtin.json" 2>/dev/null
@@ -129,6 +139,28 @@ if [ -s "$tmp/a" ] && cmp -s "$tmp/a" "$tmp/b"; then
 else
     ko "restart differs: $(cat "$tmp/err") $(cmp "$tmp/a" "$tmp/b" 2>&1 | head -1)"
 fi
+# a periodic (mixed) gas: 0 -> 10 -> (final.json, image counters) -> 20 equals 0 -> 20
+cat > "$tmp/per.json" <<'EOF'
+{"relcol": 1, "dim": 3, "boundary": ["periodic", "walls", "periodic"], "c": 1,
+ "contact_frame": "zmf", "t_end": 20,
+ "generate": {"kind": "gas", "n": 200, "radius": 1, "packing": 0.2, "v_rms": 0.5},
+ "outputs": {"snapshots": [5], "xyz_every": 0, "plots": false, "gif": false}}
+EOF
+sed 's/"t_end": 20/"t_end": 10/' "$tmp/per.json" > "$tmp/perhalf.json"
+"$sim" "$tmp/per.json" --out "$tmp/perfull" > /dev/null 2>&1
+"$sim" "$tmp/perhalf.json" --out "$tmp/perhalf" > /dev/null 2>&1
+sed 's/"t_end": [0-9.e+-]*/"t_end": 20/' "$tmp/perhalf/final.json" > "$tmp/perhalf/cont.json"
+"$sim" "$tmp/perhalf/cont.json" --out "$tmp/percont" > /dev/null 2> "$tmp/err"
+sed -n '/"balls"/,$p' "$tmp/perfull/final.json" > "$tmp/pa"
+sed -n '/"balls"/,$p' "$tmp/percont/final.json" > "$tmp/pb"
+if [ -s "$tmp/pa" ] && cmp -s "$tmp/pa" "$tmp/pb" && grep -q '"image": \[-\{0,1\}[1-9]' "$tmp/pa" &&
+    grep -qF '"boundary": ["periodic", "walls", "periodic"]' "$tmp/percont/final.json" &&
+    head -2 "$tmp/perfull/snapshots/snap-0000.csv" | grep -q ',image_x,image_y,image_z$'; then
+    ok "periodic: restart from final.json is bit-identical, images and boundary kept"
+else
+    ko "periodic restart: $(cat "$tmp/err") $(cmp "$tmp/pa" "$tmp/pb" 2>&1 | head -1)"
+fi
+
 # determinism: the same scenario twice
 "$sim" "$tmp/run.json" --out "$tmp/again" > /dev/null 2>&1
 sed -n '/"balls"/,$p' "$tmp/again/final.json" > "$tmp/c"
