@@ -19,12 +19,12 @@ int rc_eng_cells_init(eng_cells *g, int dim, rc_vec3 box, double min_edge, size_
     double L[3] = {box.x, box.y, dim == 3 ? box.z : 1.0};
     double edge = min_edge;
     double cap = CELLS_PER_BALL_MAX * (double)nballs + 64.0;
-    /* a periodic axis keeps three cells when min_edge allows them, however sparse the gas
-     * (the walk needs three distinct cells to wrap around) */
+    /* a periodic axis keeps four cells when min_edge allows them, however sparse the gas
+     * (the nearest image needs them: eng_image) */
     double least[3];
     for (int d = 0; d < 3; d++) {
         const double most = floor(L[d] / min_edge);
-        least[d] = d < dim && periodic[d] ? (most < 3.0 ? most : 3.0) : 1.0;
+        least[d] = d < dim && periodic[d] ? (most < 4.0 ? most : 4.0) : 1.0;
         if (least[d] < 1.0)
             least[d] = 1.0;
     }

@@ -165,7 +165,8 @@ size_t rc_sim_bytes(const rc_sim *s)
         return 0;
     return sizeof *s + s->n * (sizeof *s->b + sizeof *s->a + sizeof *s->clk + sizeof *s->g.next +
                                sizeof *s->id + sizeof *s->slot +
-                               sizeof *s->cnt + (s->ev_n ? sizeof *s->ev_n : 0)) +
+                               sizeof *s->cnt + (s->ev_n ? sizeof *s->ev_n : 0) +
+                               (s->img ? 3 * sizeof *s->img : 0)) +
            rc_eng_queue_bytes(&s->q) +
            s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot +
            s->grp_ball_cap * (sizeof *s->grp_ball + sizeof *s->grp_part) +

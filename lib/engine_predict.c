@@ -302,9 +302,8 @@ earliest8(const double *t, const int32_t *nb, double *bt, int32_t *bk)
     __attribute__((target(TARGET))) static int NAME(const rc_sim *s, int32_t i, int32_t *nb, \
                                                     size_t m, double *best, int32_t *bp,    \
                                                     const rc_vec3 *vold, int32_t partner,   \
-                                                    double T, int latest)                   \
+                                                    double T, int latest, int per)          \
     {                                                                                      \
-        const int per = s->periodic; /* (each a constant in its own copy) */             \
         if (s->def.dim == 3) {                                                             \
             if (per)                                                                       \
                 return latest ? NAME##_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 1, 1) \
@@ -331,15 +330,17 @@ ENG_TEST_LIST(test_list_avx512, "avx512f", 8, pair_sphere_x8, earliest8)
  * velocity, not the partner -- and returns 1 at the first, else 0. The lanes (s->simd)
  * give the same bits as the scalar loop. */
 static int test_list(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *best,
-                     int32_t *bp, const rc_vec3 *vold, int32_t partner, double T, int latest)
+                     int32_t *bp, const rc_vec3 *vold, int32_t partner, double T, int latest,
+                     int per)
 {
 #ifdef ENG_HAVE_AVX2
     if (s->simd == ENG_SIMD_AVX512)
-        return test_list_avx512(s, i, nb, m, best, bp, vold, partner, T, latest);
+        return test_list_avx512(s, i, nb, m, best, bp, vold, partner, T, latest, per);
     if (s->simd == ENG_SIMD_AVX2)
-        return test_list_avx2(s, i, nb, m, best, bp, vold, partner, T, latest);
+        return test_list_avx2(s, i, nb, m, best, bp, vold, partner, T, latest, per);
 #else
     (void)latest;
+    (void)per; /* (the scalar path always takes the image: the same bits) */
 #endif
     const eng_ball *bi = &s->b[i];
     const int check = vold && s->def.sim_tol > 0.0;
@@ -661,7 +662,7 @@ static int scan_block(const rc_sim *s, int32_t i, const int c[3], const int lo[3
     int32_t nb[NB_CAP];
     while (!w.done) {
         const size_t m = walk_gather(&w, nb);
-        test_list(s, i, nb, m, best, bp, NULL, ENG_NONE, 0.0, 0);
+        test_list(s, i, nb, m, best, bp, NULL, ENG_NONE, 0.0, 0, w.image);
     }
     return 0;
 }
@@ -818,7 +819,7 @@ int rc_eng_predict_checked(rc_sim *s, int32_t i, rc_vec3 vold, int32_t partner, 
     int32_t nb[NB_CAP];
     while (!w.done) {
         const size_t m = walk_gather(&w, nb);
-        if (test_list(s, i, nb, m, &best, &bp, check ? &vold : NULL, partner, T, 1))
+        if (test_list(s, i, nb, m, &best, &bp, check ? &vold : NULL, partner, T, 1, w.image))
             return 1;
     }
     store_event(s, i, best, bp, rc_v3(0, 0, 0), NULL);
@@ -826,12 +827,15 @@ int rc_eng_predict_checked(rc_sim *s, int32_t i, rc_vec3 vold, int32_t partner, 
     return 0;
 }
 
-/* Ball i leaves its cell through a periodic face: it comes back through the opposite one.
- * Its state is first brought to the crossing (so that stored positions stay within a cell
- * of the box, where eng_image's single fold applies, and a position read at any later
- * time is the wrapped one), then moved by -dir L_d; its image counter keeps the unwrapped
- * position. */
-static void wrap_ball(rc_sim *s, int32_t i, int d, int dir)
+/* A periodic engine brings a crossing ball's state to the crossing (position and proper
+ * time): every stored position then lies in its ball's current cell at every time from
+ * its clock to its next crossing, so a pair's separation at the later of their clocks
+ * is that of two balls in their current cells -- less than two cells apart along an axis
+ * when they are neighbours, less than L / 2 with four cells or more, where the nearest
+ * image is the copy they can meet (taken at an older time, after a long flight through
+ * several cells, it could be the other one). If the crossing is through a periodic face
+ * the ball then moves by -dir L_d and its image counter keeps the unwrapped position. */
+static void periodic_cross(rc_sim *s, int32_t i, int d, int dir, int wrap)
 {
     eng_ball *b = &s->b[i];
     const eng_aux *a = &s->a[i];
@@ -841,8 +845,10 @@ static void wrap_ball(rc_sim *s, int32_t i, int d, int dir)
         s->clk[i].tau += s->inv_c2 == 0.0 ? h : h * (a->m / eng_mass_rel(a->m, a->p, s->inv_c2));
         b->t = s->now;
     }
-    rc_v3_set(&b->x, d, rc_v3_get(b->x, d) - dir * s->L[d]);
-    s->img[3 * (size_t)i + (size_t)d] += dir;
+    if (wrap) {
+        rc_v3_set(&b->x, d, rc_v3_get(b->x, d) - dir * s->L[d]);
+        s->img[3 * (size_t)i + (size_t)d] += dir;
+    }
 }
 
 /* Ball i enters the next cell: the balls that became neighbours are one slab of cells. */
@@ -853,10 +859,11 @@ void rc_eng_cross(rc_sim *s, int32_t i)
     int c[3];
     cell_coords(&s->g, a->cell, c);
     c[d] += dir;
-    if (c[d] < 0 || c[d] >= s->g.n[d]) { /* (only on a periodic axis: cross_event) */
+    const int wrap = c[d] < 0 || c[d] >= s->g.n[d]; /* (only on a periodic axis: cross_event) */
+    if (wrap)
         c[d] = c[d] < 0 ? s->g.n[d] - 1 : 0;
-        wrap_ball(s, i, d, dir);
-    }
+    if (s->periodic)
+        periodic_cross(s, i, d, dir, wrap);
     rc_eng_cells_remove(&s->g, s->a, i);
     rc_eng_cells_insert(&s->g, s->a, i, (int32_t)(c[0] + s->g.n[0] * (c[1] + s->g.n[1] * c[2])));
     s->events[RC_SIM_EV_CELL]++;

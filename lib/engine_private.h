@@ -118,14 +118,14 @@ typedef struct eng_cells {
     int32_t *next;    /* per ball: next of its overflow chain (-1: the end) */
     size_t ncells;
     int32_t block_rows[9]; /* a full 3^d block's rows, as slot offsets from its first */
-    int wrap[3];      /* periodic axis: the cells wrap around (n >= 3) */
+    int wrap[3];      /* periodic axis: the cells wrap around (n >= 4) */
     /* a ball in cell c[d] moving up crosses a face if c[d] < up_lim[d] (n - 1 walled, n
      * periodic), moving down if c[d] > dn_lim[d] (0 walled, -1 periodic) */
     int up_lim[3], dn_lim[3];
 } eng_cells;
 
-/* periodic[d] != 0: axis d wraps, and gets at least three cells if min_edge allows (the
- * caller checks n[d] >= 3). */
+/* periodic[d] != 0: axis d wraps, and gets at least four cells if min_edge allows (the
+ * caller checks n[d] >= 4: eng_image). */
 int rc_eng_cells_init(eng_cells *g, int dim, rc_vec3 box, double min_edge, size_t nballs,
                       const int periodic[3]);
 void rc_eng_cells_free(eng_cells *g);
@@ -282,8 +282,11 @@ static inline double eng_rint(double y)
 
 /* The nearest image of a separation dx of two balls: dx - L round(dx / L) on the
  * periodic axes; on a walled one inv_L = 0 makes it dx - L * 0 = dx exactly (signed zeros
- * included), so no axis needs a branch. Valid because touching balls are less than L / 3
- * apart on a periodic axis (three cells at least). */
+ * included), so no axis needs a branch. The copy two neighbours can meet: in their
+ * current cells (rc_eng_cross keeps stored positions there) they are less than two cells
+ * apart along an axis, which is at most L / 2 with four cells or more; with three, two
+ * balls 1.6 cells apart in adjacent cells would be nearer to the other copy (1.4 cells)
+ * and could still meet before leaving their cells. */
 static inline double eng_image1(double dx, double L, double inv_L)
 {
     return dx - L * eng_rint(dx * inv_L);
@@ -310,7 +313,7 @@ static inline int cell_step(const eng_cells *g, int d, int c, int o)
 }
 
 /* The cell at offset (ox, oy, oz) from cell coordinates c: wrapped on periodic axes, -1
- * off the grid (distinct cells for distinct offsets in -1..1: n >= 3 on a periodic axis). */
+ * off the grid (distinct cells for distinct offsets in -1..1: n >= 4 on a periodic axis). */
 static inline int32_t cell_at(const eng_cells *g, const int c[3], int ox, int oy, int oz)
 {
     const int x = cell_step(g, 0, c[0], ox), y = cell_step(g, 1, c[1], oy),

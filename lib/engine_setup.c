@@ -63,10 +63,10 @@ static int check_def(const rc_sim_def *d)
     for (int k = 0; k < d->dim; k++) {
         if (d->boundary[k] != RC_SIM_WALLS && d->boundary[k] != RC_SIM_PERIODIC)
             return RC_EINVAL;
-        /* a periodic axis needs three cells (the automatic cells are checked when the
+        /* a periodic axis needs four cells (the automatic cells are checked when the
          * balls, and so the largest diameter, are known) */
         if (d->boundary[k] == RC_SIM_PERIODIC && d->cell_size > 0.0 &&
-            !(floor(L[k] / d->cell_size) >= 3.0))
+            !(floor(L[k] / d->cell_size) >= 4.0))
             return RC_EINVAL;
     }
     if (d->frame) { /* the engine calls frame->toi directly: validate its settings once */
@@ -338,7 +338,7 @@ int rc_eng_alloc_state(rc_sim *s, size_t n, double rmax)
     if ((st = rc_eng_cells_init(&s->g, dim, s->def.box, edge, n, periodic)) != RC_OK)
         goto fail;
     for (int d = 0; d < dim; d++)
-        if (periodic[d] && s->g.n[d] < 3) { /* (sim.h: RC_SIM_PERIODIC) */
+        if (periodic[d] && s->g.n[d] < 4) { /* (sim.h: RC_SIM_PERIODIC) */
             st = RC_EINVAL;
             goto fail;
         }

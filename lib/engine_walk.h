@@ -28,6 +28,9 @@ typedef struct eng_walk {
     int nchain, ci;    /* chains; the one being walked */
     int32_t k;         /* its next ball (-1: its first) */
     int32_t skip;      /* the scanning ball */
+    /* its pairs need the nearest image: only a block that wraps (elsewhere neighbours in
+     * their cells are less than L / 2 apart, where eng_image is exactly the identity) */
+    int image;
     int rows_done, done;
 } eng_walk;
 
@@ -43,6 +46,7 @@ static void walk_init_wrapped(eng_walk *w, const rc_sim *s, int32_t skip, const 
     const int x1 = c[0] + hi[0] < g->n[0] ? c[0] + hi[0] : g->n[0] - 1;
     w->s = s;
     w->skip = skip;
+    w->image = 1;
     w->nrows = 0;
     w->nslots = xwrap ? ENG_CELL_CAP : (x1 - x0 + 1) * ENG_CELL_CAP;
     for (int oz = lo[2]; oz <= hi[2] && w->nslots > 0; oz++) {
@@ -93,6 +97,7 @@ static inline void walk_init(eng_walk *w, const rc_sim *s, int32_t skip, const i
     const int z1 = c[2] + hi[2] < g->n[2] ? c[2] + hi[2] : g->n[2] - 1;
     w->s = s;
     w->skip = skip;
+    w->image = 0;
     w->nrows = 0;
     w->nslots = (x1 - x0 + 1) * ENG_CELL_CAP;
     /* (an empty block: a crossing into a boundary cell has no slab beyond it) */

@@ -247,17 +247,17 @@ static int parse_boundary(const ctx *c, const cJSON *v, scn_scenario *s)
     return 0;
 }
 
-/* A periodic axis needs three cells of at least a largest diameter (relcol/sim.h). */
+/* A periodic axis needs four cells of at least a largest diameter (relcol/sim.h). */
 static int check_periodic_room(const ctx *c, const scn_scenario *s)
 {
     double rmax = 0;
     for (size_t i = 0; i < s->n; i++)
         rmax = s->balls[i].r > rmax ? s->balls[i].r : rmax;
     for (int d = 0; d < s->dim; d++) {
-        const double L = rc_v3_get(s->box, d), need = 6 * rmax * (1 + 1e-7);
+        const double L = rc_v3_get(s->box, d), need = 8 * rmax * (1 + 1e-7);
         if (s->boundary[d] == RC_SIM_PERIODIC && !(L >= need))
             return bad(c, "boundary", "axis %d is periodic, so its box edge %g must be at "
-                                      "least 3 largest ball diameters (%.9g)", d, L, need);
+                                      "least 4 largest ball diameters (%.9g)", d, L, need);
     }
     return 0;
 }

@@ -5,16 +5,20 @@
  *    against the count of grid lines and walls the straight line meets), none on a
  *    periodic axis;
  *  - two balls meeting across each face (nearest image): one collision, at the right time,
- *    with the right outcome;
+ *    with the right outcome; also after a long flight through several cells, where the
+ *    nearest image at the flying ball's last collision is the other copy;
  *  - a state read back (image counters included) continues bit for bit in a new engine
  *    after rc_sim_sync; a checkpoint continues as the run that never stopped, and a
  *    walled engine refuses a periodic one's;
- *  - bad periodic input refused: fewer than three cells, a centre outside [0, L), an
+ *  - the scalar loop, the AVX2 and the AVX-512 lanes give the same bits in periodic boxes
+ *    (the image is skipped in blocks that do not wrap);
+ *  - bad periodic input refused: fewer than four cells, a centre outside [0, L), an
  *    unknown boundary;
  *  - conservation over >= 1e6 collisions in all-periodic boxes (3-D and 2-D, classical; a
  *    contracted table-frame gas at c = 1 with eps < 1 and the TC model): energy (kinetic
  *    + heat) and momentum to 1e-12 relative with no wall impulse at all, no overlap. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "engine_util.h"
@@ -49,14 +53,15 @@ static double folded(double u, double lo, double hi)
     return lo + (q <= w ? q : 2.0 * w - q);
 }
 
-/* A lone ball (r = 0.5, cells of edge W = 1.1) flying through a box of 5 x 4 x 3 cells
- * (2-D: 7 x 6; few enough that the grid keeps them for one ball; z has the fewest a
- * periodic axis may) with the given boundaries, read at irregular times up to t ~ 70. */
+/* A lone ball (r = 0.5, cells of edge W = 1.1) flying through a box of 4 x 4 x 4 cells
+ * (2-D: 7 x 6; few enough that the grid keeps them for one ball; four: the fewest a
+ * periodic axis may have) with the given boundaries, read at irregular times up to
+ * t ~ 70. */
 #define W 1.1
 static void lone_ball(int dim, const int bnd[3], rc_vec3 v)
 {
     rc_sim_def d = periodic_def(dim, bnd[0], bnd[1], bnd[2]);
-    const double L[3] = {(dim == 3 ? 5 : 7) * W, (dim == 3 ? 4 : 6) * W, 3 * W};
+    const double L[3] = {(dim == 3 ? 4 : 7) * W, (dim == 3 ? 4 : 6) * W, 4 * W};
     d.box = rc_v3(L[0], L[1], dim == 3 ? L[2] : 0.0);
     d.cell_size = W;
     rc_sim *s = NULL;
@@ -107,8 +112,8 @@ static void lone_ball(int dim, const int bnd[3], rc_vec3 v)
             all_periodic &= bnd[k] == RC_SIM_PERIODIC;
         if (all_periodic) /* every grid line met is one crossing, periodic faces included */
             ENSURE_MSG(g.events[RC_SIM_EV_CELL] == (uint64_t)cells,
-                       "t %g: %llu cell crossings, %ld expected", t,
-                       (unsigned long long)g.events[RC_SIM_EV_CELL], cells);
+                       "%d-D v (%g %g %g) t %g: %llu cell crossings, %ld expected", dim, v.x,
+                       v.y, v.z, t, (unsigned long long)g.events[RC_SIM_EV_CELL], cells);
         ENSURE(g.collisions == g.events[RC_SIM_EV_WALL]);
         /* momentum only changes at walls; energy never */
         for (int k = 0; k < dim; k++)
@@ -139,7 +144,7 @@ static void test_faces(void)
                 }
             }
     /* straight along an axis (the other components exactly 0) */
-    lone_ball(3, all, rc_v3(0.0, -1.7, 0.0));
+    lone_ball(3, all, rc_v3(0.0, -1.73, 0.0));
     lone_ball(2, mixed, rc_v3(2.1, 0.0, 0.0));
 }
 
@@ -152,7 +157,7 @@ static void across(int dim, int k, int walls_elsewhere)
     for (int j = 0; j < 3 && walls_elsewhere; j++)
         if (j != k)
             d.boundary[j] = RC_SIM_WALLS;
-    d.box = rc_v3(6.0, 5.0, dim == 3 ? 4.0 : 0.0);
+    d.box = rc_v3(6.0, 5.0, dim == 3 ? 4.5 : 0.0);
     const double L = rc_v3_get(d.box, k);
     rc_sim *s = NULL;
     ENSURE(rc_sim_create(&d, &s) == RC_OK);
@@ -190,8 +195,55 @@ static void across(int dim, int k, int walls_elsewhere)
     rc_sim_free(&s);
 }
 
+/* A long flight: ball 0 at 6 moving down axis k at speed 1 through four cells (no
+ * collision, no wrap, its clock stays at 0), ball 1 at rest at L - 0.2 = 9.8: they meet
+ * across the face at t = 5.3 (x0 = 0.7 touches the image at -0.2). At t = 0 the nearest
+ * image of the pair is the other copy (3.8 apart, parting): only the image as the balls
+ * are when they become neighbours finds the contact. */
+static void long_flight(int dim, int k)
+{
+    rc_sim_def d = periodic_def(dim, RC_SIM_PERIODIC, RC_SIM_PERIODIC, RC_SIM_PERIODIC);
+    d.box = rc_v3(10.0, 10.0, dim == 3 ? 10.0 : 0.0);
+    rc_sim *s = NULL;
+    ENSURE(rc_sim_create(&d, &s) == RC_OK);
+    if (!s)
+        return;
+    rc_sim_ball b[2];
+    memset(b, 0, sizeof b);
+    for (int i = 0; i < 2; i++) {
+        b[i].x = rc_v3(5.0, 5.0, dim == 3 ? 5.0 : 0.0);
+        b[i].r = 0.45;
+        b[i].m = 1.0;
+    }
+    rc_v3_set(&b[0].x, k, 6.0);
+    rc_v3_set(&b[1].x, k, 9.8);
+    rc_v3_set(&b[0].p, k, -1.0);
+    ENSURE(rc_sim_set_balls(s, 2, b, NULL) == RC_OK);
+    ENSURE(rc_sim_advance(s, 5.2, 0) == RC_OK);
+    rc_sim_diag g;
+    rc_sim_diagnostics(s, &g);
+    ENSURE(g.collisions == 0);
+    ENSURE(rc_sim_advance(s, 6.0, 0) == RC_OK);
+    rc_sim_diagnostics(s, &g);
+    ENSURE_MSG(g.collisions == 1, "dim %d axis %d: %llu collisions, 1 expected", dim, k,
+               (unsigned long long)g.collisions);
+    rc_sim_ball o[2];
+    rc_sim_get_ball(s, 0, &o[0]);
+    rc_sim_get_ball(s, 1, &o[1]);
+    ENSURE_CLOSE(rc_v3_get(o[0].p, k), 0.0, 1e-15, 1.0);
+    ENSURE_CLOSE(rc_v3_get(o[1].p, k), -1.0, 1e-15, 1.0);
+    ENSURE_CLOSE(rc_v3_get(o[0].x, k), 0.7, 1e-13, 10.0); /* at rest since t = 5.3 */
+    ENSURE_CLOSE(rc_v3_get(o[1].x, k), 9.8 - 0.7, 1e-13, 10.0);
+    rc_sim_free(&s);
+}
+
 static void test_across_faces(void)
 {
+    for (int k = 0; k < 3; k++) {
+        long_flight(3, k);
+        if (k < 2)
+            long_flight(2, k);
+    }
     for (int k = 0; k < 3; k++) {
         across(3, k, 0);
         across(3, k, 1);
@@ -297,6 +349,45 @@ static void test_checkpoint(void)
     }
 }
 
+/* The same periodic gas through each lane width (RELCOL_SIMD, read at rc_sim_create):
+ * the same hash after 40 collisions a ball. */
+static void lanes(int dim, size_t n, double packing, const rc_toi_frame *frame, const int bnd[3])
+{
+    rc_sim_def d = periodic_def(dim, bnd[0], bnd[1], bnd[2]);
+    d.frame = frame;
+    d.c = frame ? 2.0 : INFINITY;
+    const char *mode[3] = {"scalar", "avx2", NULL}; /* NULL: the CPU's best */
+    uint64_t h[3] = {0, 0, 0};
+    for (int k = 0; k < 3; k++) {
+        if (mode[k])
+            ENSURE(setenv("RELCOL_SIMD", mode[k], 1) == 0);
+        else
+            unsetenv("RELCOL_SIMD");
+        rc_sim *s = util_gas(d, n, packing, 1.0, 31); /* (0.5 c with a frame) */
+        if (!s)
+            continue;
+        util_run_collisions(s, (frame ? 5 : 40) * n);
+        h[k] = rc_sim_hash(s);
+        rc_sim_free(&s);
+    }
+    unsetenv("RELCOL_SIMD");
+    ENSURE_MSG(h[0] == h[1] && h[1] == h[2], "%dD N %zu: scalar %llx avx2 %llx best %llx", dim, n,
+               (unsigned long long)h[0], (unsigned long long)h[1], (unsigned long long)h[2]);
+}
+
+static void test_lanes(void)
+{
+    static const int all[3] = {RC_SIM_PERIODIC, RC_SIM_PERIODIC, RC_SIM_PERIODIC};
+    static const int mixed[3] = {RC_SIM_PERIODIC, RC_SIM_WALLS, RC_SIM_PERIODIC};
+    lanes(3, 2000, 0.4, NULL, all);
+    lanes(3, 2000, 0.4, NULL, mixed);
+    lanes(2, 2000, 0.6, NULL, all);
+    lanes(2, 2000, 0.6, NULL, mixed);
+    lanes(3, 60, 0.3, NULL, all);  /* (a box four cells wide: every block wraps) */
+    lanes(2, 12, 0.5, NULL, mixed);
+    lanes(3, 1000, 0.3, &rc_toi_frame_table, all);
+}
+
 static void test_refusals(void)
 {
     rc_sim_def d = periodic_def(3, RC_SIM_PERIODIC, RC_SIM_PERIODIC, RC_SIM_PERIODIC);
@@ -306,17 +397,17 @@ static void test_refusals(void)
     d.boundary[1] = -1;
     ENSURE(rc_sim_create(&d, &s) == RC_EINVAL);
     d.boundary[1] = RC_SIM_PERIODIC;
-    /* cells given: fewer than three across a periodic axis */
-    d.box = rc_v3(10.0, 2.9, 10.0);
+    /* cells given: fewer than four across a periodic axis */
+    d.box = rc_v3(10.0, 3.9, 10.0);
     d.cell_size = 1.0;
     ENSURE(rc_sim_create(&d, &s) == RC_EINVAL);
     d.boundary[1] = RC_SIM_WALLS; /* (a walled axis may have any number) */
     ENSURE(rc_sim_create(&d, &s) == RC_OK);
     rc_sim_free(&s);
-    /* automatic cells: box edge < 3 largest diameters */
+    /* automatic cells: box edge < 4 largest diameters */
     d.boundary[1] = RC_SIM_PERIODIC;
     d.cell_size = 0.0;
-    d.box = rc_v3(10.0, 2.9, 10.0);
+    d.box = rc_v3(10.0, 3.9, 10.0);
     ENSURE(rc_sim_create(&d, &s) == RC_OK);
     rc_sim_ball b;
     memset(&b, 0, sizeof b);
@@ -412,6 +503,7 @@ int main(void)
     RUN_TEST(test_across_faces);
     RUN_TEST(test_restart);
     RUN_TEST(test_checkpoint);
+    RUN_TEST(test_lanes);
     RUN_TEST(test_conservation);
     RC_TEST_MAIN_END();
 }

@@ -70,13 +70,13 @@ else
     ko "BOM/CRLF or NaN at rest: $(cat "$tmp/err") $(cat "$tmp/out")"
 fi
 
-# periodic boundaries: the key, each axis, a centre on the face, room for three cells
+# periodic boundaries: the key, each axis, a centre on the face, room for four cells
 reject bndval "{$B, \"boundary\": \"open\", \"balls\": [$ball]}" "boundary: unknown boundary 'open'"
 reject bndlen "{$B, \"boundary\": [\"periodic\"], \"balls\": [$ball]}" 'boundary: has 1 entries, the scenario is 2-D'
 reject bndaxis "{$B, \"boundary\": [\"walls\", 3], \"balls\": [$ball]}" 'boundary[1]: must be "walls" or "periodic"'
 reject bndtype "{$B, \"boundary\": {}, \"balls\": [$ball]}" 'boundary: must be "walls", "periodic" or a list of 2 of them'
 reject bndcentre "{$B, \"boundary\": \"periodic\", \"balls\": [{\"r\": 1, \"x\": [10, 5]}]}" 'balls[0].x: the centre is not inside the box along periodic axis 0'
-reject bndroom "{\"dim\": 2, \"box\": [5.9, 10], \"t_end\": 1, \"boundary\": [\"periodic\", \"walls\"], \"balls\": [$ball]}" 'boundary: axis 0 is periodic, so its box edge 5.9 must be at least 3 largest ball diameters'
+reject bndroom "{\"dim\": 2, \"box\": [7.9, 10], \"t_end\": 1, \"boundary\": [\"periodic\", \"walls\"], \"balls\": [{\"r\": 1, \"x\": [4, 5]}]}" 'boundary: axis 0 is periodic, so its box edge 7.9 must be at least 4 largest ball diameters'
 reject bndimage "{$B, \"boundary\": [\"periodic\", \"walls\"], \"balls\": [{\"r\": 1, \"x\": [5, 5], \"image\": [2, 1]}]}" 'balls[0].image: component 1 must be 0: axis 1 has walls'
 reject bndacross "{$B, \"boundary\": \"periodic\", \"balls\": [{\"r\": 1, \"x\": [0.5, 5]}, {\"r\": 1, \"x\": [9, 5]}]}" 'balls[1]: overlaps another ball'
 

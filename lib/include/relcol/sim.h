@@ -61,9 +61,10 @@ enum rc_sim_boundary {
                            through the other, and balls meet across it (nearest image).
                            Periodic in the box frame, which is the table frame: its
                            simultaneity decides the identification. The axis needs at least
-                           three cells (rc_sim_def.cell_size, or automatic: at least one
-                           largest bounding diameter each), so the box edge must be >= 3
-                           cell edges: RC_EINVAL from rc_sim_create (cell_size given) or
+                           four cells (rc_sim_def.cell_size, or automatic: at least one
+                           largest bounding diameter each, so that the nearest image is the
+                           copy two neighbours can meet), so the box edge must be >= 4 cell
+                           edges: RC_EINVAL from rc_sim_create (cell_size given) or
                            rc_sim_set_balls (automatic cells) otherwise. Positions are kept
                            in [0, L); rc_sim_ball.image counts the wraps. */
 };
@@ -221,7 +222,7 @@ int rc_sim_set_time(rc_sim *s, double t);
  * separating is accepted: shape change after a collision produces exactly such states
  * (see the overlap policy above), and a restart must read them back. On a periodic axis
  * the centre must lie in [0, L) (the shape may reach across the face), overlaps are
- * judged between nearest images, image[] is taken as given, and a box edge below three
+ * judged between nearest images, image[] is taken as given, and a box edge below four
  * cell edges is RC_EINVAL. *bad (may be NULL) gets the index. */
 int rc_sim_set_balls(rc_sim *s, size_t n, const rc_sim_ball *balls, size_t *bad);
 
