@@ -198,11 +198,11 @@ static void test_law_groups_rack(void)
 {
     rc_sim_ball b[16];
     int n = 0;
-    b[n++] = (rc_sim_ball){rc_v3(5, 10, 0), rc_v3(5, 0, 0), 0.5, 0, 0, 0, 0};
+    b[n++] = (rc_sim_ball){rc_v3(5, 10, 0), rc_v3(5, 0, 0), 0.5, 0, 0, 0, 0, {0, 0, 0}};
     for (int row = 0; row < 5; row++)
         for (int k = 0; k <= row; k++)
             b[n++] = (rc_sim_ball){rc_v3(20 + row * sqrt(3.0) * 0.5, 10 + (k - row / 2.0), 0),
-                                   rc_v3(0, 0, 0), 0.5, 0, 0, 0, 0};
+                                   rc_v3(0, 0, 0), 0.5, 0, 0, 0, 0, {0, 0, 0}};
     uint64_t h[2];
     for (int w = 0; w < 2; w++) {
         rc_sim_def d = rc_sim_def_default();
@@ -237,9 +237,9 @@ static void test_law_groups_rack(void)
 static void test_group_fallback(void)
 {
     rc_sim_ball b[3] = {
-        {rc_v3(4, 10, 0), rc_v3(1, 0, 0), 1, 0, 0, 0, 0},
-        {rc_v3(5 + 2 * cos(M_PI / 6), 10 + 2 * sin(M_PI / 6), 0), rc_v3(0, 0, 0), 1, 0, 0, 0, 0},
-        {rc_v3(5 + 2 * cos(M_PI / 6), 10 - 2 * sin(M_PI / 6), 0), rc_v3(0, 0, 0), 1, 0, 0, 0, 0},
+        {rc_v3(4, 10, 0), rc_v3(1, 0, 0), 1, 0, 0, 0, 0, {0, 0, 0}},
+        {rc_v3(5 + 2 * cos(M_PI / 6), 10 + 2 * sin(M_PI / 6), 0), rc_v3(0, 0, 0), 1, 0, 0, 0, 0, {0, 0, 0}},
+        {rc_v3(5 + 2 * cos(M_PI / 6), 10 - 2 * sin(M_PI / 6), 0), rc_v3(0, 0, 0), 1, 0, 0, 0, 0, {0, 0, 0}},
     };
     for (int with = 0; with < 2; with++) {
         for (int rel = 0; rel < 2; rel++) {
