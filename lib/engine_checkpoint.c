@@ -318,8 +318,9 @@ static int read_all(rc_sim *s, ck_cursor *c)
         rmax = b.r > rmax ? b.r : rmax;
     }
     int st = rc_eng_alloc_state(s, n, rmax);
-    if (st != RC_OK)
-        return st;
+    if (st != RC_OK) /* (radii too large for a periodic box's four cells: not a state the
+                        engine could have written) */
+        return st == RC_EINVAL ? RC_ECORRUPT : st;
     if ((n ? s->g.ncells : 0) != hd.ncells)
         return RC_ECORRUPT;
     s->now = now;

@@ -467,6 +467,8 @@ static void conserve(int dim, double c, const rc_toi_frame *frame, double eps, s
     /* no walls: no wall event, the wall impulse only the round-off of pair collisions */
     ENSURE(d1.events[RC_SIM_EV_WALL] == 0);
     ENSURE(rc_v3_norm(d1.wall_impulse) <= 1e-12 * d0.momentum_scale);
+    for (int w = 0; w < 6; w++) /* (no wall took anything: exactly) */
+        ENSURE(d1.wall_impulse_by_wall[w] == 0.0);
     if (eps < 1.0)
         ENSURE(d1.heat > 1e-3 * d0.kinetic);
     if (isnan(d1.max_overlap))

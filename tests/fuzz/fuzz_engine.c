@@ -2,7 +2,8 @@
  * read from the bytes: up to 8 balls on a coarse grid (so that exact ties, touching
  * balls and simultaneous contacts — symmetric racks, head-on pairs, corners — come up
  * all the time), 2-D or 3-D, c = inf or a few c, any of the contact frames, restitution,
- * the TC model. The engine must accept or refuse the balls with a documented status,
+ * the TC model, each axis walled or periodic (a byte after the balls: 0, walls, for
+ * inputs that end there). The engine must accept or refuse the balls with a documented status,
  * then run 300 events without crashing, hanging or leaving a bad number: every state
  * finite, inside the box, slower than light; energy (kinetic + heat) and momentum (with
  * the walls' impulse) conserved to 1e-9 relative; no heat lost; and a state written
@@ -102,8 +103,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     d.eps_ball = (h & 0x20) ? 1.0 : (double)next(&R) / 255.0;
     d.eps_wall = (h & 0x40) ? 1.0 : (double)next(&R) / 255.0;
     d.t_c = (h & 0x80) ? 1e-3 : 0.0;
-    const double L = 4.0;
-    d.box = rc_v3(L, L, d.dim == 3 ? L : 0.0);
+    double L = 4.0;
     const size_t n = 1 + next(&R) % 8;
     rc_sim_ball b[8];
     memset(b, 0, sizeof b);
@@ -117,6 +117,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         b[i].p = rc_v3(((int)next(&R) - 128) / 64.0, ((int)next(&R) - 128) / 64.0,
                        d.dim == 3 ? ((int)next(&R) - 128) / 64.0 : 0.0);
     }
+    /* periodic axes (bit d): the box grows to 4.5, room for four cells of the largest
+     * diameter, 1 */
+    const unsigned per = next(&R);
+    for (int k = 0; k < d.dim; k++)
+        d.boundary[k] = (per >> k & 1u) ? RC_SIM_PERIODIC : RC_SIM_WALLS;
+    if (per & 7u)
+        L = 4.5;
+    d.box = rc_v3(L, L, d.dim == 3 ? L : 0.0);
     rc_sim *s = NULL;
     int st = rc_sim_create(&d, &s);
     if (st != RC_OK)
