@@ -46,7 +46,7 @@ dict="$out/scenario.dict"
     for k in relcol dim box c law restitution ball wall contact_frame tc seed time t_end \
         restart balls generate kind gas rack n radius packing v_rms density speed aim gap \
         outputs dir snapshots every xyz_every plots gif summary r m x v p tau tau_last inf \
-        table zmf sphere; do
+        table zmf sphere boundary periodic walls image; do
         printf '"\\"%s\\""\n' "$k"
     done
     printf '"%s"\n' true false null 1e308 -0 1e-320 0.45 0.7
