@@ -66,11 +66,11 @@ static void test_engine_out_of_memory(void)
         d.eps_ball = 0.9;
         rc_sim_ball b[16];
         int n = 0;
-        b[n++] = (rc_sim_ball){rc_v3(5, 10, 0), rc_v3(5, 0, 0), 0.5, 1.0, 0, 0, 0};
+        b[n++] = (rc_sim_ball){rc_v3(5, 10, 0), rc_v3(5, 0, 0), 0.5, 1.0, 0, 0, 0, {0, 0, 0}};
         for (int row = 0; row < 5; row++)
             for (int j = 0; j <= row; j++)
                 b[n++] = (rc_sim_ball){rc_v3(20 + row * sqrt(3.0) * 0.5, 10 + (j - row / 2.0), 0),
-                                       rc_v3(0, 0, 0), 0.5, 1.0, 0, 0, 0};
+                                       rc_v3(0, 0, 0), 0.5, 1.0, 0, 0, 0, {0, 0, 0}};
         n_calls = 0;
         fail_at = k;
         rc_sim *s = NULL;
@@ -167,12 +167,12 @@ static void test_engine_groups(void)
                 rc_sim_ball b[16];
                 int n = 0;
                 const double v = isinf(d.c) ? 5.0 : 0.99 * d.c;
-                b[n++] = (rc_sim_ball){rc_v3(5, 10, 0), rc_v3(v, 0, 0), 0.5, 1.0, 0, 0, 0};
+                b[n++] = (rc_sim_ball){rc_v3(5, 10, 0), rc_v3(v, 0, 0), 0.5, 1.0, 0, 0, 0, {0, 0, 0}};
                 for (int row = 0; row < 5; row++)
                     for (int k = 0; k <= row; k++)
                         b[n++] = (rc_sim_ball){
                             rc_v3(20 + row * sqrt(3.0) * 0.5, 10 + (k - row / 2.0), 0),
-                            rc_v3(0, 0, 0), 0.5, 1.0, 0, 0, 0};
+                            rc_v3(0, 0, 0), 0.5, 1.0, 0, 0, 0, {0, 0, 0}};
                 /* momentum for the speed v: p = m v gamma */
                 if (!isinf(d.c))
                     b[0].p.x = v / sqrt(1.0 - v * v / (d.c * d.c));
@@ -221,8 +221,8 @@ static void test_engine_bad_input(void)
     d.box = rc_v3(1e308, 1e308, 1e308);
     d.cell_size = 1e-300;
     if (rc_sim_create(&d, &s) == RC_OK) {
-        rc_sim_ball b[2] = {{rc_v3(1, 1, 1), rc_v3(NAN, 0, 0), 0.5, 1.0, 0, 0, 0},
-                            {rc_v3(3, 1, 1), rc_v3(0, 0, 0), -0.5, 1.0, 0, 0, 0}};
+        rc_sim_ball b[2] = {{rc_v3(1, 1, 1), rc_v3(NAN, 0, 0), 0.5, 1.0, 0, 0, 0, {0, 0, 0}},
+                            {rc_v3(3, 1, 1), rc_v3(0, 0, 0), -0.5, 1.0, 0, 0, 0, {0, 0, 0}}};
         size_t bad = 0;
         ENSURE(rc_sim_set_balls(s, 2, b, &bad) != RC_OK);
         rc_sim_free(&s);
