@@ -38,7 +38,8 @@ static double g_luding(double eta)
 }
 
 /* Relative difference of the measured rate from Enskog's, and its standard error from
- * NB block means (blocks of ~1.4e5 collisions, hundreds of mean free times: independent). */
+ * NB block means (blocks of ~6e4 collisions, 60 a ball: far longer than the time over which
+ * the collision rate is correlated, so the block means are independent). */
 #define NB 16
 
 static void rate(int dim, size_t n, double eta, double melt_per_ball, double per_ball,
@@ -98,7 +99,7 @@ static void rate(int dim, size_t n, double eta, double melt_per_ball, double per
 /* Tolerances: 3 standard errors of the block mean (~0.1 % each at ~1e6 collisions), plus
  * the equation of state's own error (~0.01 % Kolafa, ~0.1 % Luding), plus the finite
  * size of a periodic system of N balls, O(1/N) in g(sigma) (~0.1 % at N = 2000 by the
- * runs at N = 2000 and 8000 in papers/periodic.md): 0.5 % in 3-D, 0.6 % in 2-D. Walls
+ * runs at N = 500 and 8000 in papers/periodic.md): 0.5 % in 3-D, 0.6 % in 2-D. Walls
  * would raise the rate by several per cent (the contact value at a wall is higher), a
  * wrong nearest image or a lost event by more. */
 static void test_enskog(void)
