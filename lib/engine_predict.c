@@ -1,14 +1,14 @@
 /* engine_predict.c — predicting a ball's earliest event from its stored state: walls,
- * the neighbours of its 3^d cells (gathered by engine_walk.h, sphere times in AVX2 lanes
- * by engine_pairs.h, then the contact frame's narrow phase for contracted shapes, pruned
- * by engine_shapes.h), its next cell crossing (engine_cross.h); the cheaper update when
+ * the neighbours of its 3^d cells (gathered by engine_walk.h, sphere times in the
+ * engine's lanes, engine_lanes.h, then the contact frame's narrow phase for contracted
+ * shapes, pruned by engine_shapes.h), its next cell crossing; the cheaper update when
  * it crosses into a cell; the table frame's deferred events, settled when they come up;
  * and the prediction that also looks for a contact simultaneous with the one just
  * resolved. Resolving events: engine_core.c. */
 #include <math.h>
 #include <stdlib.h>
 
-#include "engine_cross.h"
+#include "engine_lanes.h"
 #include "engine_pairs.h"
 #include "engine_shapes.h"
 #include "engine_walk.h"
@@ -166,263 +166,25 @@ static void wall_event(const rc_sim *s, int32_t i, unsigned dims, double *best, 
     *bp = bw;
 }
 
-/* Simultaneity check of predict_checked for neighbour k of ball i (at time T, velocity
- * before the collision vold): approaching within approach_tol, so in contact now. */
-static int approaching_with(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, double T,
-                            rc_vec3 vold)
+/* The neighbour scans and the cell crossing run in the engine's lanes (engine_lanes.h:
+ * AVX-512, AVX2 or plain C by s->simd, the same bits every way). */
+static inline int test_list(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *best,
+                            int32_t *bp, const rc_vec3 *vold, int32_t partner, double T,
+                            int latest, int per)
 {
-    const double atol = s->def.approach_tol, sig = bi->r + bk->r;
-    const rc_vec3 dx = eng_image(s, rc_v3_sub(rc_v3_axpy(bk->x, T - bk->t, bk->v), bi->x));
-    const rc_vec3 dv = rc_v3_sub(bk->v, vold);
-    const double bb = rc_v3_dot(dx, dv);
-    return bb < 0.0 && bb * bb > atol * atol * sig * sig * rc_v3_norm2(dv);
+    return eng_lanes_of(s->simd)->test_list(s, i, nb, m, best, bp, vold, partner, T, latest,
+                                            per);
 }
 
-/* One neighbour's verdict, in scan order: 1 if it is a simultaneous contact (see
- * test_list), else keep it if it is the earliest so far (ties: the first). */
-static inline int visit(const rc_sim *s, const eng_ball *bi, int32_t k, double t, int near,
-                        int check, int32_t partner, const rc_vec3 *vold, double T, double *bt,
-                        int32_t *bk)
+static inline void sphere_lanes(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double best,
+                                double *t, uint64_t hit[2], uint64_t near[2])
 {
-    /* one rarely taken branch (&, not &&: the parts are cheap) */
-    if (check & near & (k != partner) && approaching_with(s, bi, &s->b[k], T, *vold))
-        return 1;
-    const int take = t < *bt;
-    *bt = take ? t : *bt;
-    *bk = take ? k : *bk;
-    return 0;
+    eng_lanes_of(s->simd)->sphere_times(s, i, nb, m, best, t, hit, near);
 }
 
-/* The neighbours test_list leaves after its lanes, one by one. */
-static inline int test_tail(const rc_sim *s, const eng_ball *bi, const int32_t *nb, size_t j,
-                            size_t m, int check, int32_t partner, const rc_vec3 *vold, double T,
-                            double *bt, int32_t *bk)
+static inline void cross_event(rc_sim *s, int32_t i, const int c[3])
 {
-    for (; j < m; j++) {
-        int near;
-        const double t = pair_sphere_scalar(s, bi, &s->b[nb[j]], *bt, s->def.sim_tol, &near);
-        if (visit(s, bi, nb[j], t, near, check, partner, vold, T, bt, bk))
-            return 1;
-    }
-    return 0;
-}
-
-#ifdef ENG_HAVE_AVX2
-/* Bit l set if lane l of a chunk holds the partner. A chunk with a near lane is visited
- * lane by lane for the simultaneity check, and the partner, the contact just resolved, is
- * always near but never a conflict (visit passes it over): its lane alone need not send
- * the chunk the slow way (the same choice either way). */
-static inline unsigned partner_lanes(const int32_t *nb, int lanes, int32_t partner)
-{
-    unsigned m = 0;
-    for (int l = 0; l < lanes; l++)
-        m |= (unsigned)(nb[l] == partner) << l;
-    return m;
-}
-
-/* Pad the m gathered indices to a multiple of the lanes' width w (4 or 8) with ball i
- * itself (its lanes are masked off), so that every neighbour goes through the lanes;
- * returns the padded count. (Eight stored whatever the count: no loop to mispredict;
- * buffers hold NB_CAP >= GATHER_MAX + 8.) */
-_Static_assert(NB_CAP >= GATHER_MAX + 8, "room to pad");
-static inline size_t pad_lanes(int32_t *nb, size_t m, int32_t i, size_t w)
-{
-    for (size_t l = 0; l < 8; l++)
-        nb[m + l] = i;
-    return (m + w - 1) & ~(w - 1);
-}
-
-/* A chunk's earliest lane below *bt into (*bt, *bk), ties to the first in nb order (a
- * lane without a time holds INFINITY; the padding lanes, ball i itself, too): four lanes
- * one by one without a branch; eight by a vector minimum and the first lane holding it,
- * the same choice (strictly earlier replaces). */
-__attribute__((target("avx2"), always_inline)) static inline void
-earliest4(const double *t, const int32_t *nb, double *bt, int32_t *bk)
-{
-    for (int l = 0; l < 4; l++) {
-        const int take = t[l] < *bt;
-        *bt = take ? t[l] : *bt;
-        *bk = take ? nb[l] : *bk;
-    }
-}
-
-#ifdef ENG_HAVE_AVX512
-__attribute__((target("avx512f"), always_inline)) static inline void
-earliest8(const double *t, const int32_t *nb, double *bt, int32_t *bk)
-{
-    const __m512d tv = _mm512_loadu_pd(t);
-    const double tmin = _mm512_reduce_min_pd(tv);
-    const unsigned at = _mm512_cmp_pd_mask(tv, _mm512_set1_pd(tmin), _CMP_EQ_OQ);
-    const int take = tmin < *bt;
-    const int32_t kmin = nb[__builtin_ctz(at | 0x100u) & 7];
-    *bt = take ? tmin : *bt;
-    *bk = take ? kmin : *bk;
-}
-#endif
-
-/* test_list in lanes of width W (pair_sphere_x4 or _x8 as PAIR, the earliest by
- * EARLIEST). three, latest: compile-time constants at each call, so 2-D gets
- * its own loop without z. Only when checking, and a lane of the chunk other than the
- * partner's is near, are the lanes visited one by one. */
-#define ENG_TEST_LIST(NAME, TARGET, W, PAIR, EARLIEST)                                      \
-    __attribute__((target(TARGET), always_inline)) static inline int NAME##_dim(           \
-        const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *best, int32_t *bp,      \
-        const rc_vec3 *vold, int32_t partner, double T, const int three, const int latest, \
-        const int per)                                                                     \
-    {                                                                                      \
-        const eng_ball *bi = &s->b[i];                                                     \
-        const int check = vold && s->def.sim_tol > 0.0;                                    \
-        double bt = *best;                                                                 \
-        int32_t bk = *bp;                                                                  \
-        const size_t mw = pad_lanes(nb, m, i, W);                                          \
-        for (size_t j = 0; j < mw; j += W) {                                               \
-            const eng_ball *k[W];                                                          \
-            for (int l = 0; l < W; l++)                                                    \
-                k[l] = &s->b[nb[j + (size_t)l]];                                           \
-            double t[W];                                                                   \
-            unsigned nears;                                                                \
-            PAIR(s, bi, k, bt, s->def.sim_tol, t, &nears, three, latest, per);             \
-            const size_t left = m - j < W ? m - j : W;                                     \
-            unsigned near_in = nears & ((1u << left) - 1u);                                \
-            if (check && near_in)                                                          \
-                near_in &= ~partner_lanes(nb + j, W, partner);                             \
-            if (check && near_in) {                                                        \
-                for (size_t l = 0; l < left; l++)                                          \
-                    if (visit(s, bi, nb[j + l], t[l], near_in >> l & 1, check, partner,    \
-                              vold, T, &bt, &bk))                                          \
-                        return 1;                                                          \
-                continue;                                                                  \
-            }                                                                              \
-            EARLIEST(t, nb + j, &bt, &bk);                                                 \
-        }                                                                                  \
-        *best = bt;                                                                        \
-        *bp = bk;                                                                          \
-        return 0;                                                                          \
-    }                                                                                      \
-    __attribute__((target(TARGET))) static int NAME(const rc_sim *s, int32_t i, int32_t *nb, \
-                                                    size_t m, double *best, int32_t *bp,    \
-                                                    const rc_vec3 *vold, int32_t partner,   \
-                                                    double T, int latest, int per)          \
-    {                                                                                      \
-        if (s->def.dim == 3) {                                                             \
-            if (per)                                                                       \
-                return latest ? NAME##_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 1, 1) \
-                              : NAME##_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 0, 1); \
-            return latest ? NAME##_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 1, 0)  \
-                          : NAME##_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 0, 0); \
-        }                                                                                  \
-        if (per)                                                                           \
-            return latest ? NAME##_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 1, 1)  \
-                          : NAME##_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 0, 1); \
-        return latest ? NAME##_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 1, 0)      \
-                      : NAME##_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 0, 0);     \
-    }
-ENG_TEST_LIST(test_list_avx2, "avx2", 4, pair_sphere_x4, earliest4)
-#ifdef ENG_HAVE_AVX512
-ENG_TEST_LIST(test_list_avx512, "avx512f", 8, pair_sphere_x8, earliest8)
-#endif
-#endif
-
-/* Sphere contact of ball i with each of the m gathered neighbours nb (uncontracted
- * frames), keeping the earliest below *best (ties: the first in nb order). With vold
- * (ball i just collided at T = t_i, every other clock <= T) it also looks for another
- * contact simultaneous with the resolved one -- gap <= sim_tol, approaching with the old
- * velocity, not the partner -- and returns 1 at the first, else 0. The lanes (s->simd)
- * give the same bits as the scalar loop. */
-static int test_list(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *best,
-                     int32_t *bp, const rc_vec3 *vold, int32_t partner, double T, int latest,
-                     int per)
-{
-#ifdef ENG_HAVE_AVX2
-    if (s->simd == ENG_SIMD_AVX512)
-        return test_list_avx512(s, i, nb, m, best, bp, vold, partner, T, latest, per);
-    if (s->simd == ENG_SIMD_AVX2)
-        return test_list_avx2(s, i, nb, m, best, bp, vold, partner, T, latest, per);
-#else
-    (void)latest;
-    (void)per; /* (the scalar path always takes the image: the same bits) */
-#endif
-    const eng_ball *bi = &s->b[i];
-    const int check = vold && s->def.sim_tol > 0.0;
-    double bt = *best;
-    int32_t bk = *bp;
-    if (test_tail(s, bi, nb, 0, m, check, partner, vold, T, &bt, &bk))
-        return 1;
-    *best = bt;
-    *bp = bk;
-    return 0;
-}
-
-/* Bounding-sphere times of ball i with the m <= GATHER_MAX gathered neighbours nb (padded,
- * so nb and t need NB_CAP; t[j]: INFINITY unless it can beat `best`), in lanes where the
- * CPU has them (the same bits every way): the broad phase of a contracted frame. As bits
- * (j of the 128): hit, t[j] finite; near, pair_sphere_scalar's proximity flag. */
-#ifdef ENG_HAVE_AVX2
-/* One body for each width of lanes: W neighbours a step through PAIR (pair_sphere_x4 or
- * _x8); the dimension a constant in each of the two copies. */
-#define ENG_SPHERE_LANES(NAME, TARGET, W, PAIR)                                            \
-    __attribute__((target(TARGET), always_inline)) static inline size_t NAME##_dim(        \
-        const rc_sim *s, const eng_ball *bi, int32_t *nb, size_t m, double best, double *t, \
-        uint64_t *hit, uint64_t *near, const int three, const int per)                     \
-    {                                                                                      \
-        const size_t mw = pad_lanes(nb, m, (int32_t)(bi - s->b), W);                       \
-        size_t j = 0;                                                                      \
-        for (; j < mw; j += W) {                                                           \
-            const eng_ball *k[W];                                                          \
-            for (int l = 0; l < W; l++)                                                    \
-                k[l] = &s->b[nb[j + (size_t)l]];                                           \
-            unsigned nears;                                                                \
-            const unsigned h = (unsigned)PAIR(s, bi, k, best, s->def.sim_tol, &t[j],       \
-                                              &nears, three, 0, per);                      \
-            hit[j / 64] |= (uint64_t)h << (j % 64);                                        \
-            near[j / 64] |= (uint64_t)nears << (j % 64);                                   \
-        }                                                                                  \
-        return j;                                                                          \
-    }                                                                                      \
-    __attribute__((target(TARGET))) static size_t NAME(const rc_sim *s, const eng_ball *bi, \
-                                                       int32_t *nb, size_t m, double best,  \
-                                                       double *t, uint64_t *hit,            \
-                                                       uint64_t *near)                      \
-    {                                                                                      \
-        if (s->periodic)                                                                   \
-            return s->def.dim == 3 ? NAME##_dim(s, bi, nb, m, best, t, hit, near, 1, 1)    \
-                                   : NAME##_dim(s, bi, nb, m, best, t, hit, near, 0, 1);   \
-        if (s->def.dim == 3)                                                               \
-            return NAME##_dim(s, bi, nb, m, best, t, hit, near, 1, 0);                     \
-        return NAME##_dim(s, bi, nb, m, best, t, hit, near, 0, 0);                         \
-    }
-ENG_SPHERE_LANES(sphere_lanes_avx2, "avx2", 4, pair_sphere_x4)
-#endif
-#ifdef ENG_HAVE_AVX512
-ENG_SPHERE_LANES(sphere_lanes_avx512, "avx512f", 8, pair_sphere_x8)
-#endif
-
-_Static_assert(GATHER_MAX <= 128, "the bit sets hold two words");
-static void sphere_lanes(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double best,
-                         double *t, uint64_t hit[2], uint64_t near[2])
-{
-    const eng_ball *bi = &s->b[i];
-    size_t j = 0;
-    hit[0] = hit[1] = near[0] = near[1] = 0;
-#ifdef ENG_HAVE_AVX2
-    if (s->simd == ENG_SIMD_AVX512)
-        j = sphere_lanes_avx512(s, bi, nb, m, best, t, hit, near);
-    else if (s->simd == ENG_SIMD_AVX2)
-        j = sphere_lanes_avx2(s, bi, nb, m, best, t, hit, near);
-#endif
-    for (; j < m; j++) {
-        int nr;
-        t[j] = pair_sphere_scalar(s, bi, &s->b[nb[j]], best, s->def.sim_tol, &nr);
-        hit[j / 64] |= (uint64_t)(t[j] < INFINITY) << (j % 64);
-        near[j / 64] |= (uint64_t)nr << (j % 64);
-    }
-    /* (the padding lanes past m are ball i itself, near: masked off) */
-    if (m < 64) {
-        near[0] &= (UINT64_C(1) << m) - 1u;
-        near[1] = 0;
-    } else if (m < 128) {
-        near[1] &= (UINT64_C(1) << (m - 64)) - 1u;
-    }
+    eng_lanes_of(s->simd)->cross_event(s, i, c);
 }
 
 /* 1 if neighbour bk of bi is in contact with bi's old shape within sim_tol and approaching

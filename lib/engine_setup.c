@@ -4,7 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "engine_pairs.h"
+#include "engine_lanes.h"
 #include "engine_private.h"
 #include "relcol/status.h"
 

@@ -1,15 +1,16 @@
 /* engine_walk.h — gathering the balls of a block of cells (the 3^d cells around a ball,
  * or the slab a crossing brings into reach) for a neighbour scan: row by row of the block,
  * each row's slots read together (engine_private.h: ENG_CELL_CAP slots a cell, rows of
- * cells adjacent in memory), empty slots and the scanning ball dropped; in AVX2 by a
- * compress of eight slots at a time, else slot by slot -- the same indices in the same
- * order either way. Overflow chains, rare, are walked after the rows. Included by
- * engine_predict.c. */
+ * cells adjacent in memory), empty slots and the scanning ball dropped, by the engine's
+ * lanes (engine_kernels.h: a compress of a row's eight slots, or slot by slot -- the same
+ * indices in the same order either way). Overflow chains, rare, are walked after the
+ * rows. Included by engine_predict.c and the lanes' kernels. */
 #ifndef RELCOL_ENGINE_WALK_H
 #define RELCOL_ENGINE_WALK_H
 
 #include <stdint.h>
 
+#include "engine_lanes.h"
 #include "engine_private.h"
 
 /* Neighbours gathered per chunk (a stack buffer; a block's rows always fit in one chunk,
@@ -37,7 +38,7 @@ typedef struct eng_walk {
 /* The block of a walk that wraps around a periodic axis (walk_init): rows and planes
  * taken through cell_step; a row that wraps in x is cut into its cells, each a row of
  * its own (only blocks at a periodic face come here: the others are walk_init's). */
-static void walk_init_wrapped(eng_walk *w, const rc_sim *s, int32_t skip, const int c[3],
+static inline void walk_init_wrapped(eng_walk *w, const rc_sim *s, int32_t skip, const int c[3],
                               const int lo[3], const int hi[3])
 {
     const eng_cells *g = &s->g;
@@ -124,109 +125,8 @@ static inline void walk_init(eng_walk *w, const rc_sim *s, int32_t skip, const i
     w->rows_done = w->done = 0;
 }
 
-/* One row's slots sl[0..ns) onto nb[m..]: balls other than skip kept, chains noted. */
-static inline size_t gather_slots_scalar(eng_walk *w, const int32_t *sl, int ns, int32_t *nb,
-                                         size_t m)
-{
-    for (int j = 0; j < ns; j++) {
-        const int32_t v = sl[j];
-        nb[m] = v;
-        m += (v >= 0) & (v != w->skip);
-        if (v < -1)
-            w->chain[w->nchain++] = ENG_CHAIN_HEAD(v);
-    }
-    return m;
-}
-
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(RELCOL_NO_SIMD)
-#include <immintrin.h>
-
-/* pshufb controls that move the 32-bit lanes set in a 4-bit mask to the front */
-static const int8_t walk_compress[16][16] = {
-    {-128, -128, -128, -128, -128, -128, -128, -128, -128, -128, -128, -128, -128, -128, -128, -128},
-    {0, 1, 2, 3, -128, -128, -128, -128, -128, -128, -128, -128, -128, -128, -128, -128},
-    {4, 5, 6, 7, -128, -128, -128, -128, -128, -128, -128, -128, -128, -128, -128, -128},
-    {0, 1, 2, 3, 4, 5, 6, 7, -128, -128, -128, -128, -128, -128, -128, -128},
-    {8, 9, 10, 11, -128, -128, -128, -128, -128, -128, -128, -128, -128, -128, -128, -128},
-    {0, 1, 2, 3, 8, 9, 10, 11, -128, -128, -128, -128, -128, -128, -128, -128},
-    {4, 5, 6, 7, 8, 9, 10, 11, -128, -128, -128, -128, -128, -128, -128, -128},
-    {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, -128, -128, -128, -128},
-    {12, 13, 14, 15, -128, -128, -128, -128, -128, -128, -128, -128, -128, -128, -128, -128},
-    {0, 1, 2, 3, 12, 13, 14, 15, -128, -128, -128, -128, -128, -128, -128, -128},
-    {4, 5, 6, 7, 12, 13, 14, 15, -128, -128, -128, -128, -128, -128, -128, -128},
-    {0, 1, 2, 3, 4, 5, 6, 7, 12, 13, 14, 15, -128, -128, -128, -128},
-    {8, 9, 10, 11, 12, 13, 14, 15, -128, -128, -128, -128, -128, -128, -128, -128},
-    {0, 1, 2, 3, 8, 9, 10, 11, 12, 13, 14, 15, -128, -128, -128, -128},
-    {4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, -128, -128, -128, -128},
-    {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15},
-};
-static const unsigned char walk_pop4[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
-
-/* The eight slots at sl onto nb[m..], of which the lanes in `valid` are the row's (the
- * others may lie past it: the slot array has ENG_SLOT_PAD more). Stores four past the
- * kept ones. */
-__attribute__((target("avx2"), always_inline)) static inline size_t compress8(
-    eng_walk *w, const int32_t *sl, unsigned valid, int32_t *nb, size_t m)
-{
-    const __m256i v = _mm256_loadu_si256((const __m256i *)sl);
-    const __m256i none = _mm256_set1_epi32(-1);
-    const __m256i keep = _mm256_andnot_si256(_mm256_cmpeq_epi32(v, _mm256_set1_epi32(w->skip)),
-                                             _mm256_cmpgt_epi32(v, none));
-    const unsigned mask = (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(keep)) & valid;
-    const unsigned chains =
-        (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpgt_epi32(none, v))) & valid;
-    if (__builtin_expect(chains != 0, 0)) {
-        for (int l = 0; l < 8; l++)
-            if (chains >> l & 1u)
-                w->chain[w->nchain++] = ENG_CHAIN_HEAD(sl[l]);
-    }
-    const __m128i lo = _mm256_castsi256_si128(v), hi = _mm256_extracti128_si256(v, 1);
-    _mm_storeu_si128((__m128i *)(nb + m),
-                     _mm_shuffle_epi8(lo, _mm_loadu_si128((const __m128i *)walk_compress[mask & 15u])));
-    m += walk_pop4[mask & 15u];
-    _mm_storeu_si128((__m128i *)(nb + m),
-                     _mm_shuffle_epi8(hi, _mm_loadu_si128((const __m128i *)walk_compress[mask >> 4])));
-    return m + walk_pop4[mask >> 4];
-}
-
-/* Every row of the block (at most 3 cells of ENG_CELL_CAP slots: one load each). */
-_Static_assert(3 * ENG_CELL_CAP <= 8, "a row of slots fits one load");
-__attribute__((target("avx2"))) static size_t gather_rows_avx2(eng_walk *w, int32_t *nb)
-{
-    const int32_t *slot = w->s->g.slot;
-    const unsigned valid = (1u << w->nslots) - 1u;
-    size_t m = 0;
-    for (int r = 0; r < w->nrows; r++)
-        m = compress8(w, slot + w->row[r], valid, nb, m);
-    return m;
-}
-#define ENG_WALK_AVX2 1
-
-/* The same with AVX-512VL's compress: the kept slots moved to the front by one
- * instruction (stores eight past the kept ones). */
-__attribute__((target("avx512f,avx512vl"))) static size_t gather_rows_avx512(eng_walk *w,
-                                                                           int32_t *nb)
-{
-    const int32_t *slot = w->s->g.slot;
-    const __mmask8 valid = (__mmask8)((1u << w->nslots) - 1u);
-    const __m256i none = _mm256_set1_epi32(-1), skip = _mm256_set1_epi32(w->skip);
-    size_t m = 0;
-    for (int r = 0; r < w->nrows; r++) {
-        const int32_t *sl = slot + w->row[r];
-        const __m256i v = _mm256_loadu_si256((const __m256i *)sl);
-        const __mmask8 keep = _mm256_mask_cmpgt_epi32_mask(valid, v, none) &
-                              _mm256_cmpneq_epi32_mask(v, skip);
-        const __mmask8 chains = _mm256_mask_cmpgt_epi32_mask(valid, none, v);
-        if (__builtin_expect(chains != 0, 0)) {
-            for (int l = 0; l < 8; l++)
-                if (chains >> l & 1u)
-                    w->chain[w->nchain++] = ENG_CHAIN_HEAD(sl[l]);
-        }
-        _mm256_storeu_si256((__m256i *)(nb + m), _mm256_maskz_compress_epi32(keep, v));
-        m += (size_t)__builtin_popcount(keep);
-    }
-    return m;
-}
+#ifdef ENG_HAVE_AVX2
+#define ENG_WALK_AVX2 1 /* (the lanes' walks exist: test_engine_cells compares them) */
 #endif
 
 /* More balls into nb (at most GATHER_MAX); w->done once the block is finished. The rows
@@ -237,15 +137,7 @@ static inline size_t walk_gather(eng_walk *w, int32_t *nb)
     size_t m = 0;
     if (!w->rows_done) {
         w->rows_done = 1;
-#ifdef ENG_WALK_AVX2
-        if (s->simd == ENG_SIMD_AVX512)
-            m = gather_rows_avx512(w, nb);
-        else if (s->simd == ENG_SIMD_AVX2)
-            m = gather_rows_avx2(w, nb);
-        else
-#endif
-            for (int r = 0; r < w->nrows; r++)
-                m = gather_slots_scalar(w, s->g.slot + w->row[r], w->nslots, nb, m);
+        m = eng_lanes_of(s->simd)->gather_rows(w, nb);
         /* the records, fetched ahead of the tests (without it -16 % at N = 1e5): four at a
          * time over the list padded with the scanning ball, fewer loop branches */
         for (int l = 0; l < 8; l++)

@@ -1,0 +1,342 @@
+/* engine_kernels.h — the engine's lane kernels, written once over the lanes of
+ * engine_wide.h: the sphere contact test of a ball against its gathered neighbours (the
+ * prediction's largest cost), the gathering of a walk's rows of slots, and the next cell
+ * crossing. Included by engine_lanes_<back end>.c after ENG_W and ENG_LANES_TABLE (the
+ * name of the table of engine_lanes.h it defines); the same operations in every back end,
+ * so the same bits. */
+#ifndef RELCOL_ENGINE_KERNELS_H
+#define RELCOL_ENGINE_KERNELS_H
+
+#include <math.h>
+#include <stdint.h>
+
+#include "engine_lanes.h"
+#include "engine_private.h"
+#include "engine_walk.h"
+#include "engine_wide.h"
+
+#ifndef ENG_LANES_TABLE
+#error "define ENG_LANES_TABLE before including engine_kernels.h"
+#endif
+
+/* ---- the sphere contact test ---------------------------------------------------------- */
+
+/* Lane l: the contact time of the bounding spheres of bi and k[l] (the balls' records as
+ * doubles: x, v, t, r), absolute and >= now, into out[l] -- INFINITY on a miss or when it
+ * cannot beat `best`; bit l of *nears: the centres within lim = (r_i + r_k)(1 + stol) at
+ * the later clock (the simultaneity check's proximity). Returned: bit l set if out[l] is
+ * finite. It is engine_pairs.h's pair_sep and sphere_time_dx, the same operations in the
+ * same order: the separation at the later of the two clocks (the earlier ball advanced),
+ * its nearest image, then the root dd / (sqrt(disc) - b), free of cancellation, behind
+ * one combined test (not approaching; touching but not really approaching; roots not
+ * real; not able to beat best: sqrt(disc) <= -b gives t >= dd / (-2 b)).
+ * three, latest, per: compile-time constants at every call. latest: the caller knows bi's
+ * clock is the later one (a ball that has just collided, at the engine's time), so only
+ * that branch is computed. three == 0 (2-D, every z component 0): the z terms add +0 and
+ * are left out (the sums are the same bits unless one is -0, which no comparison below
+ * can tell from +0). */
+static inline unsigned pair_lanes(const rc_sim *s, const eng_ball *bi,
+                                  const double *const k[ENG_W], double best, double stol,
+                                  double out[ENG_W], unsigned *nears, const int three,
+                                  const int latest, const int per)
+{
+    eng_wd f[8];
+    eng_load_records(k, f);
+    const eng_wd xkx = f[0], xky = f[1], xkz = f[2], vkx = f[3], vky = f[4], vkz = f[5];
+    const eng_wd tk = f[6], rk = f[7];
+    const eng_wd xix = eng_set1(bi->x.x), xiy = eng_set1(bi->x.y), xiz = eng_set1(bi->x.z);
+    const eng_wd vix = eng_set1(bi->v.x), viy = eng_set1(bi->v.y), viz = eng_set1(bi->v.z);
+    const eng_wd ti = eng_set1(bi->t), ri = eng_set1(bi->r);
+    const eng_wd hk = eng_sub(ti, tk);
+    eng_wd dx = eng_sub(eng_add(xkx, eng_mul(hk, vkx)), xix);
+    eng_wd dy = eng_sub(eng_add(xky, eng_mul(hk, vky)), xiy);
+    eng_wd dz = eng_sub(eng_add(xkz, eng_mul(hk, vkz)), xiz);
+    eng_wd tref = ti;
+    if (!latest) {
+        const eng_wm ge = eng_ge(ti, tk);
+        const eng_wd hi = eng_sub(tk, ti);
+        dx = eng_select(ge, dx, eng_sub(xkx, eng_add(xix, eng_mul(hi, vix))));
+        dy = eng_select(ge, dy, eng_sub(xky, eng_add(xiy, eng_mul(hi, viy))));
+        dz = eng_select(ge, dz, eng_sub(xkz, eng_add(xiz, eng_mul(hi, viz))));
+        tref = eng_select(ge, ti, tk);
+    }
+    if (per) { /* the nearest image, as eng_image (eng_rint's two operations) */
+        const eng_wd big = eng_set1(0x1.8p52);
+        const eng_wd ix = eng_sub(eng_add(eng_mul(dx, eng_set1(s->inv_L[0])), big), big);
+        const eng_wd iy = eng_sub(eng_add(eng_mul(dy, eng_set1(s->inv_L[1])), big), big);
+        dx = eng_sub(dx, eng_mul(eng_set1(s->L[0]), ix));
+        dy = eng_sub(dy, eng_mul(eng_set1(s->L[1]), iy));
+        if (three) {
+            const eng_wd iz = eng_sub(eng_add(eng_mul(dz, eng_set1(s->inv_L[2])), big), big);
+            dz = eng_sub(dz, eng_mul(eng_set1(s->L[2]), iz));
+        }
+    }
+    const eng_wd dvx = eng_sub(vkx, vix), dvy = eng_sub(vky, viy);
+    eng_wd d2 = eng_add(eng_mul(dx, dx), eng_mul(dy, dy));
+    eng_wd b = eng_add(eng_mul(dx, dvx), eng_mul(dy, dvy));
+    eng_wd dv2 = eng_add(eng_mul(dvx, dvx), eng_mul(dvy, dvy));
+    if (three) {
+        const eng_wd dvz = eng_sub(vkz, viz);
+        d2 = eng_add(d2, eng_mul(dz, dz));
+        b = eng_add(b, eng_mul(dz, dvz));
+        dv2 = eng_add(dv2, eng_mul(dvz, dvz));
+    }
+    const eng_wd sig = eng_add(ri, rk);
+    const eng_wd dd = eng_sub(d2, eng_mul(sig, sig));
+    const eng_wd disc = eng_sub(eng_mul(b, b), eng_mul(dv2, dd));
+    const eng_wd tol = eng_mul(eng_set1(s->def.approach_tol), sig);
+    const eng_wd lim = eng_mul(sig, eng_set1(1.0 + stol));
+    const eng_wd zero = eng_zero(), inf = eng_set1(INFINITY);
+    const eng_wm touching = eng_le(dd, zero);
+    const eng_wm slow = eng_gt(eng_mul(b, b), eng_mul(eng_mul(tol, tol), dv2));
+    const eng_wd bound = eng_mul(eng_mul(eng_set1(-2.0), b), eng_sub(eng_set1(best), tref));
+    const eng_wm flying = eng_and(eng_gt(disc, zero), eng_lt(dd, bound));
+    const eng_wm hit = eng_and(eng_lt(b, zero), eng_select_m(touching, slow, flying));
+    *nears = eng_bits(eng_le(d2, eng_mul(lim, lim)));
+    if (!eng_bits(hit)) { /* (most chunks) */
+        eng_store(out, inf);
+        return 0;
+    }
+    const eng_wd safe = eng_select(hit, disc, eng_set1(1.0)); /* (no sqrt of a miss's disc) */
+    const eng_wd root = eng_div(dd, eng_sub(eng_sqrt(safe), b));
+    eng_wd ta = eng_add(tref, eng_select(touching, zero, root));
+    const eng_wd now = eng_set1(s->now);
+    ta = eng_select(eng_lt(ta, now), now, ta);
+    const eng_wm keep = eng_and(hit, eng_lt(ta, eng_set1(best)));
+    eng_store(out, eng_select(keep, ta, inf));
+    return eng_bits(keep);
+}
+
+/* Pad the m gathered indices to a multiple of the lanes' width with ball i itself (its
+ * lanes are masked off), so that every neighbour goes through the lanes; returns the
+ * padded count. (Eight stored whatever the width: no loop to mispredict.) */
+_Static_assert(NB_CAP >= GATHER_MAX + 8, "room to pad");
+static inline size_t pad_lanes(int32_t *nb, size_t m, int32_t i)
+{
+    for (size_t l = 0; l < 8; l++)
+        nb[m + l] = i;
+    return (m + ENG_W - 1) / ENG_W * ENG_W;
+}
+
+/* The records of the neighbours nb[0..ENG_W) into k. */
+static inline void lane_records(const rc_sim *s, const int32_t *nb, const double *k[ENG_W])
+{
+    for (int l = 0; l < ENG_W; l++)
+        k[l] = &s->b[nb[l]].x.x;
+}
+
+/* Simultaneity check of a prediction with vold for neighbour k of ball i (at time T,
+ * velocity before the collision vold): approaching within approach_tol, so in contact
+ * now. */
+static int approaching_with(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, double T,
+                            rc_vec3 vold)
+{
+    const double atol = s->def.approach_tol, sig = bi->r + bk->r;
+    const rc_vec3 dx = eng_image(s, rc_v3_sub(rc_v3_axpy(bk->x, T - bk->t, bk->v), bi->x));
+    const rc_vec3 dv = rc_v3_sub(bk->v, vold);
+    const double bb = rc_v3_dot(dx, dv);
+    return bb < 0.0 && bb * bb > atol * atol * sig * sig * rc_v3_norm2(dv);
+}
+
+/* One neighbour's verdict, in scan order: 1 if it is a simultaneous contact (see
+ * test_list), else keep it if it is the earliest so far (ties: the first). */
+static inline int visit(const rc_sim *s, const eng_ball *bi, int32_t k, double t, int near,
+                        int check, int32_t partner, const rc_vec3 *vold, double T, double *bt,
+                        int32_t *bk)
+{
+    /* one rarely taken branch (&, not &&: the parts are cheap) */
+    if (check & near & (k != partner) && approaching_with(s, bi, &s->b[k], T, *vold))
+        return 1;
+    const int take = t < *bt;
+    *bt = take ? t : *bt;
+    *bk = take ? k : *bk;
+    return 0;
+}
+
+/* Bit l set if lane l of a chunk holds the partner. A chunk with a near lane is visited
+ * lane by lane for the simultaneity check, and the partner, the contact just resolved, is
+ * always near but never a conflict (visit passes it over): its lane alone need not send
+ * the chunk the slow way (the same choice either way). */
+static inline unsigned partner_lanes(const int32_t *nb, int32_t partner)
+{
+    unsigned m = 0;
+    for (int l = 0; l < ENG_W; l++)
+        m |= (unsigned)(nb[l] == partner) << l;
+    return m;
+}
+
+/* eng_lanes.test_list with three, latest and per constants. Only when checking, and a
+ * lane of the chunk other than the partner's is near, are the lanes visited one by one;
+ * else the chunk's earliest lane (the first of equals) replaces the best if strictly
+ * earlier -- visit's choice. */
+static inline int test_list_dim(const rc_sim *s, int32_t i, int32_t *nb, size_t m,
+                                double *best, int32_t *bp, const rc_vec3 *vold,
+                                int32_t partner, double T, const int three, const int latest,
+                                const int per)
+{
+    const eng_ball *bi = &s->b[i];
+    const int check = vold && s->def.sim_tol > 0.0;
+    double bt = *best;
+    int32_t bk = *bp;
+    const size_t mw = pad_lanes(nb, m, i);
+    for (size_t j = 0; j < mw; j += ENG_W) {
+        const double *k[ENG_W];
+        lane_records(s, nb + j, k);
+        double t[ENG_W];
+        unsigned nears;
+        pair_lanes(s, bi, k, bt, s->def.sim_tol, t, &nears, three, latest, per);
+        const size_t left = m - j < ENG_W ? m - j : ENG_W;
+        unsigned near_in = nears & ((1u << left) - 1u);
+        if (check && near_in)
+            near_in &= ~partner_lanes(nb + j, partner);
+        if (check && near_in) {
+            for (size_t l = 0; l < left; l++)
+                if (visit(s, bi, nb[j + l], t[l], near_in >> l & 1, check, partner, vold, T,
+                          &bt, &bk))
+                    return 1;
+            continue;
+        }
+        unsigned at;
+        const double tmin = eng_min_lane(eng_load(t), &at);
+        const int take = tmin < bt;
+        const int32_t kmin = nb[j + at];
+        bt = take ? tmin : bt;
+        bk = take ? kmin : bk;
+    }
+    *best = bt;
+    *bp = bk;
+    return 0;
+}
+
+/* (each combination of the constants gets its own copy, 2-D one without z; per without
+ * the image -- exactly the identity for neighbours in a block that does not wrap) */
+static int test_list(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *best,
+                     int32_t *bp, const rc_vec3 *vold, int32_t partner, double T, int latest,
+                     int per)
+{
+    if (s->def.dim == 3) {
+        if (per)
+            return latest ? test_list_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 1, 1)
+                          : test_list_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 0, 1);
+        return latest ? test_list_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 1, 0)
+                      : test_list_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 0, 0);
+    }
+    if (per)
+        return latest ? test_list_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 1, 1)
+                      : test_list_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 0, 1);
+    return latest ? test_list_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 1, 0)
+                  : test_list_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 0, 0);
+}
+
+/* eng_lanes.sphere_times with three and per constants. */
+static inline void sphere_times_dim(const rc_sim *s, const eng_ball *bi, int32_t *nb,
+                                    size_t m, double best, double *t, uint64_t *hit,
+                                    uint64_t *near, const int three, const int per)
+{
+    const size_t mw = pad_lanes(nb, m, (int32_t)(bi - s->b));
+    for (size_t j = 0; j < mw; j += ENG_W) {
+        const double *k[ENG_W];
+        lane_records(s, nb + j, k);
+        unsigned nears;
+        const unsigned h = pair_lanes(s, bi, k, best, s->def.sim_tol, &t[j], &nears, three, 0,
+                                      per);
+        hit[j / 64] |= (uint64_t)h << (j % 64);
+        near[j / 64] |= (uint64_t)nears << (j % 64);
+    }
+}
+
+_Static_assert(GATHER_MAX <= 128, "the bit sets hold two words");
+_Static_assert(64 % ENG_W == 0, "a chunk of lanes within one word of bits");
+static void sphere_times(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double best,
+                         double *t, uint64_t hit[2], uint64_t near[2])
+{
+    const eng_ball *bi = &s->b[i];
+    hit[0] = hit[1] = near[0] = near[1] = 0;
+    if (s->periodic) {
+        if (s->def.dim == 3)
+            sphere_times_dim(s, bi, nb, m, best, t, hit, near, 1, 1);
+        else
+            sphere_times_dim(s, bi, nb, m, best, t, hit, near, 0, 1);
+    } else if (s->def.dim == 3) {
+        sphere_times_dim(s, bi, nb, m, best, t, hit, near, 1, 0);
+    } else {
+        sphere_times_dim(s, bi, nb, m, best, t, hit, near, 0, 0);
+    }
+    /* (the padding lanes past m are ball i itself, near: masked off) */
+    if (m < 64) {
+        near[0] &= (UINT64_C(1) << m) - 1u;
+        near[1] = 0;
+    } else if (m < 128) {
+        near[1] &= (UINT64_C(1) << (m - 64)) - 1u;
+    }
+}
+
+/* ---- the walk's rows of slots ---------------------------------------------------------- */
+
+/* Every row of the walk's block (at most 3 cells of ENG_CELL_CAP slots: one load each; the
+ * slot array has ENG_SLOT_PAD more, so a load may reach past the last row). */
+_Static_assert(3 * ENG_CELL_CAP <= 8, "a row of slots fits one load");
+static size_t gather_rows(eng_walk *w, int32_t *nb)
+{
+    const int32_t *slot = w->s->g.slot;
+    const unsigned valid = (1u << w->nslots) - 1u;
+    size_t m = 0;
+    for (int r = 0; r < w->nrows; r++) {
+        const int32_t *sl = slot + w->row[r];
+        const eng_slots v = eng_slots_load(sl);
+        const unsigned chains = eng_slots_chains(v) & valid;
+        if (__builtin_expect(chains != 0, 0)) {
+            for (int l = 0; l < 8; l++)
+                if (chains >> l & 1u)
+                    w->chain[w->nchain++] = ENG_CHAIN_HEAD(sl[l]);
+        }
+        m += eng_slots_compress(nb + m, v, eng_slots_balls(v, w->skip) & valid);
+    }
+    return m;
+}
+
+/* ---- the next cell crossing ------------------------------------------------------------ */
+
+/* Ball i's next cell crossing: the earliest time its centre reaches a face of its cell
+ * that is not the box's wall (ties: the lower dimension), code 2 d + (direction > 0); a
+ * periodic face is a crossing (rc_eng_cross wraps the ball). One lane a dimension: the
+ * direction of motion is a coin toss per dimension, which a branch mispredicts, and a
+ * lane takes both ways at once. */
+static void cross_event(rc_sim *s, int32_t i, const int c[3])
+{
+    const eng_ball *bi = &s->b[i];
+    const eng_cells *g = &s->g;
+    const int dim = s->def.dim;
+    const eng_wd zero = eng_zero(), one = eng_set1(1.0), now = eng_set1(s->now);
+    double best = INFINITY;
+    int32_t code = -1;
+    for (int d0 = 0; d0 < dim; d0 += ENG_W) {
+        /* (lanes past the last dimension do not move: no crossing) */
+        const eng_wd v = eng_axes(bi->v.x, bi->v.y, dim == 3 ? bi->v.z : 0.0, 0.0, d0);
+        const eng_wd x = eng_axes(bi->x.x, bi->x.y, bi->x.z, 0.0, d0);
+        const eng_wd cd = eng_axes(c[0], c[1], c[2], 0.0, d0);
+        const eng_wd up_lim = eng_axes(g->up_lim[0], g->up_lim[1], g->up_lim[2], 0.0, d0);
+        const eng_wd dn_lim = eng_axes(g->dn_lim[0], g->dn_lim[1], g->dn_lim[2], 0.0, d0);
+        const eng_wd w = eng_axes(g->w[0], g->w[1], g->w[2], 1.0, d0);
+        const eng_wm up = eng_gt(v, zero);
+        /* a face to cross: not the box's own wall (a periodic face is one) */
+        const eng_wm valid = eng_or(eng_and(up, eng_lt(cd, up_lim)),
+                                    eng_and(eng_lt(v, zero), eng_gt(cd, dn_lim)));
+        const eng_wd edge = eng_mul(eng_add(cd, eng_select(up, one, zero)), w);
+        eng_wd t = eng_add(eng_set1(bi->t),
+                           eng_div(eng_sub(edge, x), eng_select(valid, v, one)));
+        t = eng_select(eng_lt(t, now), now, t);
+        t = eng_select(valid, t, eng_set1(INFINITY));
+        unsigned at;
+        const double tmin = eng_min_lane(t, &at);
+        const int take = tmin < best;
+        best = take ? tmin : best;
+        code = take ? 2 * (d0 + (int)at) + (int)(eng_bits(up) >> at & 1u) : code;
+    }
+    s->a[i].cross_t = best;
+    s->a[i].cross_code = code;
+}
+
+const eng_lanes ENG_LANES_TABLE = {test_list, sphere_times, gather_rows, cross_event};
+
+#endif

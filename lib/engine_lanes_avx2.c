@@ -1,0 +1,11 @@
+/* engine_lanes_avx2.c — the engine's lane kernels (engine_kernels.h) in four lanes of
+ * AVX2. Built with -mavx2 (lib/meson.build; no FMA, so the bits stay the plain C lane's),
+ * and called only where the CPU has AVX2 (rc_sim_create asks it). */
+#include "engine_lanes.h"
+#ifdef ENG_HAVE_AVX2
+#define ENG_W 4
+#define ENG_LANES_TABLE rc_eng_lanes_avx2
+#include "engine_kernels.h"
+#else
+typedef int eng_lanes_avx2_absent; /* (ISO C wants a declaration in every file) */
+#endif
