@@ -35,10 +35,10 @@
  * that branch is computed. three == 0 (2-D, every z component 0): the z terms add +0 and
  * are left out (the sums are the same bits unless one is -0, which no comparison below
  * can tell from +0). */
-static inline unsigned pair_lanes(const rc_sim *s, const eng_ball *bi,
-                                  const double *const k[ENG_W], double best, double stol,
-                                  double out[ENG_W], unsigned *nears, const int three,
-                                  const int latest, const int per)
+ENG_INLINE unsigned pair_lanes(const rc_sim *s, const eng_ball *bi,
+                               const double *const k[ENG_W], double best, double stol,
+                               double out[ENG_W], unsigned *nears, const int three,
+                               const int latest, const int per)
 {
     eng_wd f[8];
     eng_load_records(k, f);
@@ -111,7 +111,7 @@ static inline unsigned pair_lanes(const rc_sim *s, const eng_ball *bi,
  * lanes are masked off), so that every neighbour goes through the lanes; returns the
  * padded count. (Eight stored whatever the width: no loop to mispredict.) */
 _Static_assert(NB_CAP >= GATHER_MAX + 8, "room to pad");
-static inline size_t pad_lanes(int32_t *nb, size_t m, int32_t i)
+ENG_INLINE size_t pad_lanes(int32_t *nb, size_t m, int32_t i)
 {
     for (size_t l = 0; l < 8; l++)
         nb[m + l] = i;
@@ -119,7 +119,7 @@ static inline size_t pad_lanes(int32_t *nb, size_t m, int32_t i)
 }
 
 /* The records of the neighbours nb[0..ENG_W) into k. */
-static inline void lane_records(const rc_sim *s, const int32_t *nb, const double *k[ENG_W])
+ENG_INLINE void lane_records(const rc_sim *s, const int32_t *nb, const double *k[ENG_W])
 {
     for (int l = 0; l < ENG_W; l++)
         k[l] = &s->b[nb[l]].x.x;
@@ -140,9 +140,9 @@ static int approaching_with(const rc_sim *s, const eng_ball *bi, const eng_ball 
 
 /* One neighbour's verdict, in scan order: 1 if it is a simultaneous contact (see
  * test_list), else keep it if it is the earliest so far (ties: the first). */
-static inline int visit(const rc_sim *s, const eng_ball *bi, int32_t k, double t, int near,
-                        int check, int32_t partner, const rc_vec3 *vold, double T, double *bt,
-                        int32_t *bk)
+ENG_INLINE int visit(const rc_sim *s, const eng_ball *bi, int32_t k, double t, int near,
+                     int check, int32_t partner, const rc_vec3 *vold, double T, double *bt,
+                     int32_t *bk)
 {
     /* one rarely taken branch (&, not &&: the parts are cheap) */
     if (check & near & (k != partner) && approaching_with(s, bi, &s->b[k], T, *vold))
@@ -157,7 +157,7 @@ static inline int visit(const rc_sim *s, const eng_ball *bi, int32_t k, double t
  * lane by lane for the simultaneity check, and the partner, the contact just resolved, is
  * always near but never a conflict (visit passes it over): its lane alone need not send
  * the chunk the slow way (the same choice either way). */
-static inline unsigned partner_lanes(const int32_t *nb, int32_t partner)
+ENG_INLINE unsigned partner_lanes(const int32_t *nb, int32_t partner)
 {
     unsigned m = 0;
     for (int l = 0; l < ENG_W; l++)
@@ -169,10 +169,10 @@ static inline unsigned partner_lanes(const int32_t *nb, int32_t partner)
  * lane of the chunk other than the partner's is near, are the lanes visited one by one;
  * else the chunk's earliest lane (the first of equals) replaces the best if strictly
  * earlier -- visit's choice. */
-static inline int test_list_dim(const rc_sim *s, int32_t i, int32_t *nb, size_t m,
-                                double *best, int32_t *bp, const rc_vec3 *vold,
-                                int32_t partner, double T, const int three, const int latest,
-                                const int per)
+ENG_INLINE int test_list_dim(const rc_sim *s, int32_t i, int32_t *nb, size_t m,
+                             double *best, int32_t *bp, const rc_vec3 *vold,
+                             int32_t partner, double T, const int three, const int latest,
+                             const int per)
 {
     const eng_ball *bi = &s->b[i];
     const int check = vold && s->def.sim_tol > 0.0;
@@ -229,9 +229,9 @@ static int test_list(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *
 }
 
 /* eng_lanes.sphere_times with three and per constants. */
-static inline void sphere_times_dim(const rc_sim *s, const eng_ball *bi, int32_t *nb,
-                                    size_t m, double best, double *t, uint64_t *hit,
-                                    uint64_t *near, const int three, const int per)
+ENG_INLINE void sphere_times_dim(const rc_sim *s, const eng_ball *bi, int32_t *nb,
+                                 size_t m, double best, double *t, uint64_t *hit,
+                                 uint64_t *near, const int three, const int per)
 {
     const size_t mw = pad_lanes(nb, m, (int32_t)(bi - s->b));
     for (size_t j = 0; j < mw; j += ENG_W) {

@@ -23,35 +23,40 @@
 #include <immintrin.h>
 #endif
 
+/* The operations, and the kernels built from them, are inlined into the few functions of
+ * each table: the dimension, the periodic flag and the clock order are then constants in
+ * each copy of a kernel (GCC's heuristics stop inlining a kernel called eight times). */
+#define ENG_INLINE static inline __attribute__((always_inline))
+
 /* ---- eight lanes: AVX-512F (the slot rows use AVX-512VL) ----------------------------- */
 #if ENG_W == 8
 typedef __m512d eng_wd;
 typedef __mmask8 eng_wm;
 
-static inline eng_wd eng_set1(double a) { return _mm512_set1_pd(a); }
-static inline eng_wd eng_zero(void) { return _mm512_setzero_pd(); }
-static inline eng_wd eng_load(const double *p) { return _mm512_loadu_pd(p); }
-static inline void eng_store(double *p, eng_wd a) { _mm512_storeu_pd(p, a); }
-static inline eng_wd eng_add(eng_wd a, eng_wd b) { return _mm512_add_pd(a, b); }
-static inline eng_wd eng_sub(eng_wd a, eng_wd b) { return _mm512_sub_pd(a, b); }
-static inline eng_wd eng_mul(eng_wd a, eng_wd b) { return _mm512_mul_pd(a, b); }
-static inline eng_wd eng_div(eng_wd a, eng_wd b) { return _mm512_div_pd(a, b); }
-static inline eng_wd eng_sqrt(eng_wd a) { return _mm512_sqrt_pd(a); }
-static inline eng_wm eng_lt(eng_wd a, eng_wd b) { return _mm512_cmp_pd_mask(a, b, _CMP_LT_OQ); }
-static inline eng_wm eng_le(eng_wd a, eng_wd b) { return _mm512_cmp_pd_mask(a, b, _CMP_LE_OQ); }
-static inline eng_wm eng_gt(eng_wd a, eng_wd b) { return _mm512_cmp_pd_mask(a, b, _CMP_GT_OQ); }
-static inline eng_wm eng_ge(eng_wd a, eng_wd b) { return _mm512_cmp_pd_mask(a, b, _CMP_GE_OQ); }
-static inline eng_wm eng_and(eng_wm a, eng_wm b) { return a & b; }
-static inline eng_wm eng_or(eng_wm a, eng_wm b) { return a | b; }
+ENG_INLINE eng_wd eng_set1(double a) { return _mm512_set1_pd(a); }
+ENG_INLINE eng_wd eng_zero(void) { return _mm512_setzero_pd(); }
+ENG_INLINE eng_wd eng_load(const double *p) { return _mm512_loadu_pd(p); }
+ENG_INLINE void eng_store(double *p, eng_wd a) { _mm512_storeu_pd(p, a); }
+ENG_INLINE eng_wd eng_add(eng_wd a, eng_wd b) { return _mm512_add_pd(a, b); }
+ENG_INLINE eng_wd eng_sub(eng_wd a, eng_wd b) { return _mm512_sub_pd(a, b); }
+ENG_INLINE eng_wd eng_mul(eng_wd a, eng_wd b) { return _mm512_mul_pd(a, b); }
+ENG_INLINE eng_wd eng_div(eng_wd a, eng_wd b) { return _mm512_div_pd(a, b); }
+ENG_INLINE eng_wd eng_sqrt(eng_wd a) { return _mm512_sqrt_pd(a); }
+ENG_INLINE eng_wm eng_lt(eng_wd a, eng_wd b) { return _mm512_cmp_pd_mask(a, b, _CMP_LT_OQ); }
+ENG_INLINE eng_wm eng_le(eng_wd a, eng_wd b) { return _mm512_cmp_pd_mask(a, b, _CMP_LE_OQ); }
+ENG_INLINE eng_wm eng_gt(eng_wd a, eng_wd b) { return _mm512_cmp_pd_mask(a, b, _CMP_GT_OQ); }
+ENG_INLINE eng_wm eng_ge(eng_wd a, eng_wd b) { return _mm512_cmp_pd_mask(a, b, _CMP_GE_OQ); }
+ENG_INLINE eng_wm eng_and(eng_wm a, eng_wm b) { return a & b; }
+ENG_INLINE eng_wm eng_or(eng_wm a, eng_wm b) { return a | b; }
 /* m ? a : b, lane by lane */
-static inline eng_wd eng_select(eng_wm m, eng_wd a, eng_wd b) { return _mm512_mask_blend_pd(m, b, a); }
-static inline eng_wm eng_select_m(eng_wm m, eng_wm a, eng_wm b) { return (eng_wm)((m & a) | (~m & b)); }
+ENG_INLINE eng_wd eng_select(eng_wm m, eng_wd a, eng_wd b) { return _mm512_mask_blend_pd(m, b, a); }
+ENG_INLINE eng_wm eng_select_m(eng_wm m, eng_wm a, eng_wm b) { return (eng_wm)((m & a) | (~m & b)); }
 /* bit l: lane l of the mask */
-static inline unsigned eng_bits(eng_wm m) { return m; }
+ENG_INLINE unsigned eng_bits(eng_wm m) { return m; }
 
 /* Lane l gets the eight doubles at rec[l] (field f into out[f]): a 64-byte ball record a
  * lane, transposed by three rounds of eight shuffles. */
-static inline void eng_load_records(const double *const rec[8], eng_wd out[8])
+ENG_INLINE void eng_load_records(const double *const rec[8], eng_wd out[8])
 {
     __m512d r[8], t[8], u[8];
     for (int l = 0; l < 8; l++)
@@ -77,14 +82,14 @@ static inline void eng_load_records(const double *const rec[8], eng_wd out[8])
 }
 
 /* The axes d0, d0 + 1, ... of (x, y, z), pad past z (d0 = 0 here: three axes fit). */
-static inline eng_wd eng_axes(double x, double y, double z, double pad, int d0)
+ENG_INLINE eng_wd eng_axes(double x, double y, double z, double pad, int d0)
 {
     (void)d0;
     return _mm512_setr_pd(x, y, z, pad, pad, pad, pad, pad);
 }
 
 /* The least lane's value, and in *lane the first lane holding it. */
-static inline double eng_min_lane(eng_wd a, unsigned *lane)
+ENG_INLINE double eng_min_lane(eng_wd a, unsigned *lane)
 {
     const double m = _mm512_reduce_min_pd(a);
     const unsigned at = _mm512_cmp_pd_mask(a, _mm512_set1_pd(m), _CMP_EQ_OQ);
@@ -94,20 +99,20 @@ static inline double eng_min_lane(eng_wd a, unsigned *lane)
 
 /* A row of eight cell slots (ball indices, -1 empty, ENG_CHAIN codes below -1). */
 typedef __m256i eng_slots;
-static inline eng_slots eng_slots_load(const int32_t *sl) { return _mm256_loadu_si256((const __m256i *)sl); }
+ENG_INLINE eng_slots eng_slots_load(const int32_t *sl) { return _mm256_loadu_si256((const __m256i *)sl); }
 /* bits of the slots holding a ball other than skip */
-static inline unsigned eng_slots_balls(eng_slots v, int32_t skip)
+ENG_INLINE unsigned eng_slots_balls(eng_slots v, int32_t skip)
 {
     return _mm256_cmpgt_epi32_mask(v, _mm256_set1_epi32(-1)) &
            _mm256_cmpneq_epi32_mask(v, _mm256_set1_epi32(skip));
 }
 /* bits of the slots holding a chain */
-static inline unsigned eng_slots_chains(eng_slots v)
+ENG_INLINE unsigned eng_slots_chains(eng_slots v)
 {
     return _mm256_cmpgt_epi32_mask(_mm256_set1_epi32(-1), v);
 }
 /* The slots in `keep` to out[0..], in order; their count. Stores eight. */
-static inline size_t eng_slots_compress(int32_t *out, eng_slots v, unsigned keep)
+ENG_INLINE size_t eng_slots_compress(int32_t *out, eng_slots v, unsigned keep)
 {
     _mm256_storeu_si256((__m256i *)out, _mm256_maskz_compress_epi32((__mmask8)keep, v));
     return (size_t)__builtin_popcount(keep);
@@ -118,28 +123,28 @@ static inline size_t eng_slots_compress(int32_t *out, eng_slots v, unsigned keep
 typedef __m256d eng_wd;
 typedef __m256d eng_wm; /* all ones or all zeros per lane */
 
-static inline eng_wd eng_set1(double a) { return _mm256_set1_pd(a); }
-static inline eng_wd eng_zero(void) { return _mm256_setzero_pd(); }
-static inline eng_wd eng_load(const double *p) { return _mm256_loadu_pd(p); }
-static inline void eng_store(double *p, eng_wd a) { _mm256_storeu_pd(p, a); }
-static inline eng_wd eng_add(eng_wd a, eng_wd b) { return _mm256_add_pd(a, b); }
-static inline eng_wd eng_sub(eng_wd a, eng_wd b) { return _mm256_sub_pd(a, b); }
-static inline eng_wd eng_mul(eng_wd a, eng_wd b) { return _mm256_mul_pd(a, b); }
-static inline eng_wd eng_div(eng_wd a, eng_wd b) { return _mm256_div_pd(a, b); }
-static inline eng_wd eng_sqrt(eng_wd a) { return _mm256_sqrt_pd(a); }
-static inline eng_wm eng_lt(eng_wd a, eng_wd b) { return _mm256_cmp_pd(a, b, _CMP_LT_OQ); }
-static inline eng_wm eng_le(eng_wd a, eng_wd b) { return _mm256_cmp_pd(a, b, _CMP_LE_OQ); }
-static inline eng_wm eng_gt(eng_wd a, eng_wd b) { return _mm256_cmp_pd(a, b, _CMP_GT_OQ); }
-static inline eng_wm eng_ge(eng_wd a, eng_wd b) { return _mm256_cmp_pd(a, b, _CMP_GE_OQ); }
-static inline eng_wm eng_and(eng_wm a, eng_wm b) { return _mm256_and_pd(a, b); }
-static inline eng_wm eng_or(eng_wm a, eng_wm b) { return _mm256_or_pd(a, b); }
-static inline eng_wd eng_select(eng_wm m, eng_wd a, eng_wd b) { return _mm256_blendv_pd(b, a, m); }
-static inline eng_wm eng_select_m(eng_wm m, eng_wm a, eng_wm b) { return _mm256_blendv_pd(b, a, m); }
-static inline unsigned eng_bits(eng_wm m) { return (unsigned)_mm256_movemask_pd(m); }
+ENG_INLINE eng_wd eng_set1(double a) { return _mm256_set1_pd(a); }
+ENG_INLINE eng_wd eng_zero(void) { return _mm256_setzero_pd(); }
+ENG_INLINE eng_wd eng_load(const double *p) { return _mm256_loadu_pd(p); }
+ENG_INLINE void eng_store(double *p, eng_wd a) { _mm256_storeu_pd(p, a); }
+ENG_INLINE eng_wd eng_add(eng_wd a, eng_wd b) { return _mm256_add_pd(a, b); }
+ENG_INLINE eng_wd eng_sub(eng_wd a, eng_wd b) { return _mm256_sub_pd(a, b); }
+ENG_INLINE eng_wd eng_mul(eng_wd a, eng_wd b) { return _mm256_mul_pd(a, b); }
+ENG_INLINE eng_wd eng_div(eng_wd a, eng_wd b) { return _mm256_div_pd(a, b); }
+ENG_INLINE eng_wd eng_sqrt(eng_wd a) { return _mm256_sqrt_pd(a); }
+ENG_INLINE eng_wm eng_lt(eng_wd a, eng_wd b) { return _mm256_cmp_pd(a, b, _CMP_LT_OQ); }
+ENG_INLINE eng_wm eng_le(eng_wd a, eng_wd b) { return _mm256_cmp_pd(a, b, _CMP_LE_OQ); }
+ENG_INLINE eng_wm eng_gt(eng_wd a, eng_wd b) { return _mm256_cmp_pd(a, b, _CMP_GT_OQ); }
+ENG_INLINE eng_wm eng_ge(eng_wd a, eng_wd b) { return _mm256_cmp_pd(a, b, _CMP_GE_OQ); }
+ENG_INLINE eng_wm eng_and(eng_wm a, eng_wm b) { return _mm256_and_pd(a, b); }
+ENG_INLINE eng_wm eng_or(eng_wm a, eng_wm b) { return _mm256_or_pd(a, b); }
+ENG_INLINE eng_wd eng_select(eng_wm m, eng_wd a, eng_wd b) { return _mm256_blendv_pd(b, a, m); }
+ENG_INLINE eng_wm eng_select_m(eng_wm m, eng_wm a, eng_wm b) { return _mm256_blendv_pd(b, a, m); }
+ENG_INLINE unsigned eng_bits(eng_wm m) { return (unsigned)_mm256_movemask_pd(m); }
 
 /* Lane l gets the eight doubles at rec[l]: each record's two halves, transposed four by
  * four (low halves: fields 0..3, high halves: 4..7). */
-static inline void eng_load_records(const double *const rec[4], eng_wd out[8])
+ENG_INLINE void eng_load_records(const double *const rec[4], eng_wd out[8])
 {
     for (int h = 0; h < 2; h++) {
         __m256d r[4];
@@ -154,13 +159,13 @@ static inline void eng_load_records(const double *const rec[4], eng_wd out[8])
     }
 }
 
-static inline eng_wd eng_axes(double x, double y, double z, double pad, int d0)
+ENG_INLINE eng_wd eng_axes(double x, double y, double z, double pad, int d0)
 {
     (void)d0;
     return _mm256_setr_pd(x, y, z, pad);
 }
 
-static inline double eng_min_lane(eng_wd a, unsigned *lane)
+ENG_INLINE double eng_min_lane(eng_wd a, unsigned *lane)
 {
     __m256d m = _mm256_min_pd(a, _mm256_permute_pd(a, 0x5));
     m = _mm256_min_pd(m, _mm256_permute2f128_pd(m, m, 0x01));
@@ -170,14 +175,14 @@ static inline double eng_min_lane(eng_wd a, unsigned *lane)
 }
 
 typedef __m256i eng_slots;
-static inline eng_slots eng_slots_load(const int32_t *sl) { return _mm256_loadu_si256((const __m256i *)sl); }
-static inline unsigned eng_slots_balls(eng_slots v, int32_t skip)
+ENG_INLINE eng_slots eng_slots_load(const int32_t *sl) { return _mm256_loadu_si256((const __m256i *)sl); }
+ENG_INLINE unsigned eng_slots_balls(eng_slots v, int32_t skip)
 {
     const __m256i keep = _mm256_andnot_si256(_mm256_cmpeq_epi32(v, _mm256_set1_epi32(skip)),
                                              _mm256_cmpgt_epi32(v, _mm256_set1_epi32(-1)));
     return (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(keep));
 }
-static inline unsigned eng_slots_chains(eng_slots v)
+ENG_INLINE unsigned eng_slots_chains(eng_slots v)
 {
     return (unsigned)_mm256_movemask_ps(
         _mm256_castsi256_ps(_mm256_cmpgt_epi32(_mm256_set1_epi32(-1), v)));
@@ -208,7 +213,7 @@ static const int8_t eng_compress4[16][16] = {
 static const unsigned char eng_pop4[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
 
 /* (stores four past the kept ones) */
-static inline size_t eng_slots_compress(int32_t *out, eng_slots v, unsigned keep)
+ENG_INLINE size_t eng_slots_compress(int32_t *out, eng_slots v, unsigned keep)
 {
     const __m128i lo = _mm256_castsi256_si128(v), hi = _mm256_extracti128_si256(v, 1);
     _mm_storeu_si128((__m128i *)out,
@@ -224,37 +229,37 @@ static inline size_t eng_slots_compress(int32_t *out, eng_slots v, unsigned keep
 typedef double eng_wd;
 typedef int eng_wm; /* 0 or 1 */
 
-static inline eng_wd eng_set1(double a) { return a; }
-static inline eng_wd eng_zero(void) { return 0.0; }
-static inline eng_wd eng_load(const double *p) { return *p; }
-static inline void eng_store(double *p, eng_wd a) { *p = a; }
-static inline eng_wd eng_add(eng_wd a, eng_wd b) { return a + b; }
-static inline eng_wd eng_sub(eng_wd a, eng_wd b) { return a - b; }
-static inline eng_wd eng_mul(eng_wd a, eng_wd b) { return a * b; }
-static inline eng_wd eng_div(eng_wd a, eng_wd b) { return a / b; }
-static inline eng_wd eng_sqrt(eng_wd a) { return sqrt(a); }
-static inline eng_wm eng_lt(eng_wd a, eng_wd b) { return a < b; }
-static inline eng_wm eng_le(eng_wd a, eng_wd b) { return a <= b; }
-static inline eng_wm eng_gt(eng_wd a, eng_wd b) { return a > b; }
-static inline eng_wm eng_ge(eng_wd a, eng_wd b) { return a >= b; }
-static inline eng_wm eng_and(eng_wm a, eng_wm b) { return a & b; }
-static inline eng_wm eng_or(eng_wm a, eng_wm b) { return a | b; }
-static inline eng_wd eng_select(eng_wm m, eng_wd a, eng_wd b) { return m ? a : b; }
-static inline eng_wm eng_select_m(eng_wm m, eng_wm a, eng_wm b) { return m ? a : b; }
-static inline unsigned eng_bits(eng_wm m) { return (unsigned)m; }
+ENG_INLINE eng_wd eng_set1(double a) { return a; }
+ENG_INLINE eng_wd eng_zero(void) { return 0.0; }
+ENG_INLINE eng_wd eng_load(const double *p) { return *p; }
+ENG_INLINE void eng_store(double *p, eng_wd a) { *p = a; }
+ENG_INLINE eng_wd eng_add(eng_wd a, eng_wd b) { return a + b; }
+ENG_INLINE eng_wd eng_sub(eng_wd a, eng_wd b) { return a - b; }
+ENG_INLINE eng_wd eng_mul(eng_wd a, eng_wd b) { return a * b; }
+ENG_INLINE eng_wd eng_div(eng_wd a, eng_wd b) { return a / b; }
+ENG_INLINE eng_wd eng_sqrt(eng_wd a) { return sqrt(a); }
+ENG_INLINE eng_wm eng_lt(eng_wd a, eng_wd b) { return a < b; }
+ENG_INLINE eng_wm eng_le(eng_wd a, eng_wd b) { return a <= b; }
+ENG_INLINE eng_wm eng_gt(eng_wd a, eng_wd b) { return a > b; }
+ENG_INLINE eng_wm eng_ge(eng_wd a, eng_wd b) { return a >= b; }
+ENG_INLINE eng_wm eng_and(eng_wm a, eng_wm b) { return a & b; }
+ENG_INLINE eng_wm eng_or(eng_wm a, eng_wm b) { return a | b; }
+ENG_INLINE eng_wd eng_select(eng_wm m, eng_wd a, eng_wd b) { return m ? a : b; }
+ENG_INLINE eng_wm eng_select_m(eng_wm m, eng_wm a, eng_wm b) { return m ? a : b; }
+ENG_INLINE unsigned eng_bits(eng_wm m) { return (unsigned)m; }
 
-static inline void eng_load_records(const double *const rec[1], eng_wd out[8])
+ENG_INLINE void eng_load_records(const double *const rec[1], eng_wd out[8])
 {
     for (int f = 0; f < 8; f++)
         out[f] = rec[0][f];
 }
 
-static inline eng_wd eng_axes(double x, double y, double z, double pad, int d0)
+ENG_INLINE eng_wd eng_axes(double x, double y, double z, double pad, int d0)
 {
     return d0 == 0 ? x : d0 == 1 ? y : d0 == 2 ? z : pad;
 }
 
-static inline double eng_min_lane(eng_wd a, unsigned *lane)
+ENG_INLINE double eng_min_lane(eng_wd a, unsigned *lane)
 {
     *lane = 0;
     return a;
@@ -263,21 +268,21 @@ static inline double eng_min_lane(eng_wd a, unsigned *lane)
 typedef struct eng_slots {
     int32_t v[8];
 } eng_slots;
-static inline eng_slots eng_slots_load(const int32_t *sl)
+ENG_INLINE eng_slots eng_slots_load(const int32_t *sl)
 {
     eng_slots r;
     for (int l = 0; l < 8; l++)
         r.v[l] = sl[l];
     return r;
 }
-static inline unsigned eng_slots_balls(eng_slots v, int32_t skip)
+ENG_INLINE unsigned eng_slots_balls(eng_slots v, int32_t skip)
 {
     unsigned m = 0;
     for (int l = 0; l < 8; l++)
         m |= (unsigned)((v.v[l] >= 0) & (v.v[l] != skip)) << l;
     return m;
 }
-static inline unsigned eng_slots_chains(eng_slots v)
+ENG_INLINE unsigned eng_slots_chains(eng_slots v)
 {
     unsigned m = 0;
     for (int l = 0; l < 8; l++)
@@ -285,7 +290,7 @@ static inline unsigned eng_slots_chains(eng_slots v)
     return m;
 }
 /* (stores eight, each kept one over the last) */
-static inline size_t eng_slots_compress(int32_t *out, eng_slots v, unsigned keep)
+ENG_INLINE size_t eng_slots_compress(int32_t *out, eng_slots v, unsigned keep)
 {
     size_t m = 0;
     for (int l = 0; l < 8; l++) {
