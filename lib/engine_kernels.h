@@ -1,9 +1,8 @@
 /* engine_kernels.h — the engine's lane kernels, written once over the lanes of
  * engine_wide.h: the sphere contact test of a ball against its gathered neighbours (the
  * prediction's largest cost), the gathering of a walk's rows of slots, and the next cell
- * crossing. Included by engine_lanes_<back end>.c after ENG_W and ENG_LANES_TABLE (the
- * name of the table of engine_lanes.h it defines); the same operations in every back end,
- * so the same bits. */
+ * crossing. Included by engine_lanes_<back end>.c after ENG_W, which then fills its
+ * table of engine_lanes.h; the same operations in every back end, so the same bits. */
 #ifndef RELCOL_ENGINE_KERNELS_H
 #define RELCOL_ENGINE_KERNELS_H
 
@@ -14,10 +13,6 @@
 #include "engine_private.h"
 #include "engine_walk.h"
 #include "engine_wide.h"
-
-#ifndef ENG_LANES_TABLE
-#error "define ENG_LANES_TABLE before including engine_kernels.h"
-#endif
 
 /* ---- the sphere contact test ---------------------------------------------------------- */
 
@@ -280,8 +275,11 @@ static size_t gather_rows(eng_walk *w, int32_t *nb)
 {
     const int32_t *slot = w->s->g.slot;
     const unsigned valid = (1u << w->nslots) - 1u;
+    /* (read before the loop: the chains' stores into w could alias them) */
+    const int32_t skip = w->skip;
+    const int nrows = w->nrows;
     size_t m = 0;
-    for (int r = 0; r < w->nrows; r++) {
+    for (int r = 0; r < nrows; r++) {
         const int32_t *sl = slot + w->row[r];
         const eng_slots v = eng_slots_load(sl);
         const unsigned chains = eng_slots_chains(v) & valid;
@@ -290,7 +288,7 @@ static size_t gather_rows(eng_walk *w, int32_t *nb)
                 if (chains >> l & 1u)
                     w->chain[w->nchain++] = ENG_CHAIN_HEAD(sl[l]);
         }
-        m += eng_slots_compress(nb + m, v, eng_slots_balls(v, w->skip) & valid);
+        m += eng_slots_compress(nb + m, v, eng_slots_balls(v, skip) & valid);
     }
     return m;
 }
@@ -301,12 +299,14 @@ static size_t gather_rows(eng_walk *w, int32_t *nb)
  * that is not the box's wall (ties: the lower dimension), code 2 d + (direction > 0); a
  * periodic face is a crossing (rc_eng_cross wraps the ball). One lane a dimension: the
  * direction of motion is a coin toss per dimension, which a branch mispredicts, and a
- * lane takes both ways at once. */
-static void cross_event(rc_sim *s, int32_t i, const int c[3])
+ * lane takes both ways at once. (Inlined into the table's function of the back ends
+ * that use it: see engine_lanes_avx512.c.) */
+ENG_INLINE void cross_event(rc_sim *s, int32_t i, const int c[3])
 {
     const eng_ball *bi = &s->b[i];
     const eng_cells *g = &s->g;
-    const int dim = s->def.dim;
+    const int dim = s->def.dim < 3 ? s->def.dim : 3; /* (says so to the compiler: wide
+                                                        lanes take one pass) */
     const eng_wd zero = eng_zero(), one = eng_set1(1.0), now = eng_set1(s->now);
     double best = INFINITY;
     int32_t code = -1;
@@ -336,7 +336,5 @@ static void cross_event(rc_sim *s, int32_t i, const int c[3])
     s->a[i].cross_t = best;
     s->a[i].cross_code = code;
 }
-
-const eng_lanes ENG_LANES_TABLE = {test_list, sphere_times, gather_rows, cross_event};
 
 #endif

@@ -49,6 +49,8 @@ extern const eng_lanes rc_eng_lanes_scalar;
 #ifdef ENG_HAVE_AVX2
 extern const eng_lanes rc_eng_lanes_avx2;
 extern const eng_lanes rc_eng_lanes_avx512;
+/* the AVX2 crossing, the AVX-512 table's too (engine_lanes_avx512.c) */
+void rc_eng_cross_event_avx2(rc_sim *s, int32_t i, const int c[3]);
 #endif
 
 /* The table of the lanes an engine uses (s->simd: ENG_SIMD_*). */

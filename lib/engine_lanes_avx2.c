@@ -4,8 +4,12 @@
 #include "engine_lanes.h"
 #ifdef ENG_HAVE_AVX2
 #define ENG_W 4
-#define ENG_LANES_TABLE rc_eng_lanes_avx2
 #include "engine_kernels.h"
+
+void rc_eng_cross_event_avx2(rc_sim *s, int32_t i, const int c[3]) { cross_event(s, i, c); }
+
+const eng_lanes rc_eng_lanes_avx2 = {test_list, sphere_times, gather_rows,
+                                     rc_eng_cross_event_avx2};
 #else
 typedef int eng_lanes_avx2_absent; /* (ISO C wants a declaration in every file) */
 #endif

@@ -5,8 +5,13 @@
 #include "engine_lanes.h"
 #ifdef ENG_HAVE_AVX512
 #define ENG_W 8
-#define ENG_LANES_TABLE rc_eng_lanes_avx512
 #include "engine_kernels.h"
+
+/* A cell crossing has three dimensions: AVX2's four lanes hold them, and eight would only
+ * make its division and its reduction over the lanes slower (every AVX-512 CPU has
+ * AVX2). The neighbour tests fill eight lanes. */
+const eng_lanes rc_eng_lanes_avx512 = {test_list, sphere_times, gather_rows,
+                                       rc_eng_cross_event_avx2};
 #else
 typedef int eng_lanes_avx512_absent; /* (ISO C wants a declaration in every file) */
 #endif

@@ -181,7 +181,7 @@ typedef struct eng_cand {
     int32_t k;
 } eng_cand;
 
-/* Lanes of the neighbour test (engine_pairs.h) and of the cells' walk (engine_walk.h):
+/* Lanes of the neighbour tests, the cells' walk and the cell crossings (engine_lanes.h):
  * chosen once per engine from the CPU, narrower if rc_sim_def.simd asks (to compare the
  * paths: same bits). */
 enum { ENG_SIMD_NONE = 0, ENG_SIMD_AVX2 = 2, ENG_SIMD_AVX512 = 3 };
