@@ -282,13 +282,13 @@ static size_t gather_rows(eng_walk *w, int32_t *nb)
     for (int r = 0; r < nrows; r++) {
         const int32_t *sl = slot + w->row[r];
         const eng_slots v = eng_slots_load(sl);
-        const unsigned chains = eng_slots_chains(v) & valid;
+        const unsigned chains = eng_slots_chains(v, valid);
         if (__builtin_expect(chains != 0, 0)) {
             for (int l = 0; l < 8; l++)
                 if (chains >> l & 1u)
                     w->chain[w->nchain++] = ENG_CHAIN_HEAD(sl[l]);
         }
-        m += eng_slots_compress(nb + m, v, eng_slots_balls(v, skip) & valid);
+        m += eng_slots_compress(nb + m, v, eng_slots_balls(v, skip, valid));
     }
     return m;
 }

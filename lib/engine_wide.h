@@ -100,16 +100,16 @@ ENG_INLINE double eng_min_lane(eng_wd a, unsigned *lane)
 /* A row of eight cell slots (ball indices, -1 empty, ENG_CHAIN codes below -1). */
 typedef __m256i eng_slots;
 ENG_INLINE eng_slots eng_slots_load(const int32_t *sl) { return _mm256_loadu_si256((const __m256i *)sl); }
-/* bits of the slots holding a ball other than skip */
-ENG_INLINE unsigned eng_slots_balls(eng_slots v, int32_t skip)
+/* bits of the slots among `valid` holding a ball other than skip */
+ENG_INLINE unsigned eng_slots_balls(eng_slots v, int32_t skip, unsigned valid)
 {
-    return _mm256_cmpgt_epi32_mask(v, _mm256_set1_epi32(-1)) &
+    return _mm256_mask_cmpgt_epi32_mask((__mmask8)valid, v, _mm256_set1_epi32(-1)) &
            _mm256_cmpneq_epi32_mask(v, _mm256_set1_epi32(skip));
 }
-/* bits of the slots holding a chain */
-ENG_INLINE unsigned eng_slots_chains(eng_slots v)
+/* bits of the slots among `valid` holding a chain */
+ENG_INLINE unsigned eng_slots_chains(eng_slots v, unsigned valid)
 {
-    return _mm256_cmpgt_epi32_mask(_mm256_set1_epi32(-1), v);
+    return _mm256_mask_cmpgt_epi32_mask((__mmask8)valid, _mm256_set1_epi32(-1), v);
 }
 /* The slots in `keep` to out[0..], in order; their count. Stores eight. */
 ENG_INLINE size_t eng_slots_compress(int32_t *out, eng_slots v, unsigned keep)
@@ -176,16 +176,16 @@ ENG_INLINE double eng_min_lane(eng_wd a, unsigned *lane)
 
 typedef __m256i eng_slots;
 ENG_INLINE eng_slots eng_slots_load(const int32_t *sl) { return _mm256_loadu_si256((const __m256i *)sl); }
-ENG_INLINE unsigned eng_slots_balls(eng_slots v, int32_t skip)
+ENG_INLINE unsigned eng_slots_balls(eng_slots v, int32_t skip, unsigned valid)
 {
     const __m256i keep = _mm256_andnot_si256(_mm256_cmpeq_epi32(v, _mm256_set1_epi32(skip)),
                                              _mm256_cmpgt_epi32(v, _mm256_set1_epi32(-1)));
-    return (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(keep));
+    return (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(keep)) & valid;
 }
-ENG_INLINE unsigned eng_slots_chains(eng_slots v)
+ENG_INLINE unsigned eng_slots_chains(eng_slots v, unsigned valid)
 {
     return (unsigned)_mm256_movemask_ps(
-        _mm256_castsi256_ps(_mm256_cmpgt_epi32(_mm256_set1_epi32(-1), v)));
+               _mm256_castsi256_ps(_mm256_cmpgt_epi32(_mm256_set1_epi32(-1), v))) & valid;
 }
 
 /* pshufb controls that move the 32-bit lanes set in a 4-bit mask to the front, and the
@@ -275,19 +275,19 @@ ENG_INLINE eng_slots eng_slots_load(const int32_t *sl)
         r.v[l] = sl[l];
     return r;
 }
-ENG_INLINE unsigned eng_slots_balls(eng_slots v, int32_t skip)
+ENG_INLINE unsigned eng_slots_balls(eng_slots v, int32_t skip, unsigned valid)
 {
     unsigned m = 0;
     for (int l = 0; l < 8; l++)
         m |= (unsigned)((v.v[l] >= 0) & (v.v[l] != skip)) << l;
-    return m;
+    return m & valid;
 }
-ENG_INLINE unsigned eng_slots_chains(eng_slots v)
+ENG_INLINE unsigned eng_slots_chains(eng_slots v, unsigned valid)
 {
     unsigned m = 0;
     for (int l = 0; l < 8; l++)
         m |= (unsigned)(v.v[l] < -1) << l;
-    return m;
+    return m & valid;
 }
 /* (stores eight, each kept one over the last) */
 ENG_INLINE size_t eng_slots_compress(int32_t *out, eng_slots v, unsigned keep)
