@@ -38,8 +38,8 @@ typedef struct eng_walk {
 /* The block of a walk that wraps around a periodic axis (walk_init): rows and planes
  * taken through cell_step; a row that wraps in x is cut into its cells, each a row of
  * its own (only blocks at a periodic face come here: the others are walk_init's). */
-static inline void walk_init_wrapped(eng_walk *w, const rc_sim *s, int32_t skip, const int c[3],
-                              const int lo[3], const int hi[3])
+static inline void walk_init_wrapped(eng_walk *w, const rc_sim *s, int32_t skip,
+                                     const int c[3], const int lo[3], const int hi[3])
 {
     const eng_cells *g = &s->g;
     const int xwrap = g->wrap[0] && (c[0] + lo[0] < 0 || c[0] + hi[0] >= g->n[0]);

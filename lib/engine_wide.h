@@ -7,8 +7,9 @@
  * Every operation is one IEEE operation per lane, the same in every back end, and no back
  * end contracts a multiply and an add (-ffp-contract=off, and no FMA intrinsic here): a
  * kernel's lane l therefore computes exactly what the one-lane back end computes for
- * neighbour l, bit for bit. Only the choices a kernel makes from several lanes (the
- * earliest lane) are written per back end, and each picks the same lane. */
+ * neighbour l, bit for bit. Only what moves data across lanes -- the transpose of ball
+ * records into lanes, the compress of a row of slots, the earliest of the lanes -- is
+ * written per back end, and each gives the same values in the same order. */
 #ifndef RELCOL_ENGINE_WIDE_H
 #define RELCOL_ENGINE_WIDE_H
 
@@ -50,7 +51,10 @@ ENG_INLINE eng_wm eng_and(eng_wm a, eng_wm b) { return a & b; }
 ENG_INLINE eng_wm eng_or(eng_wm a, eng_wm b) { return a | b; }
 /* m ? a : b, lane by lane */
 ENG_INLINE eng_wd eng_select(eng_wm m, eng_wd a, eng_wd b) { return _mm512_mask_blend_pd(m, b, a); }
-ENG_INLINE eng_wm eng_select_m(eng_wm m, eng_wm a, eng_wm b) { return (eng_wm)((m & a) | (~m & b)); }
+ENG_INLINE eng_wm eng_select_m(eng_wm m, eng_wm a, eng_wm b)
+{
+    return (eng_wm)((m & a) | (~m & b));
+}
 /* bit l: lane l of the mask */
 ENG_INLINE unsigned eng_bits(eng_wm m) { return m; }
 
@@ -99,7 +103,10 @@ ENG_INLINE double eng_min_lane(eng_wd a, unsigned *lane)
 
 /* A row of eight cell slots (ball indices, -1 empty, ENG_CHAIN codes below -1). */
 typedef __m256i eng_slots;
-ENG_INLINE eng_slots eng_slots_load(const int32_t *sl) { return _mm256_loadu_si256((const __m256i *)sl); }
+ENG_INLINE eng_slots eng_slots_load(const int32_t *sl)
+{
+    return _mm256_loadu_si256((const __m256i *)sl);
+}
 /* bits of the slots among `valid` holding a ball other than skip */
 ENG_INLINE unsigned eng_slots_balls(eng_slots v, int32_t skip, unsigned valid)
 {
@@ -175,7 +182,10 @@ ENG_INLINE double eng_min_lane(eng_wd a, unsigned *lane)
 }
 
 typedef __m256i eng_slots;
-ENG_INLINE eng_slots eng_slots_load(const int32_t *sl) { return _mm256_loadu_si256((const __m256i *)sl); }
+ENG_INLINE eng_slots eng_slots_load(const int32_t *sl)
+{
+    return _mm256_loadu_si256((const __m256i *)sl);
+}
 ENG_INLINE unsigned eng_slots_balls(eng_slots v, int32_t skip, unsigned valid)
 {
     const __m256i keep = _mm256_andnot_si256(_mm256_cmpeq_epi32(v, _mm256_set1_epi32(skip)),
@@ -216,11 +226,11 @@ static const unsigned char eng_pop4[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2
 ENG_INLINE size_t eng_slots_compress(int32_t *out, eng_slots v, unsigned keep)
 {
     const __m128i lo = _mm256_castsi256_si128(v), hi = _mm256_extracti128_si256(v, 1);
-    _mm_storeu_si128((__m128i *)out,
-                     _mm_shuffle_epi8(lo, _mm_loadu_si128((const __m128i *)eng_compress4[keep & 15u])));
+    const __m128i clo = _mm_loadu_si128((const __m128i *)eng_compress4[keep & 15u]);
+    const __m128i chi = _mm_loadu_si128((const __m128i *)eng_compress4[keep >> 4]);
+    _mm_storeu_si128((__m128i *)out, _mm_shuffle_epi8(lo, clo));
     const size_t m = eng_pop4[keep & 15u];
-    _mm_storeu_si128((__m128i *)(out + m),
-                     _mm_shuffle_epi8(hi, _mm_loadu_si128((const __m128i *)eng_compress4[keep >> 4])));
+    _mm_storeu_si128((__m128i *)(out + m), _mm_shuffle_epi8(hi, chi));
     return m + eng_pop4[keep >> 4];
 }
 
