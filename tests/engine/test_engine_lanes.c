@@ -11,17 +11,13 @@
 
 #include "engine_util.h"
 
-/* Run with the lanes named (RELCOL_SIMD, read when an engine is created; NULL: the CPU's
+/* Run with the lanes named (rc_sim_def.simd: an upper limit on the lanes, AUTO the CPU's
  * widest) and return the final hash (0 if the gas could not be made). */
 static uint64_t run(rc_sim_def d, size_t n, double packing, uint64_t collisions,
-                    const char *mode)
+                    rc_sim_simd mode)
 {
-    if (mode)
-        ENSURE(setenv("RELCOL_SIMD", mode, 1) == 0);
-    else
-        unsetenv("RELCOL_SIMD");
+    d.simd = mode;
     rc_sim *s = util_gas(d, n, packing, isinf(d.c) ? 1.0 : 0.5 * d.c, 23);
-    unsetenv("RELCOL_SIMD");
     if (!s)
         return 0;
     util_run_collisions(s, collisions);
@@ -44,9 +40,9 @@ static void lanes(int dim, const int bnd[3], double c, const char *frame)
     const size_t n = dim == 3 ? 2000 : 1500;
     const uint64_t target = (frame ? 5 : 40) * n;
     const double packing = dim == 3 ? 0.4 : 0.6;
-    const uint64_t hs = run(d, n, packing, target, "scalar");
-    const uint64_t h2 = run(d, n, packing, target, "avx2");
-    const uint64_t hb = run(d, n, packing, target, NULL);
+    const uint64_t hs = run(d, n, packing, target, RC_SIM_SIMD_SCALAR);
+    const uint64_t h2 = run(d, n, packing, target, RC_SIM_SIMD_AVX2);
+    const uint64_t hb = run(d, n, packing, target, RC_SIM_SIMD_AUTO);
     ENSURE_MSG(hs != 0 && hs == h2 && h2 == hb,
                "%dD boundary %d%d%d c=%g %s: scalar %llx avx2 %llx best %llx", dim, bnd[0],
                bnd[1], bnd[2], c, frame ? frame : "sphere", (unsigned long long)hs,
