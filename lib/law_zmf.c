@@ -38,7 +38,7 @@ static int zmf_collide(const rc_collision_params *prm, rc_particle *a, rc_partic
 }
 
 /* The group solver: the same restitution condition on every contact, solved together
- * (lib/sim_contacts.c). */
+ * (lib/engine/contacts.c). */
 static int zmf_group(const rc_collision_params *prm, size_t nballs, rc_particle *balls,
                      size_t k, const rc_contact *contacts, double *jout)
 {

@@ -32,11 +32,21 @@ out="$here/build-fuzz/$target"
 mkdir -p "$out/corpus"
 cp -n "${seeds[@]}" "$out/corpus/" 2>/dev/null || true
 
-# the library, the apps' common code and the reader, compiled together with the harness
-clang -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
-    -std=c11 -D_GNU_SOURCE -ffp-contract=off \
-    -I"$here/lib/include" -I"$here/lib" -I"$here/apps/common" -I"$here/apps/sim" \
+# the library, the apps' common code and the reader, compiled together with the harness;
+# the engine's AVX2 and AVX-512 lanes each for their instruction set (as lib/meson.build)
+flags=(-g -O1 -fno-sanitize-recover=undefined -std=c11 -D_GNU_SOURCE -ffp-contract=off
+       -I"$here/lib/include" -I"$here/lib" -I"$here/apps/common" -I"$here/apps/sim")
+clang "${flags[@]}" -fsanitize=fuzzer-no-link,address,undefined -mavx2 \
+    -c "$here/lib/engine/lanes_avx2.c" -o "$out/lanes_avx2.o"
+clang "${flags[@]}" -fsanitize=fuzzer-no-link,address,undefined -mavx512f -mavx512vl \
+    -c "$here/lib/engine/lanes_avx512.c" -o "$out/lanes_avx512.o"
+engine=()
+for f in "$here"/lib/engine/*.c; do
+    case "$f" in *lanes_avx*) ;; *) engine+=("$f") ;; esac
+done
+clang "${flags[@]}" -fsanitize=fuzzer,address,undefined \
     "$here/tests/fuzz/fuzz_$target.c" "${extra[@]}" "$here"/apps/common/*.c "$here"/lib/*.c \
+    "${engine[@]}" "$out/lanes_avx2.o" "$out/lanes_avx512.o" \
     "${libs[@]}" -lgsl -lgslcblas -lsundials_cvode -lsundials_nvecserial \
     -lsundials_sunmatrixdense -lsundials_sunlinsoldense -lm -o "$out/fuzz_$target"
 

@@ -1,14 +1,15 @@
 #!/bin/sh
 # check_prefix.sh LIB — fails if librelcol exports a defined symbol without the rc_ prefix,
-# or one of the functions its files share among themselves (the engine's rc_eng_*, the
-# kinematics' rc_boost_g): the exports are the public headers' names (lib/public-symbols.sh).
+# (the engine's internal eng_* among them), or one of the functions its files share among
+# themselves (the kinematics' rc_boost_g): the exports are the public headers' names
+# (lib/public-symbols.sh).
 lib="$1"
 syms=$(nm -D --defined-only "$lib" | awk '$2 ~ /^[TDBR]$/ {print $3}')
 bad=$(echo "$syms" | grep -v '^rc_' | grep -v '^_')
 if [ -n "$bad" ]; then
   echo "symbols without the rc_ prefix:"; echo "$bad"; exit 1
 fi
-internal=$(echo "$syms" | grep -E '^rc_(eng_|boost_g$)')
+internal=$(echo "$syms" | grep -E '^rc_boost_g$')
 if [ -n "$internal" ]; then
   echo "internal functions exported:"; echo "$internal"; exit 1
 fi

@@ -3,7 +3,7 @@
  * arrays the size of the engine's per-ball state at N = 1e4, 1e5 and 1e6 (one 64-byte line
  * a load), one chain at a time (latency) and eight chains interleaved (how many misses the
  * core overlaps), on small pages and on transparent huge pages (the engine's, lib/
- * engine_mem.c). Usage: bench_memory [bytes ...] (default 2e6 2e7 2e8). */
+ * engine/mem.c). Usage: bench_memory [bytes ...] (default 2e6 2e7 2e8). */
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>

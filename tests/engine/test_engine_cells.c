@@ -1,5 +1,5 @@
-/* test_engine_cells.c — the engine's cells (lib/cells_grid.c, internal API) and the
- * neighbour walk over them (lib/engine_walk.h): against a plain record of which cell each
+/* test_engine_cells.c — the engine's cells (lib/engine/cells.c, internal API) and the
+ * neighbour walk over them (lib/engine/walk.h): against a plain record of which cell each
  * ball is in, after random inserts, removals and moves that fill cells far past their
  * slots (overflow chains of every length, a chain longer than a gather chunk):
  *  - each cell's iterator yields exactly its balls, each once;
@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../../lib/engine_walk.h"
+#include "../../lib/engine/walk.h"
 #include "rc_test.h"
 #include "relcol/relcol.h"
 
@@ -35,7 +35,7 @@ static void world_init(world *w, size_t n, const int per[3])
         w->per[d] = per[d];
         w->s.periodic |= per[d];
     }
-    ENSURE(rc_eng_cells_init(&w->s.g, 3, rc_v3(NX, NY, NZ), 1.0, n, w->per) == RC_OK);
+    ENSURE(eng_cells_init(&w->s.g, 3, rc_v3(NX, NY, NZ), 1.0, n, w->per) == RC_OK);
     ENSURE(w->s.g.n[0] == NX && w->s.g.n[1] == NY && w->s.g.n[2] == NZ);
     w->s.b = calloc(n, sizeof *w->s.b);
     w->a = calloc(n, sizeof *w->a);
@@ -46,7 +46,7 @@ static void world_init(world *w, size_t n, const int per[3])
 
 static void world_free(world *w)
 {
-    rc_eng_cells_free(&w->s.g);
+    eng_cells_free(&w->s.g);
     free(w->s.b);
     free(w->a);
     free(w->where);
@@ -169,14 +169,14 @@ static void test_random_churn(const int per[3])
         const int32_t cell = rc_test_uniform(&R) < 0.5 ? (int32_t)(rc_test_uniform(&R) * 4)
                                                        : (int32_t)(rc_test_uniform(&R) * ncells);
         if (w.where[i] >= 0) {
-            rc_eng_cells_remove(&w.s.g, w.a, i);
+            eng_cells_remove(&w.s.g, w.a, i);
             w.where[i] = -1;
             if (rc_test_uniform(&R) < 0.7) { /* a move */
-                rc_eng_cells_insert(&w.s.g, w.a, i, cell);
+                eng_cells_insert(&w.s.g, w.a, i, cell);
                 w.where[i] = cell;
             }
         } else {
-            rc_eng_cells_insert(&w.s.g, w.a, i, cell);
+            eng_cells_insert(&w.s.g, w.a, i, cell);
             w.where[i] = cell;
         }
         ENSURE(w.where[i] < 0 || w.a[i].cell == w.where[i]);
@@ -197,20 +197,20 @@ static void test_long_chain(const int per[3])
     rc_test_rng R = {7};
     const int32_t cell = (int32_t)(1 + NX * (1 + NY * 1));
     for (int32_t i = 0; i < 300; i++) {
-        rc_eng_cells_insert(&w.s.g, w.a, i, cell);
+        eng_cells_insert(&w.s.g, w.a, i, cell);
         w.where[i] = cell;
     }
     ENSURE(cells_agree(&w));
     check_walks(&w, &R, 100);
     const int32_t order[] = {150, 299, 0, 1, 298, 2, 100};
     for (size_t j = 0; j < sizeof order / sizeof *order; j++) {
-        rc_eng_cells_remove(&w.s.g, w.a, order[j]);
+        eng_cells_remove(&w.s.g, w.a, order[j]);
         w.where[order[j]] = -1;
         ENSURE_MSG(cells_agree(&w), "after removing %d", order[j]);
     }
     for (int32_t i = 0; i < 300; i++)
         if (w.where[i] >= 0) {
-            rc_eng_cells_remove(&w.s.g, w.a, i);
+            eng_cells_remove(&w.s.g, w.a, i);
             w.where[i] = -1;
         }
     ENSURE(cells_agree(&w));
@@ -225,14 +225,14 @@ static void test_long_chain(const int per[3])
 static void zorder_case(int nx, int ny, int nz, int morton)
 {
     eng_cells g;
-    ENSURE(rc_eng_cells_init(&g, nz > 1 ? 3 : 2, rc_v3(nx, ny, nz), 1.0, (size_t)(nx * ny * nz), (const int[3]){0, 0, 0}) ==
+    ENSURE(eng_cells_init(&g, nz > 1 ? 3 : 2, rc_v3(nx, ny, nz), 1.0, (size_t)(nx * ny * nz), (const int[3]){0, 0, 0}) ==
            RC_OK);
     ENSURE(g.n[0] == nx && g.n[1] == ny && g.n[2] == nz);
     int32_t *rank = malloc(g.ncells * sizeof *rank);
     unsigned char *hit = calloc(g.ncells, 1);
     for (size_t c = 0; c < g.ncells; c++)
         rank[c] = -1;
-    rc_eng_cells_zorder(&g, rank);
+    eng_cells_zorder(&g, rank);
     int perm = 1, code_ok = 1;
     for (size_t c = 0; c < g.ncells; c++) {
         perm &= rank[c] >= 0 && (size_t)rank[c] < g.ncells && !hit[rank[c]];
@@ -249,7 +249,7 @@ static void zorder_case(int nx, int ny, int nz, int morton)
     ENSURE_MSG(code_ok, "%d x %d x %d: not the Morton order", nx, ny, nz);
     free(rank);
     free(hit);
-    rc_eng_cells_free(&g);
+    eng_cells_free(&g);
 }
 
 static void test_zorder(void)

@@ -1,7 +1,7 @@
 /* test_engine_defer.c — the table frame's deferred root finds (eng_defer in
- * lib/engine_private.h): a prediction stores the candidate with the least lower bound of
+ * lib/engine/private.h): a prediction stores the candidate with the least lower bound of
  * contact, keyed by that bound, with a bound lb2 of every other event; when the bound
- * comes up the frame is asked (rc_eng_settle), and its answer is kept only if it comes
+ * comes up the frame is asked (eng_settle), and its answer is kept only if it comes
  * before lb2, else the ball is predicted again asking the frame at once.
  *  - Settling, ball by ball, gives the very event (time bits, partner) that asking the
  *    frame at once gives, on states of dense gases at rms speed 0.9c (white box, on the
@@ -19,7 +19,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "../../lib/engine_private.h"
+#include "../../lib/engine/private.h"
 #include "engine_util.h"
 
 static rc_sim_def table_def(int dim, double c, double eps)
@@ -87,8 +87,8 @@ static size_t settle_vs_at_once(int dim, size_t n, double packing, double c, dou
         for (size_t k = 0; k < n; k++) {
             const int32_t i = (int32_t)A->slot[k];
             ENSURE(B->slot[k] == (uint32_t)i); /* (the same numbering: same input) */
-            rc_eng_predict(A, i, 1);
-            rc_eng_predict(B, i, 1);
+            eng_predict(A, i, 1);
+            eng_predict(B, i, 1);
             const int32_t first = A->a[i].ev_partner;
             int was_deferred = 0;
             /* settle as the event loop does: at the bound, while the entry is deferred */
@@ -98,7 +98,7 @@ static size_t settle_vs_at_once(int dim, size_t n, double packing, double c, dou
                 was_deferred = 1;
                 const double now = A->now;
                 A->now = A->a[i].ev_t;
-                rc_eng_settle(A, i);
+                eng_settle(A, i);
                 A->now = now;
             }
             deferred += (size_t)was_deferred;

@@ -1,4 +1,4 @@
-/* test_engine_lanes.c — the engine's lanes (lib/engine_lanes.h: AVX-512, AVX2, plain C,
+/* test_engine_lanes.c — the engine's lanes (lib/engine/lanes.h: AVX-512, AVX2, plain C,
  * one kernel each) give the same bits in periodic and mixed boxes, where the neighbour
  * test takes the nearest image in lanes and the walk wraps its rows (test_engine_determinism
  * checks walled boxes): a gas run in each of the three, its final hash compared. 2-D and

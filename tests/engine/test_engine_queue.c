@@ -1,4 +1,4 @@
-/* test_engine_queue.c — the engine's event queue (lib/queue_cal.c, internal API) pops in
+/* test_engine_queue.c — the engine's event queue (lib/engine/queue.c, internal API) pops in
  * exact (time, ball) order: against a brute-force minimum over all keys, under the engine's
  * usage (the popped ball and a few others get new keys >= the time popped), with ties,
  * balls without events (inf), keys far beyond the calendar's span, negative times and a
@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../../lib/engine_private.h"
+#include "../../lib/engine/private.h"
 #include "rc_test.h"
 #include "relcol/relcol.h"
 
@@ -77,16 +77,16 @@ static void order_case(size_t n, double t0, double scale, uint64_t seed, int pop
 {
     rc_test_rng R = {seed};
     eng_queue q;
-    ENSURE(rc_eng_queue_init(&q, n) == RC_OK);
+    ENSURE(eng_queue_init(&q, n) == RC_OK);
     double *key = malloc(n * sizeof *key);
     for (size_t i = 0; i < n; i++)
         key[i] = draw(&R, t0, scale);
-    rc_eng_queue_build(&q, key, t0);
+    eng_queue_build(&q, key, t0);
     long bad = 0, faults = structure_faults(&q);
     for (int p = 0; p < pops; p++) {
         double t, tb;
         uint32_t b, bb;
-        const int got = rc_eng_queue_top(&q, &t, &b);
+        const int got = eng_queue_top(&q, &t, &b);
         brute_min(key, n, &tb, &bb);
         if (!got) {
             bad++;
@@ -99,22 +99,22 @@ static void order_case(size_t n, double t0, double scale, uint64_t seed, int pop
         bad += !(t == tb && b == bb);
         /* the engine's pattern: the popped ball always gets a new key, sometimes others */
         key[b] = draw(&R, t, scale);
-        rc_eng_queue_update(&q, b, key[b]);
+        eng_queue_update(&q, b, key[b]);
         const int others = (int)(rc_test_uniform(&R) * 3.0);
         for (int o = 0; o < others; o++) {
             const uint32_t k = (uint32_t)(rc_test_uniform(&R) * (double)n);
             key[k] = draw(&R, t, scale);
-            rc_eng_queue_update(&q, k, key[k]);
+            eng_queue_update(&q, k, key[k]);
         }
         if (p % 5000 == 4999) /* the engine refiles everything when it renumbers */
-            rc_eng_queue_build(&q, key, t);
+            eng_queue_build(&q, key, t);
         if (p % 997 == 0)
             faults += structure_faults(&q);
     }
     ENSURE_MSG(bad == 0, "n=%zu t0=%g scale=%g: %ld pops out of order", n, t0, scale, bad);
     ENSURE_MSG(faults == 0, "n=%zu t0=%g scale=%g: %ld faults in the queue's structure", n,
                t0, scale, faults);
-    rc_eng_queue_free(&q);
+    eng_queue_free(&q);
     free(key);
 }
 
@@ -135,24 +135,24 @@ static void test_width_drift(void)
     const size_t n = 500;
     rc_test_rng R = {9};
     eng_queue q;
-    ENSURE(rc_eng_queue_init(&q, n) == RC_OK);
+    ENSURE(eng_queue_init(&q, n) == RC_OK);
     double key[500];
     for (size_t i = 0; i < n; i++)
         key[i] = rc_test_range(&R, 0.0, 1.0);
-    rc_eng_queue_build(&q, key, 0.0);
+    eng_queue_build(&q, key, 0.0);
     long bad = 0;
     for (int p = 0; p < 40000; p++) {
         double t, tb;
         uint32_t b, bb;
-        rc_eng_queue_top(&q, &t, &b);
+        eng_queue_top(&q, &t, &b);
         brute_min(key, n, &tb, &bb);
         bad += !(t == tb && b == bb);
         const double scale = p < 20000 ? 1e4 : 1e-4; /* slower, then much faster */
         key[b] = t + scale * rc_test_uniform(&R);
-        rc_eng_queue_update(&q, b, key[b]);
+        eng_queue_update(&q, b, key[b]);
     }
     ENSURE_MSG(bad == 0, "%ld pops out of order", bad);
-    rc_eng_queue_free(&q);
+    eng_queue_free(&q);
 }
 
 /* Balls at rest away from each other and the walls: no event will ever come; advancing

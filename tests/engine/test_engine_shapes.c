@@ -1,5 +1,5 @@
 /* test_engine_shapes.c — the supports of the table frame's contracted shapes that the
- * engine's separating-axis bounds and wall tests use (lib/engine_shapes.h: the shape from
+ * engine's separating-axis bounds and wall tests use (lib/engine/shapes.h: the shape from
  * a ball's stored state; toi_private.h's supports, also along an unnormalised axis):
  * against a long double reference, for speeds up to gamma = 1e12, and r/gamma exactly
  * along the motion.
@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../../lib/engine_shapes.h"
+#include "../../lib/engine/shapes.h"
 #include "rc_test.h"
 #include "relcol/relcol.h"
 
@@ -34,7 +34,7 @@ static long double support_ref(double r, double m, rc_vec3 p, rc_vec3 u)
            sqrtl((m2 * (ux * ux + uy * uy + uz * uz) + cx * cx + cy * cy + cz * cz) / M2);
 }
 
-/* An engine of n balls at c = 1, as far as engine_shapes.h reads one (its records). */
+/* An engine of n balls at c = 1, as far as engine/shapes.h reads one (its records). */
 static rc_sim records_engine(eng_ball *b, eng_aux *a, size_t n)
 {
     rc_sim s;
@@ -92,7 +92,7 @@ static void test_supports_near_c(void)
            worst_naive);
 }
 
-/* pw_certify (engine_shapes.h), the Perram-Wertheim certificates the engine trusts in the
+/* pw_certify (engine/shapes.h), the Perram-Wertheim certificates the engine trusts in the
  * frame's place -- for parting pairs (parting_pw) and for approaching pairs asked at once
  * (overlap_now: an overlap answered without the frame) -- against the table frame itself
  * on random pairs whose bounding spheres overlap (gamma up to ~9, c = 1, 2-D and 3-D):

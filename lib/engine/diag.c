@@ -1,9 +1,9 @@
-/* engine_diag.c — reading the engine's state: balls at the engine's time, conservation
+/* engine/diag.c — reading the engine's state: balls at the engine's time, conservation
  * diagnostics (wall impulses and dissipated energy included), a state hash, memory. */
 #include <math.h>
 #include <string.h>
 
-#include "engine_private.h"
+#include "private.h"
 #include "relcol/status.h"
 
 size_t rc_sim_count(const rc_sim *s) { return s ? s->n : 0; }
@@ -167,7 +167,7 @@ size_t rc_sim_bytes(const rc_sim *s)
                                sizeof *s->id + sizeof *s->slot +
                                sizeof *s->cnt + (s->ev_n ? sizeof *s->ev_n : 0) +
                                (s->img ? 3 * sizeof *s->img : 0)) +
-           rc_eng_queue_bytes(&s->q) +
+           eng_queue_bytes(&s->q) +
            s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot +
            s->grp_ball_cap * (sizeof *s->grp_ball + sizeof *s->grp_part) +
            s->grp_con_cap * sizeof *s->grp_con;

@@ -1,4 +1,4 @@
-/* engine_checkpoint.c — the engine's whole state as bytes, and back: what makes a run
+/* engine/checkpoint.c — the engine's whole state as bytes, and back: what makes a run
  * stopped and continued (Ctrl-C included) bit-identical to one that never stopped.
  *
  * Why the whole state and not the balls: a ball's scheduled event was predicted when it
@@ -15,7 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "engine_private.h"
+#include "private.h"
 #include "relcol/status.h"
 
 #define CK_MAGIC "relcolck"
@@ -317,7 +317,7 @@ static int read_all(rc_sim *s, ck_cursor *c)
             return RC_ECORRUPT;
         rmax = b.r > rmax ? b.r : rmax;
     }
-    int st = rc_eng_alloc_state(s, n, rmax);
+    int st = eng_alloc_state(s, n, rmax);
     if (st != RC_OK) /* (radii too large for a periodic box's four cells: not a state the
                         engine could have written) */
         return st == RC_EINVAL ? RC_ECORRUPT : st;
@@ -364,7 +364,7 @@ static int read_all(rc_sim *s, ck_cursor *c)
     memcpy(s->events, events, sizeof events);
     for (size_t k = 0; k < n; k++)
         s->q.e[k].key = key_of(&s->a[k]);
-    rc_eng_queue_rebuild(&s->q, s->now);
+    eng_queue_rebuild(&s->q, s->now);
     return RC_OK;
 }
 
@@ -382,7 +382,7 @@ int rc_sim_checkpoint_read(rc_sim *s, const void *buf, size_t bytes)
     const double was = s->now;
     const int st = read_all(s, &c);
     if (st != RC_OK) {
-        rc_eng_release_state(s); /* no half-loaded state is ever left behind */
+        eng_release_state(s); /* no half-loaded state is ever left behind */
         s->now = was;
     }
     return st;

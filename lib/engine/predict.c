@@ -1,18 +1,18 @@
-/* engine_predict.c — predicting a ball's earliest event from its stored state: walls,
- * the neighbours of its 3^d cells (gathered by engine_walk.h, sphere times in the
- * engine's lanes, engine_lanes.h, then the contact frame's narrow phase for contracted
- * shapes, pruned by engine_shapes.h), its next cell crossing; the cheaper update when
+/* engine/predict.c — predicting a ball's earliest event from its stored state: walls,
+ * the neighbours of its 3^d cells (gathered by engine/walk.h, sphere times in the
+ * engine's lanes, engine/lanes.h, then the contact frame's narrow phase for contracted
+ * shapes, pruned by engine/shapes.h), its next cell crossing; the cheaper update when
  * it crosses into a cell; the table frame's deferred events, settled when they come up;
  * and the prediction that also looks for a contact simultaneous with the one just
- * resolved. Resolving events: engine_core.c. */
+ * resolved. Resolving events: engine/core.c. */
 #include <math.h>
 #include <stdlib.h>
 
-#include "engine_lanes.h"
-#include "engine_pairs.h"
-#include "engine_shapes.h"
-#include "engine_walk.h"
-#include "engine_private.h"
+#include "lanes.h"
+#include "pairs.h"
+#include "shapes.h"
+#include "walk.h"
+#include "private.h"
 #include "relcol/status.h"
 
 /* ---- event prediction ------------------------------------------------------------ */
@@ -166,7 +166,7 @@ static void wall_event(const rc_sim *s, int32_t i, unsigned dims, double *best, 
     *bp = bw;
 }
 
-/* The neighbour scans and the cell crossing run in the engine's lanes (engine_lanes.h:
+/* The neighbour scans and the cell crossing run in the engine's lanes (engine/lanes.h:
  * AVX-512, AVX2 or plain C by s->simd, the same bits every way). */
 static inline int test_list(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *best,
                             int32_t *bp, const rc_vec3 *vold, int32_t partner, double T,
@@ -260,7 +260,7 @@ static int overlap_now(const rc_sim *s, const rc_toi_shape *shi, const eng_ball 
  * answer is then mostly the earliest, and later candidates are pruned by their bounds.
  * With df (the table frame, eng_defer) the frame is not asked at all about a candidate
  * whose bound lies ahead: the least such bound is stored as the event, with the next
- * least as the bound of the others (rc_eng_settle asks the frame when it comes up).
+ * least as the bound of the others (eng_settle asks the frame when it comes up).
  * Candidates bounded by now (touching or parting bounding spheres) are still asked at
  * once, and an incoming deferred event (a crossing's scan) is merged with the new ones. */
 static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *best,
@@ -377,7 +377,7 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
             }
             continue;
         }
-        if (df && lr > s->now) { /* the least bound: defer asking the frame (rc_eng_settle) */
+        if (df && lr > s->now) { /* the least bound: defer asking the frame (eng_settle) */
             df->on = 1;
             df->lb2 = *best;
             *best = lr;
@@ -481,10 +481,10 @@ static void predict(rc_sim *s, int32_t i, int update_heap, int defer)
     store_event(s, i, best, bp, bn, &df);
     cross_event(s, i, c);
     if (update_heap)
-        rc_eng_queue_update(&s->q, (uint32_t)i, key_of(&s->a[i]));
+        eng_queue_update(&s->q, (uint32_t)i, key_of(&s->a[i]));
 }
 
-void rc_eng_predict(rc_sim *s, int32_t i, int update_heap)
+void eng_predict(rc_sim *s, int32_t i, int update_heap)
 {
     predict(s, i, update_heap, 1);
 }
@@ -493,7 +493,7 @@ void rc_eng_predict(rc_sim *s, int32_t i, int update_heap)
  * the frame about its pair. Contact before the bound of every other candidate: that is
  * the event, stored with its normal. Else (later, or no contact) a full prediction that
  * asks the frame at once. The queue is updated. */
-void rc_eng_settle(rc_sim *s, int32_t i)
+void eng_settle(rc_sim *s, int32_t i)
 {
     eng_aux *a = &s->a[i];
     const double lb2 = s->ev_n[i].x;
@@ -502,17 +502,17 @@ void rc_eng_settle(rc_sim *s, int32_t i)
     if (t < lb2) {
         a->ev_t = t;
         s->ev_n[i] = n;
-        rc_eng_queue_update(&s->q, (uint32_t)i, key_of(a));
+        eng_queue_update(&s->q, (uint32_t)i, key_of(a));
     } else {
         predict(s, i, 1, 0);
     }
 }
 
-/* rc_eng_predict for a ball of a contracted frame that has just collided, looking for
+/* eng_predict for a ball of a contracted frame that has just collided, looking for
  * another simultaneous contact as it scans (walls too, with its old shape): 1 on one
  * (nothing stored: the caller resolves the whole group), else the events are stored
  * (the heap is not updated) and 0. */
-int rc_eng_predict_checked_narrow(rc_sim *s, int32_t i, const eng_check *chk)
+int eng_predict_checked_narrow(rc_sim *s, int32_t i, const eng_check *chk)
 {
     const eng_ball *bi = &s->b[i];
     int c[3];
@@ -551,7 +551,7 @@ int rc_eng_predict_checked_narrow(rc_sim *s, int32_t i, const eng_check *chk)
  * contact simultaneous with the resolved one (gap <= sim_tol, approaching) -- the same
  * test as grow_group, at no extra distance computation. Returns 1 on such a contact (the
  * caller then undoes and resolves the whole group), else stores the event and returns 0. */
-int rc_eng_predict_checked(rc_sim *s, int32_t i, rc_vec3 vold, int32_t partner, double T)
+int eng_predict_checked(rc_sim *s, int32_t i, rc_vec3 vold, int32_t partner, double T)
 {
     const double stol = s->def.sim_tol;
     const eng_ball *bi = &s->b[i];
@@ -614,7 +614,7 @@ static void periodic_cross(rc_sim *s, int32_t i, int d, int dir, int wrap)
 }
 
 /* Ball i enters the next cell: the balls that became neighbours are one slab of cells. */
-void rc_eng_cross(rc_sim *s, int32_t i)
+void eng_cross(rc_sim *s, int32_t i)
 {
     eng_aux *a = &s->a[i];
     int d = a->cross_code / 2, dir = (a->cross_code & 1) ? 1 : -1;
@@ -626,11 +626,11 @@ void rc_eng_cross(rc_sim *s, int32_t i)
         c[d] = c[d] < 0 ? s->g.n[d] - 1 : 0;
     if (s->periodic)
         periodic_cross(s, i, d, dir, wrap);
-    rc_eng_cells_remove(&s->g, s->a, i);
-    rc_eng_cells_insert(&s->g, s->a, i, (int32_t)(c[0] + s->g.n[0] * (c[1] + s->g.n[1] * c[2])));
+    eng_cells_remove(&s->g, s->a, i);
+    eng_cells_insert(&s->g, s->a, i, (int32_t)(c[0] + s->g.n[0] * (c[1] + s->g.n[1] * c[2])));
     s->events[RC_SIM_EV_CELL]++;
     if (a->ev_partner >= 0 && s->cnt[a->ev_partner] != a->ev_pcount) {
-        rc_eng_predict(s, i, 1); /* the kept event went stale: full scan */
+        eng_predict(s, i, 1); /* the kept event went stale: full scan */
         return;
     }
     double best = a->ev_t;
@@ -648,14 +648,14 @@ void rc_eng_cross(rc_sim *s, int32_t i)
     if (bp != a->ev_partner || best != a->ev_t || df.on)
         store_event(s, i, best, bp, bn, &df);
     cross_event(s, i, c);
-    rc_eng_queue_update(&s->q, (uint32_t)i, key_of(a));
+    eng_queue_update(&s->q, (uint32_t)i, key_of(a));
 }
 
-/* For engine_core.c (the functions above stay static so that their callers here inline
+/* For engine/core.c (the functions above stay static so that their callers here inline
  * them: an exported function of a shared library is called through the PLT). */
-double rc_eng_wall_support(const rc_sim *s, int32_t i, int d) { return wall_support(s, i, d); }
+double eng_wall_support(const rc_sim *s, int32_t i, int d) { return wall_support(s, i, d); }
 
-int rc_eng_narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
+int eng_narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
                            double d2, const eng_check *chk, rc_vec3 *normal)
 {
     return narrow_conflict(s, bi, bk, dx, d2, chk, normal);

@@ -1,6 +1,6 @@
-/* engine_pairs.h — the separation of two balls and the contact time of their bounding
+/* engine/pairs.h — the separation of two balls and the contact time of their bounding
  * spheres, for one pair: the narrow phase's broad test and its simultaneity checks. The
- * scan over a ball's neighbours does the same operations in lanes (engine_kernels.h:
+ * scan over a ball's neighbours does the same operations in lanes (engine/kernels.h:
  * pair_lanes), so that a pair's time is the same bits whichever path asks. */
 #ifndef RELCOL_ENGINE_PAIRS_H
 #define RELCOL_ENGINE_PAIRS_H
@@ -8,7 +8,7 @@
 #include <math.h>
 #include <stdint.h>
 
-#include "engine_private.h"
+#include "private.h"
 
 /* Separation bk - bi at the later of the two balls' clocks, *tref: the earlier ball is
  * advanced, so the result depends only on the two stored states. The nearest image in a

@@ -1,19 +1,19 @@
-/* cells_grid.c — the neighbour search: a uniform grid of cells at least one largest
+/* engine/cells.c — the neighbour search: a uniform grid of cells at least one largest
  * bounding diameter wide, so balls that can touch are always in adjacent cells. Each
  * cell keeps its balls in ENG_CELL_CAP slots of its own, the last of which becomes an
- * overflow chain when more arrive (engine_private.h); moving a ball is O(1) unless its
+ * overflow chain when more arrive (engine/private.h); moving a ball is O(1) unless its
  * cell overflows. */
 #include <math.h>
 #include <stdlib.h>
 
-#include "engine_private.h"
+#include "private.h"
 #include "relcol/status.h"
 
 /* At most this many cells per ball (then cells grow): bounds memory for sparse gases
  * (12 bytes a cell). */
 #define CELLS_PER_BALL_MAX 3.0
 
-int rc_eng_cells_init(eng_cells *g, int dim, rc_vec3 box, double min_edge, size_t nballs,
+int eng_cells_init(eng_cells *g, int dim, rc_vec3 box, double min_edge, size_t nballs,
                       const int periodic[3])
 {
     double L[3] = {box.x, box.y, dim == 3 ? box.z : 1.0};
@@ -64,23 +64,23 @@ int rc_eng_cells_init(eng_cells *g, int dim, rc_vec3 box, double min_edge, size_
     const int32_t sy = g->n[0] * ENG_CELL_CAP, sz = g->n[2] == 1 ? 0 : sy * g->n[1];
     for (int r = 0; r < 9; r++)
         g->block_rows[r] = (r / 3) * sz + (r % 3) * sy;
-    g->slot = rc_eng_alloc((g->ncells * ENG_CELL_CAP + ENG_SLOT_PAD) * sizeof *g->slot);
-    g->next = rc_eng_alloc(nballs * sizeof *g->next);
+    g->slot = eng_alloc((g->ncells * ENG_CELL_CAP + ENG_SLOT_PAD) * sizeof *g->slot);
+    g->next = eng_alloc(nballs * sizeof *g->next);
     if (!g->slot || !g->next) {
-        rc_eng_cells_free(g);
+        eng_cells_free(g);
         return RC_ENOMEM;
     }
-    rc_eng_cells_clear(g);
+    eng_cells_clear(g);
     return RC_OK;
 }
 
-void rc_eng_cells_clear(eng_cells *g)
+void eng_cells_clear(eng_cells *g)
 {
     for (size_t c = 0; c < g->ncells * ENG_CELL_CAP + ENG_SLOT_PAD; c++)
         g->slot[c] = -1;
 }
 
-void rc_eng_cells_free(eng_cells *g)
+void eng_cells_free(eng_cells *g)
 {
     free(g->slot);
     free(g->next);
@@ -88,7 +88,7 @@ void rc_eng_cells_free(eng_cells *g)
     g->next = NULL;
 }
 
-int32_t rc_eng_cells_index_of(const eng_cells *g, int dim, rc_vec3 x)
+int32_t eng_cells_index_of(const eng_cells *g, int dim, rc_vec3 x)
 {
     int c[3] = {0, 0, 0};
     for (int d = 0; d < dim; d++) {
@@ -101,7 +101,7 @@ int32_t rc_eng_cells_index_of(const eng_cells *g, int dim, rc_vec3 x)
 
 /* Into the first empty slot; with none, the last slot's ball and i form a chain, or i
  * joins the chain there at its head. */
-void rc_eng_cells_insert(eng_cells *g, eng_aux *a, int32_t i, int32_t cell)
+void eng_cells_insert(eng_cells *g, eng_aux *a, int32_t i, int32_t cell)
 {
     int32_t *sl = g->slot + (size_t)cell * ENG_CELL_CAP;
     a[i].cell = cell;
@@ -122,7 +122,7 @@ void rc_eng_cells_insert(eng_cells *g, eng_aux *a, int32_t i, int32_t cell)
 
 /* A slot simply empties (a chain keeps at least two balls); a chain left with one ball
  * is a plain slot again. */
-void rc_eng_cells_remove(eng_cells *g, const eng_aux *a, int32_t i)
+void eng_cells_remove(eng_cells *g, const eng_aux *a, int32_t i)
 {
     int32_t *sl = g->slot + (size_t)a[i].cell * ENG_CELL_CAP;
     for (int j = 0; j < ENG_CELL_CAP; j++)
@@ -178,7 +178,7 @@ static void zvisit(zwalk *z, int lev, int c[3], int span[3])
  * of their cells lie near their neighbours in y and z too, not only in x (row-major order
  * puts a cell's y and z neighbours a row or a plane of cells away): +2.5-6.5 % at
  * N = 1e6, measured in one process. */
-void rc_eng_cells_zorder(const eng_cells *g, int32_t *rank)
+void eng_cells_zorder(const eng_cells *g, int32_t *rank)
 {
     zwalk z = {g, rank, 0, {0}};
     int bits[3] = {0, 0, 0}, span[3], levels = 0;
@@ -197,7 +197,7 @@ void rc_eng_cells_zorder(const eng_cells *g, int32_t *rank)
 
 /* pos[i]: ball i's place when the n balls are numbered in the Z order of their cells
  * (cell[i]), ties in index order (a stable counting sort). RC_ENOMEM leaves pos unset. */
-int rc_eng_cells_number(const eng_cells *g, const int32_t *cell, size_t n, uint32_t *pos)
+int eng_cells_number(const eng_cells *g, const int32_t *cell, size_t n, uint32_t *pos)
 {
     size_t *start = calloc(g->ncells + 1, sizeof *start);
     int32_t *rank = malloc(g->ncells * sizeof *rank);
@@ -206,7 +206,7 @@ int rc_eng_cells_number(const eng_cells *g, const int32_t *cell, size_t n, uint3
         free(rank);
         return RC_ENOMEM;
     }
-    rc_eng_cells_zorder(g, rank);
+    eng_cells_zorder(g, rank);
     for (size_t i = 0; i < n; i++)
         start[rank[cell[i]] + 1]++;
     for (size_t c = 0; c < g->ncells; c++)

@@ -1,11 +1,11 @@
-/* engine_setup.c — making an engine: the definition's defaults and checks, create/free,
+/* engine/setup.c — making an engine: the definition's defaults and checks, create/free,
  * and placing balls (validated, stored in cell order, first events predicted). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "engine_lanes.h"
-#include "engine_private.h"
+#include "lanes.h"
+#include "private.h"
 #include "relcol/status.h"
 
 /* Cell edge margin over the largest bounding diameter (relative): keeps balls that can
@@ -181,12 +181,12 @@ static void release_balls(rc_sim *s)
     s->a = NULL;
     s->id = NULL;
     s->slot = NULL;
-    rc_eng_queue_free(&s->q);
-    rc_eng_cells_free(&s->g);
+    eng_queue_free(&s->q);
+    eng_cells_free(&s->g);
     s->n = 0;
 }
 
-void rc_eng_release_state(rc_sim *s) { release_balls(s); }
+void eng_release_state(rc_sim *s) { release_balls(s); }
 
 void rc_sim_free(rc_sim **sp)
 {
@@ -303,7 +303,7 @@ int rc_sim_sync(rc_sim *s)
 /* Allocate the state of n balls (the largest rest radius rmax sizes the cells), replacing
  * any balls held, with the bookkeeping started afresh: shared by rc_sim_set_balls and
  * rc_sim_checkpoint_read. On failure nothing is held. */
-int rc_eng_alloc_state(rc_sim *s, size_t n, double rmax)
+int eng_alloc_state(rc_sim *s, size_t n, double rmax)
 {
     const int dim = s->def.dim;
     release_balls(s);
@@ -320,11 +320,11 @@ int rc_eng_alloc_state(rc_sim *s, size_t n, double rmax)
     s->max_group = 0;
     memset(s->events, 0, sizeof s->events);
     int st = RC_ENOMEM;
-    /* each 64-byte record on one cache line, not straddling two (rc_eng_alloc aligns to 64):
+    /* each 64-byte record on one cache line, not straddling two (eng_alloc aligns to 64):
      * every neighbour test loads one whole record */
-    s->b = rc_eng_alloc(n * sizeof *s->b);
-    s->a = rc_eng_alloc(n * sizeof *s->a);
-    s->clk = rc_eng_alloc(n * sizeof *s->clk);
+    s->b = eng_alloc(n * sizeof *s->b);
+    s->a = eng_alloc(n * sizeof *s->a);
+    s->clk = eng_alloc(n * sizeof *s->clk);
     if (!s->b || !s->a || !s->clk)
         goto fail;
     double edge = 2.0 * rmax * (1.0 + CELL_MARGIN + 2.0 * s->def.sim_tol);
@@ -335,29 +335,29 @@ int rc_eng_alloc_state(rc_sim *s, size_t n, double rmax)
     int periodic[3];
     for (int d = 0; d < 3; d++)
         periodic[d] = !(s->walled >> d & 1u) && d < dim;
-    if ((st = rc_eng_cells_init(&s->g, dim, s->def.box, edge, n, periodic)) != RC_OK)
+    if ((st = eng_cells_init(&s->g, dim, s->def.box, edge, n, periodic)) != RC_OK)
         goto fail;
     for (int d = 0; d < dim; d++)
         if (periodic[d] && s->g.n[d] < 4) { /* (sim.h: RC_SIM_PERIODIC) */
             st = RC_EINVAL;
             goto fail;
         }
-    if ((st = rc_eng_queue_init(&s->q, n)) != RC_OK)
+    if ((st = eng_queue_init(&s->q, n)) != RC_OK)
         goto fail;
     s->n = n;
     /* Store balls in cell order (stable): neighbours then share cache lines and the
      * prefetcher, which matters more than anything else once N no longer fits in cache.
      * id[] / slot[] translate to and from the caller's indices. */
-    s->cnt = rc_eng_alloc(n * sizeof *s->cnt);
+    s->cnt = eng_alloc(n * sizeof *s->cnt);
     if (s->cnt)
         memset(s->cnt, 0, n * sizeof *s->cnt);
-    s->id = rc_eng_alloc(n * sizeof *s->id);
-    s->slot = rc_eng_alloc(n * sizeof *s->slot);
-    if (s->narrow && !(s->ev_n = rc_eng_alloc(n * sizeof *s->ev_n))) {
+    s->id = eng_alloc(n * sizeof *s->id);
+    s->slot = eng_alloc(n * sizeof *s->slot);
+    if (s->narrow && !(s->ev_n = eng_alloc(n * sizeof *s->ev_n))) {
         st = RC_ENOMEM;
         goto fail;
     }
-    if (s->periodic && !(s->img = rc_eng_alloc(3 * n * sizeof *s->img))) {
+    if (s->periodic && !(s->img = eng_alloc(3 * n * sizeof *s->img))) {
         st = RC_ENOMEM;
         goto fail;
     }
@@ -417,7 +417,7 @@ static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, i
         if (b->r > rmax)
             rmax = b->r;
     }
-    int st = rc_eng_alloc_state(s, n, rmax);
+    int st = eng_alloc_state(s, n, rmax);
     if (st != RC_OK)
         return st;
     int32_t *cellof = malloc((n ? n : 1) * sizeof *cellof);
@@ -426,9 +426,9 @@ static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, i
         goto fail;
     }
     for (size_t i = 0; i < n; i++)
-        cellof[i] = rc_eng_cells_index_of(&s->g, dim, in[i].x);
-    /* (cells in Z order: see cells_grid.c) */
-    if ((st = rc_eng_cells_number(&s->g, cellof, n, s->slot)) != RC_OK) {
+        cellof[i] = eng_cells_index_of(&s->g, dim, in[i].x);
+    /* (cells in Z order: see engine/cells.c) */
+    if ((st = eng_cells_number(&s->g, cellof, n, s->slot)) != RC_OK) {
         free(cellof);
         goto fail;
     }
@@ -450,7 +450,7 @@ static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, i
         e->r = b->r;
         for (int d = 0; s->img && d < 3; d++) /* (read on periodic axes only) */
             s->img[3 * k + (size_t)d] = s->walled >> d & 1u || d >= dim ? 0 : b->image[d];
-        rc_eng_cells_insert(&s->g, s->a, (int32_t)k, cellof[s->id[k]]);
+        eng_cells_insert(&s->g, s->a, (int32_t)k, cellof[s->id[k]]);
     }
     free(cellof);
     /* overlap check through the cells: each pair once */
@@ -487,10 +487,10 @@ static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, i
         goto fail;
     }
     for (size_t i = 0; i < n; i++)
-        rc_eng_predict(s, (int32_t)i, 0);
+        eng_predict(s, (int32_t)i, 0);
     for (size_t i = 0; i < n; i++)
         keys[i] = key_of(&s->a[i]);
-    rc_eng_queue_build(&s->q, keys, s->now);
+    eng_queue_build(&s->q, keys, s->now);
     free(keys);
     return RC_OK;
 fail:

@@ -1,18 +1,18 @@
-/* engine_shapes.h — the table frame's contracted shapes, cheaply: their supports (in a
+/* engine/shapes.h — the table frame's contracted shapes, cheaply: their supports (in a
  * form that keeps its precision as v -> c), the centre line's separating-axis bound of a
  * contact time, and the certificates that settle a pair whose bounding spheres overlap while its
  * centres part without asking the frame (apart for good, or overlapping). Every decision
  * keeps a margin far above the frame's touch_tol, so it agrees with the frame; when in
- * doubt the frame is asked. Included by engine_predict.c. */
+ * doubt the frame is asked. Included by engine/predict.c. */
 #ifndef RELCOL_ENGINE_SHAPES_H
 #define RELCOL_ENGINE_SHAPES_H
 
 #include <math.h>
 
-#include "engine_pairs.h"
-#include "engine_private.h"
-#include "shape_math.h"
-#include "toi_private.h"
+#include "pairs.h"
+#include "private.h"
+#include "../shape_math.h"
+#include "../toi_private.h"
 
 /* A ball's table-frame shape (relcol/toi.h's, r, g = 1/gamma, beta = v/c), from its
  * stored state: its supports are toi_private.h's, r sqrt(g^2 + |beta x n|^2), which keep

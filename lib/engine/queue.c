@@ -1,4 +1,4 @@
-/* queue_cal.c — the event queue: one entry per ball (its earliest event), popped in exact
+/* engine/queue.c — the event queue: one entry per ball (its earliest event), popped in exact
  * (time, ball) order. A calendar queue (G. Paul, J. Comput. Phys. 221 (2007) 615): time is
  * cut into buckets of width w; the bucket being drained is a small binary heap, later
  * buckets within the calendar's span are unsorted doubly linked lists (O(1) to move a ball
@@ -10,7 +10,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "engine_private.h"
+#include "private.h"
 #include "relcol/status.h"
 
 /* Entries per bucket aimed at when the width is chosen: a few, so that the heap being
@@ -178,18 +178,18 @@ static void redistribute_all(eng_queue *q)
             place(q, (uint32_t)i);
 }
 
-int rc_eng_queue_init(eng_queue *q, size_t n)
+int eng_queue_init(eng_queue *q, size_t n)
 {
     q->n = n;
     q->nb = 1;
     while (2 * (size_t)q->nb <= n / 2 + 1) /* nb ~ n/4 .. n/2: a few bytes per ball */
         q->nb *= 2;
     const size_t m = n ? n : 1;
-    q->e = rc_eng_alloc(m * sizeof *q->e);
-    q->heap = rc_eng_alloc(m * sizeof *q->heap);
+    q->e = eng_alloc(m * sizeof *q->e);
+    q->heap = eng_alloc(m * sizeof *q->heap);
     q->head = malloc(((size_t)q->nb + 2) * sizeof *q->head);
     if (!q->e || !q->heap || !q->head) {
-        rc_eng_queue_free(q);
+        eng_queue_free(q);
         return RC_ENOMEM;
     }
     q->hn = 0;
@@ -198,7 +198,7 @@ int rc_eng_queue_init(eng_queue *q, size_t n)
     return RC_OK;
 }
 
-void rc_eng_queue_free(eng_queue *q)
+void eng_queue_free(eng_queue *q)
 {
     free(q->e);
     free(q->heap);
@@ -240,19 +240,19 @@ static void rebuild(eng_queue *q, double now)
         place(q, (uint32_t)i);
 }
 
-void rc_eng_queue_build(eng_queue *q, const double *keys, double now)
+void eng_queue_build(eng_queue *q, const double *keys, double now)
 {
     for (size_t i = 0; i < q->n; i++)
         q->e[i].key = keys[i];
     rebuild(q, now);
 }
 
-void rc_eng_queue_rebuild(eng_queue *q, double now)
+void eng_queue_rebuild(eng_queue *q, double now)
 {
     rebuild(q, now);
 }
 
-void rc_eng_queue_update(eng_queue *q, uint32_t ball, double t)
+void eng_queue_update(eng_queue *q, uint32_t ball, double t)
 {
     eng_qent *e = &q->e[ball];
     if (e->next == IN_HEAP) { /* in the heap: most updates are of the ball just popped */
@@ -273,7 +273,7 @@ void rc_eng_queue_update(eng_queue *q, uint32_t ball, double t)
     place(q, ball);
 }
 
-int rc_eng_queue_top(eng_queue *q, double *t, uint32_t *ball)
+int eng_queue_top(eng_queue *q, double *t, uint32_t *ball)
 {
     /* one step along the next bucket's list per call: its entries are in cache by the
      * time it is drained (a hint: the list may have changed since, any ball will do) */
@@ -333,7 +333,7 @@ int rc_eng_queue_top(eng_queue *q, double *t, uint32_t *ball)
     return 1;
 }
 
-size_t rc_eng_queue_bytes(const eng_queue *q)
+size_t eng_queue_bytes(const eng_queue *q)
 {
     return q->n * (sizeof *q->e + sizeof *q->heap) + ((size_t)q->nb + 2) * sizeof *q->head;
 }

@@ -1,13 +1,13 @@
-/* engine_core.c — the event loop: pop events in (time, ball) order, drop stale ones by
+/* engine/core.c — the event loop: pop events in (time, ball) order, drop stale ones by
  * counters, and resolve each collision together with every contact simultaneous to it
- * (papers/simultaneous-contacts.md). Predicting events: engine_predict.c; creating and
- * filling an engine: engine_setup.c. */
+ * (papers/simultaneous-contacts.md). Predicting events: engine/predict.c; creating and
+ * filling an engine: engine/setup.c. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "engine_pairs.h"
-#include "engine_private.h"
+#include "pairs.h"
+#include "private.h"
 #include "relcol/status.h"
 
 /* ---- resolving events ------------------------------------------------------------ */
@@ -98,7 +98,7 @@ static int grow_group(rc_sim *s, size_t *nm, size_t *nc, double T)
             double v = rc_v3_get(bi->v, d), x = rc_v3_get(bi->x, d);
             if (v == 0.0)
                 continue;
-            double h = rc_eng_wall_support(s, i, d);
+            double h = eng_wall_support(s, i, d);
             double gap = v > 0.0 ? s->L[d] - h - x : x - h;
             if (!(gap <= stol * bi->r))
                 continue;
@@ -146,7 +146,7 @@ static int grow_group(rc_sim *s, size_t *nm, size_t *nc, double T)
                             /* contracted shapes: the same contact test as the
                              * single-contact path's, on the states as they are */
                             const eng_check now = {{s->a[i].m, s->a[i].p}, bi->v, ENG_NONE};
-                            if (!rc_eng_narrow_conflict(s, bi, bk, dx, d2, &now, &n))
+                            if (!eng_narrow_conflict(s, bi, bk, dx, d2, &now, &n))
                                 continue;
                         }
                         int mk = member_of(s, nm, k, T);
@@ -187,7 +187,7 @@ static double wall_gap_rel(const rc_sim *s, int mi, int w)
 {
     const int32_t i = s->grp_ball[mi];
     const int d = w / 2;
-    const double x = rc_v3_get(s->b[i].x, d), h = rc_eng_wall_support(s, i, d);
+    const double x = rc_v3_get(s->b[i].x, d), h = eng_wall_support(s, i, d);
     return ((w & 1) ? s->L[d] - h - x : x - h) / s->b[i].r;
 }
 
@@ -276,9 +276,9 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T)
         int32_t partner = nm > 1 ? s->grp_ball[1 - j] : bp;
         if (s->narrow) {
             const eng_check chk = {P[j], vold[j], partner};
-            conflict = rc_eng_predict_checked_narrow(s, b, &chk);
+            conflict = eng_predict_checked_narrow(s, b, &chk);
         } else {
-            conflict = rc_eng_predict_checked(s, b, vold[j], partner, T);
+            conflict = eng_predict_checked(s, b, vold[j], partner, T);
         }
     }
     if (conflict) {
@@ -502,9 +502,9 @@ static void finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int k
     account_walls(s, nc, p0, p1, J);
     for (size_t j = 0; j < nm; j++) {
         if (single)
-            rc_eng_queue_update(&s->q, (uint32_t)s->grp_ball[j], key_of(&s->a[s->grp_ball[j]]));
+            eng_queue_update(&s->q, (uint32_t)s->grp_ball[j], key_of(&s->a[s->grp_ball[j]]));
         else
-            rc_eng_predict(s, s->grp_ball[j], 1);
+            eng_predict(s, s->grp_ball[j], 1);
     }
 }
 
@@ -529,7 +529,7 @@ static void reorder(rc_sim *s)
     if (cell)
         for (size_t i = 0; i < n; i++)
             cell[i] = s->a[i].cell;
-    if (!np || !cell || !done || rc_eng_cells_number(&s->g, cell, n, np) != RC_OK) {
+    if (!np || !cell || !done || eng_cells_number(&s->g, cell, n, np) != RC_OK) {
         free(np); /* no memory: simply keep the old order */
         free(cell);
         free(done);
@@ -587,13 +587,13 @@ static void reorder(rc_sim *s)
     }
     free(done);
     free(np);
-    rc_eng_cells_clear(&s->g);
+    eng_cells_clear(&s->g);
     for (size_t k = 0; k < n; k++)
-        rc_eng_cells_insert(&s->g, s->a, (int32_t)k, s->a[k].cell);
+        eng_cells_insert(&s->g, s->a, (int32_t)k, s->a[k].cell);
     /* the queue under the new numbers (and a bucket width fitted to the gas as it is now) */
     for (size_t k = 0; k < n; k++)
         s->q.e[k].key = key_of(&s->a[k]);
-    rc_eng_queue_rebuild(&s->q, s->now);
+    eng_queue_rebuild(&s->q, s->now);
 }
 
 int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
@@ -612,7 +612,7 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
         }
         double top_t;
         uint32_t top_ball;
-        rc_eng_queue_top(&s->q, &top_t, &top_ball);
+        eng_queue_top(&s->q, &top_t, &top_ball);
         /* nothing will ever happen again (every ball at rest or alone): done */
         if (!(top_t <= t_end) || top_t == INFINITY)
             break;
@@ -626,14 +626,14 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
              * last event stays as it was) */
             const double was = s->now;
             s->now = top_t;
-            rc_eng_settle(s, i);
+            eng_settle(s, i);
             s->now = was;
             continue;
         }
         /* the next event's records, while this one is resolved: at N = 1e5 they come
          * from L3 or memory (x1.09 in 3-D and 2-D at 1e5, measured interleaved in one
          * process; no change at 1e4) */
-        const int32_t nx = rc_eng_queue_next(&s->q);
+        const int32_t nx = eng_queue_next(&s->q);
         if (nx >= 0) {
             __builtin_prefetch(&s->b[nx]);
             __builtin_prefetch(&s->a[nx]);
@@ -648,10 +648,10 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
         }
         if (a->cross_t <= a->ev_t) {
             s->since_reorder++;
-            rc_eng_cross(s, i);
+            eng_cross(s, i);
         } else if (a->ev_partner >= 0 && s->cnt[a->ev_partner] != a->ev_pcount) {
             s->events[RC_SIM_EV_STALE]++;
-            rc_eng_predict(s, i, 1);
+            eng_predict(s, i, 1);
         } else {
             s->since_reorder++;
             int st = collide(s, i, a->ev_partner, top_t);

@@ -1,18 +1,18 @@
-/* engine_kernels.h — the engine's lane kernels, written once over the lanes of
- * engine_wide.h: the sphere contact test of a ball against its gathered neighbours (the
+/* engine/kernels.h — the engine's lane kernels, written once over the lanes of
+ * engine/wide.h: the sphere contact test of a ball against its gathered neighbours (the
  * prediction's largest cost), the gathering of a walk's rows of slots, and the next cell
- * crossing. Included by engine_lanes_<back end>.c after ENG_W, which then fills its
- * table of engine_lanes.h; the same operations in every back end, so the same bits. */
+ * crossing. Included by lanes_<back end>.c after ENG_W, which then fills its
+ * table of engine/lanes.h; the same operations in every back end, so the same bits. */
 #ifndef RELCOL_ENGINE_KERNELS_H
 #define RELCOL_ENGINE_KERNELS_H
 
 #include <math.h>
 #include <stdint.h>
 
-#include "engine_lanes.h"
-#include "engine_private.h"
-#include "engine_walk.h"
-#include "engine_wide.h"
+#include "lanes.h"
+#include "private.h"
+#include "walk.h"
+#include "wide.h"
 
 /* ---- the sphere contact test ---------------------------------------------------------- */
 
@@ -20,7 +20,7 @@
  * doubles: x, v, t, r), absolute and >= now, into out[l] -- INFINITY on a miss or when it
  * cannot beat `best`; bit l of *nears: the centres within lim = (r_i + r_k)(1 + stol) at
  * the later clock (the simultaneity check's proximity). Returned: bit l set if out[l] is
- * finite. It is engine_pairs.h's pair_sep and sphere_time_dx, the same operations in the
+ * finite. It is engine/pairs.h's pair_sep and sphere_time_dx, the same operations in the
  * same order: the separation at the later of the two clocks (the earlier ball advanced),
  * its nearest image, then the root dd / (sqrt(disc) - b), free of cancellation, behind
  * one combined test (not approaching; touching but not really approaching; roots not
@@ -297,10 +297,10 @@ static size_t gather_rows(eng_walk *w, int32_t *nb)
 
 /* Ball i's next cell crossing: the earliest time its centre reaches a face of its cell
  * that is not the box's wall (ties: the lower dimension), code 2 d + (direction > 0); a
- * periodic face is a crossing (rc_eng_cross wraps the ball). One lane a dimension: the
+ * periodic face is a crossing (eng_cross wraps the ball). One lane a dimension: the
  * direction of motion is a coin toss per dimension, which a branch mispredicts, and a
  * lane takes both ways at once. (Inlined into the table's function of the back ends
- * that use it: see engine_lanes_avx512.c.) */
+ * that use it: see engine/lanes_avx512.c.) */
 ENG_INLINE void cross_event(rc_sim *s, int32_t i, const int c[3])
 {
     const eng_ball *bi = &s->b[i];

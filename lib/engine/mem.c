@@ -1,4 +1,4 @@
-/* engine_mem.c — the engine's per-ball arrays, large ones on transparent huge pages: a
+/* engine/mem.c — the engine's per-ball arrays, large ones on transparent huge pages: a
  * neighbour scan reads records all over them, and once they outgrow what the TLB maps in
  * 4-KiB pages (~8 MiB) every row of a scan can cost a page walk. Memory is the same; only
  * the page size changes, so the results keep their bits. */
@@ -8,7 +8,7 @@
 #include <sys/mman.h>
 #endif
 
-#include "engine_private.h"
+#include "private.h"
 
 /* The huge page size of x86-64 and arm64 Linux (4-KiB base pages). Arrays smaller than
  * one gain nothing and keep their own alignment; where the kernel uses another size or
@@ -17,7 +17,7 @@
 /* Cache-line alignment for the rest: a 64-byte record never straddles two lines. */
 #define LINE 64
 
-void *rc_eng_alloc(size_t bytes)
+void *eng_alloc(size_t bytes)
 {
     if (bytes == 0)
         bytes = 1;

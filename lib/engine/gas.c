@@ -1,4 +1,4 @@
-/* sim_gas.c — a gas to start from: equal balls on random sites of a square / cubic
+/* engine/gas.c — a gas to start from: equal balls on random sites of a square / cubic
  * lattice sized for an exact packing fraction, isotropic random momenta with a given rms
  * speed and zero total momentum. The lattice start lets any fluid packing (up to 0.52 in
  * 3-D, 0.78 in 2-D) be made at once; melting it is a run of the engine. */

@@ -1,17 +1,17 @@
-/* engine_walk.h — gathering the balls of a block of cells (the 3^d cells around a ball,
+/* engine/walk.h — gathering the balls of a block of cells (the 3^d cells around a ball,
  * or the slab a crossing brings into reach) for a neighbour scan: row by row of the block,
- * each row's slots read together (engine_private.h: ENG_CELL_CAP slots a cell, rows of
+ * each row's slots read together (engine/private.h: ENG_CELL_CAP slots a cell, rows of
  * cells adjacent in memory), empty slots and the scanning ball dropped, by the engine's
- * lanes (engine_kernels.h: a compress of a row's eight slots, or slot by slot -- the same
+ * lanes (engine/kernels.h: a compress of a row's eight slots, or slot by slot -- the same
  * indices in the same order either way). Overflow chains, rare, are walked after the
- * rows. Included by engine_predict.c and the lanes' kernels. */
+ * rows. Included by engine/predict.c and the lanes' kernels. */
 #ifndef RELCOL_ENGINE_WALK_H
 #define RELCOL_ENGINE_WALK_H
 
 #include <stdint.h>
 
-#include "engine_lanes.h"
-#include "engine_private.h"
+#include "lanes.h"
+#include "private.h"
 
 /* Neighbours gathered per chunk (a stack buffer; a block's rows always fit in one chunk,
  * only long overflow chains need more). Buffers hold NB_CAP: room for the compress to

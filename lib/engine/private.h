@@ -1,6 +1,7 @@
-/* engine_private.h — the engine's internal state, shared by engine_*.c, queue_cal.c and
- * cells_grid.c. Everything that defines a run lives in plain arrays so that a state can
- * later be written out and continued bit-identically. */
+/* engine/private.h — the engine's internal state, shared by the files of lib/engine/.
+ * Everything that defines a run lives in plain arrays so that a state can be written out
+ * and continued bit-identically (checkpoint.c). Functions shared between these files carry
+ * the engine's one internal prefix, eng_, and are not exported from the library. */
 #ifndef RELCOL_ENGINE_PRIVATE_H
 #define RELCOL_ENGINE_PRIVATE_H
 
@@ -44,11 +45,11 @@ typedef struct eng_clock {
     double tau_last; /* proper time of the last collision (-inf: none yet) */
 } eng_clock;
 
-/* The event queue (queue_cal.c): one entry per ball, popped in (time, ball) order.
- * (Functions shared between the engine files carry rc_eng_: exported, not public.) */
+/* The event queue (engine/queue.c): one entry per ball, popped in (time, ball) order.
+ * (Functions shared between the engine files carry eng_: exported, not public.) */
 typedef struct eng_qent {
     double key;   /* the ball's entry's time */
-    int32_t next; /* links of the bucket list it is in, or its heap position (queue_cal.c) */
+    int32_t next; /* links of the bucket list it is in, or its heap position (engine/queue.c) */
     int32_t prev;
 } eng_qent;
 
@@ -73,23 +74,23 @@ typedef struct eng_queue {
     int32_t ahead;        /* the entry of the next bucket's list to fetch ahead (-1: none) */
 } eng_queue;
 
-/* Allocate for n balls; then rc_eng_queue_build with every ball's key. */
-int rc_eng_queue_init(eng_queue *q, size_t n);
-void rc_eng_queue_free(eng_queue *q);
+/* Allocate for n balls; then eng_queue_build with every ball's key. */
+int eng_queue_init(eng_queue *q, size_t n);
+void eng_queue_free(eng_queue *q);
 /* Refile every ball under keys[] (all >= now), choosing the bucket width afresh. */
-void rc_eng_queue_build(eng_queue *q, const double *keys, double now);
+void eng_queue_build(eng_queue *q, const double *keys, double now);
 /* The same with the keys already in q->e[i].key. */
-void rc_eng_queue_rebuild(eng_queue *q, double now);
+void eng_queue_rebuild(eng_queue *q, double now);
 /* Change ball's key (>= the time last popped). */
-void rc_eng_queue_update(eng_queue *q, uint32_t ball, double t);
+void eng_queue_update(eng_queue *q, uint32_t ball, double t);
 /* The earliest entry (time, ball); 0 if the queue is empty. */
-int rc_eng_queue_top(eng_queue *q, double *t, uint32_t *ball);
-size_t rc_eng_queue_bytes(const eng_queue *q);
+int eng_queue_top(eng_queue *q, double *t, uint32_t *ball);
+size_t eng_queue_bytes(const eng_queue *q);
 /* The ball likely to come after the top (the earlier child of the heap's root), -1 if
  * the heap holds no other: a hint for prefetching, not a promise of order. (Looking into
  * the next calendar lists when the heap has no other raised the hint's hits from 53 % to
  * 79 % of the events at N = 1e5, with no measurable gain: left out.) */
-static inline int32_t rc_eng_queue_next(const eng_queue *q)
+static inline int32_t eng_queue_next(const eng_queue *q)
 {
     if (q->hn < 2)
         return -1;
@@ -104,7 +105,7 @@ static inline int32_t rc_eng_queue_next(const eng_queue *q)
  * ENG_CHAIN(k) -- the cell has more balls than slots, and the last slot's share of them
  * is the chain k, next[k], ... (at least two). The slots of a row of cells lie together,
  * so a neighbour scan reads each row of its block in one or two loads, with no list to
- * walk unless a cell overflows (cells_grid.c). */
+ * walk unless a cell overflows (engine/cells.c). */
 #define ENG_CELL_CAP 2
 #define ENG_SLOT_PAD 8 /* (slots past the last cell, always empty: rows are read 8 at a time) */
 #define ENG_CHAIN(k) (-2 - (k))
@@ -126,19 +127,19 @@ typedef struct eng_cells {
 
 /* periodic[d] != 0: axis d wraps, and gets at least four cells if min_edge allows (the
  * caller checks n[d] >= 4: eng_image). */
-int rc_eng_cells_init(eng_cells *g, int dim, rc_vec3 box, double min_edge, size_t nballs,
+int eng_cells_init(eng_cells *g, int dim, rc_vec3 box, double min_edge, size_t nballs,
                       const int periodic[3]);
-void rc_eng_cells_free(eng_cells *g);
+void eng_cells_free(eng_cells *g);
 /* Every cell empty again. */
-void rc_eng_cells_clear(eng_cells *g);
+void eng_cells_clear(eng_cells *g);
 /* rank[cell] (ncells entries): the cell's place in Z order, the order balls are
  * numbered in. */
-void rc_eng_cells_zorder(const eng_cells *g, int32_t *rank);
+void eng_cells_zorder(const eng_cells *g, int32_t *rank);
 /* pos[i]: ball i's number in that order, from its cell cell[i] (stable). */
-int rc_eng_cells_number(const eng_cells *g, const int32_t *cell, size_t n, uint32_t *pos);
-int32_t rc_eng_cells_index_of(const eng_cells *g, int dim, rc_vec3 x);
-void rc_eng_cells_insert(eng_cells *g, eng_aux *a, int32_t i, int32_t cell);
-void rc_eng_cells_remove(eng_cells *g, const eng_aux *a, int32_t i);
+int eng_cells_number(const eng_cells *g, const int32_t *cell, size_t n, uint32_t *pos);
+int32_t eng_cells_index_of(const eng_cells *g, int dim, rc_vec3 x);
+void eng_cells_insert(eng_cells *g, eng_aux *a, int32_t i, int32_t cell);
+void eng_cells_remove(eng_cells *g, const eng_aux *a, int32_t i);
 
 /* The balls of one cell, in slot order, a chain where it stands:
  *   for (int32_t k = cell_first(g, cell, &it); k >= 0; k = cell_next(g, &it)) */
@@ -181,7 +182,7 @@ typedef struct eng_cand {
     int32_t k;
 } eng_cand;
 
-/* Lanes of the neighbour tests, the cells' walk and the cell crossings (engine_lanes.h):
+/* Lanes of the neighbour tests, the cells' walk and the cell crossings (engine/lanes.h):
  * chosen once per engine from the CPU, narrower if rc_sim_def.simd asks (to compare the
  * paths: same bits). */
 enum { ENG_SIMD_NONE = 0, ENG_SIMD_AVX2 = 2, ENG_SIMD_AVX512 = 3 };
@@ -255,15 +256,15 @@ struct rc_sim {
     size_t grp_ball_cap, grp_con_cap;
 };
 
-/* A per-ball array of `bytes` (engine_mem.c): cache-line aligned, on transparent huge
+/* A per-ball array of `bytes` (engine/mem.c): cache-line aligned, on transparent huge
  * pages where it spans some; NULL if out of memory. Released with free(). */
-void *rc_eng_alloc(size_t bytes);
+void *eng_alloc(size_t bytes);
 
-/* Allocate the state of n balls (engine_setup.c), replacing any held: per-ball arrays,
+/* Allocate the state of n balls (engine/setup.c), replacing any held: per-ball arrays,
  * cells sized for the largest rest radius rmax, queue; bookkeeping cleared. */
-int rc_eng_alloc_state(rc_sim *s, size_t n, double rmax);
+int eng_alloc_state(rc_sim *s, size_t n, double rmax);
 /* Release the balls' state (the engine then holds none). */
-void rc_eng_release_state(rc_sim *s);
+void eng_release_state(rc_sim *s);
 
 /* Velocity p / M and inverse Lorentz factor of a state. */
 static inline double eng_mass_rel(double m, rc_vec3 p, double inv_c2)
@@ -283,7 +284,7 @@ static inline double eng_rint(double y)
 /* The nearest image of a separation dx of two balls: dx - L round(dx / L) on the
  * periodic axes; on a walled one inv_L = 0 makes it dx - L * 0 = dx exactly (signed zeros
  * included), so no axis needs a branch. The copy two neighbours can meet: in their
- * current cells (rc_eng_cross keeps stored positions there) they are less than two cells
+ * current cells (eng_cross keeps stored positions there) they are less than two cells
  * apart along an axis, which is at most L / 2 with four cells or more; with three, two
  * balls 1.6 cells apart in adjacent cells would be nearer to the other copy (1.4 cells)
  * and could still meet before leaving their cells. */
@@ -340,7 +341,7 @@ static inline double key_of(const eng_aux *a)
 /* The table frame defers its root finds: a prediction stores, as its ball event,
  * the candidate with the least lower bound of contact (bounding spheres, centre line)
  * keyed by that bound, and a bound lb2 of every other event of the ball (ball or wall).
- * The frame is asked only when the bound comes up in the queue (rc_eng_settle), and not
+ * The frame is asked only when the bound comes up in the queue (eng_settle), and not
  * at all for the predictions that a collision elsewhere makes stale first, or that a
  * later prediction of the ball replaces: 43 % fewer calls (bench_engine rel:10000).
  * Such an event's ev_n entry is (lb2, 0, +inf): a contact normal is never infinite. */
@@ -353,9 +354,9 @@ static inline rc_vec3 ev_deferred_mark(double lb2) { return rc_v3(lb2, 0.0, INFI
 static inline int ev_is_deferred(rc_vec3 n) { return n.z == INFINITY; }
 
 /* Predict ball i's earliest events from scratch (and update its heap entry if asked). */
-void rc_eng_predict(rc_sim *s, int32_t i, int update_heap);
+void eng_predict(rc_sim *s, int32_t i, int update_heap);
 /* Ball i's deferred event has come up: ask the frame, store the event (queue updated). */
-void rc_eng_settle(rc_sim *s, int32_t i);
+void eng_settle(rc_sim *s, int32_t i);
 
 /* What a contracted-frame prediction for a ball that has just collided (at T, its clock)
  * also looks for: another contact simultaneous with the one resolved -- as grow_group
@@ -370,14 +371,14 @@ typedef struct eng_check {
 /* Prediction for ball i just resolved at T (uncontracted frames / contracted ones), that
  * also looks for another contact simultaneous with the resolved one: 1 on one (nothing
  * stored), else the events are stored (the queue is not updated) and 0. */
-int rc_eng_predict_checked(rc_sim *s, int32_t i, rc_vec3 vold, int32_t partner, double T);
-int rc_eng_predict_checked_narrow(rc_sim *s, int32_t i, const eng_check *chk);
+int eng_predict_checked(rc_sim *s, int32_t i, rc_vec3 vold, int32_t partner, double T);
+int eng_predict_checked_narrow(rc_sim *s, int32_t i, const eng_check *chk);
 /* Ball i crosses into its next cell (events updated, queue too). */
-void rc_eng_cross(rc_sim *s, int32_t i);
-/* The contracted contact test of a simultaneity check (engine_predict.c). */
-int rc_eng_narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
+void eng_cross(rc_sim *s, int32_t i);
+/* The contracted contact test of a simultaneity check (engine/predict.c). */
+int eng_narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
                            double d2, const eng_check *chk, rc_vec3 *normal);
 /* Support distance of ball i's shape along the wall normal e_d. */
-double rc_eng_wall_support(const rc_sim *s, int32_t i, int d);
+double eng_wall_support(const rc_sim *s, int32_t i, int d);
 
 #endif

@@ -1,8 +1,8 @@
-/* engine_wide.h — the lane layer of the engine's kernels: a wide double (eng_wd) and its
+/* engine/wide.h — the lane layer of the engine's kernels: a wide double (eng_wd) and its
  * mask (eng_wm) of ENG_W lanes, and a row of eight cell slots (eng_slots) for the walk.
  * The translation unit that includes it sets ENG_W: 8 (AVX-512F/VL), 4 (AVX2) or 1
  * (plain C), and is compiled for that instruction set (lib/meson.build); the kernels
- * (engine_kernels.h) are written once against these operations, after Box2D v3's b2FloatW.
+ * (engine/kernels.h) are written once against these operations, after Box2D v3's b2FloatW.
  *
  * Every operation is one IEEE operation per lane, the same in every back end, and no back
  * end contracts a multiply and an add (-ffp-contract=off, and no FMA intrinsic here): a
@@ -17,7 +17,7 @@
 #include <stdint.h>
 
 #ifndef ENG_W
-#error "define ENG_W (8, 4 or 1) before including engine_wide.h"
+#error "define ENG_W (8, 4 or 1) before including engine/wide.h"
 #endif
 
 #if ENG_W == 8 || ENG_W == 4

@@ -1,4 +1,4 @@
-/* sim_contacts.c — simultaneous contacts resolved together, independent of their order
+/* engine/contacts.c — simultaneous contacts resolved together, independent of their order
  * (papers/simultaneous-contacts.md): one four-impulse J_j q_j per contact, the J_j found
  * by Newton's method on the k restitution conditions of the zmf law (a k x k linear
  * system each step, solved by LU); classically the conditions are linear and one step is exact. */

@@ -1,7 +1,7 @@
-/* engine_lanes.h — the engine's lane kernels as a table of functions, one table per back
+/* engine/lanes.h — the engine's lane kernels as a table of functions, one table per back
  * end (AVX-512, AVX2, plain C), picked per engine by s->simd. Each table is the same
- * kernels (engine_kernels.h) compiled over that back end's lanes (engine_wide.h) in its
- * own file, engine_lanes_<back end>.c, built for its instruction set; the back ends give
+ * kernels (engine/kernels.h) compiled over that back end's lanes (engine/wide.h) in its
+ * own file, lanes_<back end>.c, built for its instruction set; the back ends give
  * the same bits (test_engine_determinism, test_engine_cells). */
 #ifndef RELCOL_ENGINE_LANES_H
 #define RELCOL_ENGINE_LANES_H
@@ -9,7 +9,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "engine_private.h"
+#include "private.h"
 
 /* x86-64 builds have the AVX2 and AVX-512 back ends, used where the CPU has the
  * instructions (rc_sim_create asks it once); other machines, and builds with
@@ -38,19 +38,19 @@ typedef struct eng_lanes {
      * (r_i + r_k)(1 + sim_tol). */
     void (*sphere_times)(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double best,
                          double *t, uint64_t hit[2], uint64_t near[2]);
-    /* The walk's rows of slots onto nb (engine_walk.h): the balls other than the scanning
+    /* The walk's rows of slots onto nb (engine/walk.h): the balls other than the scanning
      * one, in slot order, overflow chains noted; their count. */
     size_t (*gather_rows)(struct eng_walk *w, int32_t *nb);
     /* Ball i's next cell crossing (in cell c) into its cross_t and cross_code. */
     void (*cross_event)(rc_sim *s, int32_t i, const int c[3]);
 } eng_lanes;
 
-extern const eng_lanes rc_eng_lanes_scalar;
+extern const eng_lanes eng_lanes_scalar;
 #ifdef ENG_HAVE_AVX2
-extern const eng_lanes rc_eng_lanes_avx2;
-extern const eng_lanes rc_eng_lanes_avx512;
-/* the AVX2 crossing, the AVX-512 table's too (engine_lanes_avx512.c) */
-void rc_eng_cross_event_avx2(rc_sim *s, int32_t i, const int c[3]);
+extern const eng_lanes eng_lanes_avx2;
+extern const eng_lanes eng_lanes_avx512;
+/* the AVX2 crossing, the AVX-512 table's too (engine/lanes_avx512.c) */
+void eng_cross_event_avx2(rc_sim *s, int32_t i, const int c[3]);
 #endif
 
 /* The table of the lanes an engine uses (s->simd: ENG_SIMD_*). */
@@ -58,13 +58,13 @@ static inline const eng_lanes *eng_lanes_of(int simd)
 {
 #ifdef ENG_HAVE_AVX2
     if (simd == ENG_SIMD_AVX512)
-        return &rc_eng_lanes_avx512;
+        return &eng_lanes_avx512;
     if (simd == ENG_SIMD_AVX2)
-        return &rc_eng_lanes_avx2;
+        return &eng_lanes_avx2;
 #else
     (void)simd;
 #endif
-    return &rc_eng_lanes_scalar;
+    return &eng_lanes_scalar;
 }
 
 #endif

@@ -1,6 +1,0 @@
-/* engine_lanes_scalar.c — the engine's lane kernels (engine_kernels.h) in one lane of
- * plain C: every machine has them, and they are the reference the wider lanes match. */
-#define ENG_W 1
-#include "engine_kernels.h"
-
-const eng_lanes rc_eng_lanes_scalar = {test_list, sphere_times, gather_rows, cross_event};
