@@ -32,8 +32,8 @@
 /* Brent stops without evaluating its next point when that accepted interpolation step
  * is below this fraction of lambda_tol (dimensionless): near the root the step is the
  * predicted distance to it, so b already meets the tolerance, and the evaluation would
- * only confirm it (one in six). At 1 the brute-force normal error doubled (to 9e-14);
- * at 0.1 it is unchanged (4.2e-14) and 15 % of the engine's evaluations remain saved. */
+ * only confirm it. At 1 the brute-force normal error grows; at 0.1 it is unchanged and
+ * most of the saved evaluations remain (tests/toi/test_toi_brute.c holds the error). */
 #define RC_TOI_STOP_FRACTION 0.1
 
 /* Relative margin by which the centre-line separating-axis test must clear the touching
@@ -66,8 +66,8 @@ void rc_toi_workspace_free(rc_toi_workspace **ws)
 
 /* frexp's exponent of a finite x > 0 and exact powers of two, read from and written into
  * the IEEE bits: the same values as frexp / ldexp without two library calls per use
- * (those cost ~2 % of an engine run); the rare subnormal or out-of-range cases fall back
- * to the library. */
+ * (the solver uses them on every pair); the rare subnormal or out-of-range cases fall
+ * back to the library. */
 static inline int exponent_of(double x)
 {
     uint64_t u;
@@ -111,11 +111,10 @@ typedef struct pw_problem {
  * Not polynomial forms in lambda: adj C d, adj C w (and det C) can be written in the
  * Bernstein basis of (1 - lam, lam), whose coefficients (adj P0, the mixed adjugate,
  * adj P1; mixed discriminants) are PSD / non-negative, so that form is as accurate as
- * this one (more, for det of thin shapes). Measured (callgrind, release): it saves
- * ~35 instructions per evaluation but its per-call set-up (six coefficient vectors,
- * four det coefficients) costs ~490, at ~5 evaluations per solve: rc_toi_shapes_rel
- * +6.6 % (engine gas, 3-D) and +9 % (2-D cases). Forms quadratic in y (y.(P1-P0)y as a
- * polynomial in den, num) would also square the cancellation in den d + num w. */
+ * this one (more, for det of thin shapes). It saves a little per evaluation but its
+ * per-call set-up (six coefficient vectors, four det coefficients) costs more than the
+ * few evaluations of a solve save. Forms quadratic in y (y.(P1-P0)y as a polynomial in
+ * den, num) would also square the cancellation in den d + num w. */
 static inline double pw_matrix(const pw_problem *p, double lam, rc_sym3 *C, rc_sym3 *A,
                                const int planar)
 {
@@ -195,8 +194,7 @@ __attribute__((always_inline)) static inline double pw_eval(pw_problem *p, doubl
 
 /* One evaluation body, compiled once per dimension so the 2-D evaluations skip the z
  * terms without testing for them. The 3-D body stays out of line: inlined into the
- * solver loop it cost ~1 % more instructions (register pressure); the 2-D body inlined
- * costs ~3 % less than out of line. */
+ * solver loop it runs out of registers; the small 2-D body is inlined. */
 __attribute__((noinline)) static double pw_h3(pw_problem *p, double lam)
 {
     return pw_eval(p, lam, 0);
@@ -367,9 +365,8 @@ pw_solve_dim(pw_problem *p, double lo, double hi, double guess, const rc_toi_par
 
 /* The solver compiled once per dimension: the dimension is a constant inside, so no
  * evaluation tests it or goes through a second call (pw_h2/pw_h3 wrappers before), and
- * the 2-D evaluation is inlined. Same arithmetic as before, bit for bit; -2.4 % (3-D)
- * and -3.2 % (2-D) of rc_toi_shapes_rel's instructions with the inline support
- * distances (callgrind, release build). */
+ * the 2-D evaluation is inlined, with the support distances inline too. Same arithmetic
+ * either way, bit for bit. */
 static int pw_solve2(pw_problem *p, double lo, double hi, double guess,
                      const rc_toi_params *prm)
 {

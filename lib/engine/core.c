@@ -630,9 +630,8 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
             s->now = was;
             continue;
         }
-        /* the next event's records, while this one is resolved: at N = 1e5 they come
-         * from L3 or memory (x1.09 in 3-D and 2-D at 1e5, measured interleaved in one
-         * process; no change at 1e4) */
+        /* the next event's records, while this one is resolved: in a large gas they come
+         * from L3 or memory */
         const int32_t nx = eng_queue_next(&s->q);
         if (nx >= 0) {
             __builtin_prefetch(&s->b[nx]);
@@ -642,7 +641,7 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
         done++;
         if (a->ev_partner >= 0) {
             /* the partner's state is needed next (stale check, then the collision): load
-             * it alongside its counter rather than after it (+0-6 % measured) */
+             * it alongside its counter rather than after it */
             __builtin_prefetch(&s->b[a->ev_partner]);
             __builtin_prefetch(&s->a[a->ev_partner]);
         }

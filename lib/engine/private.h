@@ -88,8 +88,8 @@ int eng_queue_top(eng_queue *q, double *t, uint32_t *ball);
 size_t eng_queue_bytes(const eng_queue *q);
 /* The ball likely to come after the top (the earlier child of the heap's root), -1 if
  * the heap holds no other: a hint for prefetching, not a promise of order. (Looking into
- * the next calendar lists when the heap has no other raised the hint's hits from 53 % to
- * 79 % of the events at N = 1e5, with no measurable gain: left out.) */
+ * the next calendar lists as well names the next ball more often, but gained nothing
+ * measurable: papers/relcol.md, section 7.) */
 static inline int32_t eng_queue_next(const eng_queue *q)
 {
     if (q->hn < 2)
@@ -343,7 +343,7 @@ static inline double key_of(const eng_aux *a)
  * keyed by that bound, and a bound lb2 of every other event of the ball (ball or wall).
  * The frame is asked only when the bound comes up in the queue (eng_settle), and not
  * at all for the predictions that a collision elsewhere makes stale first, or that a
- * later prediction of the ball replaces: 43 % fewer calls (bench_engine rel:10000).
+ * later prediction of the ball replaces (papers/relcol.md, section 7, has the count).
  * Such an event's ev_n entry is (lb2, 0, +inf): a contact normal is never infinite. */
 typedef struct eng_defer {
     int on;     /* the best event so far is deferred: its time is a bound */

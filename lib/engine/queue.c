@@ -5,8 +5,8 @@
  * between them), and entries beyond the span wait in an overflow list that is spread over
  * the calendar once per span. Which bucket an entry sits in never decides its order -- the
  * heap compares exact keys and buckets partition time monotonically -- so the pop sequence
- * is that of any exact priority queue, whatever w is. The 4-ary heap this replaces spent
- * ~300 instructions per update sifting through log4 N levels. */
+ * is that of any exact priority queue, whatever w is. An update moves an entry between
+ * lists in O(1), where a heap of N entries would sift through log N levels. */
 #include <math.h>
 #include <stdlib.h>
 

@@ -134,10 +134,9 @@ static inline rc_vec3 pw_mul_P(const pw_shape *q, rc_vec3 y)
  *    (there both tests are decided unless the shapes touch within the margin).
  * Both certificates are checked directly on the computed y and x, so round-off in the
  * solve only makes them fail (then the frame decides): a settled pair is one the frame
- * gives no event before best. Measured (bench_engine rel:3000, 15k collisions): of the
- * 12.1k pairs the centre line leaves, 5.8k are settled apart (first step), 6.2k overlapping
- * (0.3k first, 5.7k second, 0.2k third step), 18 go to the frame (11.7k frame calls
- * before); same events; 454M -> 411M instructions (391M before parting pairs were asked). */
+ * gives no event before best. Nearly every pair the centre line leaves is settled in one
+ * to three steps, so the frame's root find is left for the few that are neither apart nor
+ * overlapping (the counts are in papers/relcol.md, section 7). */
 enum { PW_OPEN = 0, PW_APART, PW_OVERLAP };
 
 /* The steps above, for any pair whose bounding spheres overlap: PW_APART (separated
@@ -226,9 +225,8 @@ __attribute__((noinline, unused)) static int parting_candidate(const rc_sim *s,
  * ordered, pruned and deferred. The margin AXIS_MARGIN (relative to ri + rk, far above
  * the frame's touch_tol of 1e-12 and round-off) keeps every pair the frame could still
  * call touching. The balls' directions of motion were axes too (the latest of the three
- * bounds): with the frame's root finds deferred they cost more than they spared, and the
- * centre line alone runs a contracted gas 4-5 % faster (in-process medians, 3-D and 2-D;
- * same bits in the reference runs). */
+ * bounds): with the frame's root finds deferred they cost more than they spared, so the
+ * centre line is the only axis (the same bits in the reference runs). */
 #define AXIS_MARGIN 1e-9
 
 static inline double line_bound(const rc_sim *s, const rc_toi_shape *shi, const eng_ball *bi,

@@ -108,7 +108,7 @@ static inline void walk_init(eng_walk *w, const rc_sim *s, int32_t skip, const i
         if (y1 - y0 == 2 && (z1 - z0 == 2 || g->n[2] == 1)) {
             /* three rows a plane, one or three planes (a full block away from the
              * grid's edges, the common case): fixed counts, no loop branches to
-             * mispredict (the general loops below cost ~5 % of a 3-D run) */
+             * mispredict (the general loops below are for blocks at the grid's edges) */
             for (int r = 0; r < 9; r++)
                 w->row[r] = plane + g->block_rows[r];
             w->nrows = g->n[2] == 1 ? 3 : 9;
@@ -138,8 +138,9 @@ static inline size_t walk_gather(eng_walk *w, int32_t *nb)
     if (!w->rows_done) {
         w->rows_done = 1;
         m = eng_lanes_of(s->simd)->gather_rows(w, nb);
-        /* the records, fetched ahead of the tests (without it -16 % at N = 1e5): four at a
-         * time over the list padded with the scanning ball, fewer loop branches */
+        /* the records, fetched ahead of the tests (in a large gas each is a cache miss
+         * otherwise): four at a time over the list padded with the scanning ball, fewer
+         * loop branches */
         for (int l = 0; l < 8; l++)
             nb[m + (size_t)l] = w->skip;
         for (size_t j = 0; j < m; j += 4)
