@@ -87,8 +87,8 @@ growth() { # $1 N
     awk -v n="$1" -v r4="${med_r[10976]}" -v r="${med_r[$1]}" -v e4="${med_e[10976]}" -v e="${med_e[$1]}" \
         'BEGIN { printf "time per collision, N = %s / N = 10976: relcol %.2f, EDMD %.2f\n", n, r4 / r, e4 / e }'
 }
-compare 10976 12 "$pairs4" 300
-compare 108000 3 "$pairs5" 30
+((pairs4 > 0)) && compare 10976 12 "$pairs4" 300
+((pairs5 > 0)) && compare 108000 3 "$pairs5" 30
 ((pairs6 > 0)) && compare 1048576 2.5 "$pairs6" 3
 ((pairs4 > 0 && pairs5 > 0)) && growth 108000
 ((pairs4 > 0 && pairs6 > 0)) && growth 1048576
