@@ -179,6 +179,13 @@ int app_atomic_open(app_atomic *a, const char *path, char *err);
 int app_atomic_commit(app_atomic *a, char *err);
 void app_atomic_abort(app_atomic *a);
 
+/* A temporary file's mkstemp template beside dir/base: ".base.relcol-PID.XXXXXX" (malloc'ed,
+ * NULL on ENOMEM); and the removal of such temporaries of base (NULL: of any name) in dir
+ * whose writing process no longer exists (a run that was killed, or a disk that filled):
+ * every writer of an output file calls it first, so stale temporaries never pile up. */
+char *app_temp_template(const char *dir, const char *base);
+void app_clean_stale(const char *dir, const char *base);
+
 /* mkdir -p (mode 0777 before umask). */
 int app_mkdir_p(const char *dir, char *err);
 /* dir + "/" + name, malloc'ed (NULL on ENOMEM). */

@@ -1,7 +1,9 @@
 /* files.c — output files that are never seen half-written: write beside the target under
  * a temporary name, fsync, rename over it (atomic on POSIX), fsync the folder. */
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -65,21 +67,72 @@ int app_mkdir_p(const char *dir, char *err)
     return 0;
 }
 
+char *app_temp_template(const char *dir, const char *base)
+{
+    char pid[32];
+    snprintf(pid, sizeof pid, "%ld", (long)getpid());
+    char *t = malloc(strlen(dir) + strlen(base) + strlen(pid) + 32);
+    if (t)
+        sprintf(t, "%s/.%s.relcol-%s.XXXXXX", dir, base, pid);
+    return t;
+}
+
+void app_clean_stale(const char *dir, const char *base)
+{
+    DIR *d = opendir(dir);
+    if (!d)
+        return;
+    const size_t nb = base ? strlen(base) : 0;
+    for (struct dirent *e; (e = readdir(d));) {
+        /* .BASE.relcol-PID.XXXXXX (any BASE without base), and nothing else */
+        const char *n = e->d_name, *tag = base ? n + 1 + nb : strstr(n, ".relcol-");
+        if (n[0] != '.' || (base && strncmp(n + 1, base, nb) != 0) || !tag ||
+            strncmp(tag, ".relcol-", 8) != 0)
+            continue;
+        char *end = NULL;
+        errno = 0;
+        const long pid = strtol(tag + 8, &end, 10);
+        if (errno || pid <= 0 || *end != '.' || strlen(end + 1) != 6)
+            continue;
+        /* its writer is gone (killed, or the machine stopped): no run will finish it */
+        if (pid != (long)getpid() && kill((pid_t)pid, 0) != 0 && errno == ESRCH) {
+            char *f = app_path_join(dir, n);
+            if (f)
+                unlink(f);
+            free(f);
+        }
+    }
+    closedir(d);
+}
+
+/* The stale temporaries of every name in dir, once per folder in a run of folders (the
+ * snapshots of a run share one: a scan each would be quadratic in their number). */
+static void clean_once(const char *dir)
+{
+    static char last[4096];
+    if (strlen(dir) < sizeof last && strcmp(dir, last) == 0)
+        return;
+    app_clean_stale(dir, NULL);
+    snprintf(last, sizeof last, "%s", dir);
+}
+
 int app_atomic_open(app_atomic *a, const char *path, char *err)
 {
     memset(a, 0, sizeof *a);
     char *dir = dir_of(path);
     const char *base = strrchr(path, '/') ? strrchr(path, '/') + 1 : path;
     a->path = strdup(path);
-    a->tmp = dir ? malloc(strlen(dir) + strlen(base) + 16) : NULL;
+    a->tmp = dir ? app_temp_template(dir, base) : NULL;
     if (!a->path || !a->tmp) {
         free(dir);
         app_atomic_abort(a);
         app_errf(err, "out of memory");
         return -1;
     }
-    /* hidden, in the same folder: rename() is atomic only within one file system */
-    sprintf(a->tmp, "%s/.%s.XXXXXX", dir, base);
+    /* hidden, in the same folder: rename() is atomic only within one file system; named
+     * with our pid, so that a later run can tell a killed writer's temporary from a live
+     * one's and remove it */
+    clean_once(dir);
     free(dir);
     int fd = mkstemp(a->tmp);
     if (fd < 0) {

@@ -84,16 +84,17 @@ int app_gnuplot_run(const char *prog, const char *dir, const char *script_name,
         app_errf(err, "figure name %s must be a plain file name", out_name);
         return -1;
     }
-    size_t len = strlen(out_name) + 16;
-    char *tmpbase = malloc(len), *tmp = NULL, *final = app_path_join(dir, out_name);
-    char *expr = malloc(len + 32);
+    /* (room for outfile='.NAME.relcol-PID.XXXXXX') */
+    const size_t len = strlen(out_name) + 64;
+    char *tmp = NULL, *final = app_path_join(dir, out_name);
+    char *expr = malloc(len);
     int rc = -1;
-    if (!tmpbase || !final || !expr) {
+    if (!final || !expr) {
         app_errf(err, "out of memory");
         goto out;
     }
-    snprintf(tmpbase, len, ".%s.XXXXXX", out_name);
-    tmp = app_path_join(dir, tmpbase);
+    app_clean_stale(dir, out_name);
+    tmp = app_temp_template(dir, out_name);
     if (!tmp) {
         app_errf(err, "out of memory");
         goto out;
@@ -106,7 +107,7 @@ int app_gnuplot_run(const char *prog, const char *dir, const char *script_name,
         goto out;
     }
     close(fd);
-    snprintf(expr, len + 32, "outfile='%s'", strrchr(tmp, '/') + 1);
+    snprintf(expr, len, "outfile='%s'", strrchr(tmp, '/') + 1);
     fflush(NULL);
     pid_t pid = fork();
     if (pid < 0) {
@@ -161,7 +162,6 @@ out:
     if (tmp)
         unlink(tmp);
     free(tmp);
-    free(tmpbase);
     free(final);
     free(expr);
     return rc;

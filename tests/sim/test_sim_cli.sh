@@ -252,6 +252,22 @@ nsnap=$(grep -o '"snapshots": \[[^]]*\]' "$tmp/long/final.json" | tr ',' '\n' | 
 [ "$nsnap" -eq 10 ] && ok "Ctrl-C: final.json carries the 10 snapshot times ahead" \
     || ko "Ctrl-C: final.json carries $nsnap snapshot times, want 10"
 
+# a killed run's temporaries are removed by the next run into the same folder; a live
+# writer's, and files that only look alike, are not
+sh -c 'exit 0' & dead=$!
+wait $dead
+mkdir -p "$tmp/stale"
+for f in ".summary.txt.relcol-$dead.AbCdEf" ".frames.dat.relcol-$dead.x1y2z3" \
+         ".summary.txt.relcol-$$.LiVeOn" ".summary.txt.keep"; do
+    printf 'half a file' > "$tmp/stale/$f"
+done
+sed 's/"t_end": 40/"t_end": 2/; s/"snapshots": \[10, 20\], //' "$tmp/run.json" > "$tmp/stale.json"
+"$sim" "$tmp/stale.json" --out "$tmp/stale" > /dev/null 2> "$tmp/err"
+left=$(ls -A "$tmp/stale" | grep '^\.' | sort | tr '\n' ' ')
+[ "$left" = ".summary.txt.keep .summary.txt.relcol-$$.LiVeOn " ] \
+    && ok "stale temporaries of a dead writer removed, a live one's kept" \
+    || ko "temporaries left: $left $(cat "$tmp/err")"
+
 # an output folder whose name needs escaping in JSON: final.json still reads back
 q="$tmp/o\"q\\z"
 sed 's/"t_end": 40/"t_end": 2/; s/"snapshots": \[10, 20\], //' "$tmp/run.json" > "$tmp/quote.json"
