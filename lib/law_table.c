@@ -50,10 +50,11 @@ int rc_collide(const rc_law *law, const rc_collision_params *prm, rc_particle *a
         return RC_EINVAL;
     if (!rc_v3_isfinite(n))
         return RC_ENONFINITE;
-    double len = rc_v3_norm(n);
+    /* (any finite length: a normal of 1e300 or 1e-300 is a direction like any other) */
+    double len = rc_v3_norm_safe(n);
     if (!(len > 0.0))
         return RC_EZERONORMAL;
-    return law->collide(prm, a, b, rc_v3_scale(1.0 / len, n));
+    return law->collide(prm, a, b, rc_v3_unit(n, len));
 }
 
 size_t rc_collide_batch(const rc_law *law, const rc_collision_params *prm, size_t n_pairs,
@@ -83,11 +84,11 @@ int rc_collide_wall(double inv_c2, double eps_w, rc_particle *a, rc_vec3 n)
         return RC_ERESTITUTION;
     if (!rc_v3_isfinite(n))
         return RC_ENONFINITE;
-    const double len = rc_v3_norm(n);
+    const double len = rc_v3_norm_safe(n);
     if (!(len > 0.0))
         return RC_EZERONORMAL;
     if (len != 1.0)
-        n = rc_v3_scale(1.0 / len, n);
+        n = rc_v3_unit(n, len);
     const double pn = rc_v3_dot(a->p, n);
     if (!(pn > 0.0))
         return RC_NO_COLLISION;

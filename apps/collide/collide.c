@@ -220,13 +220,13 @@ int main(int argc, char **argv)
         n = rc_v3(0.0, 0.0, 0.0);
         for (int i = 0; i < o.n_normal; i++)
             rc_v3_set(&n, i, o.normal[i]);
-        if (!(rc_v3_norm(n) > 0.0)) {
+        if (!(rc_v3_norm_safe(n) > 0.0)) {
             fail("--normal: zero normal");
             goto out;
         }
     } else if (b.has_pos && !o.alpha_given) {
         n = rc_v3_sub(b.x[1], b.x[0]);
-        if (!(rc_v3_norm(n) > 0.0)) {
+        if (!(rc_v3_norm_safe(n) > 0.0)) {
             char rn[48], cols[32];
             fail("%s, column%s %s: zero normal: ball 1 is at the position of ball 0 (line "
                  "%ld)", app_row_name(&t, 1, rn, sizeof rn), dim > 1 ? "s" : "",

@@ -125,6 +125,20 @@ static inline const char *app_table_cell(const app_table *t, size_t row, int col
 {
     return t->cells[row * (size_t)t->ncols + (size_t)col];
 }
+/* The range of magnitudes a ball's inputs (rest mass, radius, position and velocity or
+ * momentum components, box edges) may take: zero, or between APP_SCALE_MIN and
+ * APP_SCALE_MAX, so that their squares and products -- every distance, energy and contact
+ * time is made of them -- are finite, normal doubles (a radius of 1e300 or a mass of
+ * 1e-170 would otherwise give NaN or silently wrong numbers). */
+#define APP_SCALE_MIN 1e-150
+#define APP_SCALE_MAX 1e150
+/* 0 if x is 0 (allowed only when !positive) or a magnitude in that range; else -1 with
+ * the reason in why (APP_ERR_LEN), e.g. "1e+300 is too large: ...". */
+int app_check_scale(double x, int positive, char *why);
+/* app_table_double, then app_check_scale, the error naming line, row label and column. */
+int app_table_scaled(const app_table *t, size_t row, int col, const char *row_label,
+                     int positive, double *out, char *err);
+
 /* The field (row, col) as a finite number (or inf if allowed). The error names the line,
  * the row label (e.g. "ball 1"; NULL for none) and the column:
  * "line 3 (ball 1), column vx: not a number: 'abc'". */
@@ -153,8 +167,8 @@ typedef struct app_balls {
 /* Parse ball rows. `extra` is a NULL-terminated list of further column names the caller
  * accepts (e.g. {"r", NULL}; NULL for none): any other unknown column is an error. The
  * caller reads extra columns itself with app_table_double. nrows_want > 0 demands that
- * exactly many rows. All numbers must be finite and m > 0; |v| < c is checked later, by
- * app_balls_particles, since it depends on c. */
+ * exactly many rows. All numbers must be finite and within app_check_scale's range, and
+ * m > 0; |v| < c is checked later, by app_balls_particles, since it depends on c. */
 int app_balls_parse(const app_table *t, const char *const *extra, size_t nrows_want,
                     app_balls *b, char *err);
 void app_balls_free(app_balls *b);

@@ -162,13 +162,15 @@ int app_balls_parse(const app_table *t, const char *const *extra, size_t nrows_w
                      app_fmt(b->m[r], f));
             goto fail;
         }
+        if (app_table_scaled(t, r, cm, label, 1, &b->m[r], err) != 0)
+            goto fail;
         for (int i = 0; i < b->dim; i++) {
             double v;
-            if (app_table_double(t, r, cq[i], label, 0, &v, err) != 0)
+            if (app_table_scaled(t, r, cq[i], label, 0, &v, err) != 0)
                 goto fail;
             rc_v3_set(&b->q[r], i, v);
             if (b->has_pos) {
-                if (app_table_double(t, r, cx[i], label, 0, &v, err) != 0)
+                if (app_table_scaled(t, r, cx[i], label, 0, &v, err) != 0)
                     goto fail;
                 rc_v3_set(&b->x[r], i, v);
             }

@@ -1,6 +1,7 @@
 /* table.c — the CSV reader every app uses for its input tables: a header of column names,
  * rows of fields, and errors that name the file line and the column. */
 #include <ctype.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -161,6 +162,39 @@ const char *app_row_name(const app_table *t, size_t row, char *buf, size_t n)
 {
     snprintf(buf, n, "line %ld (ball %zu)", t->line[row], row);
     return buf;
+}
+
+int app_check_scale(double x, int positive, char *why)
+{
+    const double a = fabs(x);
+    if (x == 0.0 && !positive)
+        return 0;
+    if (a >= APP_SCALE_MIN && a <= APP_SCALE_MAX)
+        return 0;
+    char f[APP_FMT_LEN];
+    if (positive && !(x > 0.0))
+        app_errf(why, "%s must be > 0", app_fmt(x, f));
+    else
+        app_errf(why, "%s is too %s: magnitudes must lie in [1e-150, 1e150], where their "
+                 "squares and products are finite, normal doubles", app_fmt(x, f),
+                 a > APP_SCALE_MAX ? "large" : "small");
+    return -1;
+}
+
+int app_table_scaled(const app_table *t, size_t row, int col, const char *row_label,
+                     int positive, double *out, char *err)
+{
+    if (app_table_double(t, row, col, row_label, 0, out, err))
+        return -1;
+    char why[APP_ERR_LEN];
+    if (app_check_scale(*out, positive, why) == 0)
+        return 0;
+    if (row_label)
+        app_errf(err, "line %ld (%s), column %s: %s", t->line[row], row_label, t->names[col],
+                 why);
+    else
+        app_errf(err, "line %ld, column %s: %s", t->line[row], t->names[col], why);
+    return -1;
 }
 
 int app_table_double(const app_table *t, size_t row, int col, const char *row_label,

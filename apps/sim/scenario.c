@@ -262,6 +262,18 @@ static int check_periodic_room(const ctx *c, const scn_scenario *s)
     return 0;
 }
 
+/* Each component within app_check_scale's range, the error naming path[d]. */
+static int scaled_vec(const ctx *c, const char *path, rc_vec3 v, int dim)
+{
+    char why[APP_ERR_LEN], q[96];
+    for (int d = 0; d < dim; d++)
+        if (app_check_scale(rc_v3_get(v, d), 0, why)) {
+            snprintf(q, sizeof q, "%s[%d]", path, d);
+            return bad(c, q, "%s", why);
+        }
+    return 0;
+}
+
 static int parse_balls(const ctx *c, const cJSON *arr, scn_scenario *s)
 {
     static const char *const keys[] = {"r", "m", "x", "v", "p", "tau", "tau_last", "image", NULL};
@@ -301,11 +313,18 @@ static int parse_balls(const ctx *c, const cJSON *arr, scn_scenario *s)
         }
         if (!jm)
             o->m = o->r * o->r * o->r; /* equal density (DESIGN.md: m proportional to r^3) */
+        char why[APP_ERR_LEN];
+        snprintf(q, sizeof q, "%s.r", p);
+        if (app_check_scale(o->r, 1, why))
+            return bad(c, q, "%s", why);
+        snprintf(q, sizeof q, "%s.m", p);
+        if (app_check_scale(o->m, 1, why))
+            return bad(c, q, "%s%s", why, jm ? "" : " (the default m = r^3)");
         const cJSON *jx = cJSON_GetObjectItemCaseSensitive(b, "x");
         snprintf(q, sizeof q, "%s.x", p);
         if (!jx)
             return bad(c, q, "missing (required)");
-        if (get_vec(c, jx, q, s->dim, &o->x))
+        if (get_vec(c, jx, q, s->dim, &o->x) || scaled_vec(c, q, o->x, s->dim))
             return -1;
         /* the centre in the box here; whether the whole (possibly contracted) shape is
          * inside is the engine's check, in the contact frame's geometry (a periodic axis:
@@ -331,12 +350,12 @@ static int parse_balls(const ctx *c, const cJSON *arr, scn_scenario *s)
             o->p = rc_v3(0, 0, 0);
         } else if (jp) {
             snprintf(q, sizeof q, "%s.p", p);
-            if (get_vec(c, jp, q, s->dim, &o->p))
+            if (get_vec(c, jp, q, s->dim, &o->p) || scaled_vec(c, q, o->p, s->dim))
                 return -1;
         } else {
             snprintf(q, sizeof q, "%s.v", p);
             rc_vec3 v;
-            if (get_vec(c, jv, q, s->dim, &v))
+            if (get_vec(c, jv, q, s->dim, &v) || scaled_vec(c, q, v, s->dim))
                 return -1;
             if (rc_momentum_from_velocity(o->m, v, k, &o->p) != RC_OK)
                 return bad(c, q, "|v| = %.17g >= c = %g", rc_v3_norm(v), s->c);

@@ -202,6 +202,10 @@ int main(int argc, char **argv)
                  app_fmt(ball[i].r, f));
             goto out;
         }
+        if (app_table_scaled(&t, i, cr, label, 1, &ball[i].r, err) != 0) {
+            fail("%s", err);
+            goto out;
+        }
         ball[i].x = b.x[i];
         ball[i].m = pt[i].m;
         ball[i].p = pt[i].p;

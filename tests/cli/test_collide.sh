@@ -194,7 +194,17 @@ expect_bad "inf field" 'm,vx\ninf,0.6\n1,0\n' "line 2 \(ball 0\), column m: 'inf
 expect_bad "overflow field" 'm,vx\n1,1e999\n1,0\n' "line 2 \(ball 0\), column vx: '1e999' is not finite"
 expect_bad "junk field" 'm,vx\n1,0.6\n1,abc\n' "line 3 \(ball 1\), column vx: not a number: 'abc'"
 expect_bad "trailing junk" 'm,vx\n1,0.6x\n1,0\n' "line 2 \(ball 0\), column vx: not a number: '0.6x'"
-expect_bad "overflowing state" 'm,px\n1e200,1e200\n1,0\n' 'line 2 \(ball 0\), columns m,px: too large' --c 1e-10
+expect_bad "overflowing state" 'm,px\n1e140,1e140\n1,0\n' 'line 2 \(ball 0\), columns m,px: too large' --c 1e-100
+# magnitudes whose squares would overflow or underflow are refused, naming row and column
+expect_bad "huge mass" 'm,px\n1e200,1\n1,0\n' 'line 2 \(ball 0\), column m: 1e\+200 is too large' --c 1
+expect_bad "tiny mass" 'm,vx\n1e-170,0.6\n1e-170,-0.6\n' 'line 2 \(ball 0\), column m: 1e-170 is too small' --c 1
+expect_bad "tiny speed" 'm,vx\n1,1e-300\n1,-1e-300\n' 'line 2 \(ball 0\), column vx: 1e-300 is too small'
+expect_bad "far position" 'm,x,vx\n1,1e308,1\n1,0,-1\n' 'line 2 \(ball 0\), column x: 1e\+308 is too large'
+# a normal of any finite length is a direction
+run 'm,vx\n1,0.6\n1,-0.6\n' --normal 1e300
+[ "$st" -eq 0 ] && grep -q '^1,1,0.59999999999999998' "$T/out" && ok || bad "--normal 1e300: exit $st: $(cat "$T/err")"
+run 'm,vx\n1,0.6\n1,-0.6\n' --normal 1e-300
+[ "$st" -eq 0 ] && grep -q '^1,1,0.59999999999999998' "$T/out" && ok || bad "--normal 1e-300: exit $st: $(cat "$T/err")"
 expect_bad "empty field" 'm,vx,vy\n1,0.6,\n1,0,0\n' 'line 2 \(ball 0\), column vy: empty value'
 expect_bad "one row" 'm,vx\n1,0.6\n' 'line 1 \(header\): wrong number of rows: expected exactly 2 data rows \(balls\), found 1'
 expect_bad "three rows" 'm,vx\n1,0.6\n1,0\n1,0\n' 'line 4: wrong number of rows: expected exactly 2 .*found 3'

@@ -74,6 +74,8 @@ done
 expect_bad nan-field 'r,x,vx\n1,0,0.6\n1,abc,-0.6\n' 'line 3 \(ball 1\), column x: not a number' --c 1
 expect_bad missing-r 'x,vx\n0,0.6\n10,-0.6\n' 'column r: missing column'
 expect_bad missing-x 'r,vx\n1,0.6\n1,-0.6\n' 'column x: missing column'
+expect_bad huge-radius 'r,x,vx\n1e300,0,0.5\n1,10,-0.5\n' 'line 2 \(ball 0\), column r: 1e\+300 is too large' --c 1
+expect_bad tiny-radius 'r,x,vx\n1e-300,0,0.5\n1,10,-0.5\n' 'line 2 \(ball 0\), column r: 1e-300 is too small'
 expect_bad r-negative 'r,x,vx\n1,0,0.6\n-1,10,-0.6\n' 'line 3 \(ball 1\), column r: r = -1 must be > 0'
 expect_bad r-zero 'r,x,vx\n0,0,0.6\n1,10,-0.6\n' 'line 2 \(ball 0\), column r: r = 0 must be > 0'
 expect_bad v-ge-c 'r,x,vx\n1,0,1.5\n1,10,-0.6\n' 'line 2 \(ball 0\), column vx: .*>= c' --c 1
