@@ -19,7 +19,7 @@
 #include "relcol/status.h"
 
 #define CK_MAGIC "relcolck"
-#define CK_VERSION 1u
+#define CK_VERSION 2u /* 2: the bookkeeping as one record (eng_books) */
 #define CK_ORDER 0x01020304u
 
 typedef struct ck_header {
@@ -28,7 +28,7 @@ typedef struct ck_header {
     uint32_t size_ball, size_aux, size_clock, dim;
     uint64_t def_print; /* fingerprint of the definition (def_print) */
     uint64_t n, ncells;
-    uint32_t has_normals, reserved;
+    uint32_t has_normals, size_books;
 } ck_header;
 
 /* A cursor over the bytes; with p == NULL it only counts. */
@@ -142,20 +142,13 @@ static void write_all(const rc_sim *s, ck_cursor *c, const int32_t *next)
     hd.n = s->n;
     hd.ncells = s->n ? s->g.ncells : 0;
     hd.has_normals = s->ev_n != NULL;
+    hd.size_books = sizeof(eng_books);
     put(c, &hd, sizeof hd);
     const size_t n = s->n;
     put(c, &s->now, sizeof s->now);
-    put(c, &s->heat, sizeof s->heat);
-    put(c, &s->heat_c, sizeof s->heat_c);
-    put(c, s->wall, sizeof s->wall);
-    put(c, s->wall_c, sizeof s->wall_c);
-    put(c, s->wallw, sizeof s->wallw);
-    put(c, s->wallw_c, sizeof s->wallw_c);
-    const uint64_t counts[6] = {s->overlaps, s->collisions, s->max_group, s->group_fallbacks,
-                                s->since_reorder, s->wall_shared};
-    put(c, counts, sizeof counts);
-    put(c, s->overlap_kind, sizeof s->overlap_kind);
-    put(c, s->events, sizeof s->events);
+    const uint64_t since_reorder = s->since_reorder;
+    put(c, &since_reorder, sizeof since_reorder);
+    put(c, &s->bk, sizeof s->bk);
     put(c, s->b, n * sizeof *s->b);
     put(c, s->a, n * sizeof *s->a);
     put(c, s->clk, n * sizeof *s->clk);
@@ -281,7 +274,8 @@ static int read_all(rc_sim *s, ck_cursor *c)
     if (get(c, &hd, sizeof hd) != RC_OK || memcmp(hd.magic, CK_MAGIC, sizeof hd.magic) != 0)
         return RC_ECORRUPT;
     if (hd.version != CK_VERSION || hd.order != CK_ORDER || hd.size_ball != sizeof(eng_ball) ||
-        hd.size_aux != sizeof(eng_aux) || hd.size_clock != sizeof(eng_clock))
+        hd.size_aux != sizeof(eng_aux) || hd.size_clock != sizeof(eng_clock) ||
+        hd.size_books != sizeof(eng_books))
         return RC_EMISMATCH; /* another format, byte order or build */
     if (hd.dim != (uint32_t)s->def.dim || hd.def_print != def_print(s) ||
         hd.has_normals != (s->narrow != 0))
@@ -295,18 +289,19 @@ static int read_all(rc_sim *s, ck_cursor *c)
                             sizeof(int32_t);
     if (n > (c->size - c->at) / per_ball)
         return RC_ECORRUPT;
-    double now, heat, heat_c, wall[3], wall_c[3], wallw[6], wallw_c[6];
-    uint64_t counts[6], kinds[3], events[RC_SIM_EV_NKINDS];
-    if (get(c, &now, sizeof now) || get(c, &heat, sizeof heat) || get(c, &heat_c, sizeof heat_c) ||
-        get(c, wall, sizeof wall) || get(c, wall_c, sizeof wall_c) || get(c, wallw, sizeof wallw) ||
-        get(c, wallw_c, sizeof wallw_c) || get(c, counts, sizeof counts) ||
-        get(c, kinds, sizeof kinds) || get(c, events, sizeof events))
+    double now;
+    uint64_t since_reorder;
+    eng_books bk;
+    if (get(c, &now, sizeof now) || get(c, &since_reorder, sizeof since_reorder) ||
+        get(c, &bk, sizeof bk) || !isfinite(now))
         return RC_ECORRUPT;
-    if (!isfinite(now) || !isfinite(heat) || !isfinite(heat_c))
-        return RC_ECORRUPT;
-    for (int d = 0; d < 6; d++)
-        if (!isfinite(wallw[d]) || !isfinite(wallw_c[d]) || (d < 3 && (!isfinite(wall[d]) ||
-                                                                      !isfinite(wall_c[d]))))
+    /* the sums are finite (the counters may hold any count) */
+    const double sums[] = {bk.heat, bk.heat_c, bk.wall[0], bk.wall[1], bk.wall[2], bk.wall_c[0],
+                           bk.wall_c[1], bk.wall_c[2], bk.wallw[0], bk.wallw[1], bk.wallw[2],
+                           bk.wallw[3], bk.wallw[4], bk.wallw[5], bk.wallw_c[0], bk.wallw_c[1],
+                           bk.wallw_c[2], bk.wallw_c[3], bk.wallw_c[4], bk.wallw_c[5]};
+    for (size_t j = 0; j < sizeof sums / sizeof *sums; j++)
+        if (!isfinite(sums[j]))
             return RC_ECORRUPT;
     /* the largest radius sizes the cells: read it off the records before allocating */
     double rmax = 0.0;
@@ -348,20 +343,8 @@ static int read_all(rc_sim *s, ck_cursor *c)
             return st;
     if (n && (st = check_cells(s)) != RC_OK)
         return st;
-    s->heat = heat;
-    s->heat_c = heat_c;
-    memcpy(s->wall, wall, sizeof wall);
-    memcpy(s->wall_c, wall_c, sizeof wall_c);
-    memcpy(s->wallw, wallw, sizeof wallw);
-    memcpy(s->wallw_c, wallw_c, sizeof wallw_c);
-    s->overlaps = counts[0];
-    s->collisions = counts[1];
-    s->max_group = (size_t)counts[2];
-    s->group_fallbacks = counts[3];
-    s->since_reorder = counts[4];
-    s->wall_shared = counts[5];
-    memcpy(s->overlap_kind, kinds, sizeof kinds);
-    memcpy(s->events, events, sizeof events);
+    s->bk = bk;
+    s->since_reorder = since_reorder;
     for (size_t k = 0; k < n; k++)
         s->q.e[k].key = key_of(&s->a[k]);
     eng_queue_rebuild(&s->q, s->now);

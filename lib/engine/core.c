@@ -213,8 +213,8 @@ static void count_overlaps(rc_sim *s, size_t from, size_t nc)
             if (!(rc_v3_norm2(rc_v3_sub(bb->x, ba->x)) < sig * sig))
                 continue;
         }
-        s->overlaps++;
-        s->overlap_kind[kind]++;
+        s->bk.overlaps++;
+        s->bk.overlap_kind[kind]++;
     }
 }
 
@@ -255,12 +255,12 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T)
         p0 = rc_v3_add(p0, P[j].p);
     }
     rc_contact *c = &s->grp_con[0];
-    const uint64_t tc_before = s->events[RC_SIM_EV_TC];
+    const uint64_t tc_before = s->bk.events[RC_SIM_EV_TC];
     c->eps = contact_eps(s, c);
     rc_particle Q[2] = {P[0], nm > 1 ? P[1] : P[0]};
     const int st = resolve_contact(s, Q, c);
     if (st != RC_OK) {
-        s->events[RC_SIM_EV_TC] = tc_before;
+        s->bk.events[RC_SIM_EV_TC] = tc_before;
         return st;
     }
     for (size_t j = 0; j < nm; j++) {
@@ -289,7 +289,7 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T)
             s->b[b].v = vold[j];
             s->cnt[b]--;
         }
-        s->events[RC_SIM_EV_TC] = tc_before;
+        s->bk.events[RC_SIM_EV_TC] = tc_before;
         return 0;
     }
     for (size_t j = 0; j < nm; j++)
@@ -313,8 +313,8 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
          * shape-change policy, resolved along the centre line and counted. */
         const rc_vec3 n = s->ev_n[i];
         if (isnan(n.x)) {
-            s->overlaps++;
-            s->overlap_kind[0]++;
+            s->bk.overlaps++;
+            s->bk.overlap_kind[0]++;
         } else {
             n0 = n;
             frame_normal = 1;
@@ -330,8 +330,8 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
         if (!frame_normal)
             n0 = len > 0.0 ? rc_v3_scale(1.0 / len, dx) : rc_v3(1.0, 0.0, 0.0);
         if (!s->narrow && len < (s->b[i].r + s->b[bp].r) * (1.0 - s->def.overlap_tol)) {
-            s->overlaps++;
-            s->overlap_kind[0]++;
+            s->bk.overlaps++;
+            s->bk.overlap_kind[0]++;
         }
         if (add_contact(s, &nc, 0, 1, n0) != RC_OK)
             return RC_ENOMEM;
@@ -383,7 +383,7 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
             if (st != RC_OK)
                 return st;
         }
-        s->group_sequential++;
+        s->bk.group_sequential++;
     } else {
         /* members may be many: the solver works on the group's local indices */
         kind = RC_SIM_EV_MULTI;
@@ -392,7 +392,7 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
         if (st != RC_OK) {
             /* dependent normals (or no convergence): resolve the event's own contact,
              * the others become events of their own at the same time */
-            s->group_fallbacks++;
+            s->bk.group_fallbacks++;
             for (size_t j = 0; j < nm; j++) {
                 P[j].m = s->a[s->grp_ball[j]].m;
                 P[j].p = s->a[s->grp_ball[j]].p;
@@ -430,13 +430,13 @@ static double contact_eps(rc_sim *s, const rc_contact *c)
         tc = tc || ab->tau - ab->tau_last < s->def.t_c;
     }
     const double eps = wall ? s->def.eps_wall : s->def.eps_ball;
-    s->events[RC_SIM_EV_TC] += (uint64_t)(tc && eps != 1.0);
+    s->bk.events[RC_SIM_EV_TC] += (uint64_t)(tc && eps != 1.0);
     return tc ? 1.0 : eps;
 }
 
 /* Write the group's new states (P) back, account heat and wall impulse, and predict
  * every member. In the single-contact path states, counters and predictions are done. */
-/* The momentum the walls took in this event, wall by wall (s->wallw). Per axis the total
+/* The momentum the walls took in this event, wall by wall (s->bk.wallw). Per axis the total
  * is exact: the ball contacts of a group pass momentum only between its balls. It goes to
  * the one wall of that axis in the group; only a group touching both walls of an axis (a
  * chain of balls across the box) needs the solver's impulses J to share it: each wall
@@ -454,7 +454,7 @@ static void account_walls(rc_sim *s, size_t nc, rc_vec3 p0, rc_vec3 p1, const do
         const double taken = rc_v3_get(p0, d) - rc_v3_get(p1, d);
         if (sides[d] == 1u || sides[d] == 2u) {
             const int w = 2 * d + (sides[d] == 2u);
-            kahan(&s->wallw[w], &s->wallw_c[w], taken);
+            kahan(&s->bk.wallw[w], &s->bk.wallw_c[w], taken);
         } else if (sides[d] == 3u) {
             double rest = taken;
             for (size_t j = 0; j < nc; j++) {
@@ -462,12 +462,12 @@ static void account_walls(rc_sim *s, size_t nc, rc_vec3 p0, rc_vec3 p1, const do
                 if (c->b >= 0 || ENG_WALL_INDEX(c->b) / 2 != d)
                     continue;
                 const double part = J ? J[j] * rc_v3_get(c->n, d) : 0.0;
-                kahan(&s->wallw[ENG_WALL_INDEX(c->b)], &s->wallw_c[ENG_WALL_INDEX(c->b)], part);
+                kahan(&s->bk.wallw[ENG_WALL_INDEX(c->b)], &s->bk.wallw_c[ENG_WALL_INDEX(c->b)], part);
                 rest -= part;
             }
-            kahan(&s->wallw[2 * d], &s->wallw_c[2 * d], 0.5 * rest);
-            kahan(&s->wallw[2 * d + 1], &s->wallw_c[2 * d + 1], 0.5 * rest);
-            s->wall_shared++;
+            kahan(&s->bk.wallw[2 * d], &s->bk.wallw_c[2 * d], 0.5 * rest);
+            kahan(&s->bk.wallw[2 * d + 1], &s->bk.wallw_c[2 * d + 1], 0.5 * rest);
+            s->bk.wall_shared++;
         }
     }
 }
@@ -476,10 +476,10 @@ static void finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int k
                    const double *J)
 {
     const rc_particle *P = s->grp_part;
-    s->events[kind]++;
-    s->collisions += nc;
-    if (nc > s->max_group)
-        s->max_group = nc;
+    s->bk.events[kind]++;
+    s->bk.collisions += nc;
+    if (nc > s->bk.max_group)
+        s->bk.max_group = nc;
     double k1 = 0.0;
     rc_vec3 p1 = rc_v3(0, 0, 0);
     for (size_t j = 0; j < nm; j++) {
@@ -495,10 +495,10 @@ static void finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int k
             s->cnt[b]++;
         }
     }
-    kahan(&s->heat, &s->heat_c, k0 - k1);
-    kahan(&s->wall[0], &s->wall_c[0], p0.x - p1.x);
-    kahan(&s->wall[1], &s->wall_c[1], p0.y - p1.y);
-    kahan(&s->wall[2], &s->wall_c[2], p0.z - p1.z);
+    kahan(&s->bk.heat, &s->bk.heat_c, k0 - k1);
+    kahan(&s->bk.wall[0], &s->bk.wall_c[0], p0.x - p1.x);
+    kahan(&s->bk.wall[1], &s->bk.wall_c[1], p0.y - p1.y);
+    kahan(&s->bk.wall[2], &s->bk.wall_c[2], p0.z - p1.z);
     account_walls(s, nc, p0, p1, J);
     for (size_t j = 0; j < nm; j++) {
         if (single)
@@ -649,7 +649,7 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
             s->since_reorder++;
             eng_cross(s, i);
         } else if (a->ev_partner >= 0 && s->cnt[a->ev_partner] != a->ev_pcount) {
-            s->events[RC_SIM_EV_STALE]++;
+            s->bk.events[RC_SIM_EV_STALE]++;
             eng_predict(s, i, 1);
         } else {
             s->since_reorder++;

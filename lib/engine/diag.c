@@ -111,19 +111,19 @@ int rc_sim_diagnostics(const rc_sim *s, rc_sim_diag *d)
     }
     if (s->narrow)
         d->max_overlap = NAN; /* bounding spheres may overlap legitimately: see overlaps */
-    d->heat = s->heat;
-    d->energy = d->kinetic + s->heat;
-    d->wall_impulse = rc_v3(s->wall[0], s->wall[1], s->wall[2]);
-    d->overlaps = s->overlaps;
-    memcpy(d->overlaps_by_kind, s->overlap_kind, sizeof d->overlaps_by_kind);
+    d->heat = s->bk.heat;
+    d->energy = d->kinetic + s->bk.heat;
+    d->wall_impulse = rc_v3(s->bk.wall[0], s->bk.wall[1], s->bk.wall[2]);
+    d->overlaps = s->bk.overlaps;
+    memcpy(d->overlaps_by_kind, s->bk.overlap_kind, sizeof d->overlaps_by_kind);
     for (int w = 0; w < 6; w++)
-        d->wall_impulse_by_wall[w] = s->wallw[w];
-    d->wall_shared = s->wall_shared;
-    d->collisions = s->collisions;
-    memcpy(d->events, s->events, sizeof d->events);
-    d->max_group = s->max_group;
-    d->group_fallbacks = s->group_fallbacks;
-    d->group_sequential = s->group_sequential;
+        d->wall_impulse_by_wall[w] = s->bk.wallw[w];
+    d->wall_shared = s->bk.wall_shared;
+    d->collisions = s->bk.collisions;
+    memcpy(d->events, s->bk.events, sizeof d->events);
+    d->max_group = s->bk.max_group;
+    d->group_fallbacks = s->bk.group_fallbacks;
+    d->group_sequential = s->bk.group_sequential;
     return RC_OK;
 }
 

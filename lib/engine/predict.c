@@ -628,7 +628,7 @@ void eng_cross(rc_sim *s, int32_t i)
         periodic_cross(s, i, d, dir, wrap);
     eng_cells_remove(&s->g, s->a, i);
     eng_cells_insert(&s->g, s->a, i, (int32_t)(c[0] + s->g.n[0] * (c[1] + s->g.n[1] * c[2])));
-    s->events[RC_SIM_EV_CELL]++;
+    s->bk.events[RC_SIM_EV_CELL]++;
     if (a->ev_partner >= 0 && s->cnt[a->ev_partner] != a->ev_pcount) {
         eng_predict(s, i, 1); /* the kept event went stale: full scan */
         return;

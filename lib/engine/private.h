@@ -187,6 +187,28 @@ typedef struct eng_cand {
  * paths: same bits). */
 enum { ENG_SIMD_NONE = 0, ENG_SIMD_AVX2 = 2, ENG_SIMD_AVX512 = 3 };
 
+/* A run's bookkeeping: conservation sums (Kahan-compensated) and event counts. One struct,
+ * so that everything that must survive a re-planning or a checkpoint is copied whole and
+ * a counter added here cannot be forgotten there. All fields are 8-byte doubles and
+ * counters: no padding, so its bytes are its value. */
+typedef struct eng_books {
+    double heat, heat_c;
+    double wall[3], wall_c[3];
+    /* per wall (index 2 d + side, side 1 the far wall x_d = L_d): the momentum along e_d
+     * it has taken, attributed contact by contact (rc_sim_diag.wall_impulse_by_wall) */
+    double wallw[6], wallw_c[6];
+    uint64_t wall_shared;
+    uint64_t overlaps;
+    uint64_t overlap_kind[3]; /* overlaps by the kind of contact: ball, wall, group */
+    uint64_t collisions;
+    uint64_t events[RC_SIM_EV_NKINDS];
+    uint64_t max_group;
+    uint64_t group_fallbacks;
+    uint64_t group_sequential;
+} eng_books;
+_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3),
+               "no padding in the bookkeeping");
+
 struct rc_sim {
     rc_sim_def def;
     int simd;
@@ -233,20 +255,9 @@ struct rc_sim {
     rc_toi_workspace *ws;
     eng_cand *cand;
     size_t cand_cap;
-    /* conservation bookkeeping (Kahan-compensated sums) */
-    double heat, heat_c;
-    double wall[3], wall_c[3];
-    /* per wall (index 2 d + side, side 1 the far wall x_d = L_d): the momentum along e_d
-     * it has taken, attributed contact by contact (rc_sim_diag.wall_impulse_by_wall) */
-    double wallw[6], wallw_c[6];
-    uint64_t wall_shared;
-    uint64_t overlaps;
-    uint64_t overlap_kind[3]; /* overlaps by the kind of contact: ball, wall, group */
-    uint64_t collisions;
-    uint64_t events[RC_SIM_EV_NKINDS];
-    size_t max_group;
-    uint64_t group_fallbacks;
-    uint64_t group_sequential;
+    /* what has happened so far, carried whole through a re-planning (rc_sim_sync) and a
+     * checkpoint: the diagnostics continue */
+    eng_books bk;
     uint64_t since_reorder; /* collisions and crossings since the balls were last renumbered */
     /* scratch for contact groups */
     int32_t *grp_ball;

@@ -267,36 +267,12 @@ int rc_sim_sync(rc_sim *s)
     for (size_t i = 0; i < n; i++)
         rc_sim_get_ball(s, i, &b[i]);
     /* the run's accumulated diagnostics survive the re-planning */
-    double heat = s->heat, heat_c = s->heat_c, wall[3], wall_c[3];
-    memcpy(wall, s->wall, sizeof wall);
-    memcpy(wall_c, s->wall_c, sizeof wall_c);
-    uint64_t overlaps = s->overlaps, collisions = s->collisions, fallbacks = s->group_fallbacks;
-    const uint64_t sequential = s->group_sequential;
-    size_t max_group = s->max_group;
-    uint64_t events[RC_SIM_EV_NKINDS], kinds[3], shared = s->wall_shared;
-    memcpy(events, s->events, sizeof events);
-    memcpy(kinds, s->overlap_kind, sizeof kinds);
-    double wallw[6], wallw_c[6];
-    memcpy(wallw, s->wallw, sizeof wallw);
-    memcpy(wallw_c, s->wallw_c, sizeof wallw_c);
+    const eng_books kept = s->bk;
     int st = load_balls(s, n, b, NULL, 0);
     free(b);
     if (st != RC_OK)
         return st;
-    s->heat = heat;
-    s->heat_c = heat_c;
-    memcpy(s->wall, wall, sizeof wall);
-    memcpy(s->wall_c, wall_c, sizeof wall_c);
-    s->overlaps = overlaps;
-    s->collisions = collisions;
-    s->group_fallbacks = fallbacks;
-    s->group_sequential = sequential;
-    s->max_group = max_group;
-    memcpy(s->events, events, sizeof events);
-    memcpy(s->overlap_kind, kinds, sizeof kinds);
-    memcpy(s->wallw, wallw, sizeof wallw);
-    memcpy(s->wallw_c, wallw_c, sizeof wallw_c);
-    s->wall_shared = shared;
+    s->bk = kept;
     return RC_OK;
 }
 
@@ -308,17 +284,8 @@ int eng_alloc_state(rc_sim *s, size_t n, double rmax)
     const int dim = s->def.dim;
     release_balls(s);
     /* a new set of balls starts its bookkeeping afresh */
-    s->heat = s->heat_c = 0.0;
-    for (int d = 0; d < 3; d++)
-        s->wall[d] = s->wall_c[d] = 0.0;
-    for (int w = 0; w < 6; w++)
-        s->wallw[w] = s->wallw_c[w] = 0.0;
-    memset(s->overlap_kind, 0, sizeof s->overlap_kind);
-    s->wall_shared = 0;
-    s->overlaps = s->collisions = s->group_fallbacks = s->since_reorder = 0;
-    s->group_sequential = 0;
-    s->max_group = 0;
-    memset(s->events, 0, sizeof s->events);
+    memset(&s->bk, 0, sizeof s->bk);
+    s->since_reorder = 0;
     int st = RC_ENOMEM;
     /* each 64-byte record on one cache line, not straddling two (eng_alloc aligns to 64):
      * every neighbour test loads one whole record */

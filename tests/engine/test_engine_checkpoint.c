@@ -75,7 +75,10 @@ static void same_diag(const rc_sim *a, const rc_sim *b, const char *what)
                    memcmp(x.events, y.events, sizeof x.events) == 0 && x.heat == y.heat &&
                    memcmp(&x.wall_impulse, &y.wall_impulse, sizeof x.wall_impulse) == 0 &&
                    memcmp(x.wall_impulse_by_wall, y.wall_impulse_by_wall,
-                          sizeof x.wall_impulse_by_wall) == 0,
+                          sizeof x.wall_impulse_by_wall) == 0 &&
+                   memcmp(x.overlaps_by_kind, y.overlaps_by_kind, sizeof x.overlaps_by_kind) == 0 &&
+                   x.group_sequential == y.group_sequential && x.wall_shared == y.wall_shared &&
+                   x.group_fallbacks == y.group_fallbacks && x.max_group == y.max_group,
                "%s: diagnostics differ (collisions %llu / %llu)", what,
                (unsigned long long)x.collisions, (unsigned long long)y.collisions);
 }
@@ -195,7 +198,8 @@ static void test_refusals(void)
     /* resealed content: the header's dimension, a ball's partner out of range, a velocity
      * that is not p / M, a count of balls larger than the bytes hold */
     const size_t header = 8 + 4 * 6 + 8 * 3 + 4 * 2;
-    const size_t scalars = 8 * (3 + 3 + 3 + 6 + 6 + 6 + 3 + RC_SIM_EV_NKINDS);
+    /* now, the renumbering clock, the bookkeeping: 20 sums and 9 + RC_SIM_EV_NKINDS counts */
+    const size_t scalars = 8 * (2 + 20 + 9 + RC_SIM_EV_NKINDS);
     const size_t n = rc_sim_count(s), ball0 = header + scalars, aux0 = ball0 + 64 * n;
     struct { size_t at; size_t len; unsigned char val[8]; int want; } cases[] = {
         {8 + 4 * 5, 4, {3, 0, 0, 0}, RC_EMISMATCH},             /* dim 3 */
