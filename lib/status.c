@@ -22,6 +22,7 @@ const char *rc_strerror(int status)
     case RC_EDIM: return "dimension must be 1, 2 or 3";
     case RC_ECORRUPT: return "not a whole, undamaged relcol checkpoint";
     case RC_EMISMATCH: return "checkpoint written by another run definition, format or machine";
+    case RC_ESTALL: return "simulated time stands still: events keep coming at one instant";
     default: return "unknown status code";
     }
 }

@@ -54,7 +54,8 @@ static void usage(FILE *f)
 "lie on the uninterrupted run's time grid.\n"
 "\n"
 "exit status: 0 done; 2 bad scenario or option (one line naming the JSON path and the\n"
-"reason); 1 run or I/O failure; 130 interrupted (restart state written).\n");
+"reason); 1 run or I/O failure; 3 simulated time stands still (the balls and the time\n"
+"named, the state written); 130 interrupted (restart state written).\n");
 }
 
 /* "relcol-sim: message" on stderr, returning the exit status code */
@@ -273,6 +274,26 @@ int main(int argc, char **argv)
         double next = simout_next_time(&o, rc_sim_time(sim));
         while (rc_sim_time(sim) < next && !interrupted) {
             st = rc_sim_advance(sim, next, batch);
+            if (st == RC_ESTALL) {
+                rc_sim_diag d;
+                rc_sim_diagnostics(sim, &d);
+                char partner[48];
+                if (d.stall_partner >= 0)
+                    snprintf(partner, sizeof partner, "ball %lld", (long long)d.stall_partner);
+                else if (d.stall_partner >= -6)
+                    snprintf(partner, sizeof partner, "the wall %c%c",
+                             "xyz"[(-1 - d.stall_partner) / 2],
+                             (-1 - d.stall_partner) % 2 ? '+' : '-');
+                else
+                    snprintf(partner, sizeof partner, "a cell boundary");
+                rc = fail(3, "engine stopped at t = %.17g: simulated time stands still: ball "
+                          "%lld and %s keep meeting at that instant (a ball or a chain of "
+                          "balls exactly as wide as the box, pushed against both walls; or a "
+                          "clock so large that a step rounds to nothing); the state at that "
+                          "time is written", rc_sim_time(sim), (long long)d.stall_ball,
+                          partner);
+                break;
+            }
             if (st != RC_OK) {
                 rc = fail(1, "engine stopped at t = %.17g: %s", rc_sim_time(sim), rc_strerror(st));
                 break;

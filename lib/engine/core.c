@@ -596,6 +596,25 @@ static void reorder(rc_sim *s)
     eng_queue_rebuild(&s->q, s->now);
 }
 
+/* Events a run may have at one instant before it is called stalled: every contact of a
+ * touching configuration may resolve a few times over (a cascade through a rack, a
+ * lattice), far fewer than this; a ball pinned between two walls, or a clock so large
+ * that a step rounds to nothing, passes it at once and for ever. */
+static uint64_t stall_limit(const rc_sim *s) { return 10000 + 64 * (uint64_t)s->n; }
+
+/* The run cannot advance: note the event that would come next (its balls, by the caller's
+ * numbers) and say so. The state is the one before that event, whole. */
+static int stalled(rc_sim *s, int32_t i)
+{
+    const int32_t p = s->a[i].ev_partner;
+    const int cross = s->a[i].cross_t <= s->a[i].ev_t;
+    s->bk.stall_ball = s->id[i];
+    s->bk.stall_partner = cross || p == ENG_NONE ? -((int64_t)1 << 62)
+                          : p >= 0               ? (int64_t)s->id[p]
+                                                 : (int64_t)p; /* -1 - w: wall w */
+    return RC_ESTALL;
+}
+
 int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
 {
     if (!s || isnan(t_end))
@@ -636,6 +655,19 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
         if (nx >= 0) {
             __builtin_prefetch(&s->b[nx]);
             __builtin_prefetch(&s->a[nx]);
+        }
+        /* time must move on: count the events that come at one instant (stale entries,
+         * mere bookkeeping, do not count) */
+        if (!(a->ev_partner >= 0 && a->cross_t > a->ev_t && s->cnt[a->ev_partner] != a->ev_pcount)) {
+            if (top_t == s->bk.still_t) {
+                if (++s->bk.still_count > stall_limit(s)) {
+                    s->now = top_t;
+                    return stalled(s, i);
+                }
+            } else {
+                s->bk.still_t = top_t;
+                s->bk.still_count = 0;
+            }
         }
         s->now = top_t;
         done++;

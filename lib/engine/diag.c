@@ -124,6 +124,8 @@ int rc_sim_diagnostics(const rc_sim *s, rc_sim_diag *d)
     d->max_group = s->bk.max_group;
     d->group_fallbacks = s->bk.group_fallbacks;
     d->group_sequential = s->bk.group_sequential;
+    d->stall_ball = s->bk.stall_ball;
+    d->stall_partner = s->bk.stall_partner;
     return RC_OK;
 }
 

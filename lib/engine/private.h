@@ -205,8 +205,14 @@ typedef struct eng_books {
     uint64_t max_group;
     uint64_t group_fallbacks;
     uint64_t group_sequential;
+    /* progress: the time of the last event and how many events in a row came at it; when
+     * that count passes eng_stall_limit the run stops (RC_ESTALL), naming the event's
+     * balls (caller's index; a wall w as -1 - w; -2^62 none) */
+    double still_t;
+    uint64_t still_count;
+    int64_t stall_ball, stall_partner;
 } eng_books;
-_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3),
+_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 4),
                "no padding in the bookkeeping");
 
 struct rc_sim {

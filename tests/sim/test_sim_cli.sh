@@ -252,6 +252,22 @@ nsnap=$(grep -o '"snapshots": \[[^]]*\]' "$tmp/long/final.json" | tr ',' '\n' | 
 [ "$nsnap" -eq 10 ] && ok "Ctrl-C: final.json carries the 10 snapshot times ahead" \
     || ko "Ctrl-C: final.json carries $nsnap snapshot times, want 10"
 
+# time that stands still stops the run in well under the test's time limit, exit 3, the
+# balls and the time named, the state written: a ball, and a chain of two, exactly as wide
+# as the box pushed against its walls; a clock of 1e20, where a step rounds to nothing
+stall() { # NAME JSON EXPECTED
+    printf '%s\n' "$2" > "$tmp/$1.json"
+    "$sim" "$tmp/$1.json" --out "$tmp/$1" > /dev/null 2> "$tmp/err"; st=$?
+    if [ $st -eq 3 ] && grep -q "simulated time stands still: $3" "$tmp/err" && [ -s "$tmp/$1/final.json" ]; then
+        ok "$1 -> exit 3: $(cat "$tmp/err")"
+    else
+        ko "$1: exit $st: $(cat "$tmp/err")"
+    fi
+}
+stall pinned '{"dim": 2, "box": [2, 10], "t_end": 5, "balls": [{"r": 1, "x": [1, 5], "v": [-0.5, 0]}], "outputs": {"plots": false}}' 'ball 0 and the wall x'
+stall chain '{"dim": 2, "box": [4, 10], "t_end": 5, "balls": [{"r": 1, "x": [1, 5], "v": [-0.5, 0]}, {"r": 1, "x": [3, 5], "v": [0.3, 0]}], "outputs": {"plots": false}}' 'ball [01] and '
+stall clock '{"dim": 2, "box": [10, 10], "time": 1e20, "t_end": 1.0000000000001e20, "balls": [{"r": 1, "x": [5, 5], "v": [1, 0]}], "outputs": {"plots": false}}' 'ball 0 and the wall x'
+
 # a killed run's temporaries are removed by the next run into the same folder; a live
 # writer's, and files that only look alike, are not
 sh -c 'exit 0' & dead=$!

@@ -200,6 +200,10 @@ typedef struct rc_sim_diag {
      * (a ball between two others ends differently if either contact goes first), which
      * is not physical; each group counted here is one where that happened. */
     uint64_t group_sequential;
+    /* After rc_sim_advance returned RC_ESTALL: the ball whose event was next (caller's
+     * index) and its partner (a ball's index, -1 - w for wall w = 2 d + side, or a large
+     * negative number for a cell crossing). */
+    int64_t stall_ball, stall_partner;
 } rc_sim_diag;
 
 /* A new engine. Its neighbour test runs in the widest lanes the CPU has up to def->simd;
@@ -257,7 +261,13 @@ int rc_sim_checkpoint_read(rc_sim *s, const void *buf, size_t bytes);
 /* Process events in time order until the next one would be later than t_end (then all
  * balls are at t_end) or max_events events were processed (0 = no limit). A collision law
  * that fails (a negative code other than from its group solver) stops the run with its
- * code; the event's balls keep their states from before it. */
+ * code; the event's balls keep their states from before it. A run whose time no longer
+ * moves -- more than 10000 + 64 N events in a row at one instant: a ball (or a chain)
+ * exactly as wide as the box pushed against both walls, which the group solver cannot
+ * resolve and the fallback resolves one wall after the other for ever, or a clock so
+ * large that an event's step rounds to nothing -- stops with RC_ESTALL before the next
+ * event, its state whole (it can be read and written), and rc_sim_diag.stall_ball and
+ * stall_partner name that event; advancing again stalls again. */
 int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events);
 
 size_t rc_sim_count(const rc_sim *s);
