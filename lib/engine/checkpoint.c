@@ -40,7 +40,7 @@ typedef struct ck_cursor {
 
 static void put(ck_cursor *c, const void *x, size_t bytes)
 {
-    if (c->p && bytes)
+    if (c->p && x && bytes) /* (x is NULL only when counting) */
         memcpy(c->p + c->at, x, bytes);
     c->at += bytes;
 }
