@@ -153,7 +153,12 @@ static int write_script(const char *path, const options *o, const app_balls *b,
     if (app_atomic_open(&a, path, err) != 0)
         return -1;
     FILE *f = a.f;
-    char fe[APP_FMT_LEN];
+    char fe[APP_FMT_LEN], slope_v[48], slope_q[48];
+    /* (no fitted slope: the quantity stayed at round-off, independent of c) */
+    snprintf(slope_v, sizeof slope_v, isfinite(s_v) ? "(slope %.3f)" : "(round-off at every c)",
+             s_v);
+    snprintf(slope_q, sizeof slope_q, isfinite(s_q) ? "(slope %.3f)" : "(round-off at every c)",
+             s_q);
     fprintf(f,
 "# sweep-c.gp — written by relcol-sweep-c; run `gnuplot sweep-c.gp` in this folder.\n"
 "# Deviation of a two-ball collision's outcome at speed of light c from the classical\n"
@@ -174,13 +179,13 @@ static int write_script(const char *path, const options *o, const app_balls *b,
 "plot 'sweep-c.csv' skip 1 using 2:3 with lines dt 2 lw 2 lc rgb '#555555' \\\n"
 "       title '(|v|_{max}/c)^2 reference', \\\n"
 "     '' skip 1 using 2:4 with linespoints pt 7 ps 0.9 lw 2 lc rgb '#1f77b4' \\\n"
-"       title sprintf('final velocities  max|v′(c) − v′(∞)| / max|v′(∞)|   (slope %%.3f)', %.6f)%s\n",
-            s_v, have_heat ? ", \\" : "");
+"       title 'final velocities  max|v′(c) − v′(∞)| / max|v′(∞)|   %s'%s\n",
+            slope_v, have_heat ? ", \\" : "");
     if (have_heat)
         fprintf(f,
 "     '' skip 1 using 2:5 with linespoints pt 5 ps 0.8 lw 2 lc rgb '#d62728' \\\n"
-"       title sprintf('heat  |Σ(m′ − m)c² − ΔK_{c=∞}| / ΔK_{c=∞}   (slope %%.3f)', %.6f)\n",
-                s_q);
+"       title 'heat  |Σ(m′ − m)c² − ΔK_{c=∞}| / ΔK_{c=∞}   %s'\n",
+                slope_q);
     else
         fprintf(f, "# eps = 1: no heat at any c, so the heat deviation (nan) is not plotted\n");
     return app_atomic_commit(&a, err);
@@ -310,12 +315,29 @@ int main(int argc, char **argv)
     }
     app_progress_done(&bar);
 
+    /* Deviations at the law's round-off (a few ulps of the relative result) carry no
+     * c-dependence: they are left out of the fits, and a quantity that never rises above
+     * them (equal masses swap their velocities exactly at every c) has no slope to claim. */
+    const double floor_rel = 1e-14;
+    double *dv_fit = malloc(N * sizeof *dv_fit), *dq_fit = malloc(N * sizeof *dq_fit);
+    if (!dv_fit || !dq_fit) {
+        free(dv_fit);
+        free(dq_fit);
+        fail("out of memory");
+        goto out;
+    }
+    double dv_max = 0.0;
+    for (size_t j = 0; j < N; j++) {
+        dv_fit[j] = dv[j] > floor_rel ? dv[j] : NAN;
+        dq_fit[j] = dq[j] > floor_rel ? dq[j] : NAN;
+        dv_max = fmax(dv_max, dv[j]);
+    }
     double s_v = NAN, s_q = NAN, sd_v = NAN, sd_q = NAN;
-    size_t used;
-    if (app_loglog_slope(ratio, dv, N, &s_v, NULL, &sd_v, &used) != 0)
-        fprintf(stderr, "%s: cannot fit the velocity slope (%zu usable points)\n", prog, used);
-    if (have_heat && app_loglog_slope(ratio, dq, N, &s_q, NULL, &sd_q, &used) != 0)
-        fprintf(stderr, "%s: cannot fit the heat slope (%zu usable points)\n", prog, used);
+    size_t used_v = 0, used_q = 0;
+    const int fit_v = app_loglog_slope(ratio, dv_fit, N, &s_v, NULL, &sd_v, &used_v) == 0;
+    const int fit_q = have_heat && app_loglog_slope(ratio, dq_fit, N, &s_q, NULL, &sd_q, &used_q) == 0;
+    free(dv_fit);
+    free(dq_fit);
 
     rc = 1;
     if (app_mkdir_p(o.out, err) != 0) {
@@ -355,9 +377,17 @@ int main(int argc, char **argv)
         printf("wrote %s, %s, %s/sweep-c.png\n", csv, gp, o.out);
     else
         printf("wrote %s, %s (no figure: gnuplot is not installed)\n", csv, gp);
-    printf("slope velocities: %.4f +- %.2g (expect -2)\n", s_v, sd_v);
-    if (have_heat)
+    if (fit_v)
+        printf("slope velocities: %.4f +- %.2g (expect -2)\n", s_v, sd_v);
+    else
+        printf("slope velocities: none (%zu of %zu points above the round-off floor %g; the "
+               "largest deviation from c = inf is %.2g: the outcome does not depend on c)\n",
+               used_v, N, floor_rel, dv_max);
+    if (fit_q)
         printf("slope heat: %.4f +- %.2g (expect -2)\n", s_q, sd_q);
+    else if (have_heat)
+        printf("slope heat: none (%zu of %zu points above the round-off floor %g)\n", used_q,
+               N, floor_rel);
     else
         printf("slope heat: none (eps = 1: no rest-mass change at any c; dev_heat is nan)\n");
     rc = fflush(stdout) == 0 ? 0 : 1;

@@ -75,6 +75,13 @@ grep -q "slope heat: none" "$T/stdout" && ok || bad "eps = 1 must print 'slope h
 slope_ok velocities
 awk -F, 'NR > 1 && $5 != "nan" { exit 1 }' "$T/el/sweep-c.csv" && ok || bad "eps = 1: dev_heat must be nan"
 
+# equal masses head-on, elastic: they swap velocities exactly at every c, so no slope is
+# claimed (it printed "slope velocities: 0.0000 +- 0 (expect -2)")
+printf 'm,vx\n1,0.6\n1,-0.6\n' | "$S" --out "$T/eq" > "$T/stdout" 2> "$T/stderr"
+st=$?
+[ "$st" -eq 0 ] && grep -q "slope velocities: none (0 of 41 points above the round-off floor" "$T/stdout" &&
+    ! grep -q "nan +-\|-nan\|: nan" "$T/stdout" && ok || bad "equal masses: exit $st: $(cat "$T/stdout" "$T/stderr")"
+
 # stdin input, momentum columns, 3-D
 printf 'm,px,py,pz\n1,0.5,0.1,0\n2,-0.4,0,0.2\n' | "$S" --eps 0.3 --out "$T/p" > "$T/stdout" 2> "$T/stderr"
 st=$?
