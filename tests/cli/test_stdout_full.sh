@@ -1,7 +1,8 @@
 #!/bin/sh
 # test_stdout_full.sh APP... — every app whose standard output cannot be written (here
 # /dev/full: every write fails with ENOSPC) says so on stderr and exits non-zero, instead
-# of exit 0 with its output lost; --help for each, and a whole run of relcol-sim.
+# of exit 0 with its output lost (relcol-toi and relcol-frames exited 1 without a word);
+# --help for each, and a whole run of relcol-sim, relcol-collide, relcol-toi, relcol-frames.
 . "$(dirname "$0")/harness.sh"
 for app in "$@"; do
     name=$(basename "$app")
@@ -16,6 +17,8 @@ for app in "$@"; do
     case "$name" in
     relcol-sim) "$app" --builtin rack --no-plots --out "$T/rack" > /dev/full 2> "$T/err" ;;
     relcol-collide) printf 'm,vx\n1,0.6\n1,-0.6\n' | "$app" --c 1 > /dev/full 2> "$T/err" ;;
+    relcol-toi) printf 'r,x,vx\n1,0,0.5\n1,10,-0.5\n' | "$app" > /dev/full 2> "$T/err" ;;
+    relcol-frames) "$app" --points 5 --out "$T/frames" > /dev/full 2> "$T/err" ;;
     *) continue ;;
     esac
     st=$?
