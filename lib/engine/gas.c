@@ -1,7 +1,9 @@
 /* engine/gas.c — a gas to start from: equal balls on random sites of a square / cubic
  * lattice sized for an exact packing fraction, isotropic random momenta with a given rms
  * speed and zero total momentum. The lattice start lets any fluid packing (up to 0.52 in
- * 3-D, 0.78 in 2-D) be made at once; melting it is a run of the engine. */
+ * 3-D, 0.78 in 2-D) be made at once; melting it is a run of the engine. A few balls that
+ * the lattice has no room for (its side^dim sites round n up) are placed at random
+ * instead. */
 #include <math.h>
 #include <stdlib.h>
 
@@ -33,6 +35,49 @@ static double rng_gauss(rng *r)
 {
     double u = rng_uniform(r), v = rng_uniform(r);
     return sqrt(-2.0 * log1p(-u)) * cos(2.0 * M_PI * v);
+}
+
+/* Random sequential addition: n centres in [lo, hi]^dim, each more than dmin from every
+ * earlier one, GAS_RSA_TRIES tries a ball, and the whole placement begun again up to
+ * GAS_RSA_STARTS times (an early ball in the middle can leave no room for the others). For
+ * the few balls a lattice wastes too much room on (two balls in a cube fit on its
+ * diagonal, not on a 2 x 2 x 2 lattice): O(n^2), so only for small n. 0 on success. */
+#define GAS_RSA_TRIES 1000
+#define GAS_RSA_STARTS 1000
+#define GAS_RSA_MAX_N 64
+/* ... and at most this many candidate centres in all, so that a packing no placement can
+ * reach is refused in a fraction of a second, not after every start */
+#define GAS_RSA_BUDGET 2000000
+
+static int place_once(rng *R, int dim, size_t n, double lo, double hi, double dmin,
+                      rc_vec3 *x, long *budget)
+{
+    for (size_t i = 0; i < n; i++) {
+        int placed = 0;
+        for (long t = 0; t < GAS_RSA_TRIES && !placed && (*budget)-- > 0; t++) {
+            const double w = hi - lo;
+            const rc_vec3 c = rc_v3(lo + w * rng_uniform(R), lo + w * rng_uniform(R),
+                                    dim == 3 ? lo + w * rng_uniform(R) : 0.0);
+            placed = 1;
+            for (size_t j = 0; j < i && placed; j++)
+                placed = rc_v3_norm2(rc_v3_sub(c, x[j])) > dmin * dmin;
+            if (placed)
+                x[i] = c;
+        }
+        if (!placed)
+            return -1;
+    }
+    return 0;
+}
+
+static int place_rsa(rng *R, int dim, size_t n, double lo, double hi, double dmin,
+                     rc_vec3 *x)
+{
+    long budget = GAS_RSA_BUDGET;
+    for (int k = 0; k < GAS_RSA_STARTS && budget > 0; k++)
+        if (place_once(R, dim, n, lo, hi, dmin, x, &budget) == 0)
+            return 0;
+    return -1;
 }
 
 static double rms_speed(const rc_sim_ball *b, size_t n, double scale, double m, double k)
@@ -73,13 +118,27 @@ int rc_sim_gas_init(const rc_sim_gas_def *g, rc_vec3 *box, rc_sim_ball *balls)
     while ((dim == 3 ? side * side * side : side * side) < g->n)
         side++;
     const double a = L / (double)side;
-    if (!(a > 2.0 * r * (1.0 + GAS_MIN_CLEARANCE)))
-        return RC_EOVERLAP; /* packing too dense for the lattice start */
+    rng R = {g->seed};
+    rc_vec3 *xs = NULL; /* positions placed at random, where the lattice has no room */
+    if (!(a > 2.0 * r * (1.0 + GAS_MIN_CLEARANCE))) {
+        /* too dense for the lattice start: a few balls may still fit at random (a lattice
+         * of side^dim >= n sites spends room on empty sites); many cannot */
+        const double lo = r * (1.0 + GAS_MIN_CLEARANCE), hi = L - lo;
+        if (g->n > GAS_RSA_MAX_N || !(hi > lo))
+            return RC_EOVERLAP;
+        if (!(xs = malloc(g->n * sizeof *xs)))
+            return RC_ENOMEM;
+        if (place_rsa(&R, dim, g->n, lo, hi, 2.0 * r * (1.0 + GAS_MIN_CLEARANCE), xs)) {
+            free(xs);
+            return RC_EOVERLAP;
+        }
+    }
     const size_t sites = dim == 3 ? side * side * side : side * side;
     size_t *perm = malloc(sites * sizeof *perm);
-    if (!perm)
+    if (!perm) {
+        free(xs);
         return RC_ENOMEM;
-    rng R = {g->seed};
+    }
     for (size_t i = 0; i < sites; i++)
         perm[i] = i;
     for (size_t i = sites - 1; i > 0; i--) { /* Fisher-Yates */
@@ -93,7 +152,8 @@ int rc_sim_gas_init(const rc_sim_gas_def *g, rc_vec3 *box, rc_sim_ball *balls)
     for (size_t i = 0; i < g->n; i++) {
         size_t s = perm[i];
         size_t ix = s % side, iy = (s / side) % side, iz = s / (side * side);
-        balls[i].x = rc_v3((ix + 0.5) * a, (iy + 0.5) * a, dim == 3 ? (iz + 0.5) * a : 0.0);
+        balls[i].x = xs ? xs[i]
+                        : rc_v3((ix + 0.5) * a, (iy + 0.5) * a, dim == 3 ? (iz + 0.5) * a : 0.0);
         balls[i].p = rc_v3(rng_gauss(&R), rng_gauss(&R), dim == 3 ? rng_gauss(&R) : 0.0);
         balls[i].r = r;
         balls[i].m = m;
@@ -104,6 +164,7 @@ int rc_sim_gas_init(const rc_sim_gas_def *g, rc_vec3 *box, rc_sim_ball *balls)
         ptot = rc_v3_add(ptot, balls[i].p);
     }
     free(perm);
+    free(xs);
     for (size_t i = 0; i < g->n; i++)
         balls[i].p = rc_v3_axpy(balls[i].p, -1.0 / (double)g->n, ptot);
     /* scale momenta so the rms speed is v_rms: rms speed grows monotonically with scale.

@@ -1,5 +1,6 @@
 /* test_engine_gas.c — rc_sim_gas_init: exact packing fraction, no overlaps, balls inside
- * the box, rms speed and zero total momentum, any c; impossible requests rejected. */
+ * the box, rms speed and zero total momentum, any c, many balls on the lattice and a few
+ * at random; impossible requests rejected. */
 #include <math.h>
 #include <stdlib.h>
 
@@ -46,6 +47,14 @@ static void test_packings(void)
     check(3, 999, 0.3, 0.5, 1.0); /* rms 0.5 c */
     check(2, 1000, 0.7, 1.0, INFINITY);
     check(2, 500, 0.2, 1.8, 2.0);
+    /* a few balls, which the lattice of side^dim >= n sites has no room for at these
+     * packings (two balls in a cube of 1.74 diameters): placed at random instead */
+    check(3, 2, 0.2, 0.5, 1.0);
+    check(3, 3, 0.2, 0.5, 1.0);
+    check(3, 10, 0.2, 0.5, 1.0);
+    check(3, 10, 0.25, 1.0, INFINITY);
+    check(2, 2, 0.25, 0.5, 1.0);
+    check(2, 3, 0.4, 1.0, INFINITY);
 }
 
 static void test_rejects(void)

@@ -319,8 +319,11 @@ typedef struct rc_sim_gas_def {
 
 /* n equal balls on a random subset of the sites of a square / cubic lattice filling a
  * cubic box whose edge makes the packing fraction exact, with isotropic random momenta
- * scaled so the rms speed is v_rms and total momentum is zero. Melt it with
- * rc_sim_advance before measuring anything that needs a fluid. balls: n entries.
+ * scaled so the rms speed is v_rms and total momentum is zero. Where that lattice (side^dim
+ * >= n sites) has no room for n <= 64 balls, they are placed at random instead (random
+ * sequential addition, from the seed; RC_EOVERLAP if no placement is found within a
+ * bounded number of tries). Melt it with rc_sim_advance before measuring anything that
+ * needs a fluid. balls: n entries.
  * RC_EINVAL also for n = 1 with v_rms > 0 (zero total momentum leaves one ball at rest),
  * RC_ENONFINITE for a v_rms whose momenta would overflow. */
 int rc_sim_gas_init(const rc_sim_gas_def *g, rc_vec3 *box, rc_sim_ball *balls);
