@@ -27,6 +27,13 @@ enum { NBLOCK = 10, NCELL = 20, NHIST = 60, MAXSPEC = 2 };
  * never thermalise): rest masses 1 and 2, each particle heavy with probability 1/2. */
 static const double mix_mass[MAXSPEC] = {1.0, 2.0};
 
+/* Temperatures theta = kT/(m c^2) the app accepts. Below 1e-3 its readings fail: at 1e-4
+ * the two thermometers already disagree by 6 sigma and the histogram's chi2 is 36 times
+ * its cells' variance, and at 1e-8 no cell is resolved, while theta is printed to five
+ * decimals; above 1e3 the Maxwell-Boltzmann law has no weight where the balls are. */
+#define THETA_MIN 1e-3
+#define THETA_MAX 1e3
+
 static void usage(FILE *f)
 {
     fprintf(f,
@@ -60,6 +67,7 @@ static void usage(FILE *f)
 "                   theta = T (1-D: of the light species), so the gas settles at T\n"
 "                   (default 0.75)\n"
 "  --v-rms V        instead: every starting speed is V (0 < V < c)\n"
+"                   (theta_start and the theta V settles at: within [1e-3, 1e3])\n"
 "  --packing P      area / volume fraction (default 0.25 in 2-D, 0.2 in 3-D; not 1-D)\n"
 "  --t-equil T      table time run before sampling (default 50/c; 1-D 500/c)\n"
 "  --t-sample T     table time sampled after it (default 400/c; 1-D 1000/c)\n"
@@ -169,8 +177,10 @@ static int parse_options(int argc, char **argv, options *o)
                     return fail("--c: must be finite (theta = kT/(m c^2) is 0 at c = inf)");
                 o->c = x;
             } else if (strcmp(name, "--theta-start") == 0) {
-                if (!(x > 0.0 && x <= 1e4))
-                    return fail("--theta-start: %s must be in (0, 1e4]", app_fmt(x, f1));
+                if (!(x >= THETA_MIN && x <= THETA_MAX))
+                    return fail("--theta-start: %s outside [%g, %g], the temperatures whose "
+                                "gamma histogram and thermometers the app resolves",
+                                app_fmt(x, f1), THETA_MIN, THETA_MAX);
                 o->theta_start = x;
                 o->theta_given = 1;
             } else if (strcmp(name, "--v-rms") == 0) {
@@ -201,6 +211,17 @@ static int parse_options(int argc, char **argv, options *o)
     if (o->v_given && !(o->v_start < o->c))
         return fail("--v-rms: %s must be below c = %s", app_fmt(o->v_start, f1),
                     app_fmt(o->c, err));
+    if (o->v_given) {
+        /* the temperature that start settles at, within the range --theta-start takes */
+        const double b = o->v_start / o->c, g = 1.0 / sqrt((1.0 - b) * (1.0 + b));
+        const int d = o->dim;
+        if (!(g >= jt_mean_gamma(d, THETA_MIN) && g <= jt_mean_gamma(d, THETA_MAX)))
+            return fail("--v-rms: %s gives every ball gamma = %.17g, a gas that settles %s "
+                        "theta = %g, outside the temperatures the app resolves (see "
+                        "--theta-start)", app_fmt(o->v_start, f1), g,
+                        g < jt_mean_gamma(d, THETA_MIN) ? "below" : "above",
+                        g < jt_mean_gamma(d, THETA_MIN) ? THETA_MIN : THETA_MAX);
+    }
     if (o->dim == 1 && o->packing_given)
         return fail("--packing: not used with --dim 1 (point particles at unit density)");
     if (o->dim == 1 && o->frame_given)
@@ -720,16 +741,27 @@ int main(int argc, char **argv)
                o.dim != 1 ? "  (fixed by the conserved energy)" : "");
         printf("theta from <p.v>/%d (equipartition) = %.5f +- %.5f\n", o.dim, s->th_pv,
                s->se_pv);
-        printf("difference <p.v> - <gamma>          = %+.5f +- %.5f (%.1f sigma)\n",
-               s->th_pv - s->th_g, s->se_diff, (s->th_pv - s->th_g) / s->se_diff);
+        /* (no spread between the blocks: no significance to state, rather than +-inf) */
+        char sig[64];
+        if (s->se_diff > 0.0)
+            snprintf(sig, sizeof sig, "%.1f sigma", (s->th_pv - s->th_g) / s->se_diff);
+        else
+            snprintf(sig, sizeof sig, "sigma n/a: the blocks do not differ");
+        printf("difference <p.v> - <gamma>          = %+.5f +- %.5f (%s)\n",
+               s->th_pv - s->th_g, s->se_diff, sig);
         if (o.dim == 2 && s->count <= 1000000) { /* an O(N) sum of log-gammas */
             printf("theta microcanonical (exact for uncontracted discs at this energy) = %.5f\n",
                    jt_theta_micro_2d((double)s->count, S.gamma0));
         }
-        printf("chi2/phi of the gamma histogram (%d cells, dof %g, phi %.2f): Jüttner %.1f, "
-               "Maxwell–Boltzmann %.4g (5 sigma bound %.1f)\n",
-               NCELL, s->dof, s->phi, s->chi2_j / s->phi, s->chi2_mb / s->phi,
-               s->dof + 5.0 * sqrt(2.0 * s->dof));
+        /* a law that puts (numerically) no weight in a cell the balls fill has no finite
+         * chi2: said in words, not as inf or nan */
+        char cj[64], cm[64];
+        const double xj = s->chi2_j / s->phi, xm = s->chi2_mb / s->phi;
+        snprintf(cj, sizeof cj, isfinite(xj) ? "%.1f" : "n/a (no weight where the balls are)", xj);
+        snprintf(cm, sizeof cm, isfinite(xm) ? "%.4g" : "n/a (no weight where the balls are)", xm);
+        printf("chi2/phi of the gamma histogram (%d cells, dof %g, phi %.2f): Jüttner %s, "
+               "Maxwell–Boltzmann %s (5 sigma bound %.1f)\n",
+               NCELL, s->dof, s->phi, cj, cm, s->dof + 5.0 * sqrt(2.0 * s->dof));
         printf("block check: <p.v> snapshot correlation time %.2f snapshots, blocks of %zu\n",
                tau[q], S.ns / NBLOCK);
         if ((double)(S.ns / NBLOCK) < 4.0 * tau[q])

@@ -13,6 +13,11 @@ expect_bad c-neg '' '^relcol-gas: --c: ' --c -1
 expect_bad theta '' '^relcol-gas: --theta-start: ' --theta-start 0
 expect_bad vrms '' '^relcol-gas: --v-rms: 1 must be below c' --v-rms 1
 expect_bad both '' '^relcol-gas: --v-rms: conflicts with --theta-start' --v-rms 0.5 --theta-start 1
+# temperatures the readings cannot resolve are refused, not printed as inf or nan (a
+# theta of 1e-8 gave chi2 inf and '-inf sigma'; v_rms a ulp below c, theta = 3e7)
+expect_bad theta-tiny '' '^relcol-gas: --theta-start: 1e-08 outside \[0.001, 1000\]' --theta-start 1e-8
+expect_bad vrms-near-c '' '^relcol-gas: --v-rms: 0.9999999999999999 gives every ball gamma = 67108864, a gas that settles above theta = 1000' --v-rms 0.9999999999999999
+expect_bad vrms-slow '' 'settles below theta = 0.001' --v-rms 0.01
 expect_bad packing '' '^relcol-gas: --packing: 0.9 must be below 0.78' --packing 0.9
 expect_bad packing1d '' '^relcol-gas: --packing: not used with --dim 1' --dim 1 --packing 0.2
 expect_bad frame1d '' '^relcol-gas: --frame: not used with --dim 1' --dim 1 --frame table
