@@ -804,6 +804,23 @@ int scn_builtin(const char *name, scn_scenario *s, char *err)
     return -1;
 }
 
+rc_sim_def scn_sim_def(const scn_scenario *s)
+{
+    rc_sim_def def = rc_sim_def_default();
+    def.dim = s->dim;
+    def.box = s->box;
+    def.c = s->c;
+    def.eps_ball = s->eps_ball;
+    def.eps_wall = s->eps_wall;
+    def.t_c = s->t_c;
+    def.law = s->law;
+    def.restart = s->restart;
+    def.frame = s->frame;
+    for (int d = 0; d < 3; d++)
+        def.boundary[d] = s->boundary[d];
+    return def;
+}
+
 void scn_free(scn_scenario *s)
 {
     free(s->balls);

@@ -72,6 +72,10 @@ int scn_load(const char *path, scn_scenario *s, char *err);
 int scn_builtin(const char *name, scn_scenario *s, char *err);
 void scn_free(scn_scenario *s);
 
+/* The engine's definition of the run s describes (everything else default): written once,
+ * for relcol-sim and for the tests that run a scenario as relcol-sim does. */
+rc_sim_def scn_sim_def(const scn_scenario *s);
+
 /* The output folder of a run continued from one that wrote into dir: "dir.1", and after
  * "dir.K" "dir.K+1" -- so that continuing from final.json never writes over the files of
  * the run it continues. NULL if out of memory (free the result). */

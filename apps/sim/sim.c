@@ -207,18 +207,7 @@ int main(int argc, char **argv)
         return 0;
     }
 
-    rc_sim_def def = rc_sim_def_default();
-    def.dim = s.dim;
-    def.box = s.box;
-    def.c = s.c;
-    def.eps_ball = s.eps_ball;
-    def.eps_wall = s.eps_wall;
-    def.t_c = s.t_c;
-    def.law = s.law;
-    def.restart = s.restart;
-    def.frame = s.frame;
-    for (int d = 0; d < 3; d++)
-        def.boundary[d] = s.boundary[d];
+    rc_sim_def def = scn_sim_def(&s);
     rc_sim *sim = NULL;
     int st = rc_sim_create(&def, &sim);
     if (st != RC_OK) {

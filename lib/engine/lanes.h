@@ -11,8 +11,8 @@
 
 #include "private.h"
 
-/* x86-64 builds have the AVX2 and AVX-512 back ends, used where the CPU has the
- * instructions (rc_sim_create asks it once); other machines, and builds with
+/* x86-64 builds have the AVX2 and AVX-512 back ends, used where the CPU has those
+ * instruction sets (rc_sim_create asks it once); other machines, and builds with
  * RELCOL_NO_SIMD, the plain C one alone. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(RELCOL_NO_SIMD)
 #define ENG_HAVE_AVX2 1

@@ -30,6 +30,32 @@ static inline rc_sim *util_gas(rc_sim_def d, size_t n, double packing, double v_
     return s;
 }
 
+/* One ball of rest radius and mass 1 at x with momentum p, alone on a 2-D table box,
+ * from time t0 (NULL on failure, recorded as a check). */
+static inline rc_sim *util_one_ball(rc_vec3 box, rc_vec3 x, rc_vec3 p, double c,
+                                    double eps_wall, double t_c, double t0)
+{
+    rc_sim_def d = rc_sim_def_default();
+    d.dim = 2;
+    d.box = box;
+    d.c = c;
+    d.eps_wall = eps_wall;
+    d.t_c = t_c;
+    rc_sim *s = NULL;
+    rc_sim_ball b = {0};
+    b.x = x;
+    b.p = p;
+    b.r = 1.0;
+    b.m = 1.0;
+    int st = rc_sim_create(&d, &s);
+    if (st == RC_OK && (st = rc_sim_set_time(s, t0)) == RC_OK)
+        st = rc_sim_set_balls(s, 1, &b, NULL);
+    ENSURE_MSG(st == RC_OK, "one ball: %s", rc_strerror(st));
+    if (st != RC_OK)
+        rc_sim_free(&s);
+    return s;
+}
+
 /* Run until at least `target` contacts were resolved (events in chunks, no time limit). */
 static inline void util_run_collisions(rc_sim *s, uint64_t target)
 {

@@ -377,16 +377,7 @@ static void test_scenario_reader(void)
     free(t2);
 
     /* the run, as relcol-sim sets it up */
-    rc_sim_def d = rc_sim_def_default();
-    d.dim = sc.dim;
-    d.box = sc.box;
-    d.c = sc.c;
-    d.eps_ball = sc.eps_ball;
-    d.eps_wall = sc.eps_wall;
-    d.t_c = sc.t_c;
-    d.law = sc.law;
-    d.frame = sc.frame;
-    d.restart = sc.restart;
+    rc_sim_def d = scn_sim_def(&sc);
     rc_sim *s = NULL;
     ENSURE(rc_sim_create(&d, &s) == RC_OK);
     ENSURE(s && rc_sim_set_time(s, sc.time) == RC_OK);

@@ -9,26 +9,13 @@
 
 #include "engine_util.h"
 
+/* the ball given by its velocity */
 static rc_sim *one(rc_vec3 box, rc_vec3 x, rc_vec3 v, double c, double eps_wall, double t_c,
                    double t0)
 {
-    rc_sim_def d = rc_sim_def_default();
-    d.dim = 2;
-    d.box = box;
-    d.c = c;
-    d.eps_wall = eps_wall;
-    d.t_c = t_c;
-    rc_sim *s = NULL;
-    rc_sim_ball b;
-    memset(&b, 0, sizeof b);
-    b.x = x;
-    b.r = 1.0;
-    b.m = 1.0;
-    ENSURE(rc_momentum_from_velocity(1.0, v, isinf(c) ? 0.0 : 1.0 / (c * c), &b.p) == RC_OK);
-    ENSURE(rc_sim_create(&d, &s) == RC_OK);
-    ENSURE(s && rc_sim_set_time(s, t0) == RC_OK);
-    ENSURE(s && rc_sim_set_balls(s, 1, &b, NULL) == RC_OK);
-    return s;
+    rc_vec3 p;
+    ENSURE(rc_momentum_from_velocity(1.0, v, isinf(c) ? 0.0 : 1.0 / (c * c), &p) == RC_OK);
+    return util_one_ball(box, x, p, c, eps_wall, t_c, t0);
 }
 
 static void expect_stall(rc_sim *s, double t_at, const char *what)

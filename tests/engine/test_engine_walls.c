@@ -11,21 +11,7 @@
 
 static rc_sim *one_ball(double c, double eps_wall, rc_vec3 x, rc_vec3 p, rc_vec3 box)
 {
-    rc_sim_def d = rc_sim_def_default();
-    d.dim = 2;
-    d.box = box;
-    d.c = c;
-    d.eps_wall = eps_wall;
-    rc_sim *s = NULL;
-    rc_sim_ball b;
-    memset(&b, 0, sizeof b);
-    b.x = x;
-    b.p = p;
-    b.r = 1.0;
-    b.m = 1.0;
-    ENSURE(rc_sim_create(&d, &s) == RC_OK);
-    ENSURE(s && rc_sim_set_balls(s, 1, &b, NULL) == RC_OK);
-    return s;
+    return util_one_ball(box, x, p, c, eps_wall, 0.0, 0.0);
 }
 
 /* Bounces between x = 0 and x = 10 with |p| = 1: every bounce at the far wall gives it
