@@ -276,8 +276,8 @@ int main(int argc, char **argv)
                 else
                     snprintf(partner, sizeof partner, "a cell boundary");
                 rc = fail(3, "engine stopped at t = %.17g: simulated time stands still: ball "
-                          "%lld and %s keep meeting at that instant (a ball or a chain of "
-                          "balls exactly as wide as the box, pushed against both walls; or a "
+                          "%lld and %s keep meeting at that instant (a chain of touching balls "
+                          "exactly as wide as the box, pushed against both walls; or a "
                           "clock so large that a step rounds to nothing); the state at that "
                           "time is written", rc_sim_time(sim), (long long)d.stall_ball,
                           partner);

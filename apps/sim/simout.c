@@ -313,6 +313,7 @@ static int write_summary_json(const sim_output *o, const rc_sim *sim, const rc_s
     for (int w = 0; w < 2 * s->dim; w++)
         add(x, walls[w], d->wall_impulse_by_wall[w] - d0->wall_impulse_by_wall[w]);
     add(j, "wall_shared", (double)(d->wall_shared - d0->wall_shared));
+    add(j, "pinned", (double)(d->pinned - d0->pinned));
     add(j, "cell_crossings", (double)(d->events[RC_SIM_EV_CELL] - d0->events[RC_SIM_EV_CELL]));
     cJSON_AddItemToObject(j, "events", x = cJSON_CreateObject());
     for (int k = 0; k < RC_SIM_EV_NKINDS; k++)

@@ -19,7 +19,7 @@
 #include "relcol/status.h"
 
 #define CK_MAGIC "relcolck"
-#define CK_VERSION 2u /* 2: the bookkeeping as one record (eng_books) */
+#define CK_VERSION 3u /* 2: the bookkeeping as one record (eng_books); 3: with pinned */
 #define CK_ORDER 0x01020304u
 
 typedef struct ck_header {

@@ -418,12 +418,31 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
     return RC_OK;
 }
 
+/* Is wall contact c jammed along its axis: its ball's shape exactly as wide as the box,
+ * touching the opposite wall within sim_tol of its radius? Such a contact cannot separate:
+ * resolved with any restitution it sends the ball into the opposite wall at the same
+ * instant, for ever. (A chain of touching balls across the box is left to the stall
+ * detector: whether it is rigid along the axis depends on its geometry, papers/relcol.md,
+ * "Limits".) */
+static int wall_jammed(const rc_sim *s, const rc_contact *c)
+{
+    return wall_gap_rel(s, c->a, ENG_WALL_INDEX(c->b) ^ 1) <= s->def.sim_tol;
+}
+
 /* Restitution of a contact, elastic under the TC model when a ball's proper time since
- * its previous collision is below t_c. */
+ * its previous collision is below t_c. A wall contact jammed along its axis is perfectly
+ * plastic whatever the walls' restitution and the TC model say: the rigid-wall limit of
+ * the complementarity problem (the only outcome that does not push through the opposite
+ * wall) -- a model choice: the motion along the axis stops, and its kinetic energy
+ * becomes heat (rest mass at finite c), counted in rc_sim_diag.pinned. */
 static double contact_eps(rc_sim *s, const rc_contact *c)
 {
     const eng_clock *aa = &s->clk[s->grp_ball[c->a]];
     int wall = c->b < 0;
+    if (wall && wall_jammed(s, c)) {
+        s->bk.pinned += rc_v3_dot(s->a[s->grp_ball[c->a]].p, c->n) > 0.0;
+        return 0.0;
+    }
     int tc = aa->tau - aa->tau_last < s->def.t_c;
     if (!wall) {
         const eng_clock *ab = &s->clk[s->grp_ball[c->b]];
@@ -598,7 +617,7 @@ static void reorder(rc_sim *s)
 
 /* Events a run may have at one instant before it is called stalled: every contact of a
  * touching configuration may resolve a few times over (a cascade through a rack, a
- * lattice), far fewer than this; a ball pinned between two walls, or a clock so large
+ * lattice), far fewer than this; a chain of balls jammed across the box, or a clock so large
  * that a step rounds to nothing, passes it at once and for ever. */
 static uint64_t stall_limit(const rc_sim *s) { return 10000 + 64 * (uint64_t)s->n; }
 

@@ -119,6 +119,7 @@ int rc_sim_diagnostics(const rc_sim *s, rc_sim_diag *d)
     for (int w = 0; w < 6; w++)
         d->wall_impulse_by_wall[w] = s->bk.wallw[w];
     d->wall_shared = s->bk.wall_shared;
+    d->pinned = s->bk.pinned;
     d->collisions = s->bk.collisions;
     memcpy(d->events, s->bk.events, sizeof d->events);
     d->max_group = s->bk.max_group;

@@ -198,6 +198,7 @@ typedef struct eng_books {
      * it has taken, attributed contact by contact (rc_sim_diag.wall_impulse_by_wall) */
     double wallw[6], wallw_c[6];
     uint64_t wall_shared;
+    uint64_t pinned; /* wall contacts of a ball as wide as the box, made plastic */
     uint64_t overlaps;
     uint64_t overlap_kind[3]; /* overlaps by the kind of contact: ball, wall, group */
     uint64_t collisions;
@@ -212,7 +213,7 @@ typedef struct eng_books {
     uint64_t still_count;
     int64_t stall_ball, stall_partner;
 } eng_books;
-_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 4),
+_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 4),
                "no padding in the bookkeeping");
 
 struct rc_sim {

@@ -253,8 +253,8 @@ nsnap=$(grep -o '"snapshots": \[[^]]*\]' "$tmp/long/final.json" | tr ',' '\n' | 
     || ko "Ctrl-C: final.json carries $nsnap snapshot times, want 10"
 
 # time that stands still stops the run in well under the test's time limit, exit 3, the
-# balls and the time named, the state written: a ball, and a chain of two, exactly as wide
-# as the box pushed against its walls; a clock of 1e20, where a step rounds to nothing
+# balls and the time named, the state written: a chain of two balls exactly as wide as the
+# box pushed against its walls; a clock of 1e20, where a step rounds to nothing
 stall() { # NAME JSON EXPECTED
     printf '%s\n' "$2" > "$tmp/$1.json"
     "$sim" "$tmp/$1.json" --out "$tmp/$1" > /dev/null 2> "$tmp/err"; st=$?
@@ -264,7 +264,15 @@ stall() { # NAME JSON EXPECTED
         ko "$1: exit $st: $(cat "$tmp/err")"
     fi
 }
-stall pinned '{"dim": 2, "box": [2, 10], "t_end": 5, "balls": [{"r": 1, "x": [1, 5], "v": [-0.5, 0]}], "outputs": {"plots": false}}' 'ball 0 and the wall x'
+# a ball exactly as wide as the box pushed against a wall is jammed: the wall contact is
+# plastic along x (papers/relcol.md, "Limits"), the run ends at t_end and says so
+printf '%s\n' '{"dim": 2, "box": [2, 10], "t_end": 5, "balls": [{"r": 1, "x": [1, 5], "v": [-0.5, 0.3]}], "outputs": {"plots": false}}' > "$tmp/pinned.json"
+if "$sim" "$tmp/pinned.json" --out "$tmp/pinned" > /dev/null 2> "$tmp/err" &&
+   grep -q '"pinned":[[:space:]]*1,' "$tmp/pinned/summary.json" && grep -q '"t":[[:space:]]*5,' "$tmp/pinned/summary.json"; then
+    ok "pinned ball runs to t_end, summary.json counts 1 pinned contact"
+else
+    ko "pinned ball: $(cat "$tmp/err") $(grep -o '"pinned": *[0-9]*' "$tmp/pinned/summary.json" 2>/dev/null)"
+fi
 stall chain '{"dim": 2, "box": [4, 10], "t_end": 5, "balls": [{"r": 1, "x": [1, 5], "v": [-0.5, 0]}, {"r": 1, "x": [3, 5], "v": [0.3, 0]}], "outputs": {"plots": false}}' 'ball [01] and '
 stall clock '{"dim": 2, "box": [10, 10], "time": 1e20, "t_end": 1.0000000000001e20, "balls": [{"r": 1, "x": [5, 5], "v": [1, 0]}], "outputs": {"plots": false}}' 'ball 0 and the wall x'
 

@@ -177,6 +177,11 @@ typedef struct rc_sim_diag {
                                across the box): the axis's momentum was split between them
                                by the group solver's impulses, the rest-mass step's share
                                equally -- a choice, not a measurement */
+    uint64_t pinned;        /* approaching wall contacts of a ball jammed along the wall's
+                               axis (its shape exactly as wide as the box): resolved
+                               perfectly plastic along that axis, whatever the walls'
+                               restitution -- a model choice, the rigid-wall limit
+                               (papers/relcol.md, "Limits") */
     double momentum_scale;  /* sum of |p_i| (scale for relative momentum checks) */
     double max_overlap;     /* deepest sphere overlap now, relative to ri + rj (0 if none;
                                NAN with a contracted frame, whose bounding spheres may
@@ -262,9 +267,10 @@ int rc_sim_checkpoint_read(rc_sim *s, const void *buf, size_t bytes);
  * balls are at t_end) or max_events events were processed (0 = no limit). A collision law
  * that fails (a negative code other than from its group solver) stops the run with its
  * code; the event's balls keep their states from before it. A run whose time no longer
- * moves -- more than 10000 + 64 N events in a row at one instant: a ball (or a chain)
- * exactly as wide as the box pushed against both walls, which the group solver cannot
- * resolve and the fallback resolves one wall after the other for ever, or a clock so
+ * moves -- more than 10000 + 64 N events in a row at one instant: a chain of touching
+ * balls exactly as wide as the box pushed against both walls, which the group solver
+ * cannot resolve and the fallback resolves one wall after the other for ever (a single
+ * ball as wide as the box is jammed, not stalled: rc_sim_diag.pinned), or a clock so
  * large that an event's step rounds to nothing -- stops with RC_ESTALL before the next
  * event, its state whole (it can be read and written), and rc_sim_diag.stall_ball and
  * stall_partner name that event; advancing again stalls again. */
