@@ -199,6 +199,11 @@ void app_atomic_abort(app_atomic *a);
  * every writer of an output file calls it first, so stale temporaries never pile up. */
 char *app_temp_template(const char *dir, const char *base);
 void app_clean_stale(const char *dir, const char *base);
+/* fsync a folder, so that renames in it are durable (best effort: some file systems
+ * refuse it); and remove a file, or a folder with everything in it (no symlink is
+ * followed). */
+void app_fsync_dir(const char *dir);
+void app_remove_tree(const char *path);
 
 /* mkdir -p (mode 0777 before umask). */
 int app_mkdir_p(const char *dir, char *err);

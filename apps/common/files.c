@@ -77,6 +77,40 @@ char *app_temp_template(const char *dir, const char *base)
     return t;
 }
 
+void app_fsync_dir(const char *dir)
+{
+    /* (some file systems refuse fsync on folders: then the rename is as durable as they make it) */
+    int dfd = open(dir, O_RDONLY | O_DIRECTORY);
+    if (dfd >= 0) {
+        (void)fsync(dfd);
+        close(dfd);
+    }
+}
+
+void app_remove_tree(const char *path)
+{
+    struct stat st;
+    if (lstat(path, &st) != 0)
+        return;
+    if (S_ISDIR(st.st_mode)) {
+        DIR *d = opendir(path);
+        if (d) {
+            for (struct dirent *e; (e = readdir(d));) {
+                if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
+                    continue;
+                char *p = app_path_join(path, e->d_name);
+                if (p)
+                    app_remove_tree(p);
+                free(p);
+            }
+            closedir(d);
+        }
+        rmdir(path);
+    } else {
+        unlink(path);
+    }
+}
+
 void app_clean_stale(const char *dir, const char *base)
 {
     DIR *d = opendir(dir);
@@ -98,7 +132,7 @@ void app_clean_stale(const char *dir, const char *base)
         if (pid != (long)getpid() && kill((pid_t)pid, 0) != 0 && errno == ESRCH) {
             char *f = app_path_join(dir, n);
             if (f)
-                unlink(f);
+                app_remove_tree(f); /* a temporary, or a run's staging folder */
             free(f);
         }
     }
@@ -184,16 +218,11 @@ int app_atomic_commit(app_atomic *a, char *err)
         app_atomic_abort(a);
         return -1;
     }
-    /* make the rename itself durable; some file systems refuse fsync on folders */
+    /* make the rename itself durable */
     char *dir = dir_of(a->path);
-    if (dir) {
-        int dfd = open(dir, O_RDONLY | O_DIRECTORY);
-        if (dfd >= 0) {
-            (void)fsync(dfd);
-            close(dfd);
-        }
-        free(dir);
-    }
+    if (dir)
+        app_fsync_dir(dir);
+    free(dir);
     free(a->tmp);
     a->tmp = NULL;
     app_atomic_abort(a); /* frees path; tmp is gone, so nothing is unlinked */

@@ -303,8 +303,12 @@ int main(int argc, char **argv)
     if (interrupted && !rc)
         fprintf(stderr, "%s: interrupted at t = %.17g: writing the restart state\n", prog,
                 rc_sim_time(sim));
-    if (simout_close(&o, sim, wall, interrupted, err) && !rc)
-        rc = fail(1, "%s", err);
+    if (simout_close(&o, sim, wall, interrupted, err)) {
+        if (!rc)
+            rc = fail(1, "%s", err);
+        else
+            fprintf(stderr, "%s: %s\n", prog, err);
+    }
     if (!rc)
         printf("%s: t = %.9g, %s\n", prog, rc_sim_time(sim), o.line);
     rc_sim_free(&sim);

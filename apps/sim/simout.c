@@ -29,18 +29,20 @@ int simout_open(sim_output *o, const scn_scenario *s, const char *prog, char *er
         o->frame_k = k;
         o->next_frame = from + dt * k <= s->t_end ? from + dt * k : INFINITY;
     }
-    if (app_mkdir_p(s->out.dir, err))
+    if (simout_stage_open(s->out.dir, &o->dir, err))
         return -1;
     if (s->out.n_snap) {
-        char *d = app_path_join(s->out.dir, "snapshots");
+        char *d = app_path_join(o->dir, "snapshots");
         int r = d ? app_mkdir_p(d, err) : -1;
         free(d);
-        if (r)
+        if (r) {
+            simout_stage_discard(o->dir);
             return -1;
+        }
     }
     if (s->out.xyz_every > 0) {
-        char *p = app_path_join(s->out.dir, "trajectory.xyz");
-        char *q = app_path_join(s->out.dir, "frames.dat");
+        char *p = app_path_join(o->dir, "trajectory.xyz");
+        char *q = app_path_join(o->dir, "frames.dat");
         int r = (!p || !q) ? -1 : app_atomic_open(&o->xyz, p, err);
         if (!r) {
             r = app_atomic_open(&o->frames, q, err);
@@ -49,8 +51,10 @@ int simout_open(sim_output *o, const scn_scenario *s, const char *prog, char *er
         }
         free(p);
         free(q);
-        if (r)
+        if (r) {
+            simout_stage_discard(o->dir);
             return -1;
+        }
         o->have_xyz = 1;
         double nframes = (s->t_end - s->time) / s->out.xyz_every + 1;
         o->gif_stride = nframes > 300 ? (size_t)ceil(nframes / 300) : 1;
@@ -72,7 +76,7 @@ static int write_snapshot(const sim_output *o, const rc_sim *sim, size_t k, char
     const scn_scenario *s = o->s;
     char name[64];
     snprintf(name, sizeof name, "snapshots/snap-%04zu.csv", k);
-    char *path = app_path_join(s->out.dir, name);
+    char *path = app_path_join(o->dir, name);
     app_atomic a;
     if (!path || app_atomic_open(&a, path, err)) {
         free(path);
@@ -157,8 +161,10 @@ int simout_at(sim_output *o, const rc_sim *sim, char *err)
         o->have_d0 = 1;
     }
     while (o->next_snap < s->out.n_snap && s->out.snap[o->next_snap] <= t) {
-        if (write_snapshot(o, sim, o->next_snap, err))
+        if (write_snapshot(o, sim, o->next_snap, err)) {
+            o->failed = 1;
             return -1;
+        }
         o->next_snap++;
     }
     if (o->have_xyz && o->next_frame <= t) {
@@ -177,7 +183,7 @@ static int write_checkpoint(const sim_output *o, const rc_sim *sim, char *err)
 {
     size_t bytes = 0;
     unsigned char *buf = NULL;
-    char *path = app_path_join(o->s->out.dir, SIMOUT_CHECKPOINT);
+    char *path = app_path_join(o->dir, SIMOUT_CHECKPOINT);
     app_atomic a;
     int r = -1, st = rc_sim_checkpoint_size(sim, &bytes);
     if (!path || st != RC_OK || !(buf = malloc(bytes))) {
@@ -209,7 +215,7 @@ static int write_final(const sim_output *o, const rc_sim *sim, int interrupted, 
     const scn_scenario *s = o->s;
     size_t n = rc_sim_count(sim);
     rc_sim_ball *b = malloc((n ? n : 1) * sizeof *b);
-    char *path = app_path_join(s->out.dir, "final.json");
+    char *path = app_path_join(o->dir, "final.json");
     char *next_dir = NULL;
     app_atomic a;
     int r = -1;
@@ -323,7 +329,7 @@ static int write_summary_json(const sim_output *o, const rc_sim *sim, const rc_s
     cJSON_Delete(j);
     if (!text)
         goto nomem;
-    char *path = app_path_join(s->out.dir, "summary.json");
+    char *path = app_path_join(o->dir, "summary.json");
     app_atomic a;
     int r = -1;
     if (path && !app_atomic_open(&a, path, err)) {
@@ -371,7 +377,7 @@ static int write_summary(sim_output *o, const rc_sim *sim, double wall, int inte
              dPrel, interrupted ? " (interrupted)" : "");
     if (!s->out.summary)
         return 0;
-    char *path = app_path_join(s->out.dir, "summary.txt");
+    char *path = app_path_join(o->dir, "summary.txt");
     app_atomic a;
     if (!path || app_atomic_open(&a, path, err)) {
         free(path);
@@ -431,9 +437,8 @@ static int write_summary(sim_output *o, const rc_sim *sim, double wall, int inte
 /* paths.dat: frames.dat regrouped by ball (one block per ball), for the trajectory lines. */
 static int write_paths(const sim_output *o, char *err)
 {
-    const scn_scenario *s = o->s;
     size_t n = o->n_balls, nf = o->gif_frames;
-    char *fp = app_path_join(s->out.dir, "frames.dat"), *pp = app_path_join(s->out.dir, "paths.dat");
+    char *fp = app_path_join(o->dir, "frames.dat"), *pp = app_path_join(o->dir, "paths.dat");
     double *xy = (n && nf && n * nf < 50000000) ? malloc(2 * n * nf * sizeof *xy) : NULL;
     FILE *in = fp ? fopen(fp, "r") : NULL;
     app_atomic a;
@@ -481,7 +486,7 @@ static int write_figures(sim_output *o, char *err)
     const scn_scenario *s = o->s;
     if (!s->out.plots || !o->have_xyz)
         return 0;
-    char *gp = app_path_join(s->out.dir, "trajectories.gp");
+    char *gp = app_path_join(o->dir, "trajectories.gp");
     app_atomic a;
     if (!gp || app_atomic_open(&a, gp, err)) {
         free(gp);
@@ -511,11 +516,11 @@ static int write_figures(sim_output *o, char *err)
         return -1;
     int made = 0;
     if (write_paths(o, err) ||
-        app_gnuplot_run(o->prog, s->out.dir, "trajectories.gp", "trajectories.png", &made, err))
+        app_gnuplot_run(o->prog, o->dir, "trajectories.gp", "trajectories.png", &made, err))
         return -1;
     if (!s->out.gif || s->dim != 2)
         return 0;
-    char *gg = app_path_join(s->out.dir, "table.gp");
+    char *gg = app_path_join(o->dir, "table.gp");
     if (!gg || app_atomic_open(&a, gg, err)) {
         free(gg);
         return -1;
@@ -536,7 +541,7 @@ static int write_figures(sim_output *o, char *err)
             o->gif_frames ? o->gif_frames - 1 : 0);
     if (app_atomic_commit(&a, err))
         return -1;
-    return app_gnuplot_run(o->prog, s->out.dir, "table.gp", "table.gif", &made, err);
+    return app_gnuplot_run(o->prog, o->dir, "table.gp", "table.gif", &made, err);
 }
 
 int simout_close(sim_output *o, const rc_sim *sim, double wall, int interrupted, char *err)
@@ -546,6 +551,8 @@ int simout_close(sim_output *o, const rc_sim *sim, double wall, int interrupted,
         rc_sim_diagnostics(sim, &o->d0);
         o->have_d0 = 1;
     }
+    if (o->failed)
+        goto out;
     o->n_balls = rc_sim_count(sim);
     if (o->have_xyz) {
         if (app_atomic_commit(&o->xyz, err) || app_atomic_commit(&o->frames, err))
@@ -558,5 +565,27 @@ int simout_close(sim_output *o, const rc_sim *sim, double wall, int interrupted,
         r = write_summary(o, sim, wall, interrupted, err);
     if (!r)
         r = write_figures(o, err);
+out:
+    if (r || o->failed) {
+        /* (err already holds the failure's reason) */
+        if (o->have_xyz) {
+            app_atomic_abort(&o->xyz);
+            app_atomic_abort(&o->frames);
+            o->have_xyz = 0;
+        }
+        simout_stage_discard(o->dir);
+        o->dir = NULL;
+        if (!r) {
+            app_errf(err, "nothing of this run was kept: the files in %s are the previous "
+                     "run's", o->s->out.dir);
+        } else {
+            const size_t len = strlen(err);
+            snprintf(err + len, APP_ERR_LEN - len, "; nothing of this run was kept: the files "
+                     "in %s are the previous run's", o->s->out.dir);
+        }
+        return -1;
+    }
+    r = simout_stage_publish(o->s->out.dir, o->dir, err);
+    o->dir = NULL;
     return r;
 }

@@ -11,6 +11,8 @@
 
 typedef struct sim_output {
     const scn_scenario *s;
+    char *dir;            /* where the files are written: the staging folder in s->out.dir */
+    int failed;           /* an output could not be written: the run publishes nothing */
     const char *prog;
     size_t next_snap;     /* index of the next snapshot time */
     double next_frame;    /* time of the next XYZ frame (INFINITY if none) */
@@ -27,13 +29,25 @@ typedef struct sim_output {
     char line[256];       /* one-line result for stdout */
 } sim_output;
 
+/* Open the outputs: files are written into a staging folder and appear in s->out.dir
+ * together when simout_close succeeds (simout_publish.c). */
 int simout_open(sim_output *o, const scn_scenario *s, const char *prog, char *err);
 /* The next time at which something is due (a snapshot, a frame, or t_end), > t. */
 double simout_next_time(const sim_output *o, double t);
 /* Write whatever is due at the engine's current time. */
 int simout_at(sim_output *o, const rc_sim *sim, char *err);
-/* Finish: final.json, summary.txt, trajectory.xyz, figures. */
+/* Finish: final.json, summary.txt, trajectory.xyz, figures; then move them into the
+ * output folder, replacing the previous run's. If any output failed (here or in
+ * simout_at), nothing is moved, the previous run's files stay, and err says so. */
 int simout_close(sim_output *o, const rc_sim *sim, double wall_seconds, int interrupted,
                  char *err);
+
+/* simout_publish.c: the staging folder (malloc'ed path) in dir, after removing the
+ * staging folders of killed runs; its files moved into dir, replacing those the previous
+ * run published there (listed in dir/.relcol_sim_outputs), and the folder removed; and
+ * the folder removed without moving anything. publish and discard free stage. */
+int simout_stage_open(const char *dir, char **stage, char *err);
+int simout_stage_publish(const char *dir, char *stage, char *err);
+void simout_stage_discard(char *stage);
 
 #endif

@@ -6,7 +6,11 @@
 #    end chunk), and the next complete run leaves no temporary behind.
 # 2. a disk that fills (RLIMIT_FSIZE with SIGXFSZ ignored, so writes fail with EFBIG as on
 #    a full disk): the run fails with a message and a non-zero exit, and the files of the
-#    previous run in that folder keep their bytes.
+#    previous run in that folder keep their bytes, and no file of the failed run is left
+#    among them.
+# 3. runs never mix: a complete run into a folder replaces the previous run's files and
+#    removes those it does not replace (a snapshot past its end), and keeps the user's own
+#    files there, even one named like an output the run does not write.
 sim="$1"
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 fails=0; n=0
@@ -63,11 +67,12 @@ left=$(ls -A "$tmp/out" "$tmp/out/snapshots" | grep -c 'relcol-') || true
     || ko "after the kills: exit $st, $left temporaries left: $(cat "$tmp/err")"
 
 # 2. a disk that fills: writes fail with EFBIG past 64 kB a file
-before=$(cd "$tmp/out" && cksum summary.json summary.txt final.json final.ckpt trajectory.xyz snapshots/snap-0001.csv)
+files() { (cd "$1" && find . -type f ! -name '.*' | sort | xargs cksum); }
+before=$(files "$tmp/out")
 ( ulimit -f 64; trap '' XFSZ; exec "$sim" "$tmp/run.json" ) > /dev/null 2> "$tmp/err"; st=$?
-after=$(cd "$tmp/out" && cksum summary.json summary.txt final.json final.ckpt trajectory.xyz snapshots/snap-0001.csv)
+after=$(files "$tmp/out")
 if [ $st -ne 0 ] && [ -s "$tmp/err" ] && [ "$before" = "$after" ]; then
-    ok "full disk: exit $st, $(head -1 "$tmp/err"); the previous run's files keep their bytes"
+    ok "full disk: exit $st, $(head -1 "$tmp/err"); the previous run's $(echo "$before" | wc -l) files keep their bytes, none added"
 else
     ko "full disk: exit $st, stderr '$(cat "$tmp/err")', files changed: $([ "$before" = "$after" ] && echo no || echo yes)"
 fi
@@ -75,6 +80,21 @@ fi
 left=$(ls -A "$tmp/out" "$tmp/out/snapshots" | grep -c 'relcol-') || true
 [ "$left" -eq 0 ] && ok "no temporary left after the full disk and one more run" \
     || ko "$left temporaries left after the full disk"
+
+# 3. a shorter run (t_end 40: 10 snapshots, every 4, of the previous 100) into the same folder
+nold=$(ls "$tmp/out/snapshots" | wc -l)
+printf 'my notes\n' > "$tmp/out/notes.txt"
+printf 'my own paths\n' > "$tmp/out/paths.dat"
+sed 's/"t_end": 400/"t_end": 40/' "$tmp/run.json" > "$tmp/short.json"
+"$sim" "$tmp/short.json" > /dev/null 2> "$tmp/err"; st=$?
+nnew=$(ls "$tmp/out/snapshots" | wc -l)
+if [ $st -eq 0 ] && [ "$nold" -eq 100 ] && [ "$nnew" -eq 10 ] &&
+   [ "$(cat "$tmp/out/notes.txt")" = "my notes" ] && [ "$(cat "$tmp/out/paths.dat")" = "my own paths" ] &&
+   grep -q '"t":[[:space:]]*40,' "$tmp/out/summary.json"; then
+    ok "a shorter run replaces the previous run's files: $nold snapshots -> $nnew, the user's files kept"
+else
+    ko "shorter run: exit $st, snapshots $nold -> $nnew, notes '$(cat "$tmp/out/notes.txt")', paths.dat '$(head -c 20 "$tmp/out/paths.dat")': $(cat "$tmp/err")"
+fi
 
 echo "$((n - fails)) passed, $fails failed"
 [ $fails -eq 0 ]
