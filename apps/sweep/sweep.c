@@ -335,19 +335,44 @@ done:
     return rc;
 }
 
+#ifdef RELCOL_HAVE_MPI
+/* Was this process started by an MPI launcher? mpirun/mpiexec of Open MPI, MPICH's Hydra
+ * and PMIx-based launchers set one of these in every rank's environment; RELCOL_MPI=1
+ * asks for MPI regardless. Started on its own, relcol-sweep does not pay MPI_Init (a third
+ * of a second, and the runtime's messages on stderr -- or its failures, when it cannot
+ * write its session files) for a single rank. */
+static int launched_by_mpi(void)
+{
+    static const char *const vars[] = {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMI_RANK",
+                                       "PMIX_RANK"};
+    const char *force = getenv("RELCOL_MPI");
+    if (force && strcmp(force, "1") == 0)
+        return 1;
+    for (size_t i = 0; i < sizeof vars / sizeof *vars; i++)
+        if (getenv(vars[i]))
+            return 1;
+    return 0;
+}
+#endif
+
 int main(int argc, char **argv)
 {
     app_init(prog);
 #ifdef RELCOL_HAVE_MPI
-    MPI_Init(&argc, &argv);
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    MPI_Comm_size(MPI_COMM_WORLD, &nranks);
+    const int mpi = launched_by_mpi();
+    if (mpi) {
+        MPI_Init(&argc, &argv);
+        MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+        MPI_Comm_size(MPI_COMM_WORLD, &nranks);
+    }
 #endif
     int rc = run(argc, argv);
 #ifdef RELCOL_HAVE_MPI
-    /* every rank returns the same code: rank 0 decides */
-    MPI_Bcast(&rc, 1, MPI_INT, 0, MPI_COMM_WORLD);
-    MPI_Finalize();
+    if (mpi) {
+        /* every rank returns the same code: rank 0 decides */
+        MPI_Bcast(&rc, 1, MPI_INT, 0, MPI_COMM_WORLD);
+        MPI_Finalize();
+    }
 #endif
     return rc;
 }
