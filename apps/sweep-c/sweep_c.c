@@ -48,7 +48,7 @@ static void usage(FILE *f)
 "                (m'^2 - m^2) c^2 = |pbar|^2 - |pbar'|^2 (ZMF momenta; for laws that keep\n"
 "                each ball's ZMF energy, as zmf and cm-isotropic declare, else directly);\n"
 "                dK is the kinetic energy lost at c = inf. With eps = 1 both are 0: the\n"
-"                column is nan and not plotted.\n"
+"                column is empty and not plotted.\n"
 "and writes, atomically, DIR/sweep-c.csv, DIR/sweep-c.gp and, if gnuplot is installed,\n"
 "DIR/sweep-c.png; then prints the fitted log-log slopes (expect -2).\n"
 "exit status: 0 ok; 2 bad input; 3 the balls do not collide; 1 I/O error.\n",
@@ -187,7 +187,7 @@ static int write_script(const char *path, const options *o, const app_balls *b,
 "       title 'heat  |Σ(m′ − m)c² − ΔK_{c=∞}| / ΔK_{c=∞}   %s'\n",
                 slope_q);
     else
-        fprintf(f, "# eps = 1: no heat at any c, so the heat deviation (nan) is not plotted\n");
+        fprintf(f, "# eps = 1: no heat at any c, so the heat deviation (empty) is not plotted\n");
     return app_atomic_commit(&a, err);
 }
 
@@ -352,9 +352,15 @@ int main(int argc, char **argv)
     }
     fprintf(a.f, "c,c_over_vmax,vmax2_over_c2,dev_velocity,dev_heat,heat,heat_direct,"
                  "heat_classical\n");
-    for (size_t j = 0; j < N; j++)
-        fprintf(a.f, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", cs[j], ratio[j],
-                1.0 / (ratio[j] * ratio[j]), dv[j], dq[j], q[j], qd[j], dK);
+    for (size_t j = 0; j < N; j++) {
+        /* (an undefined dev_heat, eps = 1, is an empty field: missing to gnuplot, numpy
+         * and pandas alike, where "nan" is a word to some readers) */
+        char heat[32] = "";
+        if (isfinite(dq[j]))
+            snprintf(heat, sizeof heat, "%.17g", dq[j]);
+        fprintf(a.f, "%.17g,%.17g,%.17g,%.17g,%s,%.17g,%.17g,%.17g\n", cs[j], ratio[j],
+                1.0 / (ratio[j] * ratio[j]), dv[j], heat, q[j], qd[j], dK);
+    }
     if (app_atomic_commit(&a, err) != 0) {
         fprintf(stderr, "%s: %s\n", prog, err);
         goto out;
@@ -389,7 +395,7 @@ int main(int argc, char **argv)
         printf("slope heat: none (%zu of %zu points above the round-off floor %g)\n", used_q,
                N, floor_rel);
     else
-        printf("slope heat: none (eps = 1: no rest-mass change at any c; dev_heat is nan)\n");
+        printf("slope heat: none (eps = 1: no rest-mass change at any c; dev_heat is left empty)\n");
     rc = fflush(stdout) == 0 ? 0 : 1;
 out:
     free(cs);
