@@ -69,6 +69,23 @@ static int figure_whole(const char *path, const char *name, char *err)
     return 0;
 }
 
+/* Read gnuplot's messages to the end, line by line, and print those that are not its
+ * progress notes ("201 frames in animation sequence", the GIF terminal's count). */
+static void pass_messages(int fd, const char *prog, const char *script)
+{
+    FILE *f = fdopen(dup(fd), "r");
+    if (!f)
+        return;
+    char line[1024];
+    while (fgets(line, sizeof line, f)) {
+        if (strstr(line, "frames in animation sequence"))
+            continue;
+        fprintf(stderr, "%s: gnuplot (%s): %s%s", prog, script, line,
+                strchr(line, '\n') ? "" : "\n");
+    }
+    fclose(f);
+}
+
 int app_gnuplot_run(const char *prog, const char *dir, const char *script_name,
                     const char *out_name, int *made, char *err)
 {
@@ -109,21 +126,36 @@ int app_gnuplot_run(const char *prog, const char *dir, const char *script_name,
     close(fd);
     snprintf(expr, len, "outfile='%s'", strrchr(tmp, '/') + 1);
     fflush(NULL);
+    /* gnuplot's messages come through a pipe: its progress notes are dropped, anything
+     * else (a warning, an error) is passed on prefixed with the script's name */
+    int pfd[2];
+    if (pipe(pfd) != 0) {
+        app_errf(err, "cannot start gnuplot: %s", strerror(errno));
+        goto out;
+    }
     pid_t pid = fork();
     if (pid < 0) {
         app_errf(err, "cannot start gnuplot: %s", strerror(errno));
+        close(pfd[0]);
+        close(pfd[1]);
         goto out;
     }
     if (pid == 0) {
         int devnull = open("/dev/null", O_RDONLY);
         if (devnull >= 0)
             dup2(devnull, STDIN_FILENO);
-        /* gnuplot's own messages go to stderr; keep our stdout for our data */
-        dup2(STDERR_FILENO, STDOUT_FILENO);
+        /* gnuplot's own messages (stdout and stderr) into the pipe; our stdout is data */
+        dup2(pfd[1], STDOUT_FILENO);
+        dup2(pfd[1], STDERR_FILENO);
+        close(pfd[0]);
+        close(pfd[1]);
         if (chdir(dir) == 0)
             execlp("gnuplot", "gnuplot", "-e", expr, script_name, (char *)NULL);
         _exit(127);
     }
+    close(pfd[1]);
+    pass_messages(pfd[0], prog, script_name);
+    close(pfd[0]);
     int status;
     while (waitpid(pid, &status, 0) < 0)
         if (errno != EINTR) {

@@ -203,14 +203,20 @@ static int write_script(const char *path, const options *o, size_t nf, char *err
 "# frames.gp — written by relcol-frames; run `gnuplot frames.gp` in this folder.\n"
 "# How much a rigid-ball collision's outcome depends on the frame in which contact is\n"
 "# decided: differences between frames against c/v, for several impact parameters.\n");
-    app_gnuplot_head(f, "frames.png", "size 1500,620 enhanced font 'Sans,12' linewidth 1.4", 1);
+    /* eps = 1: no heat at any c in any frame, so its differences are round-off only and
+     * get no panel */
+    const int nobs = o->eps == 1.0 ? NOBS - 1 : NOBS;
+    app_gnuplot_head(f, "frames.png",
+                     nobs == NOBS ? "size 1500,620 enhanced font 'Sans,12' linewidth 1.4"
+                                  : "size 1100,620 enhanced font 'Sans,12' linewidth 1.4",
+                     1);
     fprintf(f,
 "set grid xtics ytics lc rgb '#dddddd' lw 0.8\n"
 "set xlabel 'c / v'\n"
 "set key bottom left spacing 1.1 font ',10'\n"
-"set multiplot layout 1,3 title \"Contact frame dependence of a rigid-ball collision"
-" (v = 1 onto a ball at rest, zmf law, ε = %s)\\n{/*0.8 ",
-            app_fmt(o->eps, fe));
+"set multiplot layout 1,%d title \"Contact frame dependence of a rigid-ball collision"
+" (v = 1 onto a ball at rest, zmf law, ε = %s%s)\\n{/*0.8 ",
+            nobs, app_fmt(o->eps, fe), nobs == NOBS ? "" : ": no heat, no heat panel");
     static const char *const dash_name[] = {"", "solid", "dashed", "dotted", "dash-dotted"};
     for (int pass = 0; pass < 2; pass++) /* solid first, as plotted */
     for (size_t fi = 1; fi < nf; fi++) {
@@ -226,7 +232,7 @@ static int write_script(const char *path, const options *o, size_t nf, char *err
         "|Δθ| deflection of ball 0 (rad)", "max |Δv′| / v", "max |ΔQ| / (m v^2/2)"};
     static const char *const colors[] = {"#999999", "#1f77b4", "#2ca02c", "#ff7f0e",
                                          "#d62728", "#9467bd"};
-    for (int ob = 0; ob < NOBS; ob++) {
+    for (int ob = 0; ob < nobs; ob++) {
         fprintf(f, "set ylabel '%s'\n", ylab[ob]);
         /* references over the first block of rows only (one pass over c) */
         fprintf(f, "plot 'frames.csv' skip 1 every ::0::%ld using 3:(1/$3**2) with lines lw 2 "

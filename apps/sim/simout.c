@@ -28,6 +28,7 @@ int simout_open(sim_output *o, const scn_scenario *s, const char *prog, char *er
             k += 1.0;
         o->frame_k = k;
         o->next_frame = from + dt * k <= s->t_end ? from + dt * k : INFINITY;
+        o->first_frame = from + dt * k;
     }
     if (simout_stage_open(s->out.dir, &o->dir, err))
         return -1;
@@ -504,13 +505,14 @@ static int write_figures(sim_output *o, char *err)
             "set output outfile\nset size ratio -1\nunset key\n"
             "set xrange [0:%.17g]\nset yrange [0:%.17g]\n"
             "set xlabel 'x'\nset ylabel 'y'\n"
-            "set title 'relcol-sim: %zu balls, t = %g to %g, c = %s, restitution %g'\n"
+            "set title 'relcol-sim: %zu balls, t = %g to %g, c = %s, restitution %g%s'\n"
             "set palette rgbformulae 33,13,10\nunset colorbox\n"
             "plot for [i=0:%zu] 'paths.dat' index i u 1:2:(i) w l lw 1.2 lc palette, \\\n"
             "     'frames.dat' index %zu u 2:3:(2*$5):(2*$4):6 w ellipses lc rgb 'black' "
             "fs transparent solid 0.25\n",
             s->dim == 3 ? " projection" : "", (int)(1000 * s->box.y / s->box.x) + 80, s->box.x,
             s->box.y, n, s->time, s->t_end, isinf(s->c) ? "inf" : app_fmt(s->c, cbuf), s->eps_ball,
+            s->dim == 3 ? "\\n3-D run seen along z: x-y projection, z not shown" : "",
             n ? n - 1 : 0, o->gif_frames ? o->gif_frames - 1 : 0);
     if (app_atomic_commit(&a, err))
         return -1;
@@ -530,15 +532,22 @@ static int write_figures(sim_output *o, char *err)
             "# relcol-sim: animation of the table; each ball drawn as its Lorentz-contracted\n"
             "# ellipse (semi-axis r/gamma along v, r across)\n"
             "if (!exists(\"outfile\")) outfile = 'table.gif'\n"
-            "set terminal gif animate delay 4 size 800,%d\n"
+            "# (the GIF terminal has no transparency: fs solid 1 with a border, on white)\n"
+            "set terminal gif animate delay 4 size 800,%d background '#ffffff' font ',11'\n"
             "set output outfile\nset size ratio -1\nunset key\nunset colorbox\n"
             "set xrange [0:%.17g]\nset yrange [0:%.17g]\n"
-            "set palette rgbformulae 33,13,10\n"
+            "set palette defined (0 '#1f77b4', 1 '#2ca02c', 2 '#ff7f0e', 3 '#d62728')\n"
+            "set cbrange [0:%zu]\n"
+            "t0 = %.17g; dt = %.17g\n"
             "do for [i=0:%zu] {\n"
-            "  plot 'frames.dat' index i u 2:3:(2*$5):(2*$4):6:1 w ellipses lc palette fs solid 0.8\n"
+            "  set title sprintf('relcol-sim: %zu balls, c = %s    t = %%.3f', t0 + i * dt)\n"
+            "  plot 'frames.dat' index i u 2:3:(2*$5):(2*$4):6:1 w ellipses lc palette "
+            "fs solid 1 border lc rgb '#202020'\n"
             "}\n",
-            (int)(800 * s->box.y / s->box.x) + 40, s->box.x, s->box.y,
-            o->gif_frames ? o->gif_frames - 1 : 0);
+            (int)(800 * s->box.y / s->box.x) + 60, s->box.x, s->box.y, n ? n - 1 : 0,
+            o->first_frame, s->out.xyz_every * (double)o->gif_stride,
+            o->gif_frames ? o->gif_frames - 1 : 0, n,
+            isinf(s->c) ? "inf" : app_fmt(s->c, cbuf));
     if (app_atomic_commit(&a, err))
         return -1;
     return app_gnuplot_run(o->prog, o->dir, "table.gp", "table.gif", &made, err);

@@ -17,6 +17,7 @@ typedef struct sim_output {
     size_t next_snap;     /* index of the next snapshot time */
     double next_frame;    /* time of the next XYZ frame (INFINITY if none) */
     double frame_k;       /* its place on the grid: next_frame = xyz_from + frame_k xyz_every */
+    double first_frame;   /* the time of the first frame (of the GIF's too) */
     size_t frame_no;      /* frames written */
     app_atomic xyz;       /* trajectory.xyz, committed at the end */
     app_atomic frames;    /* frames.dat (x y r per ball, one block per frame) for figures */

@@ -28,7 +28,7 @@ static void usage(FILE *f)
 {
     fprintf(f,
 "usage: relcol-sweep [--scenario NAME|all] [--grid log|lin] [--from F] [--to T]\n"
-"                    [--points N] [--eps E] [--stiffness K] [--out DIR] [--no-plot]\n"
+"                    [--points N] [--eps E] [--stiffness K] [--out DIR] [--no-plots]\n"
 "\n"
 "Sweep the speed of light c over a grid of multiples of the fastest speed |v|max and\n"
 "measure how far each scenario's observables are from their classical (c = inf) values.\n"
@@ -44,13 +44,17 @@ static void usage(FILE *f)
 "  --eps E         restitution (default 0.8; soft: in (0, 1])\n"
 "  --stiffness K   soft-sphere stiffness (default 1e8)\n"
 "  --out DIR       output folder (default out/sweep)\n"
-"  --no-plot       data and script only\n"
+"  --no-plots      data and script only\n"
 "\n"
 "Writes DIR/sweep.csv (c, c/|v|max, (|v|max/c)^2, then per scenario the deviation of each\n"
 "observable group and the raw observables), DIR/sweep.gp and DIR/sweep.png, and prints\n"
 "the fitted log-log order of each deviation (expect -2: the first relativistic\n"
 "corrections are of order (v/c)^2). Parallel over grid points with OpenMP\n"
-"(OMP_NUM_THREADS) and, in an MPI build, across ranks (mpirun -np N relcol-sweep ...).\n");
+"(OMP_NUM_THREADS) and, in an MPI build, across ranks (mpirun -np N relcol-sweep ...;\n"
+"MPI is started only under a launcher, or with RELCOL_MPI=1).\n"
+"\n"
+"exit status: 0 done; 2 bad option (one line naming it); 1 a point failed or an I/O\n"
+"failure (one line naming the file).\n");
 }
 
 /* "relcol-sweep: message" on stderr, from rank 0 only (every rank fails alike) */
@@ -76,7 +80,7 @@ static int run(int argc, char **argv)
                 usage(stdout);
             return 0;
         }
-        if (!strcmp(a, "--no-plot")) {
+        if (!strcmp(a, "--no-plots")) {
             no_plot = 1;
             continue;
         }

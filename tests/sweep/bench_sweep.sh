@@ -6,7 +6,7 @@ sweep="$1"
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 t() { # seconds of wall time of the sweep with $1 threads
     s=$(date +%s.%N)
-    OMP_NUM_THREADS=$1 "$sweep" --points 400 --stiffness 1e12 --no-plot --out "$tmp/o$1" > /dev/null
+    OMP_NUM_THREADS=$1 "$sweep" --points 400 --stiffness 1e12 --no-plots --out "$tmp/o$1" > /dev/null
     e=$(date +%s.%N)
     echo "$s $e" | awk '{printf "%.3f", $2 - $1}'
 }

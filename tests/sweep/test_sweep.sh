@@ -7,7 +7,7 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 fails=0; n=0
 ok() { n=$((n + 1)); echo "ok: $1"; }
 ko() { n=$((n + 1)); fails=$((fails + 1)); echo "FAILED: $1"; }
-args="--points 13 --no-plot"
+args="--points 13 --no-plots"
 # In an MPI build the mpirun run calls MPI_Init, and Open MPI keeps allocations in plugins it
 # dlopens and unloads (LeakSanitizer then sees "unknown module" frames that no
 # suppression can name): leak checking of this program is meaningless there. Address and
