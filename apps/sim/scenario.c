@@ -789,13 +789,13 @@ int scn_builtin(const char *name, scn_scenario *s, char *err)
         " \"restitution\": {\"ball\": 0.95, \"wall\": 0.8}, \"contact_frame\": \"table\",\n"
         " \"seed\": 1, \"t_end\": 4,\n"
         " \"generate\": {\"kind\": \"rack\", \"radius\": 0.028575, \"speed\": 5, \"aim\": 0.002},\n"
-        " \"outputs\": {\"dir\": \"out/rack\", \"snapshots\": {\"every\": 1}, \"xyz_every\": 0.02}}\n";
+        " \"outputs\": {\"dir\": \"out/sim/rack\", \"snapshots\": {\"every\": 1}, \"xyz_every\": 0.02}}\n";
     static const char gas[] =
         "{\"relcol\": 1, \"dim\": 2, \"c\": 1, \"restitution\": {\"ball\": 1, \"wall\": 1},\n"
         " \"contact_frame\": \"table\", \"seed\": 1, \"t_end\": 200,\n"
         " \"generate\": {\"kind\": \"gas\", \"n\": 400, \"radius\": 1, \"packing\": 0.2,\n"
         "              \"v_rms\": 0.5},\n"
-        " \"outputs\": {\"dir\": \"out/gas\", \"snapshots\": {\"every\": 50}, \"xyz_every\": 1}}\n";
+        " \"outputs\": {\"dir\": \"out/sim/gas\", \"snapshots\": {\"every\": 50}, \"xyz_every\": 1}}\n";
     if (strcmp(name, "rack") == 0)
         return scn_parse(rack, "builtin rack", s, err);
     if (strcmp(name, "gas") == 0)
