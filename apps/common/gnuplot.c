@@ -149,6 +149,9 @@ int app_gnuplot_run(const char *prog, const char *dir, const char *script_name,
         dup2(pfd[1], STDERR_FILENO);
         close(pfd[0]);
         close(pfd[1]);
+        /* the scripts are UTF-8 (set encoding utf8): under the C locale gnuplot cannot
+         * convert their degree signs and Greek letters and warns */
+        setenv("LC_ALL", "C.UTF-8", 1);
         if (chdir(dir) == 0)
             execlp("gnuplot", "gnuplot", "-e", expr, script_name, (char *)NULL);
         _exit(127);
