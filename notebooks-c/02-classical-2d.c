@@ -187,10 +187,13 @@ second loss, so it agrees with seed 002 even there.
 Differences are relative to the largest speed.
 @output random
 */
+/* relcol's generator (relcol/rng.h), on the notebook's seed variable */
 static double urand(unsigned long long *s)
 {
-    *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
-    return (double)(*s >> 11) * 0x1.0p-53;
+    rc_rng r = {*s};
+    const double u = rc_rng_uniform(&r);
+    *s = r.state;
+    return u;
 }
 
 static rc_vec3 rdisc(unsigned long long *s)
@@ -277,7 +280,9 @@ static void random_cases(void)
      * tan(gamma_v + alpha) with |a| up to 100 (|cos theta| >= 0.01): ~eps |a| relative,
      * hence 1e-13 where it is involved (as test_law_seeds). */
     NB_CHECK(w_000_zmf < 1e-14, "seed 000 = zmf at c = inf, every eps");
-    NB_CHECK(n_001 > 500 && w_001 < 1e-14, "seed 001 = seed 000 = zmf (equal masses, elastic)");
+    /* (seed 001 cases: a quarter of 20000 have equal masses, a tenth of those are elastic,
+     * so 500 +- 21 expected; 400 is five deviations below) */
+    NB_CHECK(n_001 > 400 && w_001 < 1e-14, "seed 001 = seed 000 = zmf (equal masses, elastic)");
     NB_CHECK(n_002 > 15000 && w_002_cm < 1e-13, "seed 002 = cm-isotropic with seed 002's alpha");
     NB_CHECK(n_el > 1000 && w_000_002_el < 1e-13, "seed 000 = seed 002 when elastic");
     NB_CHECK(n_ho > 500 && w_000_002_ho < 1e-13, "seed 000 = seed 002 head-on, every eps");

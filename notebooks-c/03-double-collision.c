@@ -43,10 +43,13 @@ Ball 0 (radius 1) moving at `(1, 0.2)` touches ball 1 (radius 0.8) at 35° and b
 (radius 1.2) at −50°, both moving slowly; `ε = 0.9`, masses `radius³` as in the seed.
 @output one
 */
+/* relcol's generator (relcol/rng.h), on the notebook's seed variable */
 static double urand(unsigned long long *s)
 {
-    *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
-    return (double)(*s >> 11) * 0x1.0p-53;
+    rc_rng r = {*s};
+    const double u = rc_rng_uniform(&r);
+    *s = r.state;
+    return u;
 }
 
 /* Solve the seed's six equations for the velocity changes u[6] with GSL LU. */

@@ -114,10 +114,13 @@ speed, `ε` uniform in [0, 1]. The largest relative error of the rest-mass formu
 ZMF claims:
 @output random
 */
+/* relcol's generator (relcol/rng.h), on the notebook's seed variable */
 static double urand(unsigned long long *s)
 {
-    *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
-    return (double)(*s >> 11) * 0x1.0p-53;
+    rc_rng r = {*s};
+    const double u = rc_rng_uniform(&r);
+    *s = r.state;
+    return u;
 }
 
 static rc_vec3 rvec(unsigned long long *s, int dim)

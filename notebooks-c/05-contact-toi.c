@@ -268,14 +268,12 @@ static void miss(void)
     NB_CHECK(fabs(bs - 2.0) < 1e-10, "sphere: hit iff b < 2r");
 
     /* random 2-D pairs: table and zmf must agree on hit or miss */
-    unsigned long long s = 505;
+    rc_rng s = {505};
     int n = 0, disagree = 0, turned = 0;
     for (int i = 0; i < 3000; i++) {
         double u[8];
-        for (int j = 0; j < 8; j++) {
-            s = s * 6364136223846793005ULL + 1442695040888963407ULL;
-            u[j] = (double)(s >> 11) * 0x1.0p-53;
-        }
+        for (int j = 0; j < 8; j++)
+            u[j] = rc_rng_uniform(&s);
         rc_vec3 v0 = rc_v3(0.95 * u[0] * cos(6.2832 * u[1]), 0.95 * u[0] * sin(6.2832 * u[1]), 0);
         rc_vec3 v1 = rc_v3(0.95 * u[2] * cos(6.2832 * u[3]), 0.95 * u[2] * sin(6.2832 * u[3]), 0);
         rc_toi_params prm = params(1.0);

@@ -48,10 +48,9 @@ static rc_sim *make_gas(const char *frame, unsigned k)
         return NULL;
     }
     const double g0 = jt_mean_gamma(2, THETA), p0 = sqrt((g0 - 1.0) * (g0 + 1.0));
-    unsigned long long r = 0x9e37ULL + k;
+    rc_rng r = {0x9e37ULL + (uint64_t)k};
     for (int i = 0; i < N; i++) {
-        r = r * 6364136223846793005ULL + 1442695040888963407ULL;
-        const double a = 2.0 * M_PI * (double)(r >> 11) * 0x1.0p-53;
+        const double a = 2.0 * M_PI * rc_rng_uniform(&r);
         b[i].p = rc_v3(p0 * cos(a), p0 * sin(a), 0.0);
         b[i].m = 1.0;
     }

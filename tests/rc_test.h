@@ -8,6 +8,8 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "relcol/rng.h"
+
 static long rc_test_checks, rc_test_failures;
 
 #define ENSURE_MSG(cond, ...)                                                      \
@@ -58,20 +60,11 @@ static inline double rc_test_c_of(double inv_c2)
     return inv_c2 > 0.0 ? 1.0 / sqrt(inv_c2) : inv_c2 == 0.0 ? INFINITY : NAN;
 }
 
-/* Deterministic generator for tests: splitmix64. */
-typedef struct { uint64_t s; } rc_test_rng;
-static inline uint64_t rc_test_next(rc_test_rng *r)
-{
-    uint64_t z = (r->s += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-}
+/* Deterministic generator for tests: the library's (relcol/rng.h), under the tests' names. */
+typedef rc_rng rc_test_rng;
+static inline uint64_t rc_test_next(rc_test_rng *r) { return rc_rng_next(r); }
 /* uniform in [0, 1) */
-static inline double rc_test_uniform(rc_test_rng *r)
-{
-    return (double)(rc_test_next(r) >> 11) * 0x1.0p-53;
-}
+static inline double rc_test_uniform(rc_test_rng *r) { return rc_rng_uniform(r); }
 static inline double rc_test_range(rc_test_rng *r, double lo, double hi)
 {
     return lo + (hi - lo) * rc_test_uniform(r);

@@ -8,6 +8,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <time.h>
+
+#include "relcol/rng.h"
 #ifdef __linux__
 #include <sys/mman.h>
 #endif
@@ -21,15 +23,6 @@ static double now_s(void)
     struct timespec t;
     clock_gettime(CLOCK_MONOTONIC, &t);
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
-/* splitmix64: the permutation's random numbers */
-static uint64_t next_u64(uint64_t *s)
-{
-    uint64_t z = (*s += 0x9e3779b97f4a7c15u);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-    return z ^ (z >> 31);
 }
 
 /* ns per load over `chains` interleaved chains of one random cycle through n lines */
@@ -69,11 +62,11 @@ static int measure(size_t bytes, int huge)
         (void)madvise(a, size, MADV_HUGEPAGE);
 #endif
     /* one cycle through all lines in random order (Sattolo's shuffle) */
-    uint64_t seed = 2024;
+    rc_rng seed = {2024};
     for (size_t i = 0; i < n; i++)
         perm[i] = i;
     for (size_t i = n - 1; i > 0; i--) {
-        const size_t j = (size_t)(next_u64(&seed) % i);
+        const size_t j = (size_t)(rc_rng_next(&seed) % i);
         const size_t t = perm[i];
         perm[i] = perm[j];
         perm[j] = t;

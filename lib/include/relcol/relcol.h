@@ -10,5 +10,6 @@
 #include "relcol/sim.h"
 #include "relcol/soft.h"
 #include "relcol/gas1d.h"
+#include "relcol/rng.h"
 
 #endif
