@@ -121,7 +121,7 @@ static int parse(int argc, char **argv, options *o)
             if (app_parse_list(val, dst, MAXLIST, cnt, err) != 0)
                 return app_fail(prog, EXIT_BAD_INPUT, "%s: %s", name, err);
             for (int k = 0; k < *cnt; k++) {
-                const double hi = pack ? 0.49 : 1e3, lo = pack ? 0.0 : 1e-3;
+                const double hi = pack ? 0.7 : 1e3, lo = pack ? 0.0 : 1e-3;
                 if (!(dst[k] > lo && dst[k] <= hi))
                     return app_fail(prog, EXIT_BAD_INPUT, "%s: %s outside (%g, %g]", name,
                                     app_fmt(dst[k], f1), lo, hi);
@@ -145,11 +145,12 @@ static int parse(int argc, char **argv, options *o)
             }
         }
     }
-    if (in->dim == 2)
-        for (int k = 0; k < o->npack; k++)
-            if (o->packing[k] > 0.7)
-                return app_fail(prog, EXIT_BAD_INPUT, "--packing: %s beyond the disc fluid",
-                                app_fmt(o->packing[k], f1));
+    /* the fluid ends near 0.494 (spheres) and 0.70 (discs): beyond it the lattice start
+     * would not melt */
+    for (int k = 0; k < o->npack; k++)
+        if (in->dim == 3 && o->packing[k] > 0.49)
+            return app_fail(prog, EXIT_BAD_INPUT, "--packing: %s beyond the sphere fluid "
+                            "(<= 0.49 in 3-D)", app_fmt(o->packing[k], f1));
     if (in->transport && in->lag * (double)in->blocks > in->t_run)
         return app_fail(prog, EXIT_BAD_INPUT, "--lag: %s longer than a block (--t-run / "
                         "--blocks = %g mean free times)", app_fmt(in->lag, f1),
@@ -174,17 +175,31 @@ static int write_script(const char *path, const options *o, char *err)
 "set multiplot layout 1,2 title \"Equation of state of %d-D hard balls, N = %zu, c = %s, "
 "frame %s\"\n"
 "set xlabel 'packing fraction η'\nset grid lc rgb '#dddddd'\nset key top left box opaque\n"
+"set offsets graph 0.04, graph 0.04, 0, 0\n"
+"%s\n"
 "set ylabel 'Z = PV/(NkT)'\n"
 "plot 'eos.csv' skip 1 using 4:8:9 with yerrorbars pt 7 lc rgb '#1f77b4' title 'relcol', \\\n"
-"     '' skip 1 using 4:10 with lines lw 2 lc rgb '#d62728' title '%s', \\\n"
-"     '' skip 1 using 4:11 with lines lw 2 dt 2 lc rgb '#2ca02c' title '%s'\n"
-"set ylabel 'Z / Z_{theory} - 1'\nset key top right\n"
+"     z1(x) with lines lw 2 lc rgb '#d62728' title '%s', \\\n"
+"     z2(x) with lines lw 2 dt 2 lc rgb '#2ca02c' title '%s'\n"
+"set ylabel 'Z / Z_{theory} - 1'\nset key top left\n"
 "plot 'eos.csv' skip 1 using 4:($8/$10-1):($9/$10) with yerrorbars pt 7 lc rgb '#1f77b4' "
-"title 'relcol', 0 with lines lc rgb '#d62728' notitle\n"
+"title 'relcol against %s', '' skip 1 using 4:($11/$10-1) with linespoints dt 2 lc rgb "
+"'#2ca02c' title '%s', 0 with lines lc rgb '#d62728' notitle\n"
 "unset multiplot\n",
                 in->dim, in->n, app_fmt(in->c, fc), in->frame ? in->frame->name : "sphere",
+                in->dim == 3
+                    ? "z1(x) = (1 + x + x**2 - 2./3 * x**3 * (1 + x)) / (1 - x)**3\n"
+                      "z2(x) = (1 + x + x**2 - x**3) / (1 - x)**3"
+                    : "b(k) = k == 1 ? 1 : k == 2 ? 0.782004 : k == 3 ? 0.53223180 : k == 4 ? "
+                      "0.33355604 : k == 5 ? 0.1988425 : k == 6 ? 0.1148728 : k == 7 ? 0.0649930 : "
+                      "k == 8 ? 0.0362193 : 0.0199537\n"
+                      "z1(x) = 1 + sum [k = 1:9] b(k) * (2 * x)**k\n"
+                      "z2(x) = 1 / (1 - 2 * x + (2 * pi / (2 * sqrt(3)) - 1) / (pi / (2 * "
+                      "sqrt(3)))**2 * x**2)",
                 in->dim == 3 ? "Kolafa" : "virial series (Clisby–McCoy)",
-                in->dim == 3 ? "Carnahan–Starling" : "Santos et al. 1995");
+                in->dim == 3 ? "Carnahan–Starling" : "Santos et al. 1995",
+                in->dim == 3 ? "Kolafa" : "virial series",
+                in->dim == 3 ? "Carnahan–Starling" : "Santos et al.");
     } else {
         app_gnuplot_head(f, "eos.png", "size 1500,520 enhanced font 'Sans,12' linewidth 1.4", 0);
         fprintf(f,
