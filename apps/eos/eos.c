@@ -35,7 +35,7 @@ static void usage(FILE *f)
 "  --frame NAME     contact frame (default sphere: uncontracted, thermal at any density)\n"
 "  --t-equil, --t-run  melting and measured time in mean free times (default 50, 2000)\n"
 "  --blocks B       independent blocks for the standard errors (default 20)\n"
-"  --per-block K    moment readings per block (default 100)\n"
+"  --per-block K    moment readings per block with --transport (default 100)\n"
 "  --transport      also D, eta, lambda (Einstein–Helfand; reads every position)\n"
 "  --lag T          Helfand lag in mean free times (default 20, within a block)\n"
 "  --out DIR        output folder (default out/eos): eos.csv, eos.gp, eos.png\n"

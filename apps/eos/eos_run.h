@@ -173,7 +173,10 @@ static inline int eos_measure(const eos_in *in, eos_out *o, char *err)
     if (eos_start(in, &s, &o->box, err) != 0)
         return -1;
     const int dim = in->dim;
-    const size_t n = in->n, nb = (size_t)in->blocks, pb = (size_t)in->per_block;
+    /* the equation of state needs the moments only at the blocks' ends (they are exact
+     * time integrals); transport reads them per_block times a block */
+    const size_t n = in->n, nb = (size_t)in->blocks,
+                 pb = in->transport ? (size_t)in->per_block : 1;
     const size_t m = nb * pb + 1;
     o->tau_free = eos_tau_free(in);
     const double t0 = in->t_equil * o->tau_free, dt = in->t_run * o->tau_free / (double)(m - 1);
