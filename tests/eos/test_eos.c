@@ -141,8 +141,42 @@ static void test_walls(void)
     rc_sim_free(&s);
 }
 
+/* Two balls meeting head-on across a periodic face: the Helfand moment stays continuous
+ * (its change is the kinetic flux times the time plus r dp of the collision, r the nearest
+ * image), while the unwrapped sum x p alone jumps by L dp. Exact arithmetic up to round-off:
+ * x_A = 0.8, v = -1; x_B = 9.7, v = +1 in a box of 10; contact at t = 0.05 across x = 0
+ * with r = x_B - x_A = -1 (nearest image), dp_B = -2; between t = 0.04 and 0.06,
+ * dG_xx = 2 x 0.02 + (-1)(-2) = 2.04, virial 2, wrap term (-1 - 9)(-2) = 20. */
+static void test_helfand_across_face(void)
+{
+    rc_sim_def d = rc_sim_def_default();
+    d.dim = 3;
+    d.box = rc_v3(10.0, 10.0, 10.0);
+    d.c = INFINITY;
+    for (int k = 0; k < 3; k++)
+        d.boundary[k] = RC_SIM_PERIODIC;
+    rc_sim_ball b[2] = {{rc_v3(0.8, 5.0, 5.0), rc_v3(-1.0, 0.0, 0.0), 0.5, 1.0, 0, 0, 0, {0, 0, 0}},
+                        {rc_v3(9.7, 5.0, 5.0), rc_v3(1.0, 0.0, 0.0), 0.5, 1.0, 0, 0, 0, {0, 0, 0}}};
+    rc_sim *s = NULL;
+    ENSURE(rc_sim_create(&d, &s) == RC_OK && rc_sim_set_balls(s, 2, b, NULL) == RC_OK);
+    if (!s)
+        return;
+    rc_sim_moments m0, m1;
+    ENSURE(rc_sim_advance(s, 0.04, 0) == RC_OK && rc_sim_moments_get(s, &m0) == RC_OK);
+    ENSURE(rc_sim_advance(s, 0.06, 0) == RC_OK && rc_sim_moments_get(s, &m1) == RC_OK);
+    ENSURE_CLOSE(m1.helfand[0] - m0.helfand[0], 2.04, 1e-12, 20.0);
+    ENSURE_CLOSE(m1.virial[0] - m0.virial[0], 2.0, 1e-12, 2.0);
+    ENSURE_CLOSE(m1.kinetic[0], 2.0, 1e-15, 2.0);
+    rc_sim_diag dg;
+    rc_sim_diagnostics(s, &dg);
+    ENSURE_CLOSE(dg.helfand_wrap[0], 20.0, 1e-12, 20.0);
+    ENSURE(dg.collisions == 1);
+    rc_sim_free(&s);
+}
+
 int main(void)
 {
+    RUN_TEST(test_helfand_across_face);
     RUN_TEST(test_walls);
     RUN_TEST(test_kolafa);
     RUN_TEST(test_dilute_relativistic);
