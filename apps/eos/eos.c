@@ -168,6 +168,14 @@ static int write_script(const char *path, const options *o, char *err)
     FILE *f = a.f;
     char fc[APP_FMT_LEN];
     const eos_in *in = &o->in;
+    /* explicit x ranges: a single packing or theta would leave gnuplot an empty range */
+    double pmax = 0.0, tmin = INFINITY, tmax = 0.0;
+    for (int k = 0; k < o->npack; k++)
+        pmax = fmax(pmax, o->packing[k]);
+    for (int k = 0; k < o->ntheta; k++) {
+        tmin = fmin(tmin, o->theta[k]);
+        tmax = fmax(tmax, o->theta[k]);
+    }
     fprintf(f, "# eos.gp — written by relcol-eos; run `gnuplot eos.gp` in this folder.\n");
     if (!in->transport) {
         app_gnuplot_head(f, "eos.png", "size 1200,560 enhanced font 'Sans,12' linewidth 1.4", 0);
@@ -175,7 +183,7 @@ static int write_script(const char *path, const options *o, char *err)
 "set multiplot layout 1,2 title \"Equation of state of %d-D hard balls, N = %zu, c = %s, "
 "frame %s\"\n"
 "set xlabel 'packing fraction η'\nset grid lc rgb '#dddddd'\nset key top left box opaque\n"
-"set offsets graph 0.04, graph 0.04, 0, 0\n"
+"set xrange [0:%.4g]\n"
 "%s\n"
 "set ylabel 'Z = PV/(NkT)'\n"
 "plot 'eos.csv' skip 1 using 4:8:9 with yerrorbars pt 7 lc rgb '#1f77b4' title 'relcol', \\\n"
@@ -187,6 +195,7 @@ static int write_script(const char *path, const options *o, char *err)
 "'#2ca02c' title '%s', 0 with lines lc rgb '#d62728' notitle\n"
 "unset multiplot\n",
                 in->dim, in->n, app_fmt(in->c, fc), in->frame ? in->frame->name : "sphere",
+                pmax + 0.05,
                 in->dim == 3
                     ? "z1(x) = (1 + x + x**2 - 2./3 * x**3 * (1 + x)) / (1 - x)**3\n"
                       "z2(x) = (1 + x + x**2 - x**3) / (1 - x)**3"
@@ -205,7 +214,8 @@ static int write_script(const char *path, const options *o, char *err)
         fprintf(f,
 "set multiplot layout 1,3 title \"Transport coefficients of %d-D hard balls (Einstein–Helfand), "
 "N = %zu, c = %s, frame %s; theory: Enskog (classical) at the same kT\"\n"
-"set xlabel 'θ'\nset grid lc rgb '#dddddd'\nset key top left box opaque\nset logscale x\n"
+"set xlabel 'θ'\nset grid lc rgb '#dddddd'\nset key top left box opaque\nset logscale xy\n"
+"set xrange [%.4g:%.4g]\n"
 "set ylabel 'D'\n"
 "plot 'eos.csv' skip 1 using 5:14:15 with yerrorbars pt 7 lc rgb '#1f77b4' title 'relcol', \\\n"
 "     '' skip 1 using 5:20 with linespoints lc rgb '#d62728' title 'Enskog', \\\n"
@@ -217,7 +227,8 @@ static int write_script(const char *path, const options *o, char *err)
 "plot 'eos.csv' skip 1 using 5:18:19 with yerrorbars pt 7 lc rgb '#1f77b4' title 'relcol', \\\n"
 "     '' skip 1 using 5:22 with linespoints lc rgb '#d62728' title 'Enskog'\n"
 "unset multiplot\n",
-                in->dim, in->n, app_fmt(in->c, fc), in->frame ? in->frame->name : "sphere");
+                in->dim, in->n, app_fmt(in->c, fc), in->frame ? in->frame->name : "sphere",
+                0.5 * tmin, 2.0 * tmax);
     }
     return app_atomic_commit(&a, err);
 }
