@@ -11,6 +11,7 @@
 #include "app.h"
 #include "gas_stats.h"
 #include "juttner.h"
+#include "pressure_blocks.h"
 
 static const char *const prog = "relcol-gas";
 
@@ -280,6 +281,7 @@ typedef struct samples {
     double mass_drift, energy_drift;
     uint64_t events, overlaps;
     double box;          /* box edge */
+    pb_acc pres;         /* pressure per block (apps/eos/pressure_blocks.h) */
 } samples;
 
 /* Starting gamma: from --v-rms, or the canonical energy at theta_start (1-D: for a
@@ -360,6 +362,8 @@ static int run_sim(const options *o, samples *S, char *err)
     for (size_t j = 0; j <= S->ns && st == RC_OK; j++) {
         const double t = o->t_equil + o->t_sample * (double)j / (double)S->ns;
         st = rc_sim_advance(s, t, 0);
+        if (st == RC_OK && j % (S->ns / NBLOCK) == 0)
+            st = pb_mark(s, o->periodic, box, &S->pres);
         double e = 0.0;
         for (size_t i = 0; i < n && st == RC_OK; i++) {
             rc_sim_ball q;
@@ -733,6 +737,10 @@ int main(int argc, char **argv)
         printf(", %llu overlaps (shape change)\n", (unsigned long long)S.overlaps);
     printf("conservation: max rest-mass drift %.2g (relative), energy drift %.2g\n",
            S.mass_drift, S.energy_drift);
+    double p_se, p_mean = o.dim != 1 ? pb_result(&S.pres, &p_se) : NAN;
+    if (o.dim != 1)
+        printf("pressure P = %.6g +- %.2g (%s)\n", p_mean, p_se,
+               o.periodic ? "momentum flux, papers/pressure.md" : "the walls' momentum flux");
     for (int q = 0; q < nspec; q++) {
         const species_stats *s = &ss[q];
         if (nspec > 1)

@@ -19,7 +19,7 @@
 #include "relcol/status.h"
 
 #define CK_MAGIC "relcolck"
-#define CK_VERSION 3u /* 2: the bookkeeping as one record (eng_books); 3: with pinned */
+#define CK_VERSION 3u /* 2: the bookkeeping as one record (eng_books); 3: with pinned and the transfer moments */
 #define CK_ORDER 0x01020304u
 
 typedef struct ck_header {
@@ -302,6 +302,10 @@ static int read_all(rc_sim *s, ck_cursor *c)
                            bk.wallw_c[2], bk.wallw_c[3], bk.wallw_c[4], bk.wallw_c[5]};
     for (size_t j = 0; j < sizeof sums / sizeof *sums; j++)
         if (!isfinite(sums[j]))
+            return RC_ECORRUPT;
+    for (size_t j = 0; j < 9; j++)
+        if (!isfinite(bk.vir[j]) || !isfinite(bk.wrap[j]) ||
+            (j < 3 && (!isfinite(bk.vir_e[j]) || !isfinite(bk.wrap_e[j]))))
             return RC_ECORRUPT;
     /* the largest radius sizes the cells: read it off the records before allocating */
     double rmax = 0.0;

@@ -292,6 +292,7 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T)
         s->bk.events[RC_SIM_EV_TC] = tc_before;
         return 0;
     }
+    eng_moments_add(s, nm, s->grp_ball, P, Q);
     for (size_t j = 0; j < nm; j++)
         P[j] = Q[j];
     finish(s, nm, 1, k0, p0, bp >= 0 ? RC_SIM_EV_BALL : RC_SIM_EV_WALL, 1, NULL);
@@ -414,6 +415,7 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
             }
         }
     }
+    eng_moments_add(s, nm, s->grp_ball, NULL, P);
     finish(s, nm, nc, k0, p0, kind, 0, J);
     return RC_OK;
 }

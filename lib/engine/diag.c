@@ -120,6 +120,10 @@ int rc_sim_diagnostics(const rc_sim *s, rc_sim_diag *d)
         d->wall_impulse_by_wall[w] = s->bk.wallw[w];
     d->wall_shared = s->bk.wall_shared;
     d->pinned = s->bk.pinned;
+    memcpy(d->virial, s->bk.vir, sizeof d->virial);
+    memcpy(d->virial_energy, s->bk.vir_e, sizeof d->virial_energy);
+    memcpy(d->helfand_wrap, s->bk.wrap, sizeof d->helfand_wrap);
+    memcpy(d->helfand_wrap_energy, s->bk.wrap_e, sizeof d->helfand_wrap_energy);
     d->collisions = s->bk.collisions;
     memcpy(d->events, s->bk.events, sizeof d->events);
     d->max_group = s->bk.max_group;

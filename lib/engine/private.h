@@ -199,6 +199,13 @@ typedef struct eng_books {
     double wallw[6], wallw_c[6];
     uint64_t wall_shared;
     uint64_t pinned; /* wall contacts of a ball as wide as the box, made plastic */
+    /* the momentum and energy that collisions carry across space (engine/moments.c):
+     * sum over events of r_a dp_b (row a, column b) and r_a dE over the members, r the
+     * member's centre relative to the event's first ball (nearest image); and the same
+     * with r replaced by nearest image minus unwrapped separation (periodic axes only:
+     * multiples of L), which turns the balls' unwrapped moments into Helfand moments.
+     * Plain sums: their rounding is far below any statistical error they feed. */
+    double vir[9], vir_e[3], wrap[9], wrap_e[3];
     uint64_t overlaps;
     uint64_t overlap_kind[3]; /* overlaps by the kind of contact: ball, wall, group */
     uint64_t collisions;
@@ -213,7 +220,7 @@ typedef struct eng_books {
     uint64_t still_count;
     int64_t stall_ball, stall_partner;
 } eng_books;
-_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 4),
+_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 24 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 4),
                "no padding in the bookkeeping");
 
 struct rc_sim {
@@ -396,6 +403,11 @@ void eng_cross(rc_sim *s, int32_t i);
 /* The contracted contact test of a simultaneity check (engine/predict.c). */
 int eng_narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
                            double d2, const eng_check *chk, rc_vec3 *normal);
+/* The event's transfer moments (eng_books.vir ...): members mem[0 .. nm) (internal
+ * indices, all at the event's time) went from states before[] (NULL: their stored
+ * states, s->a) to after[]. */
+void eng_moments_add(rc_sim *s, size_t nm, const int32_t *mem, const rc_particle *before,
+                     const rc_particle *after);
 /* Support distance of ball i's shape along the wall normal e_d. */
 double eng_wall_support(const rc_sim *s, int32_t i, int d);
 

@@ -78,7 +78,12 @@ static void same_diag(const rc_sim *a, const rc_sim *b, const char *what)
                           sizeof x.wall_impulse_by_wall) == 0 &&
                    memcmp(x.overlaps_by_kind, y.overlaps_by_kind, sizeof x.overlaps_by_kind) == 0 &&
                    x.group_sequential == y.group_sequential && x.wall_shared == y.wall_shared && x.pinned == y.pinned &&
-                   x.group_fallbacks == y.group_fallbacks && x.max_group == y.max_group,
+                   x.group_fallbacks == y.group_fallbacks && x.max_group == y.max_group &&
+                   memcmp(x.virial, y.virial, sizeof x.virial) == 0 &&
+                   memcmp(x.virial_energy, y.virial_energy, sizeof x.virial_energy) == 0 &&
+                   memcmp(x.helfand_wrap, y.helfand_wrap, sizeof x.helfand_wrap) == 0 &&
+                   memcmp(x.helfand_wrap_energy, y.helfand_wrap_energy,
+                          sizeof x.helfand_wrap_energy) == 0,
                "%s: diagnostics differ (collisions %llu / %llu)", what,
                (unsigned long long)x.collisions, (unsigned long long)y.collisions);
 }
@@ -198,9 +203,9 @@ static void test_refusals(void)
     /* resealed content: the header's dimension, a ball's partner out of range, a velocity
      * that is not p / M, a count of balls larger than the bytes hold */
     const size_t header = 8 + 4 * 6 + 8 * 3 + 4 * 2;
-    /* now, the renumbering clock, the bookkeeping: 20 sums, 10 + RC_SIM_EV_NKINDS counts and
-     * the 4 words of the progress check */
-    const size_t scalars = 8 * (2 + 20 + 10 + RC_SIM_EV_NKINDS + 4);
+    /* now, the renumbering clock, the bookkeeping: 20 sums, 24 transfer moments,
+     * 10 + RC_SIM_EV_NKINDS counts and the 4 words of the progress check */
+    const size_t scalars = 8 * (2 + 20 + 24 + 10 + RC_SIM_EV_NKINDS + 4);
     const size_t n = rc_sim_count(s), ball0 = header + scalars, aux0 = ball0 + 64 * n;
     struct { size_t at; size_t len; unsigned char val[8]; int want; } cases[] = {
         {8 + 4 * 5, 4, {3, 0, 0, 0}, RC_EMISMATCH},             /* dim 3 */

@@ -8,6 +8,7 @@
 #include "relcol/law.h"
 #include "relcol/toi.h"
 #include "relcol/sim.h"
+#include "relcol/moments.h"
 #include "relcol/soft.h"
 #include "relcol/gas1d.h"
 #include "relcol/rng.h"

@@ -182,6 +182,19 @@ typedef struct rc_sim_diag {
                                perfectly plastic along that axis, whatever the walls'
                                restitution -- a model choice, the rigid-wall limit
                                (papers/relcol.md, "Limits") */
+    /* What collisions carried across space so far (papers/pressure.md): virial[3 a + b] =
+     * sum over collision events of sum_j r_j,a dp_j,b over the event's balls, r_j the
+     * centre of ball j minus that of the event's first ball (nearest image) at the
+     * event's table time -- for a two-ball contact r_01,a dp_1,b, the collisional
+     * virial; a lone ball's wall contact adds nothing (a group with walls adds its
+     * members' moments about its first ball). virial_energy[a]: the same with the
+     * kinetic energy change dE_j. Its rate over the volume is the collisional part of the
+     * pressure tensor (rc_sim_moments). helfand_wrap, helfand_wrap_energy: the same sums
+     * with r_j replaced by (nearest image - unwrapped separation), whole box lengths
+     * where a pair meets across a periodic face, 0 otherwise: the jump that makes the
+     * unwrapped moment sum_i x_i p_i a Helfand moment (relcol/moments.h). */
+    double virial[9], virial_energy[3];
+    double helfand_wrap[9], helfand_wrap_energy[3];
     double momentum_scale;  /* sum of |p_i| (scale for relative momentum checks) */
     double max_overlap;     /* deepest sphere overlap now, relative to ri + rj (0 if none;
                                NAN with a contracted frame, whose bounding spheres may

@@ -1,0 +1,322 @@
+/* relcol-eos — the equation of state and the transport coefficients of a hard-ball gas in
+ * a periodic box, swept over packing fraction x temperature at any c and contact frame:
+ * compressibility factor Z = P V / (N kT) from the exact flux moments (pressure tensor =
+ * momentum flux: kinetic part plus collisional transfer), and with --transport the
+ * self-diffusion, shear viscosity and thermal conductivity from Einstein–Helfand moments.
+ * Writes a CSV and a gnuplot figure against theory (papers/pressure.md,
+ * papers/transport.md). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "app.h"
+#include "eos_theory.h"
+#include "eos_run.h"
+
+static const char *prog = "relcol-eos";
+#define EXIT_BAD_INPUT 2
+#define MAXLIST 64
+
+static void usage(FILE *f)
+{
+    fprintf(f,
+"usage: relcol-eos [--dim 2|3] [--n N] [--packing LIST] [--theta LIST] [--c C|inf]\n"
+"                  [--frame NAME] [--t-equil T] [--t-run T] [--blocks B] [--per-block K]\n"
+"                  [--transport] [--lag T] [--seed S] [--out DIR]\n"
+"Equation of state (and transport coefficients) of N equal hard balls (m = 1, diameter\n"
+"1) in a periodic box, for every packing x theta of the comma-separated lists.\n"
+"  --dim            2 (discs) or 3 (spheres; default)\n"
+"  --n              balls (default 1000)\n"
+"  --packing LIST   rest-frame packing fractions (default 0.05,0.1,0.2,0.3,0.4)\n"
+"  --theta LIST     kT / (m c^2) at finite c, kT at c = inf (default 1)\n"
+"  --c              speed of light (default inf: classical)\n"
+"  --frame NAME     contact frame (default sphere: uncontracted, thermal at any density)\n"
+"  --t-equil, --t-run  melting and measured time in mean free times (default 50, 2000)\n"
+"  --blocks B       independent blocks for the standard errors (default 20)\n"
+"  --per-block K    moment readings per block with --transport (default 100)\n"
+"  --transport      also D, eta, lambda (Einstein–Helfand; reads every position)\n"
+"  --lag T          Helfand lag in mean free times (default 20, within a block)\n"
+"  --out DIR        output folder (default out/eos): eos.csv, eos.gp, eos.png\n"
+"Theory columns: 3-D Kolafa and Carnahan–Starling, 2-D virial series (Clisby & McCoy)\n"
+"and Santos et al.; transport (3-D): Enskog, and Speedy's D with the finite-box\n"
+"correction (Yeh & Hummer). Z, kT, P, D, eta, lambda each with a standard error\n"
+"from the blocks.\n");
+}
+
+typedef struct options {
+    eos_in in;
+    double packing[MAXLIST], theta[MAXLIST];
+    int npack, ntheta;
+    const char *out;
+} options;
+
+static int parse(int argc, char **argv, options *o)
+{
+    char err[APP_ERR_LEN], f1[APP_FMT_LEN];
+    eos_in *in = &o->in;
+    in->dim = 3;
+    in->n = 1000;
+    in->c = INFINITY;
+    in->frame = rc_toi_frame_find("sphere");
+    in->seed = 1;
+    in->t_equil = 50.0;
+    in->t_run = 2000.0;
+    in->blocks = 20;
+    in->per_block = 100;
+    in->lag = 20.0;
+    const double pk[] = {0.05, 0.1, 0.2, 0.3, 0.4};
+    memcpy(o->packing, pk, sizeof pk);
+    o->npack = 5;
+    o->theta[0] = 1.0;
+    o->ntheta = 1;
+    o->out = "out/eos";
+    static const char *const valued[] = {"--dim", "--n", "--packing", "--theta", "--c",
+                                         "--frame", "--t-equil", "--t-run", "--blocks",
+                                         "--per-block", "--lag", "--seed", "--out", NULL};
+    static const char *const flags[] = {"--transport", NULL};
+    app_opts it;
+    app_opts_init(&it, prog, argc, argv, valued, flags, "see --help");
+    const char *name, *val;
+    for (int kind; (kind = app_opts_next(&it, &name, &val)) != APP_OPT_END;) {
+        if (kind == APP_OPT_HELP)
+            return -1;
+        if (kind == APP_OPT_ERROR)
+            return EXIT_BAD_INPUT;
+        long l;
+        double x;
+        if (kind == APP_OPT_FLAG) {
+            in->transport = 1;
+        } else if (strcmp(name, "--dim") == 0) {
+            if (app_parse_long(val, 2, 3, &l, err) != 0)
+                return app_fail(prog, EXIT_BAD_INPUT, "--dim: %s", err);
+            in->dim = (int)l;
+        } else if (strcmp(name, "--n") == 0) {
+            if (app_parse_long(val, 4, 10000000, &l, err) != 0)
+                return app_fail(prog, EXIT_BAD_INPUT, "--n: %s", err);
+            in->n = (size_t)l;
+        } else if (strcmp(name, "--blocks") == 0 || strcmp(name, "--per-block") == 0) {
+            if (app_parse_long(val, strcmp(name, "--blocks") ? 4 : 2, 100000, &l, err) != 0)
+                return app_fail(prog, EXIT_BAD_INPUT, "%s: %s", name, err);
+            *(strcmp(name, "--blocks") ? &in->per_block : &in->blocks) = (int)l;
+        } else if (strcmp(name, "--seed") == 0) {
+            if (app_parse_u64(val, &in->seed, err) != 0)
+                return app_fail(prog, EXIT_BAD_INPUT, "--seed: %s", err);
+        } else if (strcmp(name, "--out") == 0) {
+            if (!*val)
+                return app_fail(prog, EXIT_BAD_INPUT, "--out: empty folder name");
+            o->out = val;
+        } else if (strcmp(name, "--frame") == 0) {
+            in->frame = rc_toi_frame_find(val);
+            if (!in->frame) {
+                char list[256];
+                return app_fail(prog, EXIT_BAD_INPUT, "--frame: unknown frame '%s' (known: %s)",
+                                val, app_toi_frame_list(list, sizeof list));
+            }
+        } else if (strcmp(name, "--packing") == 0 || strcmp(name, "--theta") == 0) {
+            const int pack = strcmp(name, "--packing") == 0;
+            double *dst = pack ? o->packing : o->theta;
+            int *cnt = pack ? &o->npack : &o->ntheta;
+            if (app_parse_list(val, dst, MAXLIST, cnt, err) != 0)
+                return app_fail(prog, EXIT_BAD_INPUT, "%s: %s", name, err);
+            for (int k = 0; k < *cnt; k++) {
+                const double hi = pack ? 0.7 : 1e3, lo = pack ? 0.0 : 1e-3;
+                if (!(dst[k] > lo && dst[k] <= hi))
+                    return app_fail(prog, EXIT_BAD_INPUT, "%s: %s outside (%g, %g]", name,
+                                    app_fmt(dst[k], f1), lo, hi);
+            }
+        } else {
+            if (app_parse_double(val, strcmp(name, "--c") == 0, &x, err) != 0)
+                return app_fail(prog, EXIT_BAD_INPUT, "%s: %s", name, err);
+            if (strcmp(name, "--c") == 0) {
+                if (app_check_c(x, err) != 0)
+                    return app_fail(prog, EXIT_BAD_INPUT, "--c: %s", err);
+                in->c = x;
+            } else if (!(x > 0.0)) {
+                return app_fail(prog, EXIT_BAD_INPUT, "%s: %s must be > 0", name,
+                                app_fmt(x, f1));
+            } else if (strcmp(name, "--t-equil") == 0) {
+                in->t_equil = x;
+            } else if (strcmp(name, "--t-run") == 0) {
+                in->t_run = x;
+            } else {
+                in->lag = x;
+            }
+        }
+    }
+    /* the fluid ends near 0.494 (spheres) and 0.70 (discs): beyond it the lattice start
+     * would not melt */
+    for (int k = 0; k < o->npack; k++)
+        if (in->dim == 3 && o->packing[k] > 0.49)
+            return app_fail(prog, EXIT_BAD_INPUT, "--packing: %s beyond the sphere fluid "
+                            "(<= 0.49 in 3-D)", app_fmt(o->packing[k], f1));
+    if (in->transport && in->lag * (double)in->blocks > in->t_run)
+        return app_fail(prog, EXIT_BAD_INPUT, "--lag: %s longer than a block (--t-run / "
+                        "--blocks = %g mean free times)", app_fmt(in->lag, f1),
+                        in->t_run / in->blocks);
+    return 0;
+}
+
+static double z_theory(int dim, double eta) { return dim == 3 ? eos_z_kolafa(eta) : eos_z_disc_virial(eta); }
+
+static int write_script(const char *path, const options *o, char *err)
+{
+    app_atomic a;
+    if (app_atomic_open(&a, path, err) != 0)
+        return -1;
+    FILE *f = a.f;
+    char fc[APP_FMT_LEN];
+    const eos_in *in = &o->in;
+    /* explicit x ranges: a single packing or theta would leave gnuplot an empty range */
+    double pmax = 0.0, tmin = INFINITY, tmax = 0.0;
+    for (int k = 0; k < o->npack; k++)
+        pmax = fmax(pmax, o->packing[k]);
+    for (int k = 0; k < o->ntheta; k++) {
+        tmin = fmin(tmin, o->theta[k]);
+        tmax = fmax(tmax, o->theta[k]);
+    }
+    fprintf(f, "# eos.gp — written by relcol-eos; run `gnuplot eos.gp` in this folder.\n");
+    if (!in->transport) {
+        app_gnuplot_head(f, "eos.png", "size 1200,560 enhanced font 'Sans,12' linewidth 1.4", 0);
+        fprintf(f,
+"set multiplot layout 1,2 title \"Equation of state of %d-D hard balls, N = %zu, c = %s, "
+"frame %s\"\n"
+"set xlabel 'packing fraction η'\nset grid lc rgb '#dddddd'\nset key top left box opaque\n"
+"set xrange [0:%.4g]\n"
+"%s\n"
+"set ylabel 'Z = PV/(NkT)'\n"
+"plot 'eos.csv' skip 1 using 4:8:9 with yerrorbars pt 7 lc rgb '#1f77b4' title 'relcol', \\\n"
+"     z1(x) with lines lw 2 lc rgb '#d62728' title '%s', \\\n"
+"     z2(x) with lines lw 2 dt 2 lc rgb '#2ca02c' title '%s'\n"
+"set ylabel 'Z / Z_{theory} - 1'\nset key top left\n"
+"plot 'eos.csv' skip 1 using 4:($8/$10-1):($9/$10) with yerrorbars pt 7 lc rgb '#1f77b4' "
+"title 'relcol against %s', '' skip 1 using 4:($11/$10-1) with linespoints dt 2 lc rgb "
+"'#2ca02c' title '%s', 0 with lines lc rgb '#d62728' notitle\n"
+"unset multiplot\n",
+                in->dim, in->n, app_fmt(in->c, fc), in->frame ? in->frame->name : "sphere",
+                pmax + 0.05,
+                in->dim == 3
+                    ? "z1(x) = (1 + x + x**2 - 2./3 * x**3 * (1 + x)) / (1 - x)**3\n"
+                      "z2(x) = (1 + x + x**2 - x**3) / (1 - x)**3"
+                    : "b(k) = k == 1 ? 1 : k == 2 ? 0.782004 : k == 3 ? 0.53223180 : k == 4 ? "
+                      "0.33355604 : k == 5 ? 0.1988425 : k == 6 ? 0.1148728 : k == 7 ? 0.0649930 : "
+                      "k == 8 ? 0.0362193 : 0.0199537\n"
+                      "z1(x) = 1 + sum [k = 1:9] b(k) * (2 * x)**k\n"
+                      "z2(x) = 1 / (1 - 2 * x + (2 * pi / (2 * sqrt(3)) - 1) / (pi / (2 * "
+                      "sqrt(3)))**2 * x**2)",
+                in->dim == 3 ? "Kolafa" : "virial series (Clisby–McCoy)",
+                in->dim == 3 ? "Carnahan–Starling" : "Santos et al. 1995",
+                in->dim == 3 ? "Kolafa" : "virial series",
+                in->dim == 3 ? "Carnahan–Starling" : "Santos et al.");
+    } else {
+        app_gnuplot_head(f, "eos.png", "size 1500,520 enhanced font 'Sans,12' linewidth 1.4", 0);
+        fprintf(f,
+"set multiplot layout 1,3 title \"Transport coefficients of %d-D hard balls (Einstein–Helfand), "
+"N = %zu, c = %s, frame %s; theory: Enskog (classical) at the same kT\"\n"
+"set xlabel 'θ'\nset grid lc rgb '#dddddd'\nset key top left box opaque\nset logscale xy\n"
+"set xrange [%.4g:%.4g]\n"
+"set ylabel 'D'\n"
+"plot 'eos.csv' skip 1 using 5:14:15 with yerrorbars pt 7 lc rgb '#1f77b4' title 'relcol', \\\n"
+"     '' skip 1 using 5:20 with linespoints lc rgb '#d62728' title 'Enskog', \\\n"
+"     '' skip 1 using 5:23 with linespoints dt 2 lc rgb '#2ca02c' title 'Speedy − finite box'\n"
+"set ylabel 'η_s'\n"
+"plot 'eos.csv' skip 1 using 5:16:17 with yerrorbars pt 7 lc rgb '#1f77b4' title 'relcol', \\\n"
+"     '' skip 1 using 5:21 with linespoints lc rgb '#d62728' title 'Enskog'\n"
+"set ylabel 'λ'\n"
+"plot 'eos.csv' skip 1 using 5:18:19 with yerrorbars pt 7 lc rgb '#1f77b4' title 'relcol', \\\n"
+"     '' skip 1 using 5:22 with linespoints lc rgb '#d62728' title 'Enskog'\n"
+"unset multiplot\n",
+                in->dim, in->n, app_fmt(in->c, fc), in->frame ? in->frame->name : "sphere",
+                0.5 * tmin, 2.0 * tmax);
+    }
+    return app_atomic_commit(&a, err);
+}
+
+int main(int argc, char **argv)
+{
+    app_init(prog);
+    options o;
+    memset(&o, 0, sizeof o);
+    int st = parse(argc, argv, &o);
+    if (st < 0)
+        return app_help(usage);
+    if (st != 0)
+        return st;
+    char err[APP_ERR_LEN], fc[APP_FMT_LEN];
+    if (app_mkdir_p(o.out, err) != 0)
+        return app_fail(prog, EXIT_BAD_INPUT, "--out: %s", err);
+    char *csv = app_path_join(o.out, "eos.csv"), *gp = app_path_join(o.out, "eos.gp");
+    if (!csv || !gp)
+        return app_fail(prog, 1, "out of memory");
+    app_atomic a;
+    if (app_atomic_open(&a, csv, err) != 0) {
+        free(csv);
+        free(gp);
+        return app_fail(prog, 1, "%s", err);
+    }
+    fprintf(a.f, "dim,c,n,packing,theta,kT,kT_se,Z,Z_se,Z_theory,Z_theory2,P,P_se,D,D_se,"
+                 "eta,eta_se,lambda,lambda_se,D_enskog,eta_enskog,lambda_enskog,D_speedy_box,"
+                 "collisions,overlaps,seconds\n");
+    printf("%s: %d-D, N = %zu, c = %s, frame %s, periodic box; Z against %s\n", prog,
+           o.in.dim, o.in.n, app_fmt(o.in.c, fc), o.in.frame ? o.in.frame->name : "sphere",
+           o.in.dim == 3 ? "Kolafa (Z_theory) and Carnahan–Starling"
+                         : "the virial series (Clisby–McCoy) and Santos et al.");
+    int rc = 0;
+    for (int ip = 0; ip < o.npack && rc == 0; ip++)
+        for (int it = 0; it < o.ntheta && rc == 0; it++) {
+            eos_in in = o.in;
+            in.packing = o.packing[ip];
+            in.theta = o.theta[it];
+            eos_out r;
+            struct timespec t0, t1;
+            clock_gettime(CLOCK_MONOTONIC, &t0);
+            if (eos_measure(&in, &r, err) != 0) {
+                rc = app_fail(prog, 1, "packing %g theta %g: %s", in.packing, in.theta, err);
+                break;
+            }
+            clock_gettime(CLOCK_MONOTONIC, &t1);
+            const double sec = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+            const double eta = in.packing;
+            const double zt = z_theory(in.dim, eta),
+                         zt2 = in.dim == 3 ? eos_z_cs(eta) : eos_z_disc_shy(eta);
+            double de = NAN, ee = NAN, le = NAN, ds = NAN;
+            if (in.dim == 3) {
+                de = tr_d_enskog(eta, r.kT);
+                ee = tr_eta_enskog(eta, r.kT);
+                le = tr_lambda_enskog(eta, r.kT);
+                ds = tr_d_speedy(eta, r.kT) - tr_d_finite_size(r.kT, ee, r.box);
+            }
+            fprintf(a.f, "%d,%s,%zu,%.6g,%.6g,%.8g,%.3g,%.8g,%.3g,%.8g,%.8g,%.8g,%.3g,%.6g,%.3g,"
+                         "%.6g,%.3g,%.6g,%.3g,%.6g,%.6g,%.6g,%.6g,%llu,%llu,%.3f\n",
+                    in.dim, app_fmt(in.c, fc), in.n, eta, in.theta, r.kT, r.kT_se, r.z, r.z_se,
+                    zt, zt2, r.p, r.p_se, r.d, r.d_se, r.eta, r.eta_se, r.lambda, r.lambda_se,
+                    de, ee, le, ds, (unsigned long long)r.collisions,
+                    (unsigned long long)r.overlaps, sec);
+            printf("packing %.4g theta %.4g: kT = %.5f +- %.5f  Z = %.5f +- %.5f  (theory %.5f: "
+                   "%+.3f %% +- %.3f %%)  %llu collisions, %.1f s\n",
+                   eta, in.theta, r.kT, r.kT_se, r.z, r.z_se, zt, 100.0 * (r.z / zt - 1.0),
+                   100.0 * r.z_se / zt, (unsigned long long)r.collisions, sec);
+            if (in.transport)
+                printf("    D = %.5f +- %.5f (Enskog %.5f, Speedy in this box %.5f)  eta = %.5f "
+                       "+- %.5f (Enskog %.5f)  lambda = %.5f +- %.5f (Enskog %.5f)\n",
+                       r.d, r.d_se, de, ds, r.eta, r.eta_se, ee, r.lambda, r.lambda_se, le);
+            fflush(stdout);
+        }
+    if (rc != 0) {
+        app_atomic_abort(&a);
+    } else if (app_atomic_commit(&a, err) != 0 || write_script(gp, &o, err) != 0) {
+        rc = app_fail(prog, 1, "%s", err);
+    } else {
+        int made = 0;
+        if (app_gnuplot_run(prog, o.out, "eos.gp", "eos.png", &made, err) != 0)
+            rc = app_fail(prog, 1, "%s", err);
+        else if (made)
+            printf("wrote %s, %s, %s/eos.png\n", csv, gp, o.out);
+        else
+            printf("wrote %s, %s\n", csv, gp);
+    }
+    free(csv);
+    free(gp);
+    return rc == 0 && fflush(stdout) != 0 ? 1 : rc;
+}
