@@ -10,6 +10,7 @@
 
 #include "app.h"
 #include "gas_stats.h"
+#include "gas_thermal.h"
 #include "juttner.h"
 
 static const char *const prog = "relcol-gas";
@@ -53,8 +54,8 @@ static void usage(FILE *f)
 "gases:\n"
 "  --dim 2|3   discs / balls of rest radius 1/2, rest mass 1, in a square / cubic box\n"
 "              with elastic walls or periodic: the event-driven engine (relcol/sim.h),\n"
-"              elastic collisions, contact geometry --frame (default table: contracted\n"
-"              shapes)\n"
+"              elastic collisions, contact geometry --frame (default: uncontracted\n"
+"              shapes, the frame whose gas is Jüttner at every density)\n"
 "  --dim 1     the exact 1-D point gas (relcol/gas1d.h) on [0, N] with elastic walls, a\n"
 "              mixture of rest masses 1 and 2 (one species would never thermalise: equal\n"
 "              masses only swap momenta); theta_start and reported theta are per species,\n"
@@ -73,8 +74,9 @@ static void usage(FILE *f)
 "  --t-sample T     table time sampled after it (default 400/c; 1-D 1000/c)\n"
 "  --snapshots K    snapshots spread evenly over the sample, >= %d (default 100)\n"
 "  --seed S         random seed of positions, species and directions (default 1)\n"
-"  --frame NAME     contact frame (2-D/3-D; default table):\n",
-            2 * NBLOCK);
+"  --frame NAME     contact frame (2-D/3-D; default %s; a warning on stderr names a\n"
+"                   frame whose stationary state is not Jüttner, notebook 08):\n",
+            2 * NBLOCK, gas_default_frame()->name);
     for (size_t i = 0; rc_toi_frames[i]; i++)
         fprintf(f, "                     %-7s %s\n", rc_toi_frames[i]->name,
                 rc_toi_frames[i]->summary);
@@ -122,7 +124,7 @@ static int parse_options(int argc, char **argv, options *o)
     o->c = 1.0;
     o->theta_start = 0.75;
     o->seed = 1;
-    o->frame = rc_toi_frame_find("table");
+    o->frame = gas_default_frame();
     o->out = "out/gas";
     static const char *const known[] = {"--dim", "--n", "--c", "--theta-start", "--v-rms",
                                         "--packing", "--t-equil", "--t-sample", "--snapshots",
@@ -241,6 +243,8 @@ static int parse_options(int argc, char **argv, options *o)
     if ((double)o->n * (double)o->snapshots > MAX_SAMPLES)
         return fail("--snapshots: n x snapshots = %.3g exceeds %.3g stored samples",
                     (double)o->n * (double)o->snapshots, MAX_SAMPLES);
+    if (o->dim >= 2) /* a valid run in a frame that is not thermal: said before it starts */
+        gas_frame_warn(stderr, prog, o->frame, o->packing);
     return 0;
 }
 
