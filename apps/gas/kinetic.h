@@ -122,4 +122,47 @@ static inline int kn_collide(kn_kernel k, rc_vec3 *p0, rc_vec3 *p1, double phi)
     return st;
 }
 
+/* Gain and loss of momentum p0 = (s0, 0) under the 2-D Jüttner law at theta,
+ * f = e^(-(E-1)/theta) / (2 pi theta (1 + theta)):
+ *   L(p0) = f(p0) Int d^2p1 f(p1) Int dphi W(p0, p1, phi)
+ *   G(p0) = Int d^2p1 Int dphi W(T(p0, p1), phi) f(T0) f(T1) E_T0 E_T1 / (E0 E1)
+ * (the pre-collision states T(p0, p1) that phi's collision sends to (p0, p1): the
+ * involution substituted, with its Jacobian). One midpoint rule for both, ny x na x nphi
+ * nodes: y = 1 - e^(-(E1-1)/theta) in (0, 1), the angle of p1, and phi (nphi even, so
+ * phi + pi is a node: a pair that recedes along phi approaches along phi + pi, where L
+ * counts it). NAN in both on a failed collision. */
+static inline void kn_gain_loss(kn_kernel k, double r, double theta, double s0, int ny,
+                                int na, int nphi, double *G, double *L)
+{
+    const rc_vec3 p0 = rc_v3(s0, 0.0, 0.0);
+    const double E0 = kn_energy(p0), Z = 2.0 * M_PI * theta * (1.0 + theta);
+    double g = 0.0, l = 0.0;
+    for (int iy = 0; iy < ny; iy++) {
+        const double y = (iy + 0.5) / ny, x = -theta * log1p(-y), E1 = 1.0 + x;
+        const double s1 = sqrt(x * (x + 2.0));
+        /* f(p1) d^2p1 = E1 dy dalpha / (2 pi (1 + theta)) */
+        const double w1 = E1 / (2.0 * M_PI * (1.0 + theta)) / ny * (2.0 * M_PI / na) *
+                          (2.0 * M_PI / nphi);
+        const double f1 = exp(-x / theta) / Z;
+        for (int ia = 0; ia < na; ia++) {
+            const double a = 2.0 * M_PI * (ia + 0.5) / na;
+            const rc_vec3 p1 = rc_v3(s1 * cos(a), s1 * sin(a), 0.0);
+            for (int ip = 0; ip < nphi; ip++) {
+                const double phi = 2.0 * M_PI * (ip + 0.5) / nphi;
+                l += w1 * kn_rate(k, r, p0, p1, phi);
+                rc_vec3 q0 = p0, q1 = p1;
+                if (kn_collide(k, &q0, &q1, phi) != RC_OK) {
+                    *G = *L = NAN;
+                    return;
+                }
+                const double F0 = kn_energy(q0), F1 = kn_energy(q1);
+                const double fT = exp(-(F0 - 1.0) / theta) / Z * exp(-(F1 - 1.0) / theta) / Z;
+                g += w1 / f1 * kn_rate(k, r, q0, q1, phi) * fT * F0 * F1 / (E0 * E1);
+            }
+        }
+    }
+    *G = g;
+    *L = l * exp(-(E0 - 1.0) / theta) / Z;
+}
+
 #endif
