@@ -109,18 +109,17 @@ static int run(dilute_run *r)
                 spv += u / gm;
                 cnt += 1.0;
             }
-            /* pair means over disjoint random pairs of the snapshot */
-            for (size_t i = 0; i + 1 < n; i += 2) {
-                const size_t a = i + (size_t)(rc_test_uniform(&rng) * (double)(n - i));
-                const rc_vec3 t = p[i];
-                p[i] = p[a], p[a] = t;
-            }
-            for (size_t i = 0; i + 1 < n; i += 2) {
-                const double E0 = sqrt(1.0 + rc_v3_norm2(p[i])), E1 = sqrt(1.0 + rc_v3_norm2(p[i + 1]));
-                svm += v_moller(p[i], p[i + 1]);
-                svr += rc_v3_norm(rc_v3_sub(rc_v3_scale(1.0 / E0, p[i]), rc_v3_scale(1.0 / E1, p[i + 1])));
-                npair += 1.0;
-            }
+            /* pair means over all pairs of every block's first snapshot (the speeds'
+             * distribution itself, not a sample of pairs from it) */
+            if (j > 0)
+                continue;
+            for (size_t i = 0; i < n; i++)
+                for (size_t l = i + 1; l < n; l++) {
+                    const double E0 = sqrt(1.0 + rc_v3_norm2(p[i])), E1 = sqrt(1.0 + rc_v3_norm2(p[l]));
+                    svm += v_moller(p[i], p[l]);
+                    svr += rc_v3_norm(rc_v3_sub(rc_v3_scale(1.0 / E0, p[i]), rc_v3_scale(1.0 / E1, p[l])));
+                    npair += 1.0;
+                }
         }
         if (st == RC_OK && (st = rc_sim_diagnostics(s, &dg)) == RC_OK) {
             brate[k] = (double)(dg.collisions - c_prev) / (r->area * dt * per);
@@ -195,12 +194,23 @@ static void test_invariant_rate(void)
                "/ (... <|v0 - v1|>) = %.4f +- %.4f (g = %.4f, <|w|>/<v_M> = %.4f)\n",
                r[i].frame, r[i].packing, r[i].rate / pm, r[i].se_rate / pm, r[i].rate / pr,
                r[i].se_rate / pr, g, r[i].v_rel / r[i].v_moller);
-        /* 4 sigma of the block errors, plus the pair means' own sampling error (~1e5
-         * pairs: 1e-3 relative, taken as 3e-3) */
-        const double want = i == 0 ? pm : pr, other = i == 0 ? pr : pm;
-        ENSURE_CLOSE(r[i].rate, want, 1.0, 4.0 * r[i].se_rate + 3e-3 * want);
-        /* and far from the other law: the two differ by > 10 % at theta = 0.75 */
-        ENSURE(fabs(r[i].rate - other) > 10.0 * r[i].se_rate + 3e-2 * other);
+        /* 4 sigma of the block errors; the pair means come from 10 snapshots of all
+         * pairs, whose own scatter (the speeds' distribution fluctuates by ~1/sqrt(N) per
+         * snapshot) is allowed as 2e-3 */
+        const double tol = 4.0 * r[i].se_rate + 2e-3 * pm;
+        if (i == 1) {
+            /* uncontracted discs: the non-invariant <|v0 - v1|> rate with the discs'
+             * Enskog factor */
+            ENSURE_CLOSE(r[i].rate, pr, 1.0, tol);
+            ENSURE(r[i].rate - pm > 8.0 * r[i].se_rate); /* and not the Moller one */
+        } else {
+            /* zmf: the invariant Moller rate, times a density correction between 1 and
+             * the discs' Enskog factor (the contracted shapes exclude less area than
+             * discs; the dilute limit is the claim, the correction item 3's) */
+            ENSURE_MSG(r[i].rate > pm / g - tol && r[i].rate < pm + tol,
+                       "zmf rate / (1/2 n^2 sigma <v_M>) = %g outside [1, %g]", r[i].rate * g / pm, g);
+            ENSURE(pr - r[i].rate > 8.0 * r[i].se_rate); /* and not the <|w|> one */
+        }
     }
 }
 
