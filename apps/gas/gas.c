@@ -9,6 +9,7 @@
 #include <gsl/gsl_errno.h>
 
 #include "app.h"
+#include "gas_moving.h"
 #include "gas_stats.h"
 #include "gas_summary.h"
 #include "gas_thermal.h"
@@ -41,7 +42,8 @@ static void usage(FILE *f)
     fprintf(f,
 "usage: relcol-gas [--dim 1|2|3] [--n N] [--c C] [--theta-start T | --v-rms V]\n"
 "                  [--packing P] [--t-equil T] [--t-sample T] [--snapshots K]\n"
-"                  [--seed S] [--frame NAME] [--boundary walls|periodic] [--out DIR]\n"
+"                  [--seed S] [--frame NAME] [--boundary walls|periodic]\n"
+"                  [--observer-velocity V] [--out DIR]\n"
 "\n"
 "Run a relativistic gas from a far-from-equilibrium start (every speed equal, random\n"
 "directions) to equilibrium, and read its temperature theta = kT/(m c^2) two ways:\n"
@@ -85,6 +87,12 @@ static void usage(FILE *f)
 "  --boundary B     2-D/3-D: walls (default) or periodic on every axis (periodic in the\n"
 "                   box frame; the balls start in pairs of opposite momenta, so the\n"
 "                   total momentum is zero and the gas settles at rest)\n"
+"  --observer-velocity V  2-D, walls: also sample the gas as seen by an observer moving\n"
+"                   at V along x (|V| < c): every ball's momentum where its worldline\n"
+"                   crosses the observer's simultaneity hyperplanes (one per snapshot,\n"
+"                   a second run of the same gas, worldlines rebuilt exactly), chi2\n"
+"                   against the boosted Jüttner law at theta from <gamma>; writes\n"
+"                   DIR/observer.csv, observer.gp, observer.png\n"
 "  --out DIR        output folder, created if missing (default out/gas)\n"
 "\n"
 "error bars: the K snapshots are cut into %d consecutive blocks and each figure is the\n"
@@ -114,6 +122,8 @@ typedef struct options {
     double c, theta_start, v_start, packing, t_equil, t_sample;
     int theta_given, v_given, packing_given, frame_given, tequil_given, tsample_given;
     int periodic, boundary_given;
+    double v_obs;
+    int obs_given;
     uint64_t seed;
     const rc_toi_frame *frame;
     const char *out;
@@ -132,7 +142,8 @@ static int parse_options(int argc, char **argv, options *o)
     o->out = "out/gas";
     static const char *const known[] = {"--dim", "--n", "--c", "--theta-start", "--v-rms",
                                         "--packing", "--t-equil", "--t-sample", "--snapshots",
-                                        "--seed", "--out", "--frame", "--boundary", NULL};
+                                        "--seed", "--out", "--frame", "--boundary",
+                                        "--observer-velocity", NULL};
     app_opts it;
     app_opts_init(&it, prog, argc, argv, known, NULL, "see --help");
     const char *name, *val;
@@ -204,6 +215,9 @@ static int parse_options(int argc, char **argv, options *o)
                     return fail("--t-equil: %s must be >= 0", app_fmt(x, f1));
                 o->t_equil = x;
                 o->tequil_given = 1;
+            } else if (strcmp(name, "--observer-velocity") == 0) {
+                o->v_obs = x;
+                o->obs_given = 1;
             } else if (strcmp(name, "--t-sample") == 0) {
                 if (!(x > 0.0))
                     return fail("--t-sample: %s must be > 0", app_fmt(x, f1));
@@ -228,6 +242,14 @@ static int parse_options(int argc, char **argv, options *o)
                         g < jt_mean_gamma(d, THETA_MIN) ? "below" : "above",
                         g < jt_mean_gamma(d, THETA_MIN) ? THETA_MIN : THETA_MAX);
     }
+    if (o->obs_given && o->dim != 2)
+        return fail("--observer-velocity: 2-D only");
+    if (o->obs_given && o->boundary_given && o->periodic)
+        return fail("--observer-velocity: needs walls (a hyperplane cuts a walled box's "
+                    "world-tube once per ball)");
+    if (o->obs_given && !(fabs(o->v_obs) < o->c))
+        return fail("--observer-velocity: %s must be below c = %s in size",
+                    app_fmt(o->v_obs, f1), app_fmt(o->c, err));
     if (o->dim == 1 && o->packing_given)
         return fail("--packing: not used with --dim 1 (point particles at unit density)");
     if (o->dim == 1 && o->frame_given)
@@ -336,7 +358,9 @@ static double start_gamma(const options *o)
     return start_gamma_mixture(o->theta_start, half);
 }
 
-static int run_sim(const options *o, samples *S, char *err)
+/* The engine with the run's start (the same for every call: positions, directions and
+ * speeds from the seed). */
+static int sim_start(const options *o, samples *S, rc_sim **out, char *err)
 {
     const size_t n = S->n;
     rc_sim_ball *b = malloc(n * sizeof *b);
@@ -387,6 +411,22 @@ static int run_sim(const options *o, samples *S, char *err)
     if (st == RC_OK)
         st = rc_sim_set_balls(s, n, b, NULL);
     free(b);
+    if (st != RC_OK) {
+        rc_sim_free(&s);
+        app_errf(err, "engine: %s", rc_strerror(st));
+        return -1;
+    }
+    *out = s;
+    return 0;
+}
+
+static int run_sim(const options *o, samples *S, char *err)
+{
+    const size_t n = S->n;
+    rc_sim *s = NULL;
+    if (sim_start(o, S, &s, err) != 0)
+        return -1;
+    int st = RC_OK;
     const double inv_c2 = 1.0 / (o->c * o->c);
     double e0 = 0.0;
     app_progress bar;
@@ -835,10 +875,39 @@ int main(int argc, char **argv)
         ss[q].mass = o.dim == 1 ? mix_mass[q] : 1.0;
         analyse(o.dim, &S, q, &ss[q], &tau[q], ws);
     }
+    gas_moving_result mv;
+    memset(&mv, 0, sizeof mv);
+    if (o.obs_given) {
+        rc_sim *s2 = NULL;
+        int r2 = sim_start(&o, &S, &s2, err);
+        if (r2 == 0 && rc_sim_advance(s2, o.t_equil, 0) != RC_OK) {
+            app_errf(err, "engine: cannot reach t = %g", o.t_equil);
+            r2 = -1;
+        }
+        const rc_vec3 box = rc_v3(S.box, S.box, S.box);
+        if (r2 == 0)
+            r2 = gas_moving_run(prog, s2, S.n, o.c, o.v_obs, ss[0].th_g, o.t_equil,
+                                o.t_sample / (double)S.ns, (long)S.ns, box, o.out, &mv, err);
+        rc_sim_free(&s2);
+        if (r2 != 0) {
+            fprintf(stderr, "%s: %s\n", prog, err);
+            goto out;
+        }
+    }
     double rate, rate_se;
     collision_rate(&S, o.t_sample, &rate, &rate_se);
     gas_summary sum;
     fill_summary(&o, &S, nspec, ss, tau, rate, rate_se, &sum);
+    if (o.obs_given) {
+        sum.observer = 1;
+        sum.obs_v = mv.v;
+        sum.obs_sampled = mv.sampled;
+        sum.obs_lost = mv.lost;
+        sum.obs_chi2 = mv.chi2;
+        sum.obs_chi2_rest = mv.chi2_rest;
+        sum.obs_phi = mv.phi;
+        sum.obs_dof = mv.dof;
+    }
     if (write_csv(csv, nspec, ss, err) != 0 || write_script(gp, &o, nspec, ss, err) != 0 ||
         gas_summary_write(js, &sum, err) != 0) {
         fprintf(stderr, "%s: %s\n", prog, err);
@@ -911,6 +980,17 @@ int main(int argc, char **argv)
         if ((double)(S.ns / NBLOCK) < 4.0 * tau[q])
             fprintf(stderr, "%s: warning: blocks are shorter than 4 correlation times: error "
                             "bars may be understated (raise --t-sample)\n", prog);
+    }
+    if (o.obs_given) {
+        printf("observer at %g c along x: %llu balls sampled on %zu hyperplanes, %llu lost "
+               "(two collisions in one step of %.3g)\n", mv.v, (unsigned long long)mv.sampled,
+               S.ns, (unsigned long long)mv.lost, mv.step);
+        printf("chi2/phi of its momenta (%d cells, dof %g, phi %.2f): boosted Jüttner %.1f "
+               "(p = %.2g), Jüttner at rest %.4g; 5 sigma bound %.1f\n", (int)mv.dof + 1, mv.dof, mv.phi,
+               mv.chi2, gs_chi2_p(mv.chi2, mv.dof), mv.chi2_rest,
+               gs_chi2_sigma_bound(mv.dof, 5.0));
+        printf("wrote %s/observer.csv, %s/observer.gp%s\n", o.out, o.out,
+               mv.made_png ? ", observer.png" : "");
     }
     if (made)
         printf("wrote %s, %s, %s, %s/gas.png\n", csv, gp, js, o.out);

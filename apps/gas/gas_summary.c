@@ -98,6 +98,19 @@ int gas_summary_write(const char *path, const gas_summary *s, char *err)
         add(o, "correlation_time_snapshots", s->sp[q].tau);
         cJSON_AddItemToArray(x, o);
     }
+    if (s->observer) {
+        /* the gas seen by an observer moving along x, on its simultaneity hyperplanes */
+        cJSON *ob = cJSON_CreateObject();
+        add(ob, "velocity", s->obs_v);
+        add(ob, "sampled", (double)s->obs_sampled);
+        add(ob, "lost", (double)s->obs_lost);
+        add(ob, "dof", s->obs_dof);
+        add(ob, "phi", s->obs_phi);
+        add(ob, "chi2_boosted_juttner", s->obs_chi2);
+        add(ob, "chi2_boosted_juttner_p", gs_chi2_p(s->obs_chi2, s->obs_dof));
+        add(ob, "chi2_juttner_at_rest", s->obs_chi2_rest);
+        cJSON_AddItemToObject(j, "observer", ob);
+    }
     add(j, "collisions", (double)s->collisions);
     add(j, "overlaps", (double)s->overlaps);
     add(j, "rest_mass_drift", s->mass_drift);

@@ -39,6 +39,10 @@ typedef struct gas_summary {
     double rate, rate_err;     /* collisions per unit table time over the sample */
     int nspec;
     gas_summary_species sp[2];
+    /* --observer-velocity: the moving observer's sample */
+    int observer;
+    double obs_v, obs_chi2, obs_chi2_rest, obs_phi, obs_dof;
+    uint64_t obs_sampled, obs_lost;
 } gas_summary;
 
 /* Write s as JSON to path atomically (a temporary beside it, renamed); -1 with err

@@ -29,6 +29,9 @@ expect_bad tequil '' '^relcol-gas: --t-equil: not a number' --t-equil abc
 expect_bad seed '' '^relcol-gas: --seed: ' --seed -1
 expect_bad unknown '' '^relcol-gas: unknown option --bogus' --bogus
 expect_bad memory '' '^relcol-gas: --snapshots: n x snapshots' --n 100000 --snapshots 1000
+expect_bad obs-dim '' '^relcol-gas: --observer-velocity: 2-D only' --dim 3 --observer-velocity 0.5
+expect_bad obs-c '' '^relcol-gas: --observer-velocity: 1 must be below c = 1' --observer-velocity 1
+expect_bad obs-periodic '' '^relcol-gas: --observer-velocity: needs walls' --boundary periodic --observer-velocity 0.5
 
 # jget KEY FILE: the "value" of the first object named KEY in a summary.json (the top
 # level's, which cJSON prints before the species array); jnum KEY FILE: a plain number
@@ -95,6 +98,16 @@ rows=$(awk -F, 'NR > 1 { n[$1]++ } END { print n[0] "," n[1] }' "$T/g1/gas.csv")
 [ "$rows" = "60,60" ] && ok || bad "1-D gas.csv species rows: $rows"
 n=$(grep -c '^species m = ' "$T/out")
 [ "$n" -eq 2 ] && ok || bad "1-D: $n species blocks"
+
+# the moving observer: its hyperplane sample fits the boosted law (bound: the 5-sigma
+# chi2 quantile, 135.9 at 63 dof) and rejects the law at rest; the files are written
+run '' --n 300 --t-sample 400 --snapshots 40 --observer-velocity 0.5 --out "$T/go"
+expect_ok observer
+x=$(jnum chi2_boosted_juttner "$T/go/summary.json")
+x0=$(jnum chi2_juttner_at_rest "$T/go/summary.json")
+awk -v x="$x" -v y="$x0" 'BEGIN { exit !(x > 0 && x < 135.9 && y > 1000) }' && ok \
+    || bad "observer chi2 $x (boosted), $x0 (at rest)"
+[ -s "$T/go/observer.csv" ] && [ -s "$T/go/observer.gp" ] && ok || bad "no observer.csv/gp"
 
 # the 1-D start hits its target: the start's energy is that of the species counts drawn
 # (seed 1 draws 487 light and 513 heavy of 1000, which a 50/50 energy put at kT 1.0087),
