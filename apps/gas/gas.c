@@ -989,8 +989,11 @@ int main(int argc, char **argv)
                "(p = %.2g), Jüttner at rest %.4g; 5 sigma bound %.1f\n", (int)mv.dof + 1, mv.dof, mv.phi,
                mv.chi2, gs_chi2_p(mv.chi2, mv.dof), mv.chi2_rest,
                gs_chi2_sigma_bound(mv.dof, 5.0));
-        printf("wrote %s/observer.csv, %s/observer.gp%s\n", o.out, o.out,
-               mv.made_png ? ", observer.png" : "");
+        if (mv.made_png)
+            printf("wrote %s/observer.csv, %s/observer.gp, %s/observer.png\n", o.out, o.out,
+                   o.out);
+        else
+            printf("wrote %s/observer.csv, %s/observer.gp\n", o.out, o.out);
     }
     if (made)
         printf("wrote %s, %s, %s, %s/gas.png\n", csv, gp, js, o.out);
