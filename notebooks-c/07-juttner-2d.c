@@ -259,8 +259,8 @@ static void thermometers(void)
 ## Contracted discs
 
 relcol's engine can also give each disc its Lorentz-contracted shape in the table frame
-(`frame = table`, `relcol-gas`'s default; the contact geometry is then an open research
-choice, see the design notes). The same run with contracted discs reaches a stationary
+(`frame = table`; the contact geometry is then an open research choice, see the design
+notes). The same run with contracted discs reaches a stationary
 state, conserves energy and rest mass, and is still far from Maxwell–Boltzmann — but it
 is **not** Jüttner: `⟨p·v⟩/2` reads about 1.5 % below the energy's θ, and the
 histogram has up to ~30 % too many slow and too many fast discs and ~20 % too few in
@@ -268,8 +268,9 @@ between. The deviation does not change with the packing fraction (measured from 
 0.5 with `relcol-gas`), so it is not an excluded-volume effect but one of the collision
 kernel. The cause is the model, not the engine: notebook 08 samples the collision kernel
 of the contracted shapes alone (no positions, no contact detection) and finds the same
-deficit — their curvature depends on the velocities a collision changes, so a collision
-and its reverse have different rates, and detailed balance fails.
+deficit: at finite c the rate times E0 E1 must be unchanged by a collision to cancel the
+collision map's Jacobian E0′E1′/(E0 E1) in the Boltzmann gain–loss balance, and the
+ellipses' curvature at the contact, which the collision changes, breaks that.
 The figure divides both equilibrium
 histograms (t = 40 … 200) by the Jüttner law at each run's own `⟨p·v⟩` temperature.
 @output contracted

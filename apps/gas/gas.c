@@ -9,7 +9,10 @@
 #include <gsl/gsl_errno.h>
 
 #include "app.h"
+#include "gas_moving.h"
 #include "gas_stats.h"
+#include "gas_summary.h"
+#include "gas_thermal.h"
 #include "juttner.h"
 #include "pressure_blocks.h"
 
@@ -40,7 +43,8 @@ static void usage(FILE *f)
     fprintf(f,
 "usage: relcol-gas [--dim 1|2|3] [--n N] [--c C] [--theta-start T | --v-rms V]\n"
 "                  [--packing P] [--t-equil T] [--t-sample T] [--snapshots K]\n"
-"                  [--seed S] [--frame NAME] [--boundary walls|periodic] [--out DIR]\n"
+"                  [--seed S] [--frame NAME] [--boundary walls|periodic]\n"
+"                  [--observer-velocity V] [--out DIR]\n"
 "\n"
 "Run a relativistic gas from a far-from-equilibrium start (every speed equal, random\n"
 "directions) to equilibrium, and read its temperature theta = kT/(m c^2) two ways:\n"
@@ -54,8 +58,8 @@ static void usage(FILE *f)
 "gases:\n"
 "  --dim 2|3   discs / balls of rest radius 1/2, rest mass 1, in a square / cubic box\n"
 "              with elastic walls or periodic: the event-driven engine (relcol/sim.h),\n"
-"              elastic collisions, contact geometry --frame (default table: contracted\n"
-"              shapes)\n"
+"              elastic collisions, contact geometry --frame (default: uncontracted\n"
+"              shapes, the frame whose gas is Jüttner at every density)\n"
 "  --dim 1     the exact 1-D point gas (relcol/gas1d.h) on [0, N] with elastic walls, a\n"
 "              mixture of rest masses 1 and 2 (one species would never thermalise: equal\n"
 "              masses only swap momenta); theta_start and reported theta are per species,\n"
@@ -74,8 +78,9 @@ static void usage(FILE *f)
 "  --t-sample T     table time sampled after it (default 400/c; 1-D 1000/c)\n"
 "  --snapshots K    snapshots spread evenly over the sample, >= %d (default 100)\n"
 "  --seed S         random seed of positions, species and directions (default 1)\n"
-"  --frame NAME     contact frame (2-D/3-D; default table):\n",
-            2 * NBLOCK);
+"  --frame NAME     contact frame (2-D/3-D; default %s; a warning on stderr names a\n"
+"                   frame whose stationary state is not Jüttner, notebook 08):\n",
+            2 * NBLOCK, gas_default_frame()->name);
     for (size_t i = 0; rc_toi_frames[i]; i++)
         fprintf(f, "                     %-7s %s\n", rc_toi_frames[i]->name,
                 rc_toi_frames[i]->summary);
@@ -83,6 +88,12 @@ static void usage(FILE *f)
 "  --boundary B     2-D/3-D: walls (default) or periodic on every axis (periodic in the\n"
 "                   box frame; the balls start in pairs of opposite momenta, so the\n"
 "                   total momentum is zero and the gas settles at rest)\n"
+"  --observer-velocity V  2-D, walls: also sample the gas as seen by an observer moving\n"
+"                   at V along x (|V| < c): every ball's momentum where its worldline\n"
+"                   crosses the observer's simultaneity hyperplanes (one per snapshot,\n"
+"                   a second run of the same gas, worldlines rebuilt exactly), chi2\n"
+"                   against the boosted Jüttner law at theta from <gamma>; writes\n"
+"                   DIR/observer.csv, observer.gp, observer.png\n"
 "  --out DIR        output folder, created if missing (default out/gas)\n"
 "\n"
 "error bars: the K snapshots are cut into %d consecutive blocks and each figure is the\n"
@@ -95,8 +106,11 @@ static void usage(FILE *f)
 "variance inflation phi measured from the block-to-block scatter of the cell counts.\n"
 "\n"
 "writes, atomically, DIR/gas.csv (the gamma histogram per species: density +- block\n"
-"error, Jüttner and Maxwell–Boltzmann bin averages), DIR/gas.gp and, if gnuplot is\n"
-"installed, DIR/gas.png (linear and log scale).\n"
+"error, Jüttner and Maxwell–Boltzmann bin averages), DIR/summary.json (every measured\n"
+"quantity as {value, err}: theta_gamma, theta_pv, mean_gamma, mean_pv, collision_rate;\n"
+"chi2 with dof and p-values; the parameters; top level: species 0, in 1-D the light one;\n"
+"\"species\": all), DIR/gas.gp and, if gnuplot is installed, DIR/gas.png (linear and\n"
+"log scale).\n"
 "exit status: 0 ok; 2 bad input; 1 I/O or engine error.\n",
             NBLOCK, NCELL);
 }
@@ -109,6 +123,8 @@ typedef struct options {
     double c, theta_start, v_start, packing, t_equil, t_sample;
     int theta_given, v_given, packing_given, frame_given, tequil_given, tsample_given;
     int periodic, boundary_given;
+    double v_obs;
+    int obs_given;
     uint64_t seed;
     const rc_toi_frame *frame;
     const char *out;
@@ -123,11 +139,12 @@ static int parse_options(int argc, char **argv, options *o)
     o->c = 1.0;
     o->theta_start = 0.75;
     o->seed = 1;
-    o->frame = rc_toi_frame_find("table");
+    o->frame = gas_default_frame();
     o->out = "out/gas";
     static const char *const known[] = {"--dim", "--n", "--c", "--theta-start", "--v-rms",
                                         "--packing", "--t-equil", "--t-sample", "--snapshots",
-                                        "--seed", "--out", "--frame", "--boundary", NULL};
+                                        "--seed", "--out", "--frame", "--boundary",
+                                        "--observer-velocity", NULL};
     app_opts it;
     app_opts_init(&it, prog, argc, argv, known, NULL, "see --help");
     const char *name, *val;
@@ -199,6 +216,9 @@ static int parse_options(int argc, char **argv, options *o)
                     return fail("--t-equil: %s must be >= 0", app_fmt(x, f1));
                 o->t_equil = x;
                 o->tequil_given = 1;
+            } else if (strcmp(name, "--observer-velocity") == 0) {
+                o->v_obs = x;
+                o->obs_given = 1;
             } else if (strcmp(name, "--t-sample") == 0) {
                 if (!(x > 0.0))
                     return fail("--t-sample: %s must be > 0", app_fmt(x, f1));
@@ -223,6 +243,14 @@ static int parse_options(int argc, char **argv, options *o)
                         g < jt_mean_gamma(d, THETA_MIN) ? "below" : "above",
                         g < jt_mean_gamma(d, THETA_MIN) ? THETA_MIN : THETA_MAX);
     }
+    if (o->obs_given && o->dim != 2)
+        return fail("--observer-velocity: 2-D only");
+    if (o->obs_given && o->boundary_given && o->periodic)
+        return fail("--observer-velocity: needs walls (a hyperplane cuts a walled box's "
+                    "world-tube once per ball)");
+    if (o->obs_given && !(fabs(o->v_obs) < o->c))
+        return fail("--observer-velocity: %s must be below c = %s in size",
+                    app_fmt(o->v_obs, f1), app_fmt(o->c, err));
     if (o->dim == 1 && o->packing_given)
         return fail("--packing: not used with --dim 1 (point particles at unit density)");
     if (o->dim == 1 && o->frame_given)
@@ -242,6 +270,8 @@ static int parse_options(int argc, char **argv, options *o)
     if ((double)o->n * (double)o->snapshots > MAX_SAMPLES)
         return fail("--snapshots: n x snapshots = %.3g exceeds %.3g stored samples",
                     (double)o->n * (double)o->snapshots, MAX_SAMPLES);
+    if (o->dim >= 2) /* a valid run in a frame that is not thermal: said before it starts */
+        gas_frame_warn(stderr, prog, o->frame, o->packing);
     return 0;
 }
 
@@ -277,12 +307,44 @@ typedef struct samples {
     size_t n, ns;
     unsigned char *spec; /* n species (1-D: by position order, which never changes) */
     double *u;           /* ns * n */
+    uint64_t *coll;      /* ns + 1: collisions so far at the sample's start and snapshots */
     double gamma0;       /* the common starting gamma of the light species */
     double mass_drift, energy_drift;
     uint64_t events, overlaps;
     double box;          /* box edge */
+    rc_vec3 boxv;        /* the box as the engine has it (2-D: z unused) */
     pb_acc pres;         /* pressure per block (apps/eos/pressure_blocks.h) */
+    double theta_energy; /* 1-D: theta_of_energy_1d of the start (NAN otherwise) */
 } samples;
+
+/* 1-D: the common starting gamma whose total energy is the canonical one at kT =
+ * theta x the light mass for count[s] particles of species s. */
+static double start_gamma_mixture(double theta, const size_t *count)
+{
+    const double kT = theta * mix_mass[0];
+    double e = 0.0, msum = 0.0;
+    for (int s = 0; s < MAXSPEC; s++) {
+        msum += (double)count[s] * mix_mass[s];
+        e += (double)count[s] * mix_mass[s] * jt_mean_gamma(1, kT / mix_mass[s]);
+    }
+    return e / msum;
+}
+
+/* 1-D: the kT (in units of the light mass) whose canonical energy is that of count[s]
+ * particles of species s all at gamma0 -- where the gas settles, up to O(1/N): the
+ * inverse of start_gamma_mixture, by bisection in log theta (<gamma> rises with theta). */
+static double theta_of_energy_1d(const size_t *count, double gamma0)
+{
+    double lo = log(JT_THETA_MIN), hi = log(JT_THETA_MAX);
+    for (int k = 0; k < 200 && hi - lo > 1e-15 * fmax(1.0, fabs(lo)); k++) {
+        const double mid = 0.5 * (lo + hi);
+        if (start_gamma_mixture(exp(mid), count) < gamma0)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return exp(0.5 * (lo + hi));
+}
 
 /* Starting gamma: from --v-rms, or the canonical energy at theta_start (1-D: for a
  * mixture, the common gamma whose total energy is the canonical one at kT = theta_start
@@ -295,16 +357,13 @@ static double start_gamma(const options *o)
     }
     if (o->dim != 1)
         return jt_mean_gamma(o->dim, o->theta_start);
-    const double kT = o->theta_start * mix_mass[0];
-    double e = 0.0, msum = 0.0;
-    for (int s = 0; s < MAXSPEC; s++) {
-        msum += 0.5 * mix_mass[s];
-        e += 0.5 * mix_mass[s] * jt_mean_gamma(1, kT / mix_mass[s]);
-    }
-    return e / msum;
+    const size_t half[MAXSPEC] = {1, 1}; /* (until the species are drawn) */
+    return start_gamma_mixture(o->theta_start, half);
 }
 
-static int run_sim(const options *o, samples *S, char *err)
+/* The engine with the run's start (the same for every call: positions, directions and
+ * speeds from the seed). */
+static int sim_start(const options *o, samples *S, rc_sim **out, char *err)
 {
     const size_t n = S->n;
     rc_sim_ball *b = malloc(n * sizeof *b);
@@ -322,6 +381,7 @@ static int run_sim(const options *o, samples *S, char *err)
         return -1;
     }
     S->box = box.x;
+    S->boxv = box;
     /* every ball m = 1 (density 8 x r^3), |p| = m c sqrt(gamma0^2 - 1), random direction */
     const double p0 = o->c * sqrt((S->gamma0 - 1.0) * (S->gamma0 + 1.0));
     rng R = {o->seed ^ 0x6a5ULL};
@@ -355,6 +415,22 @@ static int run_sim(const options *o, samples *S, char *err)
     if (st == RC_OK)
         st = rc_sim_set_balls(s, n, b, NULL);
     free(b);
+    if (st != RC_OK) {
+        rc_sim_free(&s);
+        app_errf(err, "engine: %s", rc_strerror(st));
+        return -1;
+    }
+    *out = s;
+    return 0;
+}
+
+static int run_sim(const options *o, samples *S, char *err)
+{
+    const size_t n = S->n;
+    rc_sim *s = NULL;
+    if (sim_start(o, S, &s, err) != 0)
+        return -1;
+    int st = RC_OK;
     const double inv_c2 = 1.0 / (o->c * o->c);
     double e0 = 0.0;
     app_progress bar;
@@ -363,7 +439,7 @@ static int run_sim(const options *o, samples *S, char *err)
         const double t = o->t_equil + o->t_sample * (double)j / (double)S->ns;
         st = rc_sim_advance(s, t, 0);
         if (st == RC_OK && j % (S->ns / NBLOCK) == 0)
-            st = pb_mark(s, o->periodic, box, &S->pres);
+            st = pb_mark(s, o->periodic, S->boxv, &S->pres);
         double e = 0.0;
         for (size_t i = 0; i < n && st == RC_OK; i++) {
             rc_sim_ball q;
@@ -376,6 +452,9 @@ static int run_sim(const options *o, samples *S, char *err)
         }
         if (j == 0) /* the energy at the end of the equilibration (exact since t = 0) */
             e0 = e;
+        rc_sim_diag dj;
+        if (st == RC_OK && (st = rc_sim_diagnostics(s, &dj)) == RC_OK)
+            S->coll[j] = dj.collisions;
         S->energy_drift = fmax(S->energy_drift, fabs(e - e0) / e0);
         app_progress_update(&bar, j);
     }
@@ -409,14 +488,23 @@ static int run_gas1d(const options *o, samples *S, char *err)
         goto out;
     }
     rng R = {o->seed};
-    const double beta = sqrt((S->gamma0 - 1.0) * (S->gamma0 + 1.0)) / S->gamma0;
-    double e0 = 0.0;
+    size_t count[MAXSPEC] = {0, 0};
     for (size_t i = 0; i < n; i++) {
         x[i] = (double)i + 0.1 + 0.8 * rng_uniform(&R);
         S->spec[i] = rng_uniform(&R) < 0.5;
+        count[S->spec[i]]++;
         m[i] = mix_mass[S->spec[i]];
-        /* p = m gamma v */
-        p[i] = (rng_uniform(&R) < 0.5 ? -1.0 : 1.0) * m[i] * S->gamma0 * beta * o->c;
+        p[i] = rng_uniform(&R) < 0.5 ? -1.0 : 1.0; /* the direction; the size below */
+    }
+    /* the species are drawn at random, so the start's energy is that of the counts drawn,
+     * not of a 50/50 mixture: the gas then settles at theta_start */
+    if (!o->v_given)
+        S->gamma0 = start_gamma_mixture(o->theta_start, count);
+    S->theta_energy = theta_of_energy_1d(count, S->gamma0);
+    const double beta = sqrt((S->gamma0 - 1.0) * (S->gamma0 + 1.0)) / S->gamma0;
+    double e0 = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        p[i] *= m[i] * S->gamma0 * beta * o->c; /* p = m gamma v */
         e0 += m[i] * S->gamma0;
     }
     rc_gas1d_def d = rc_gas1d_def_default();
@@ -428,6 +516,11 @@ static int run_gas1d(const options *o, samples *S, char *err)
     d.p = p;
     int st = rc_gas1d_create(&d, &g, NULL);
     S->box = (double)n;
+    rc_gas1d_stats gs;
+    if (st == RC_OK)
+        st = rc_gas1d_advance(g, o->t_equil, 0);
+    if (st == RC_OK && (st = rc_gas1d_stats_get(g, &gs)) == RC_OK)
+        S->coll[0] = gs.pair_events;
     app_progress bar;
     app_progress_init(&bar, prog, S->ns);
     for (size_t j = 1; j <= S->ns && st == RC_OK; j++) {
@@ -443,10 +536,11 @@ static int run_gas1d(const options *o, samples *S, char *err)
                                                     mix_mass[S->spec[i]]);
         }
         S->energy_drift = fmax(S->energy_drift, fabs(e - e0) / e0);
+        if (st == RC_OK && (st = rc_gas1d_stats_get(g, &gs)) == RC_OK)
+            S->coll[j] = gs.pair_events;
         app_progress_update(&bar, j);
     }
     app_progress_done(&bar);
-    rc_gas1d_stats gs;
     if (st == RC_OK && (st = rc_gas1d_stats_get(g, &gs)) == RC_OK)
         S->events = gs.pair_events + gs.wall_events[0] + gs.wall_events[1];
     if (st != RC_OK)
@@ -490,6 +584,7 @@ typedef struct species_stats {
     double mass;
     size_t count;                          /* balls of this species */
     double th_g, se_g, th_pv, se_pv, se_diff;
+    double mg, se_mg, mpv, se_mpv;         /* <gamma>, <p.v>/(m c^2) */
     double chi2_j, chi2_mb, phi, dof;
     double hist_lo[NHIST + 1];             /* bin edges in gamma */
     double dens[NHIST], dens_se[NHIST], pj[NHIST], pmb[NHIST];
@@ -509,7 +604,7 @@ static void analyse(int d, const samples *S, int q, species_stats *ss, double *t
                     gsl_integration_workspace *ws)
 {
     const size_t n = S->n, ns = S->ns, per = ns / NBLOCK;
-    double bg[NBLOCK], bpv[NBLOCK], bd[NBLOCK];
+    double bg[NBLOCK], bpv[NBLOCK], bd[NBLOCK], bmg[NBLOCK], bmpv[NBLOCK];
     double *series = malloc(ns * sizeof *series);
     ss->count = 0;
     for (size_t i = 0; i < n; i++)
@@ -532,6 +627,8 @@ static void analyse(int d, const samples *S, int q, species_stats *ss, double *t
         }
         bg[k] = jt_theta_from_gamma(d, sg / cnt);
         bpv[k] = spv / cnt / d;
+        bmg[k] = sg / cnt;
+        bmpv[k] = spv / cnt;
         bd[k] = bpv[k] - bg[k];
     }
     *tau = series ? tau_int(series, per * NBLOCK) : NAN;
@@ -539,6 +636,8 @@ static void analyse(int d, const samples *S, int q, species_stats *ss, double *t
     ss->th_g = gs_mean_se(bg, NBLOCK, &ss->se_g);
     ss->th_pv = gs_mean_se(bpv, NBLOCK, &ss->se_pv);
     gs_mean_se(bd, NBLOCK, &ss->se_diff);
+    ss->mg = gs_mean_se(bmg, NBLOCK, &ss->se_mg);
+    ss->mpv = gs_mean_se(bmpv, NBLOCK, &ss->se_mpv);
 
     /* chi-square in NCELL cells equiprobable under Jüttner at the <p.v> theta */
     const double th = ss->th_pv;
@@ -587,7 +686,76 @@ static void analyse(int d, const samples *S, int q, species_stats *ss, double *t
     }
 }
 
+/* Pair collisions per unit table time over the sample: the mean of the NBLOCK blocks'
+ * rates +- their standard error. */
+static void collision_rate(const samples *S, double t_sample, double *rate, double *se)
+{
+    const size_t per = S->ns / NBLOCK;
+    const double tb = t_sample * (double)per / (double)S->ns;
+    double b[NBLOCK];
+    for (int k = 0; k < NBLOCK; k++)
+        b[k] = (double)(S->coll[(size_t)(k + 1) * per] - S->coll[(size_t)k * per]) / tb;
+    *rate = gs_mean_se(b, NBLOCK, se);
+}
+
 /* ---- output ----------------------------------------------------------------------- */
+
+/* What summary.json says: the options, the run's counts, every species' measurements. */
+static void fill_summary(const options *o, const samples *S, int nspec,
+                         const species_stats *ss, const double *tau, double rate,
+                         double rate_se, gas_summary *g)
+{
+    memset(g, 0, sizeof *g);
+    g->prog = prog;
+    g->dim = o->dim;
+    g->n = o->n;
+    g->c = o->c;
+    g->theta_start = o->v_given ? NAN : o->theta_start;
+    g->v_rms = o->v_given ? o->v_start : NAN;
+    g->packing = o->dim == 1 ? NAN : o->packing;
+    g->t_equil = o->t_equil;
+    g->t_sample = o->t_sample;
+    g->snapshots = (long)S->ns;
+    g->blocks = NBLOCK;
+    g->seed = o->seed;
+    g->frame = o->dim == 1 ? NULL : o->frame->name;
+    g->thermal = o->dim == 1 ? -1 : gas_frame_thermal(o->frame);
+    g->boundary = o->periodic ? "periodic" : "walls";
+    g->gamma_start = S->gamma0;
+    g->theta_energy = S->theta_energy;
+    g->box = S->box;
+    g->collisions = S->events;
+    g->overlaps = S->overlaps;
+    g->mass_drift = S->mass_drift;
+    g->energy_drift = S->energy_drift;
+    g->rate = rate;
+    g->rate_err = rate_se;
+    g->nspec = nspec;
+    for (int q = 0; q < nspec; q++) {
+        const species_stats *s = &ss[q];
+        gas_summary_species *p = &g->sp[q];
+        p->mass = s->mass;
+        p->count = s->count;
+        p->theta_gamma = s->th_g;
+        p->theta_gamma_err = s->se_g;
+        p->theta_pv = s->th_pv;
+        p->theta_pv_err = s->se_pv;
+        p->theta_diff_err = s->se_diff;
+        p->mean_gamma = s->mg;
+        p->mean_gamma_err = s->se_mg;
+        p->mean_pv = s->mpv;
+        p->mean_pv_err = s->se_mpv;
+        p->theta_micro = o->dim == 2 && s->count <= 1000000
+                             ? jt_theta_micro_2d((double)s->count, S->gamma0)
+                             : NAN;
+        p->cells = NCELL;
+        p->dof = s->dof;
+        p->phi = s->phi;
+        p->chi2_juttner = s->chi2_j / s->phi;
+        p->chi2_mb = s->chi2_mb / s->phi;
+        p->tau = tau[q];
+    }
+}
 
 static int write_csv(const char *path, int nspec, const species_stats *ss, char *err)
 {
@@ -685,13 +853,16 @@ int main(int argc, char **argv)
     S.n = (size_t)o.n;
     S.ns = (size_t)o.snapshots / NBLOCK * NBLOCK; /* whole blocks */
     S.gamma0 = start_gamma(&o);
+    S.theta_energy = NAN;
     S.spec = malloc(S.n);
     S.u = malloc(S.n * S.ns * sizeof *S.u);
+    S.coll = calloc(S.ns + 1, sizeof *S.coll);
     species_stats ss[MAXSPEC];
     double tau[MAXSPEC];
     gsl_integration_workspace *ws = gsl_integration_workspace_alloc(200);
     char *csv = app_path_join(o.out, "gas.csv"), *gp = app_path_join(o.out, "gas.gp");
-    if (!S.spec || !S.u || !ws || !csv || !gp) {
+    char *js = app_path_join(o.out, "summary.json");
+    if (!S.spec || !S.u || !S.coll || !ws || !csv || !gp || !js) {
         fprintf(stderr, "%s: out of memory\n", prog);
         goto out;
     }
@@ -710,7 +881,48 @@ int main(int argc, char **argv)
         ss[q].mass = o.dim == 1 ? mix_mass[q] : 1.0;
         analyse(o.dim, &S, q, &ss[q], &tau[q], ws);
     }
-    if (write_csv(csv, nspec, ss, err) != 0 || write_script(gp, &o, nspec, ss, err) != 0) {
+    gas_moving_result mv;
+    memset(&mv, 0, sizeof mv);
+    if (o.obs_given) {
+        rc_sim *s2 = NULL;
+        int r2 = sim_start(&o, &S, &s2, err);
+        if (r2 == 0 && rc_sim_advance(s2, o.t_equil, 0) != RC_OK) {
+            app_errf(err, "engine: cannot reach t = %g", o.t_equil);
+            r2 = -1;
+        }
+        const rc_vec3 box = rc_v3(S.box, S.box, S.box);
+        if (r2 == 0)
+            r2 = gas_moving_run(prog, s2, S.n, o.c, o.v_obs, ss[0].th_g, o.t_equil,
+                                o.t_sample / (double)S.ns, (long)S.ns, box, o.out, &mv, err);
+        rc_sim_free(&s2);
+        if (r2 != 0) {
+            fprintf(stderr, "%s: %s\n", prog, err);
+            goto out;
+        }
+    }
+    double rate, rate_se;
+    collision_rate(&S, o.t_sample, &rate, &rate_se);
+    gas_summary sum;
+    fill_summary(&o, &S, nspec, ss, tau, rate, rate_se, &sum);
+    sum.pressure = sum.pressure_err = NAN;
+    sum.pressure_kind = NULL;
+    if (o.dim != 1) {
+        sum.pressure = pb_result(&S.pres, &sum.pressure_err);
+        sum.pressure_kind = o.periodic ? "momentum flux (papers/pressure.md)"
+                                       : "the walls' momentum flux";
+    }
+    if (o.obs_given) {
+        sum.observer = 1;
+        sum.obs_v = mv.v;
+        sum.obs_sampled = mv.sampled;
+        sum.obs_lost = mv.lost;
+        sum.obs_chi2 = mv.chi2;
+        sum.obs_chi2_rest = mv.chi2_rest;
+        sum.obs_phi = mv.phi;
+        sum.obs_dof = mv.dof;
+    }
+    if (write_csv(csv, nspec, ss, err) != 0 || write_script(gp, &o, nspec, ss, err) != 0 ||
+        gas_summary_write(js, &sum, err) != 0) {
         fprintf(stderr, "%s: %s\n", prog, err);
         goto out;
     }
@@ -735,12 +947,17 @@ int main(int argc, char **argv)
            o.dim == 1 ? "\n" : "");
     if (o.dim != 1)
         printf(", %llu overlaps (shape change)\n", (unsigned long long)S.overlaps);
+    if (o.dim == 1)
+        printf("kT of the gas's energy (canonical, both species; the light mass's theta) = "
+               "%.5f\n", S.theta_energy);
     printf("conservation: max rest-mass drift %.2g (relative), energy drift %.2g\n",
            S.mass_drift, S.energy_drift);
     double p_se, p_mean = o.dim != 1 ? pb_result(&S.pres, &p_se) : NAN;
     if (o.dim != 1)
         printf("pressure P = %.6g +- %.2g (%s)\n", p_mean, p_se,
                o.periodic ? "momentum flux, papers/pressure.md" : "the walls' momentum flux");
+    printf("collision rate over the sample: %.6g +- %.2g per unit time (%.5g per ball)\n",
+           rate, rate_se, 2.0 * rate / (double)o.n);
     for (int q = 0; q < nspec; q++) {
         const species_stats *s = &ss[q];
         if (nspec > 1)
@@ -767,25 +984,46 @@ int main(int argc, char **argv)
         const double xj = s->chi2_j / s->phi, xm = s->chi2_mb / s->phi;
         snprintf(cj, sizeof cj, isfinite(xj) ? "%.1f" : "n/a (no weight where the balls are)", xj);
         snprintf(cm, sizeof cm, isfinite(xm) ? "%.4g" : "n/a (no weight where the balls are)", xm);
-        printf("chi2/phi of the gamma histogram (%d cells, dof %g, phi %.2f): Jüttner %s, "
-               "Maxwell–Boltzmann %s (5 sigma bound %.1f)\n",
-               NCELL, s->dof, s->phi, cj, cm, s->dof + 5.0 * sqrt(2.0 * s->dof));
+        char pj[32] = "", pm[32] = "";
+        if (isfinite(xj))
+            snprintf(pj, sizeof pj, " (p = %.2g)", gs_chi2_p(xj, s->dof));
+        if (isfinite(xm))
+            snprintf(pm, sizeof pm, " (p = %.2g)", gs_chi2_p(xm, s->dof));
+        printf("chi2/phi of the gamma histogram (%d cells, dof %g, phi %.2f): Jüttner %s%s, "
+               "Maxwell–Boltzmann %s%s; 5 sigma bound (p = 2.9e-7) %.1f\n",
+               NCELL, s->dof, s->phi, cj, pj, cm, pm, gs_chi2_sigma_bound(s->dof, 5.0));
         printf("block check: <p.v> snapshot correlation time %.2f snapshots, blocks of %zu\n",
                tau[q], S.ns / NBLOCK);
         if ((double)(S.ns / NBLOCK) < 4.0 * tau[q])
             fprintf(stderr, "%s: warning: blocks are shorter than 4 correlation times: error "
                             "bars may be understated (raise --t-sample)\n", prog);
     }
+    if (o.obs_given) {
+        printf("observer at %g c along x: %llu balls sampled on %zu hyperplanes, %llu lost "
+               "(two collisions in one step of %.3g)\n", mv.v, (unsigned long long)mv.sampled,
+               S.ns, (unsigned long long)mv.lost, mv.step);
+        printf("chi2/phi of its momenta (%d cells, dof %g, phi %.2f): boosted Jüttner %.1f "
+               "(p = %.2g), Jüttner at rest %.4g; 5 sigma bound %.1f\n", (int)mv.dof + 1, mv.dof, mv.phi,
+               mv.chi2, gs_chi2_p(mv.chi2, mv.dof), mv.chi2_rest,
+               gs_chi2_sigma_bound(mv.dof, 5.0));
+        if (mv.made_png)
+            printf("wrote %s/observer.csv, %s/observer.gp, %s/observer.png\n", o.out, o.out,
+                   o.out);
+        else
+            printf("wrote %s/observer.csv, %s/observer.gp\n", o.out, o.out);
+    }
     if (made)
-        printf("wrote %s, %s, %s/gas.png\n", csv, gp, o.out);
+        printf("wrote %s, %s, %s, %s/gas.png\n", csv, gp, js, o.out);
     else
-        printf("wrote %s, %s\n", csv, gp);
+        printf("wrote %s, %s, %s\n", csv, gp, js);
     rc = fflush(stdout) == 0 ? 0 : 1;
 out:
     free(S.spec);
     free(S.u);
     free(csv);
     free(gp);
+    free(js);
+    free(S.coll);
     gsl_integration_workspace_free(ws);
     return rc;
 }

@@ -1,11 +1,14 @@
 /* gas_stats.h — the statistics of a sampled gas shared by relcol-gas and the Jüttner
  * reproduction tests (header only): block means with standard errors, the cell of a sample
- * among sorted edges, and the Pearson chi-square of block counts with its variance inflation. */
+ * among sorted edges, the Pearson chi-square of block counts with its variance inflation,
+ * and chi-square p-values and bounds from GSL's distribution functions. */
 #ifndef RELCOL_GAS_STATS_H
 #define RELCOL_GAS_STATS_H
 
 #include <math.h>
 #include <stddef.h>
+
+#include <gsl/gsl_cdf.h>
 
 /* Mean of nb block values and its standard error sqrt(var / nb) (nb >= 2). */
 static inline double gs_mean_se(const double *b, int nb, double *se)
@@ -89,5 +92,17 @@ static inline double gs_chi2_two_models(const double *cnt, int nblock, int ncell
  * (p ~ 1e-4 at dof ~ 20-40, so a fixed-seed pass is not luck, while a real misfit of the
  * shape, which grows like the sample size, cannot hide). */
 static inline double gs_chi2_bound(double dof) { return dof + 4.5 * sqrt(2.0 * dof); }
+
+/* p-value of a chi-square with dof degrees of freedom: P(X >= chi2). */
+static inline double gs_chi2_p(double chi2, double dof) { return gsl_cdf_chisq_Q(chi2, dof); }
+
+/* The chi-square that a fit exceeds with the probability of a one-sided nsigma normal
+ * deviation (nsigma = 5: p = 2.9e-7), from the chi-square quantile itself: the normal
+ * approximation dof + nsigma sqrt(2 dof) sits far inside the right-skewed tail (3.6
+ * sigma at dof 18 for nsigma 5). */
+static inline double gs_chi2_sigma_bound(double dof, double nsigma)
+{
+    return gsl_cdf_chisq_Qinv(gsl_cdf_ugaussian_Q(nsigma), dof);
+}
 
 #endif

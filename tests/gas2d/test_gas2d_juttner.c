@@ -359,11 +359,11 @@ static void test_discs_relax_to_juttner(void)
     ENSURE(r.phi > 0.5 && r.phi < 20.0);
 }
 
-/* The same gas with relcol-gas's default contact frame: contracted discs in the table
- * frame. Measured (data/reproductions/montakhab2009.md): the stationary state is close
- * to, but not, Jüttner: <p.v>/2 reads ~1.5 % below the energy's theta at theta = 0.75,
- * independently of the packing (likely cause: shapes change at collisions, so collisions
- * are not micro-reversible). Checked: conservation, no rest-mass drift, Maxwell–Boltzmann
+/* The same gas with contracted discs in the table frame. Measured
+ * (data/reproductions/montakhab2009.md): the stationary state is close to, but not,
+ * Jüttner: <p.v>/2 reads ~1.5 % below the energy's theta at theta = 0.75, independently
+ * of the packing (cause: the contracted shapes' collision kernel does not balance the
+ * Boltzmann gain and loss on Jüttner, notebook 08, test_gain_loss.c). Checked: conservation, no rest-mass drift, Maxwell–Boltzmann
  * rejected, and the two thermometers within 3 % (fails if the effect grows). */
 static void test_table_frame(void)
 {

@@ -1,8 +1,9 @@
 #!/bin/sh
 # test_gas_cli.sh RELCOL_GAS HARNESS — relcol-gas through its command line: every bad
-# option is one stderr line naming it (exit 2); a short 2-D run of uncontracted discs reads
-# the same theta both ways and writes the CSV, the script and (with gnuplot) the figure;
-# a short 1-D mixture run writes both species.
+# option is one stderr line naming it (exit 2); a short 2-D run in the default frame
+# (uncontracted discs, no warning) reads the same theta both ways and writes the CSV,
+# summary.json, the script and (with gnuplot) the figure; a frame that is not thermal is
+# warned about; a short 1-D mixture run writes both species and settles at its target.
 C=$1
 . "$2"
 
@@ -28,10 +29,20 @@ expect_bad tequil '' '^relcol-gas: --t-equil: not a number' --t-equil abc
 expect_bad seed '' '^relcol-gas: --seed: ' --seed -1
 expect_bad unknown '' '^relcol-gas: unknown option --bogus' --bogus
 expect_bad memory '' '^relcol-gas: --snapshots: n x snapshots' --n 100000 --snapshots 1000
+expect_bad obs-dim '' '^relcol-gas: --observer-velocity: 2-D only' --dim 3 --observer-velocity 0.5
+expect_bad obs-c '' '^relcol-gas: --observer-velocity: 1 must be below c = 1' --observer-velocity 1
+expect_bad obs-periodic '' '^relcol-gas: --observer-velocity: needs walls' --boundary periodic --observer-velocity 0.5
 
-# 2-D, uncontracted discs: <gamma> is fixed by the energy at theta = 0.6; <p.v>/2 must
-# agree within 5 of its standard errors plus the O(theta/N) microcanonical shift
-run '' --frame sphere --n 300 --theta-start 0.6 --t-equil 30 --t-sample 150 --snapshots 40 \
+# jget KEY FILE: the "value" of the first object named KEY in a summary.json (the top
+# level's, which cJSON prints before the species array); jnum KEY FILE: a plain number
+jget() { awk -v k="\"$1\":" 'f && $1 == "\"value\":" { sub(/,$/, "", $2); print $2; exit }
+                              $1 == k { f = 1 }' "$2"; }
+jnum() { awk -v k="\"$1\":" '$1 == k { sub(/,$/, "", $2); print $2; exit }' "$2"; }
+
+# 2-D, the default frame (uncontracted discs: thermal, so no warning): <gamma> is fixed by
+# the energy at theta = 0.6; <p.v>/2 must agree within 5 of its standard errors plus the
+# O(theta/N) microcanonical shift
+run '' --n 300 --theta-start 0.6 --t-equil 30 --t-sample 150 --snapshots 40 \
     --seed 5 --out "$T/g2"
 expect_ok run2d
 tg=$(awk -F'= ' '/^theta from <gamma>/ {split($2, a, " "); print a[1]}' "$T/out")
@@ -53,13 +64,63 @@ fi
 tot=$(awk -F, 'NR > 1 { s += $6 * ($4 - $3) } END { printf "%.6f", s }' "$T/g2/gas.csv")
 close hist-norm "$tot" 1 0.002
 grep -q '^chi2/phi' "$T/out" && ok || bad "no chi-square line"
+grep -q 'frame sphere' "$T/out" && ok || bad "default frame is not sphere"
+# the chi2 bound is GSL's chi2 quantile at the 5-sigma tail (dof 18: 65.2, where the
+# normal approximation dof + 5 sqrt(2 dof) = 48.0 is a 3.6-sigma bound)
+grep -q '5 sigma bound (p = 2.9e-7) 65.2$' "$T/out" && ok || bad "chi2 bound: $(grep '^chi2' "$T/out")"
+
+# summary.json: the measurements as printed, with errors, chi2 with dof and p-values
+J="$T/g2/summary.json"
+[ -s "$J" ] && ok || bad "no summary.json"
+close json-theta-pv "$(jget theta_pv "$J")" "$tp" 2e-5
+close json-theta-gamma "$(jget theta_gamma "$J")" 0.6 1e-9
+close json-mean-pv "$(jget mean_pv "$J")" "$(awk -v t="$tp" 'BEGIN { print 2 * t }')" 2e-5
+close json-mean-gamma "$(jget mean_gamma "$J")" "$(awk 'BEGIN { t = 0.6; print (1 + 2*t + 2*t*t)/(1 + t) }')" 1e-9
+close json-dof "$(jnum dof "$J")" 18 0
+p=$(jnum juttner_p "$J")
+awk -v p="$p" 'BEGIN { exit !(p > 1e-4 && p <= 1) }' && ok || bad "juttner_p $p"
+r=$(jget collision_rate "$J")
+awk -v r="$r" 'BEGIN { exit !(r > 0) }' && ok || bad "collision_rate $r"
+pp=$(awk '/^pressure P =/ {print $4}' "$T/out")
+close json-pressure "$(jget pressure "$J")" "$pp" 1e-5
+grep -q '"pressure_kind":	"the walls'"'"' momentum flux"' "$J" && ok || bad "pressure_kind"
+grep -q '"frame":	"sphere"' "$J" && ok || bad "summary.json frame"
+ls -a "$T/g2" | grep -q '^\.summary' && bad "a temporary is left beside summary.json" || ok
+
+# a frame whose stationary state is not Jüttner runs, with a warning on stderr
+run '' --frame table --n 50 --t-equil 5 --t-sample 20 --snapshots 20 --out "$T/gt"
+[ "$st" -eq 0 ] && ok || bad "table run: exit $st"
+grep -q '^relcol-gas: warning: frame table: its stationary state is not Jüttner' "$T/err" \
+    && ok || bad "no warning for the table frame: $(cat "$T/err")"
 
 # 1-D mixture: two species in the CSV, one stdout block each
-run '' --dim 1 --n 200 --t-equil 200 --t-sample 400 --snapshots 40 --out "$T/g1"
+run '' --dim 1 --n 200 --t-equil 200 --t-sample 800 --snapshots 40 --out "$T/g1"
 expect_ok run1d
 rows=$(awk -F, 'NR > 1 { n[$1]++ } END { print n[0] "," n[1] }' "$T/g1/gas.csv")
 [ "$rows" = "60,60" ] && ok || bad "1-D gas.csv species rows: $rows"
 n=$(grep -c '^species m = ' "$T/out")
 [ "$n" -eq 2 ] && ok || bad "1-D: $n species blocks"
+
+# the moving observer: its hyperplane sample fits the boosted law (bound: the 5-sigma
+# chi2 quantile, 135.9 at 63 dof) and rejects the law at rest; the files are written
+run '' --n 300 --t-sample 400 --snapshots 40 --observer-velocity 0.5 --out "$T/go"
+expect_ok observer
+x=$(jnum chi2_boosted_juttner "$T/go/summary.json")
+x0=$(jnum chi2_juttner_at_rest "$T/go/summary.json")
+awk -v x="$x" -v y="$x0" 'BEGIN { exit !(x > 0 && x < 135.9 && y > 1000) }' && ok \
+    || bad "observer chi2 $x (boosted), $x0 (at rest)"
+[ -s "$T/go/observer.csv" ] && [ -s "$T/go/observer.gp" ] && ok || bad "no observer.csv/gp"
+
+# the 1-D start hits its target: the start's energy is that of the species counts drawn
+# (seed 1 draws 487 light and 513 heavy of 1000, which a 50/50 energy put at kT 1.0087),
+# so the kT of the gas's energy is the target to round-off; and the light species' reading
+# agrees with it within 4 of its standard errors
+run '' --dim 1 --theta-start 1 --n 1000 --t-equil 300 --t-sample 600 --snapshots 40 --out "$T/g1b"
+J="$T/g1b/summary.json"
+close kT-energy "$(jnum theta_of_energy "$J")" 1 1e-12
+kt=$(jget theta_gamma "$J")
+se=$(awk -v k='"theta_gamma":' 'f && $1 == "\"err\":" { print $2; exit } $1 == k { f = 1 }' "$J")
+awk -v k="$kt" -v s="$se" 'BEGIN { d = k - 1; if (d < 0) d = -d; exit !(s > 0 && s < 0.02 && d <= 4 * s) }' \
+    && ok || bad "1-D kT $kt +- $se, want 1"
 
 summary
