@@ -45,13 +45,19 @@ static int check_params(const rc_collision_params *prm, double *inv_c2)
  * made unit. */
 static int check_pair(const rc_particle *a, const rc_particle *b, rc_vec3 *n, double k)
 {
-    /* m^2 + p^2/c^2 must not overflow: the kernels' comparisons would see NaN */
-    if (!isfinite(rc_mass_rel(a->m, a->p, k)) || !isfinite(rc_mass_rel(b->m, b->p, k)) ||
+    /* m^2 + p^2/c^2 must not overflow: the kernels' comparisons would see NaN (tested
+     * before the square root of rc_mass_rel, which is finite exactly when it is) */
+    if (!isfinite(a->m * a->m + rc_v3_norm2(a->p) * k) ||
+        !isfinite(b->m * b->m + rc_v3_norm2(b->p) * k) ||
         !isfinite(rc_v3_norm2(rc_v3_add(a->p, b->p))))
         return RC_ENONFINITE;
     if (!rc_v3_isfinite(*n))
         return RC_ENONFINITE;
-    /* (any finite length: a normal of 1e300 or 1e-300 is a direction like any other) */
+    /* (any finite length: a normal of 1e300 or 1e-300 is a direction like any other; one
+     * of length exactly 1 is already what rc_v3_unit would make of it) */
+    const double n2 = rc_v3_norm2(*n);
+    if (n2 == 1.0)
+        return RC_OK;
     double len = rc_v3_norm_safe(*n);
     if (!(len > 0.0))
         return RC_EZERONORMAL;
@@ -74,14 +80,14 @@ int rc_collide(const rc_law *law, const rc_collision_params *prm, rc_particle *a
 }
 
 int rc_collide_many(const rc_law *law, const rc_collision_params *prm, size_t n_pairs,
-                    rc_particle *a, rc_particle *b, const rc_vec3 *n, int *status,
-                    size_t *hits, size_t *bad)
+                    double *m0, rc_vec3 *p0, double *m1, rc_vec3 *p1, const rc_vec3 *n,
+                    int *status, size_t *hits, size_t *bad)
 {
     if (hits)
         *hits = 0;
     if (bad)
         *bad = 0;
-    if (!law || !law->collide || !prm || (n_pairs && (!a || !b || !n)))
+    if (!law || !law->collide || !prm || (n_pairs && (!m0 || !p0 || !m1 || !p1 || !n)))
         return RC_EINVAL;
     double k;
     int st = check_params(prm, &k);
@@ -90,28 +96,27 @@ int rc_collide_many(const rc_law *law, const rc_collision_params *prm, size_t n_
     const rc_law_fn f = law->collide;
     size_t h = 0;
     for (size_t i = 0; i < n_pairs; i++) {
+        rc_particle a = {m0[i], p0[i]}, b = {m1[i], p1[i]};
         rc_vec3 ni = n[i];
-        if ((st = rc_particle_check(&a[i])) != RC_OK ||
-            (st = rc_particle_check(&b[i])) != RC_OK ||
-            (st = check_pair(&a[i], &b[i], &ni, k)) != RC_OK) {
-            if (bad)
-                *bad = i;
-            break;
-        }
-        const int r = f(prm, &a[i], &b[i], ni);
-        if (r < 0) {
+        int r;
+        if ((r = rc_particle_check(&a)) != RC_OK || (r = rc_particle_check(&b)) != RC_OK ||
+            (r = check_pair(&a, &b, &ni, k)) != RC_OK || (r = f(prm, &a, &b, ni)) < 0) {
             st = r;
             if (bad)
                 *bad = i;
             break;
         }
+        m0[i] = a.m;
+        p0[i] = a.p;
+        m1[i] = b.m;
+        p1[i] = b.p;
         h += (r == RC_OK);
         if (status)
             status[i] = r;
     }
     if (hits)
         *hits = h;
-    return st < 0 ? st : RC_OK;
+    return st;
 }
 
 size_t rc_collide_batch(const rc_law *law, const rc_collision_params *prm, size_t n_pairs,
