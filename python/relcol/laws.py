@@ -84,7 +84,9 @@ def collide(m0, p0, m1, p1, n, c=math.inf, eps=1.0, law="zmf", alpha=None, azimu
     # library collides in place (the caller's arrays are never changed)
     m0 = np.array(np.broadcast_to(m0, (npair,)), dtype=float, order="C")
     m1 = np.array(np.broadcast_to(m1, (npair,)), dtype=float, order="C")
-    p0, p1, nn = (_columns(v, npair, d) for v in (p0, p1, n))
+    p0, p1 = (_columns(v, npair, d) for v in (p0, p1))
+    # the normals are only read: used as they are when they already have the layout
+    nn = n if (d == 3 and n.shape == (npair, 3) and n.flags.c_contiguous) else _columns(n, npair, d)
     prm = ffi.new("rc_collision_params *", lib.rc_collision_params_default())
     prm.c = float(c)
     prm.eps = float(eps)
@@ -95,7 +97,7 @@ def collide(m0, p0, m1, p1, n, c=math.inf, eps=1.0, law="zmf", alpha=None, azimu
     bad = ffi.new("size_t *")
     rc = lib.rc_collide_many(lw, prm, npair, _buf("double[]", m0), _buf("rc_vec3[]", p0),
                              _buf("double[]", m1), _buf("rc_vec3[]", p1),
-                             _buf("rc_vec3[]", nn), _buf("int[]", status), hits, bad)
+                             ffi.from_buffer("rc_vec3[]", nn), _buf("int[]", status), hits, bad)
     if rc < 0:
         check(rc, "collide", int(bad[0]) if npair and _params_ok(prm) else None)
     collided = status == lib.RC_OK

@@ -6,8 +6,11 @@ The scenario keys are relcol-sim's: relcol, dim, box, boundary, c, law, restitut
 contact_frame, tc, seed, time, t_end, restart, balls, generate (rack, gas) and outputs
 (accepted and ignored: a Sim writes no files). `balls` may also be a dict of arrays,
 {"x": (N, dim), "v" or "p": (N, dim), "r": (N,) or scalar, "m": (N,) or scalar (default
-r^3), "tau": (N,)}, which is how one builds a run from numpy. Keyword arguments override
-keys: Sim("data/scenarios/rack.json", c=10)."""
+r^3), "tau": (N,), "tau_last": (N,) (NaN: no collision yet), "image": (N, dim)}, which is
+how one builds a run from numpy. Keyword arguments override keys:
+Sim("data/scenarios/rack.json", c=10). A relcol-sim final.json loads with checkpoint=None
+(its balls and time; without the checkpoint the continuation re-plans its events, see
+rc_sim_sync in relcol/sim.h)."""
 import json
 import math
 import os
@@ -187,7 +190,7 @@ class Sim:
         dim = self.dim
         if isinstance(balls, dict):
             cols = {k: np.asarray(v, dtype=float) for k, v in balls.items()}
-            unknown = set(cols) - {"x", "v", "p", "r", "m", "tau", "image"}
+            unknown = set(cols) - {"x", "v", "p", "r", "m", "tau", "image", "tau_last"}
             if unknown:
                 raise ValueError("balls.%s: unknown key" % sorted(unknown)[0])
             x = np.atleast_2d(cols["x"])
@@ -201,11 +204,14 @@ class Sim:
             else:
                 p = np.atleast_2d(cols.get("p", np.zeros((n, dim))))
             tau = np.broadcast_to(cols.get("tau", 0.0), (n,))
+            # (TC-model memory: the proper time of each ball's last collision, NaN = none)
+            tau_last = np.broadcast_to(cols.get("tau_last", np.nan), (n,))
             image = np.broadcast_to(cols.get("image", np.zeros((n, dim))), (n, dim))
         else:
             n = len(balls)
             x, p, r, m, tau, image = (np.zeros((n, dim)), np.zeros((n, dim)), np.zeros(n),
                                       np.zeros(n), np.zeros(n), np.zeros((n, dim)))
+            tau_last = np.full(n, np.nan)
             for i, b in enumerate(balls):
                 unknown = set(b) - {"x", "v", "p", "r", "m", "tau", "image", "tau_last"}
                 if unknown:
@@ -214,6 +220,8 @@ class Sim:
                 m[i] = _num(b["m"], "balls[%d].m" % i) if "m" in b else r[i] ** 3
                 x[i] = b["x"]
                 tau[i] = b.get("tau", 0.0)
+                if "tau_last" in b:
+                    tau_last[i] = _num(b["tau_last"], "balls[%d].tau_last" % i)
                 image[i] = b.get("image", [0] * dim)
                 if "v" in b and "p" in b:
                     raise ValueError("balls[%d]: give either v or p, not both" % i)
@@ -233,6 +241,8 @@ class Sim:
             if dim == 3:
                 bi.x.z, bi.p.z = x[i, 2], p[i, 2]
             bi.r, bi.m, bi.tau = r[i], m[i], tau[i]
+            if not math.isnan(tau_last[i]):
+                bi.collided, bi.tau_last = 1, tau_last[i]
             for k in range(dim):
                 bi.image[k] = int(image[i, k])
         self._cballs = cb

@@ -33,6 +33,10 @@ def test_rack_equals_relcol_sim(tmp_path):
     d = sim.diagnostics()
     assert d["collisions"] == summary["collisions"]["contacts"]
     assert d["energy_error"] == pytest.approx(summary["energy_error"], abs=1e-300)
+    # relcol-sim's final state reads back as a scenario (balls, time, TC memory)
+    cont = relcol.Sim(str(tmp_path / "o" / "final.json"), checkpoint=None)
+    assert cont.time == final["time"] and np.array_equal(cont.positions, want_x)
+    assert np.array_equal(cont.proper_times, want_tau)
 
 
 def test_gas_from_arrays_conserves_and_is_deterministic():
