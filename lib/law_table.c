@@ -28,33 +28,95 @@ rc_collision_params rc_collision_params_default(void)
     return p;
 }
 
+/* The checks of rc_collide that concern the parameters alone (once per batch). */
+static int check_params(const rc_collision_params *prm, double *inv_c2)
+{
+    if (rc_inv_c2(prm->c, inv_c2) != RC_OK)
+        return RC_ESPEEDOFLIGHT;
+    if (!(prm->eps >= 0.0 && prm->eps <= 1.0))
+        return RC_ERESTITUTION;
+    if (!isnan(prm->alpha) &&
+        (!isfinite(prm->alpha) || !(fabs(prm->alpha) < M_PI / 2) || !isfinite(prm->azimuth)))
+        return RC_EINVAL;
+    return RC_OK;
+}
+
+/* The checks of one pair whose particles passed rc_particle_check, and its normal
+ * made unit. */
+static int check_pair(const rc_particle *a, const rc_particle *b, rc_vec3 *n, double k)
+{
+    /* m^2 + p^2/c^2 must not overflow: the kernels' comparisons would see NaN (tested
+     * before the square root of rc_mass_rel, which is finite exactly when it is) */
+    if (!isfinite(a->m * a->m + rc_v3_norm2(a->p) * k) ||
+        !isfinite(b->m * b->m + rc_v3_norm2(b->p) * k) ||
+        !isfinite(rc_v3_norm2(rc_v3_add(a->p, b->p))))
+        return RC_ENONFINITE;
+    if (!rc_v3_isfinite(*n))
+        return RC_ENONFINITE;
+    /* (any finite length: a normal of 1e300 or 1e-300 is a direction like any other; one
+     * of length exactly 1 is already what rc_v3_unit would make of it) */
+    const double n2 = rc_v3_norm2(*n);
+    if (n2 == 1.0)
+        return RC_OK;
+    double len = rc_v3_norm_safe(*n);
+    if (!(len > 0.0))
+        return RC_EZERONORMAL;
+    *n = rc_v3_unit(*n, len);
+    return RC_OK;
+}
+
 int rc_collide(const rc_law *law, const rc_collision_params *prm, rc_particle *a,
                rc_particle *b, rc_vec3 n)
 {
     if (!law || !prm || !a || !b)
         return RC_EINVAL;
     int st;
+    double k;
     if ((st = rc_particle_check(a)) != RC_OK || (st = rc_particle_check(b)) != RC_OK)
         return st;
-    double k;
-    if (rc_inv_c2(prm->c, &k) != RC_OK)
-        return RC_ESPEEDOFLIGHT;
-    if (!(prm->eps >= 0.0 && prm->eps <= 1.0))
-        return RC_ERESTITUTION;
-    /* m^2 + p^2/c^2 must not overflow: the kernels' comparisons would see NaN */
-    if (!isfinite(rc_mass_rel(a->m, a->p, k)) || !isfinite(rc_mass_rel(b->m, b->p, k)) ||
-        !isfinite(rc_v3_norm2(rc_v3_add(a->p, b->p))))
-        return RC_ENONFINITE;
-    if (!isnan(prm->alpha) &&
-        (!isfinite(prm->alpha) || !(fabs(prm->alpha) < M_PI / 2) || !isfinite(prm->azimuth)))
+    if ((st = check_params(prm, &k)) != RC_OK || (st = check_pair(a, b, &n, k)) != RC_OK)
+        return st;
+    return law->collide(prm, a, b, n);
+}
+
+int rc_collide_many(const rc_law *law, const rc_collision_params *prm, size_t n_pairs,
+                    double *m0, rc_vec3 *p0, double *m1, rc_vec3 *p1, const rc_vec3 *n,
+                    int *status, size_t *hits, size_t *bad)
+{
+    if (hits)
+        *hits = 0;
+    if (bad)
+        *bad = 0;
+    if (!law || !law->collide || !prm || (n_pairs && (!m0 || !p0 || !m1 || !p1 || !n)))
         return RC_EINVAL;
-    if (!rc_v3_isfinite(n))
-        return RC_ENONFINITE;
-    /* (any finite length: a normal of 1e300 or 1e-300 is a direction like any other) */
-    double len = rc_v3_norm_safe(n);
-    if (!(len > 0.0))
-        return RC_EZERONORMAL;
-    return law->collide(prm, a, b, rc_v3_unit(n, len));
+    double k;
+    int st = check_params(prm, &k);
+    if (st != RC_OK)
+        return st;
+    const rc_law_fn f = law->collide;
+    size_t h = 0;
+    for (size_t i = 0; i < n_pairs; i++) {
+        rc_particle a = {m0[i], p0[i]}, b = {m1[i], p1[i]};
+        rc_vec3 ni = n[i];
+        int r;
+        if ((r = rc_particle_check(&a)) != RC_OK || (r = rc_particle_check(&b)) != RC_OK ||
+            (r = check_pair(&a, &b, &ni, k)) != RC_OK || (r = f(prm, &a, &b, ni)) < 0) {
+            st = r;
+            if (bad)
+                *bad = i;
+            break;
+        }
+        m0[i] = a.m;
+        p0[i] = a.p;
+        m1[i] = b.m;
+        p1[i] = b.p;
+        h += (r == RC_OK);
+        if (status)
+            status[i] = r;
+    }
+    if (hits)
+        *hits = h;
+    return st;
 }
 
 size_t rc_collide_batch(const rc_law *law, const rc_collision_params *prm, size_t n_pairs,

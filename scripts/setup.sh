@@ -7,7 +7,14 @@ set -euo pipefail
 # mpi-default-dev and openmpi-bin come with libsundials-dev already; they are named
 # because relcol-sweep's MPI build and its mpirun test use them directly.
 RELCOL_PACKAGES=(gcc libc6-dev meson ninja-build pkg-config libgsl-dev libsundials-dev
-                 gnuplot-nox libcjson-dev mpi-default-dev openmpi-bin)
+                 gnuplot-nox libcjson-dev mpi-default-dev openmpi-bin help2man)
+# The Python package (python/, meson option -Dpython): its build needs cffi, numpy and the
+# Python headers, its tests pytest, the README's example matplotlib. RELCOL_PYTHON=disabled
+# leaves them out and configures without it (default auto: built when they are there).
+RELCOL_PYTHON=${RELCOL_PYTHON:-auto}
+if [ "$RELCOL_PYTHON" != disabled ]; then
+    RELCOL_PACKAGES+=(python3-dev python3-cffi python3-numpy python3-pytest python3-matplotlib)
+fi
 
 relcol_install_packages() {
     local missing=()
@@ -34,7 +41,7 @@ relcol_install_packages() {
 relcol_build() {
     local dir="$1"; shift
     if [ ! -f "$dir/build.ninja" ]; then
-        meson setup "$dir" "$@"
+        meson setup "$dir" -Dpython="$RELCOL_PYTHON" "$@"
     fi
     meson compile -C "$dir"
 }

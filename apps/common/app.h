@@ -43,10 +43,16 @@ __attribute__((format(printf, 3, 4)))
 #endif
 int app_fail(const char *prog, int code, const char *fmt, ...);
 int app_vfail(const char *prog, int code, const char *fmt, va_list ap);
-/* Print usage(stdout) for --help; returns the exit status: 0, or 1 if stdout failed. */
+/* Print usage(stdout) for --help, and the --version line every app shares; returns the
+ * exit status 0 (a failed write makes it 1 at exit: app_init). */
 int app_help(void (*usage)(FILE *));
+/* Print "prog (relcol) VERSION" on stdout for --version (with the library's version when it
+ * differs from the headers the app was built with); returns the exit status 0. */
+int app_version(void);
 
-/* The option loop shared by the apps: each argument is "--help" or "-h"; a flag from the
+/* The option loop shared by the apps: each argument is "--help" or "-h"; "--version" (it
+ * prints the version line, app_version, and exits 0 at once: no app has anything to do
+ * after it, and so none needs its own case for it); a flag from the
  * list `flags` (exact match, no value); or "--name value" / "--name=value" with --name
  * from the list `valued`. Anything else is an error, printed by app_opts_next itself as
  * one app_fail line (so that no message is cut to a buffer):

@@ -1,6 +1,7 @@
 /* cli.c — the apps' command-line plumbing, written once so that every app words its
  * errors alike: "prog: message" on stderr, the "--name value" / "--name=value" option
- * loop, --help, the check of --c, and the lists of names that unknown-name errors show. */
+ * loop, --help, --version, the check of --c, and the lists of names that unknown-name
+ * errors show. */
 #include <errno.h>
 #include <stdarg.h>
 #include <stdlib.h>
@@ -56,6 +57,20 @@ int app_fail(const char *prog, int code, const char *fmt, ...)
 int app_help(void (*usage)(FILE *))
 {
     usage(stdout);
+    /* (one line for every app, so that no app's help can leave it out) */
+    printf("\n  --version         print the version (relcol %s) and exit\n", rc_version());
+    return 0; /* (a failed write is reported at exit: app_init) */
+}
+
+int app_version(void)
+{
+    /* the GNU form "program (package) version", which help2man reads; the library's own
+     * version too when it is not the one the app was built with */
+    if (strcmp(rc_version(), RELCOL_VERSION) == 0)
+        printf("%s (relcol) %s\n", app_prog, RELCOL_VERSION);
+    else
+        printf("%s (relcol) %s, running with librelcol %s\n", app_prog, RELCOL_VERSION,
+               rc_version());
     return 0; /* (a failed write is reported at exit: app_init) */
 }
 
@@ -89,6 +104,8 @@ int app_opts_next(app_opts *it, const char **name, const char **value)
     const char *a = it->argv[it->i++];
     if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0)
         return APP_OPT_HELP;
+    if (strcmp(a, "--version") == 0)
+        exit(app_version());
     if (listed(it->flags, a)) {
         *name = a;
         return APP_OPT_FLAG;

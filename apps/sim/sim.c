@@ -158,8 +158,9 @@ int main(int argc, char **argv)
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-            usage(stdout);
-            return 0;
+            return app_help(usage);
+        } else if (!strcmp(a, "--version")) {
+            return app_version();
         } else if (!strcmp(a, "--builtin") || !strcmp(a, "--out") || !strcmp(a, "--t-end")) {
             if (i + 1 >= argc)
                 return fail(2, "option %s: needs a value", a);

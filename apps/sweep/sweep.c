@@ -75,11 +75,10 @@ static int run(int argc, char **argv)
     char err[APP_ERR_LEN];
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-            if (rank == 0)
-                usage(stdout);
-            return 0;
-        }
+        if (!strcmp(a, "--help") || !strcmp(a, "-h"))
+            return rank == 0 ? app_help(usage) : 0;
+        if (!strcmp(a, "--version"))
+            return rank == 0 ? app_version() : 0;
         if (!strcmp(a, "--no-plots")) {
             no_plot = 1;
             continue;

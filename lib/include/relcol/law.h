@@ -105,6 +105,19 @@ int rc_collide(const rc_law *law, const rc_collision_params *prm, rc_particle *a
 size_t rc_collide_batch(const rc_law *law, const rc_collision_params *prm, size_t n_pairs,
                         rc_particle *a, rc_particle *b, const rc_vec3 *n, int *status);
 
+/* Batch with rc_collide's checks, over columns (for callers that cannot vouch for their
+ * input and hold each quantity as one array, such as numpy in the Python package): pair i
+ * is ball 0 of rest mass m0[i] and momentum p0[i] against ball 1 (m1[i], p1[i]) along
+ * n[i]. The parameters are checked once, then each pair as rc_collide checks it (its
+ * normal made unit), and collided in place. status[i] (may be NULL) gets RC_OK or
+ * RC_NO_COLLISION; *hits (may be NULL) the number that collided. The first pair that
+ * fails a check or whose kernel fails stops the batch: its code is returned and *bad (may
+ * be NULL) gets its index; the pairs before it are done, it and those after it untouched.
+ * RC_EINVAL for NULL law, prm or arrays (n_pairs > 0). */
+int rc_collide_many(const rc_law *law, const rc_collision_params *prm, size_t n_pairs,
+                    double *m0, rc_vec3 *p0, double *m1, rc_vec3 *p1, const rc_vec3 *n,
+                    int *status, size_t *hits, size_t *bad);
+
 /* Ball against an infinitely massive wall with outward normal n (pointing from the
  * ball into the wall): p_n' = -eps_w p_n, tangential kept, energy M kept, rest mass
  * m'^2 = m^2 + (1 - eps_w^2) p_n^2 / c^2. RC_NO_COLLISION if p.n <= 0. */

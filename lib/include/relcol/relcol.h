@@ -2,6 +2,7 @@
 #ifndef RELCOL_RELCOL_H
 #define RELCOL_RELCOL_H
 
+#include "relcol/version.h"
 #include "relcol/status.h"
 #include "relcol/vec.h"
 #include "relcol/kinematics.h"

@@ -1,0 +1,147 @@
+"""Emits the C source of relcol._relcol, the compiled cffi module over librelcol.
+
+API (out-of-line) mode: the declarations below are checked against the library's own
+headers when the emitted source is compiled (a field of the wrong type or a struct of
+another size is a compile error, not a wrong number), and meson compiles and links it
+against librelcol like any other target. Usage: python3 _cffi_build.py OUT.c
+Only what the package uses is declared; `...;` leaves the rest of a struct to the
+compiler.
+"""
+import sys
+
+import cffi
+
+CDEF = r"""
+const char *rc_version(void);
+const char *rc_strerror(int status);
+enum rc_status { RC_OK = 0, RC_NO_COLLISION = 1, RC_MISS = 2, RC_EOVERLAP = -8, ... };
+
+typedef struct rc_vec3 { double x, y, z; } rc_vec3;
+typedef struct rc_particle { double m; rc_vec3 p; } rc_particle;
+
+int rc_inv_c2(double c, double *inv_c2);
+int rc_momentum_from_velocity(double m, rc_vec3 v, double inv_c2, rc_vec3 *p);
+
+/* laws */
+typedef struct rc_collision_params {
+    double c; double eps; double alpha; double azimuth; ...;
+} rc_collision_params;
+typedef struct rc_law {
+    const char *name; const char *summary; int uses_angle; int keeps_zmf_energy; ...;
+} rc_law;
+extern const rc_law *const rc_laws[];
+const rc_law *rc_law_find(const char *name);
+rc_collision_params rc_collision_params_default(void);
+int rc_collide_many(const rc_law *law, const rc_collision_params *prm, size_t n_pairs,
+                    double *m0, rc_vec3 *p0, double *m1, rc_vec3 *p1, const rc_vec3 *n,
+                    int *status, size_t *hits, size_t *bad);
+double rc_pair_heat(const rc_particle before[2], const rc_particle after[2], double inv_c2,
+                    double q_ball[2]);
+
+/* time of impact */
+typedef struct rc_toi_ball { rc_vec3 x; double r; double m; rc_vec3 p; } rc_toi_ball;
+typedef struct rc_toi_params {
+    double c; double touch_tol; double graze_tol; double lambda_tol; int max_iter; ...;
+} rc_toi_params;
+typedef struct rc_toi_contact { double t; rc_vec3 x; rc_vec3 n; } rc_toi_contact;
+typedef struct rc_toi_workspace rc_toi_workspace;
+typedef struct rc_toi_frame {
+    const char *name; const char *summary; int wall_contracted; int contracted;
+    int covariant; int deferrable; ...;
+} rc_toi_frame;
+extern const rc_toi_frame *const rc_toi_frames[];
+const rc_toi_frame *rc_toi_frame_find(const char *name);
+rc_toi_params rc_toi_params_default(void);
+int rc_toi_workspace_create(rc_toi_workspace **out);
+void rc_toi_workspace_free(rc_toi_workspace **ws);
+int rc_toi(const rc_toi_frame *frame, const rc_toi_params *prm, const rc_toi_ball *a,
+           const rc_toi_ball *b, rc_toi_workspace *ws, rc_toi_contact *out);
+
+/* soft-sphere reference */
+typedef int... rc_soft_shape;
+typedef struct rc_soft_params {
+    double c; double stiffness; double eps; double rtol; double t_max; long max_steps;
+    rc_soft_shape shape; ...;
+} rc_soft_params;
+typedef struct rc_soft_result {
+    int n_contacts; int n_shape_overlaps; int finished; rc_vec3 normal; double t_end;
+    double energy_error; double momentum_error; long n_steps; long n_rhs; long n_pw; ...;
+} rc_soft_result;
+typedef struct rc_soft_stepper { const char *name; const char *summary; ...; } rc_soft_stepper;
+extern const rc_soft_stepper *const rc_soft_steppers[];
+const rc_soft_stepper *rc_soft_stepper_find(const char *name);
+rc_soft_params rc_soft_params_default(void);
+int rc_soft_collide(const rc_soft_stepper *stepper, const rc_soft_params *prm, size_t n,
+                    rc_particle *b, rc_vec3 *x, const double *r, double *u_int,
+                    rc_soft_result *res);
+
+/* event-driven engine */
+typedef struct rc_sim rc_sim;
+typedef int... rc_sim_simd;
+typedef int... rc_sim_defer;
+typedef struct rc_sim_def {
+    int dim; rc_vec3 box; double c; double eps_ball; double eps_wall; double t_c;
+    const rc_law *law; const rc_toi_frame *frame; rc_toi_params toi; double sim_tol;
+    double approach_tol; double overlap_tol; double cell_size; double density; int restart;
+    int boundary[3]; ...;
+} rc_sim_def;
+typedef struct rc_sim_ball {
+    rc_vec3 x; rc_vec3 p; double r; double m; double tau; int collided; double tau_last;
+    int32_t image[3]; ...;
+} rc_sim_ball;
+typedef struct rc_sim_diag {
+    double time; double mass_rel; double kinetic; double heat; double energy;
+    double rest_mass; rc_vec3 momentum; rc_vec3 wall_impulse;
+    double wall_impulse_by_wall[6]; double momentum_scale; double max_overlap;
+    uint64_t overlaps; uint64_t overlaps_by_kind[3]; uint64_t collisions; uint64_t events[6];
+    size_t max_group; uint64_t group_fallbacks; uint64_t group_sequential;
+    int64_t stall_ball; int64_t stall_partner; ...;
+} rc_sim_diag;
+enum { RC_SIM_WALLS = 0, RC_SIM_PERIODIC = 1 };
+rc_sim_def rc_sim_def_default(void);
+int rc_sim_create(const rc_sim_def *def, rc_sim **out);
+void rc_sim_free(rc_sim **s);
+int rc_sim_set_time(rc_sim *s, double t);
+int rc_sim_set_balls(rc_sim *s, size_t n, const rc_sim_ball *balls, size_t *bad);
+int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events);
+size_t rc_sim_count(const rc_sim *s);
+double rc_sim_time(const rc_sim *s);
+int rc_sim_get_ball(const rc_sim *s, size_t i, rc_sim_ball *out);
+int rc_sim_diagnostics(const rc_sim *s, rc_sim_diag *d);
+uint64_t rc_sim_hash(const rc_sim *s);
+typedef struct rc_sim_gas_def {
+    int dim; size_t n; double radius; double packing; double v_rms; double c;
+    double density; uint64_t seed; ...;
+} rc_sim_gas_def;
+int rc_sim_gas_init(const rc_sim_gas_def *g, rc_vec3 *box, rc_sim_ball *balls);
+
+/* 1-D gas */
+typedef struct rc_gas1d rc_gas1d;
+typedef struct rc_gas1d_def {
+    size_t n; double length; double c; double t0; const double *x; const double *m;
+    const double *p; const rc_law *law; ...;
+} rc_gas1d_def;
+typedef struct rc_gas1d_stats {
+    uint64_t pair_events; uint64_t wall_events[2]; uint64_t declined;
+    double wall_impulse[2]; ...;
+} rc_gas1d_stats;
+rc_gas1d_def rc_gas1d_def_default(void);
+int rc_gas1d_create(const rc_gas1d_def *def, rc_gas1d **out, size_t *bad);
+void rc_gas1d_free(rc_gas1d **g);
+int rc_gas1d_advance(rc_gas1d *g, double t_end, uint64_t max_events);
+size_t rc_gas1d_count(const rc_gas1d *g);
+double rc_gas1d_time(const rc_gas1d *g);
+int rc_gas1d_get(const rc_gas1d *g, double *x, double *m, double *p);
+int rc_gas1d_stats_get(const rc_gas1d *g, rc_gas1d_stats *s);
+"""
+
+
+def main(out):
+    ffi = cffi.FFI()
+    ffi.cdef(CDEF)
+    ffi.set_source("relcol._relcol", '#include "relcol/relcol.h"\n')
+    ffi.emit_c_code(out)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1])

@@ -1,0 +1,47 @@
+"""Library status codes as Python exceptions: every failure of librelcol (a negative
+rc_status) becomes a RelcolError carrying the library's own message (rc_strerror), its
+code and its name, and, for a batch, the index of the item that failed."""
+from ._relcol import ffi, lib
+
+# The names of the codes (relcol/status.h), for messages and for `except` clauses that
+# test e.code == relcol.RC_ESPEED and the like.
+CODES = {
+    0: "RC_OK", 1: "RC_NO_COLLISION", 2: "RC_MISS",
+    -1: "RC_EINVAL", -2: "RC_ENONFINITE", -3: "RC_EMASS", -4: "RC_ESPEED",
+    -5: "RC_ERESTITUTION", -6: "RC_ESPEEDOFLIGHT", -7: "RC_EZERONORMAL",
+    -8: "RC_EOVERLAP", -9: "RC_ENOMEM", -10: "RC_ENOCONVERGE", -11: "RC_EUNKNOWN",
+    -12: "RC_ERADIUS", -13: "RC_EDIM", -14: "RC_ECORRUPT", -15: "RC_EMISMATCH",
+    -16: "RC_ESTALL",
+}
+
+
+class RelcolError(Exception):
+    """A failure reported by librelcol.
+
+    code    the status code (negative), e.g. -4
+    name    its name, e.g. "RC_ESPEED"
+    reason  the library's text, rc_strerror(code), e.g. "speed must be < c"
+    index   the pair or ball that failed in a batch call, else None
+    """
+
+    def __init__(self, code, context=None, index=None):
+        self.code = int(code)
+        self.name = CODES.get(self.code, "RC_%d" % self.code)
+        self.reason = strerror(self.code)
+        self.index = index
+        where = "" if index is None else " (item %d)" % index
+        head = "%s%s: " % (context, where) if context else (where.strip() + ": " if where else "")
+        super().__init__("%s%s [%s]" % (head, self.reason, self.name))
+
+
+def strerror(code):
+    """The library's description of a status code."""
+    return ffi.string(lib.rc_strerror(int(code))).decode()
+
+
+def check(code, context=None, index=None):
+    """Raise RelcolError for a failure code; return the code otherwise (0, or an
+    informational outcome such as RC_MISS)."""
+    if code < 0:
+        raise RelcolError(code, context, index)
+    return code
