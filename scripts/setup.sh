@@ -9,9 +9,19 @@ set -euo pipefail
 RELCOL_PACKAGES=(gcc libc6-dev meson ninja-build pkg-config libgsl-dev libsundials-dev
                  gnuplot-nox libcjson-dev mpi-default-dev openmpi-bin)
 
+# The browser page (web/, issue 20): Debian's emscripten (node-acorn: its optimiser's
+# parser; dpkg-dev: apt-get source unpacks cJSON's source for it) and Chromium for the
+# page's test. Installed by web/build.sh and web/test.sh, not by every configuration.
+RELCOL_WEB_PACKAGES=(emscripten node-acorn dpkg-dev chromium)
+
 relcol_install_packages() {
+    relcol_install_list "${RELCOL_PACKAGES[@]}"
+}
+
+# relcol_install_list PKG... : install those of the Debian packages that are missing
+relcol_install_list() {
     local missing=()
-    for p in "${RELCOL_PACKAGES[@]}"; do
+    for p in "$@"; do
         dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" \
             || missing+=("$p")
     done
