@@ -6,8 +6,10 @@
 # against the page headless. The screenshots go next to the test log (BUILD/meson-logs).
 # When the tools cannot be had (no root to install them, no network): SKIP (77) if CI is
 # not set, a failure under CI.
+# web/test.sh SRC BUILD BENCH_ENGINE --bench — meson benchmark 'web': the gas's frame rate
+# and the engine's collisions per second in the page against the native bench_engine.
 set -uo pipefail
-src="$1" build="$2" sim="$3"
+src="$1" build="$2" sim="$3" mode="${4:-}"
 
 cannot() {
     echo "web: $*" >&2
@@ -39,4 +41,4 @@ if ! cmp -s "$src/web/package-lock.json" "$nodedir/package-lock.json" ||
 fi
 # the test imports playwright-core from beside itself
 cp "$src/web/test_web.mjs" "$nodedir/"
-exec node "$nodedir/test_web.mjs" "$site" "$sim" "$build/meson-logs"
+exec node "$nodedir/test_web.mjs" "$site" "$sim" "$build/meson-logs" $mode
