@@ -309,6 +309,9 @@
     const bx = app.main.diag[WD.BOXX], by = app.main.diag[WD.BOXY];
     const dpr = window.devicePixelRatio || 1;
     for (const cv of [ui.canvasMain, ui.canvasRef]) {
+      // as wide as its column, but no taller than 60 % of the window (a square gas box)
+      const col = cv.parentElement.clientWidth || 640;
+      cv.style.width = Math.max(200, Math.min(col, 0.6 * window.innerHeight * bx / by)) + 'px';
       const w = Math.max(200, Math.round((cv.clientWidth || 640) * dpr));
       cv.width = w;
       cv.height = Math.max(50, Math.round(w * by / bx));

@@ -267,6 +267,7 @@ async function bench() {
   console.log('gas: ' + s.main.balls.length + ' discs, ' + fps.toFixed(1) + ' frames/s over 5 s of page time ' +
               '(speed of time ' + s.speed.toFixed(2) + ', simulated ' + (s.t - sim0).toFixed(1) + ', ' + s.main.diag.coll + ' collisions)');
   check(s.main.balls.length === 400 && fps >= 55, '400 discs at 60 frames/s', fps.toFixed(1));
+  await page.screenshot({ path: path.join(out, 'web-gas.png') });
   check(s.workMs < 1000 / 60, "the page's work a frame fits in a 60 Hz frame", s.workMs.toFixed(2) + ' ms');
   // engine speed: bench_engine's 2d:10000 (discs at packing 0.7, classical) in the page and
   // natively. bench_engine counts CPU time; the page's is read as the CPU time of the
