@@ -16,9 +16,19 @@ if [ "$RELCOL_PYTHON" != disabled ]; then
     RELCOL_PACKAGES+=(python3-dev python3-cffi python3-numpy python3-pytest python3-matplotlib)
 fi
 
+# The browser page (web/, issue 20): Debian's emscripten (node-acorn: its optimiser's
+# parser; dpkg-dev: apt-get source unpacks cJSON's source for it) and Chromium for the
+# page's test. Installed by web/build.sh and web/test.sh, not by every configuration.
+RELCOL_WEB_PACKAGES=(emscripten node-acorn dpkg-dev chromium)
+
 relcol_install_packages() {
+    relcol_install_list "${RELCOL_PACKAGES[@]}"
+}
+
+# relcol_install_list PKG... : install those of the Debian packages that are missing
+relcol_install_list() {
     local missing=()
-    for p in "${RELCOL_PACKAGES[@]}"; do
+    for p in "$@"; do
         dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" \
             || missing+=("$p")
     done

@@ -276,6 +276,54 @@ int rc_sim_sync(rc_sim *s)
     return RC_OK;
 }
 
+int rc_sim_set_c(rc_sim *s, double c)
+{
+    if (!s)
+        return RC_EINVAL;
+    double k;
+    int st = rc_inv_c2(c, &k);
+    if (st != RC_OK)
+        return st;
+    size_t n = s->n;
+    rc_sim_ball *b = malloc((n ? n : 1) * sizeof *b);
+    if (!b)
+        return RC_ENOMEM;
+    /* every ball at the engine's time, with the momentum and rest mass it has now: these
+     * are what c leaves alone (sim.h) */
+    for (size_t i = 0; i < n; i++)
+        rc_sim_get_ball(s, i, &b[i]);
+    const eng_books kept = s->bk;
+    const rc_sim_def def0 = s->def;
+    const double k0 = s->inv_c2, ic0 = s->inv_c;
+    const int wc0 = s->wall_contracted;
+    s->def.c = c;
+    if (!isnan(s->def.toi.c))
+        s->def.toi.c = c;
+    s->inv_c2 = k;
+    s->inv_c = sqrt(k);
+    s->prm.c = c;
+    s->toi.c = c;
+    s->wall_contracted = s->def.frame && s->def.frame->wall_contracted && k > 0.0;
+    /* planned afresh, unchecked: the shapes the new c gives may overlap a neighbour or a
+     * wall, which the overlap policy resolves (and counts) as for any shape change */
+    st = load_balls(s, n, b, NULL, 0);
+    if (st != RC_OK) { /* (out of memory) the old c and its balls, planned afresh */
+        s->def = def0;
+        s->inv_c2 = k0;
+        s->inv_c = ic0;
+        s->prm.c = def0.c;
+        s->toi.c = def0.c;
+        s->wall_contracted = wc0;
+        if (load_balls(s, n, b, NULL, 0) == RC_OK)
+            s->bk = kept;
+        free(b);
+        return st;
+    }
+    free(b);
+    s->bk = kept;
+    return RC_OK;
+}
+
 /* Allocate the state of n balls (the largest rest radius rmax sizes the cells), replacing
  * any balls held, with the bookkeeping started afresh: shared by rc_sim_set_balls and
  * rc_sim_checkpoint_read. On failure nothing is held. */

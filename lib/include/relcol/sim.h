@@ -258,6 +258,19 @@ int rc_sim_set_balls(rc_sim *s, size_t n, const rc_sim_ball *balls, size_t *bad)
  * them, gives the same bits as advancing in one go. */
 int rc_sim_sync(rc_sim *s);
 
+/* Change the speed of light during a run, at the engine's time: every ball keeps its
+ * position, momentum, rest mass, proper time and TC memory; its velocity p / M and its
+ * contracted shape follow the new c (with a finite p every speed stays below any c > 0).
+ * Events are planned afresh, as by rc_sim_sync (so the run's bits differ from one that
+ * never changed c); the diagnostic counters continue. The kinetic energy is a function
+ * of c, so rc_sim_diag.energy changes at the call: conservation holds from here on, with
+ * the new value as its reference. A shape that grows (c raised) can overlap a neighbour
+ * or a wall; such pairs are left to the overlap policy above and counted in
+ * rc_sim_diag.overlaps. RC_EINVAL for a NULL engine, RC_ESPEEDOFLIGHT for c <= 0, NaN
+ * or out of range as rc_inv_c2 says (c = INFINITY is the classical case), RC_ENOMEM; on
+ * failure the engine keeps its old c and its balls. */
+int rc_sim_set_c(rc_sim *s, double c);
+
 /* ---- checkpoints: stopping and continuing without changing the run -------------- */
 
 /* The engine's whole state as bytes: every ball at its own clock, every scheduled event,

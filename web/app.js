@@ -1,0 +1,530 @@
+// app.js — the page: controls, drawing and read-outs around librelcol in WebAssembly
+// (relcol_web.js / relcol_web.wasm, glue web/relcol_web.c). No physics here: every number
+// drawn or shown comes from the library through the glue; this file only maps controls to
+// calls, display time to the engine's time, and numbers to pixels.
+'use strict';
+
+(function () {
+  // per-ball values of web_update / web_balls (relcol_web.c, enum WB_*)
+  const WB = { X: 0, Y: 1, PX: 2, PY: 3, R: 4, M: 5, TAU: 6, GAMMA: 7, SPEED: 8, A: 9, B: 10,
+               ANGLE: 11, N: 12 };
+  // read-outs of web_update (enum WD_*)
+  const WD = { TIME: 0, COLL: 1, ENERGY: 2, EERR: 3, PERR: 4, OVERLAPS: 5, OVSHARE: 6,
+               MEANG: 7, VMAX: 8, C: 9, KINETIC: 10, HEAT: 11, GROUPSEQ: 12, MAXGROUP: 13,
+               N: 14, BOXX: 15, BOXY: 16, PCLASS: 17, EPS: 18, FRAME: 19, LAW: 20,
+               CONTRACTED: 21, COUNT: 22 };
+  const C_DECADES = 3;   // the c slider spans c_min .. c_min 10^3, then its last notch is inf
+  const C_POS_MAX = 1000;
+  const HIST_BINS = 32;
+
+  const $ = (id) => document.getElementById(id);
+  const ui = {
+    status: $('status'), scenario: $('scenario'), file: $('file'), play: $('play'),
+    step: $('step'), reset: $('reset'), speed: $('speed'), speedOut: $('speed-out'),
+    split: $('split'), c: $('c'), cOut: $('c-out'), eps: $('eps'), epsOut: $('eps-out'),
+    frame: $('frame'), law: $('law'), viewRef: $('view-ref'), capMain: $('cap-main'),
+    canvasRef: $('canvas-ref'), canvasMain: $('canvas-main'), hist: $('hist'),
+    theta: $('theta'), tip: $('tip'),
+  };
+
+  let M = null;      // the wasm module
+  let api = null;    // its exported functions
+  const app = {
+    source: { builtin: 'rack', text: null, name: 'rack' },
+    main: null,      // { w, diag, balls } the world at the chosen c
+    ref: null,       // the same break at c = inf (split view)
+    playing: false,
+    split: false,
+    t: 0,            // display time = the engine time both worlds are brought to
+    speed: 1,        // time units per second of page time
+    cMin: 1,         // lowest c of the slider: just above the fastest ball (followSlider)
+    dragging: false,
+    c: Infinity,
+    fps: 0,
+    frames: 0,
+    workMs: 0,
+    lastNow: null,
+    error: null,
+  };
+
+  function fmt(x, digits) {
+    if (!isFinite(x)) return x > 0 ? '∞' : String(x);
+    const a = Math.abs(x);
+    if (a !== 0 && (a < 1e-3 || a >= 1e5)) return x.toExponential(digits === undefined ? 2 : digits);
+    return x.toFixed(digits === undefined ? 4 : digits);
+  }
+
+  function setStatus(msg, isError) {
+    ui.status.textContent = msg;
+    ui.status.classList.toggle('error', !!isError);
+  }
+
+  function fail(where) {
+    const msg = where + ': ' + M.UTF8ToString(api.error());
+    app.error = msg;
+    setStatus(msg, true);
+    return msg;
+  }
+
+  function bind() {
+    const f = (name, ret, args) => M.cwrap(name, ret, args);
+    api = {
+      error: f('web_error', 'number', []),
+      create: f('web_create', 'number', ['string', 'number']),
+      free: f('web_free', null, ['number']),
+      reset: f('web_reset', 'number', ['number']),
+      setC: f('web_set_c', 'number', ['number', 'number']),
+      setModel: f('web_set_model', 'number', ['number', 'number', 'number', 'number']),
+      advance: f('web_advance', 'number', ['number', 'number']),
+      stepEvent: f('web_step_event', 'number', ['number']),
+      time: f('web_time', 'number', ['number']),
+      count: f('web_count', 'number', ['number']),
+      update: f('web_update', 'number', ['number']),
+      balls: f('web_balls', 'number', ['number']),
+      histogram: f('web_histogram', 'number', ['number', 'number', 'number']),
+      frameCount: f('web_frame_count', 'number', []),
+      frameName: f('web_frame_name', 'string', ['number']),
+      frameContracted: f('web_frame_contracted', 'number', ['number']),
+      lawCount: f('web_law_count', 'number', []),
+      lawName: f('web_law_name', 'string', ['number']),
+      lawSummary: f('web_law_summary', 'string', ['number']),
+      lawGroup: f('web_law_group', 'number', ['number']),
+      benchSetup: f('web_bench_setup', 'number', ['number', 'number', 'number', 'number',
+                                                  'number', 'number']),
+      benchRun: f('web_bench_run', 'number', ['number', 'number']),
+      benchFree: f('web_bench_free', null, ['number']),
+    };
+  }
+
+  // ---- worlds -------------------------------------------------------------------------
+
+  function readWorld(v) {
+    const dp = api.update(v.w) >> 3;
+    v.diag = Array.from(M.HEAPF64.subarray(dp, dp + WD.COUNT));
+    const n = v.diag[WD.N];
+    const bp = api.balls(v.w) >> 3;
+    v.balls = M.HEAPF64.slice(bp, bp + n * WB.N);
+  }
+
+  function makeWorld() {
+    const s = app.source;
+    const w = s.text !== null ? api.create(s.text, 0) : api.create(s.builtin, 1);
+    if (!w) return null;
+    const v = { w: w, diag: null, balls: null };
+    readWorld(v);
+    return v;
+  }
+
+  function freeWorlds() {
+    for (const k of ['main', 'ref']) {
+      if (app[k]) api.free(app[k].w);
+      app[k] = null;
+    }
+  }
+
+  // Load the current source into fresh worlds: the main one (the chosen c) and, in split
+  // view, the same break at c = inf.
+  // keepC: a reset keeps the chosen c (the break replayed at it); a new scenario starts
+  // at its own c.
+  function load(keepC) {
+    const chosen = app.c;
+    freeWorlds();
+    app.error = null;
+    const main = makeWorld();
+    if (!main) { fail('scenario ' + app.source.name); return false; }
+    app.main = main;
+    app.t = main.diag[WD.TIME];
+    const c0 = main.diag[WD.C];
+    app.c = c0;
+    if (keepC && chosen !== c0 && api.setC(main.w, chosen) === 0) {
+      app.c = chosen;
+      readWorld(main);
+    }
+    app.speed = Math.max(1, main.diag[WD.BOXX] / (2 * Math.max(main.diag[WD.VMAX], 1e-300)));
+    ui.speed.value = String(Math.log10(app.speed));
+    ui.eps.value = String(main.diag[WD.EPS]);
+    ui.frame.value = String(main.diag[WD.FRAME]);
+    ui.law.value = String(main.diag[WD.LAW]);
+    if (app.split && !makeRef()) return false;
+    sizeCanvases();
+    showControls();
+    setStatus('ready: ' + app.source.name + ' (' + main.diag[WD.N] + ' balls)');
+    return true;
+  }
+
+  function makeRef() {
+    const ref = makeWorld();
+    if (!ref) { fail('split view'); return false; }
+    if (isFinite(ref.diag[WD.C]) && api.setC(ref.w, Infinity) !== 0) { fail('split view c = ∞'); return false; }
+    // the same break: the chosen model, at the main world's time
+    const md = app.main.diag;
+    if (ref.diag[WD.EPS] !== md[WD.EPS] || ref.diag[WD.FRAME] !== md[WD.FRAME] ||
+        ref.diag[WD.LAW] !== md[WD.LAW]) {
+      if (api.setModel(ref.w, md[WD.EPS], md[WD.FRAME], md[WD.LAW]) !== 0) { fail('split view'); return false; }
+    }
+    if (api.advance(ref.w, app.t) !== 0) { fail('split view'); return false; }
+    readWorld(ref);
+    app.ref = ref;
+    return true;
+  }
+
+  function worlds() { return app.ref ? [app.main, app.ref] : [app.main]; }
+
+  function advanceTo(t) {
+    for (const v of worlds()) {
+      if (api.advance(v.w, t) !== 0) { pause(); fail('engine'); return false; }
+    }
+    app.t = t;
+    for (const v of worlds()) readWorld(v);
+    return true;
+  }
+
+  // ---- controls -----------------------------------------------------------------------
+
+  function sliderFor(c) {
+    if (!isFinite(c)) return C_POS_MAX;
+    const pos = (C_POS_MAX - 1) * Math.log10(c / app.cMin) / C_DECADES;
+    return Math.min(C_POS_MAX - 1, Math.max(0, pos));
+  }
+
+  function cFor(pos) {
+    if (pos >= C_POS_MAX) return Infinity;
+    return app.cMin * Math.pow(10, C_DECADES * pos / (C_POS_MAX - 1));
+  }
+
+  function setC(c) {
+    if (!app.main) return false;
+    if (api.setC(app.main.w, c) !== 0) { fail('c'); return false; }
+    app.c = c;
+    readWorld(app.main);
+    showControls();
+    draw();
+    return true;
+  }
+
+  function setModel() {
+    const eps = Number(ui.eps.value), frame = Number(ui.frame.value), law = Number(ui.law.value);
+    for (const v of worlds()) {
+      if (api.setModel(v.w, eps, frame, law) !== 0) { fail('model'); break; }
+      readWorld(v);
+    }
+    showControls();
+    draw();
+  }
+
+  function play() { app.playing = true; app.lastNow = null; ui.play.textContent = 'pause'; }
+  function pause() { app.playing = false; ui.play.textContent = 'play'; }
+
+  function stepEvent() {
+    pause();
+    if (api.stepEvent(app.main.w) !== 0) { fail('single event'); return; }
+    const t = api.time(app.main.w);
+    if (app.ref && api.advance(app.ref.w, t) !== 0) { fail('split view'); return; }
+    app.t = t;
+    for (const v of worlds()) readWorld(v);
+    draw();
+  }
+
+  function setSplit(on) {
+    app.split = on;
+    ui.split.checked = on;
+    ui.viewRef.hidden = !on;
+    if (on && !app.ref) makeRef();
+    if (!on && app.ref) { api.free(app.ref.w); app.ref = null; }
+    sizeCanvases();
+    draw();
+  }
+
+  function showControls() {
+    ui.cOut.textContent = isFinite(app.c) ? fmt(app.c, 4) : '∞';
+    ui.epsOut.textContent = Number(ui.eps.value).toFixed(2);
+    ui.speedOut.textContent = fmt(app.speed, 3) + ' / s';
+  }
+
+  function fillTables() {
+    ui.frame.innerHTML = '';
+    for (let i = 0; i < api.frameCount(); i++) {
+      const o = document.createElement('option');
+      o.value = String(i);
+      o.textContent = api.frameName(i) + (api.frameContracted(i) ? ' (contracted shapes)' : ' (spheres)');
+      ui.frame.appendChild(o);
+    }
+    ui.law.innerHTML = '';
+    for (let i = 0; i < api.lawCount(); i++) {
+      const o = document.createElement('option');
+      o.value = String(i);
+      o.textContent = api.lawName(i) + (api.lawGroup(i) ? ' — groups solved together' : ' — groups one by one');
+      o.title = api.lawSummary(i);
+      ui.law.appendChild(o);
+    }
+  }
+
+  function wire() {
+    ui.scenario.addEventListener('change', () => {
+      app.source = { builtin: ui.scenario.value, text: null, name: ui.scenario.value };
+      pause();
+      load();
+      draw();
+    });
+    const takeFile = (file) => {
+      file.text().then((text) => {
+        const prev = app.source;
+        app.source = { builtin: null, text: text, name: file.name };
+        pause();
+        if (!load()) { const msg = app.error; app.source = prev; load(); setStatus(msg, true); }
+        draw();
+      });
+    };
+    ui.file.addEventListener('change', () => { if (ui.file.files[0]) takeFile(ui.file.files[0]); });
+    document.body.addEventListener('dragover', (e) => { e.preventDefault(); document.body.classList.add('dragging'); });
+    document.body.addEventListener('dragleave', () => document.body.classList.remove('dragging'));
+    document.body.addEventListener('drop', (e) => {
+      e.preventDefault();
+      document.body.classList.remove('dragging');
+      if (e.dataTransfer.files[0]) takeFile(e.dataTransfer.files[0]);
+    });
+    ui.play.addEventListener('click', () => (app.playing ? pause() : play()));
+    ui.step.addEventListener('click', stepEvent);
+    ui.reset.addEventListener('click', () => { pause(); load(true); draw(); });
+    ui.speed.addEventListener('input', () => { app.speed = Math.pow(10, Number(ui.speed.value)); showControls(); });
+    ui.split.addEventListener('change', () => setSplit(ui.split.checked));
+    ui.c.addEventListener('input', () => setC(cFor(Number(ui.c.value))));
+    ui.c.addEventListener('pointerdown', () => { app.dragging = true; });
+    window.addEventListener('pointerup', () => { app.dragging = false; });
+    ui.eps.addEventListener('input', () => { ui.epsOut.textContent = Number(ui.eps.value).toFixed(2); });
+    ui.eps.addEventListener('change', setModel);
+    ui.frame.addEventListener('change', setModel);
+    ui.law.addEventListener('change', setModel);
+    for (const cv of [ui.canvasMain, ui.canvasRef]) {
+      cv.addEventListener('mousemove', (e) => hover(e, cv));
+      cv.addEventListener('mouseleave', () => { ui.tip.hidden = true; });
+    }
+    window.addEventListener('resize', () => { sizeCanvases(); draw(); });
+  }
+
+  // ---- drawing ------------------------------------------------------------------------
+
+  function sizeCanvases() {
+    if (!app.main) return;
+    const bx = app.main.diag[WD.BOXX], by = app.main.diag[WD.BOXY];
+    const dpr = window.devicePixelRatio || 1;
+    for (const cv of [ui.canvasMain, ui.canvasRef]) {
+      // as wide as its column, but no taller than 60 % of the window (a square gas box)
+      const col = cv.parentElement.clientWidth || 640;
+      cv.style.width = Math.max(200, Math.min(col, 0.6 * window.innerHeight * bx / by)) + 'px';
+      const w = Math.max(200, Math.round((cv.clientWidth || 640) * dpr));
+      cv.width = w;
+      cv.height = Math.max(50, Math.round(w * by / bx));
+    }
+    const hw = Math.max(200, Math.round((ui.hist.clientWidth || 640) * dpr));
+    ui.hist.width = hw;
+    ui.hist.height = Math.round(hw * 0.25);
+  }
+
+  function ballColour(i, n, gamma, isRack) {
+    if (isRack) {
+      if (i === 0) return '#f6f3e8';
+      const palette = ['#f2c100', '#1f4fb4', '#d2261f', '#5b2a86', '#ef7d00', '#1a7f3c', '#7b1e1e', '#111'];
+      return palette[(i - 1) % palette.length];
+    }
+    // hotter balls redder: gamma - 1 on a log scale, in 16 steps
+    const u = Math.round(16 * Math.min(1, Math.max(0, (Math.log10(Math.max(gamma - 1, 1e-6)) + 4) / 4))) / 16;
+    const r = Math.round(80 + 175 * u), b = Math.round(230 - 180 * u);
+    return 'rgb(' + r + ',' + Math.round(140 + 40 * (1 - u)) + ',' + b + ')';
+  }
+
+  function drawWorld(v, cv) {
+    const ctx = cv.getContext('2d');
+    const bx = v.diag[WD.BOXX], by = v.diag[WD.BOXY], n = v.diag[WD.N];
+    const s = cv.width / bx;
+    const isRack = app.source.builtin === 'rack';
+    ctx.fillStyle = isRack ? '#1d5c3a' : '#15222e';
+    ctx.fillRect(0, 0, cv.width, cv.height);
+    const b = v.balls;
+    // one path per colour: a few fills a frame however many balls
+    const paths = new Map();
+    for (let i = 0; i < n; i++) {
+      const o = i * WB.N;
+      const x = b[o + WB.X] * s, y = cv.height - b[o + WB.Y] * s;
+      const a = Math.max(b[o + WB.A] * s, 0.5), bb = Math.max(b[o + WB.B] * s, 0.5);
+      const colour = ballColour(i, n, b[o + WB.GAMMA], isRack);
+      let p = paths.get(colour);
+      if (!p) { p = new Path2D(); paths.set(colour, p); }
+      // the contracted shape: semi-axis a along the velocity (canvas y points down)
+      p.moveTo(x + a * Math.cos(b[o + WB.ANGLE]), y - a * Math.sin(b[o + WB.ANGLE]));
+      p.ellipse(x, y, a, bb, -b[o + WB.ANGLE], 0, 2 * Math.PI);
+    }
+    for (const [colour, p] of paths) {
+      ctx.fillStyle = colour;
+      ctx.fill(p);
+      if (n <= 64) { ctx.lineWidth = 1; ctx.strokeStyle = 'rgba(0,0,0,0.5)'; ctx.stroke(p); }
+    }
+    ctx.fillStyle = 'rgba(255,255,255,0.85)';
+    ctx.font = Math.round(12 * (window.devicePixelRatio || 1)) + 'px system-ui, sans-serif';
+    ctx.fillText('t = ' + v.diag[WD.TIME].toFixed(3), 6, 16 * (window.devicePixelRatio || 1));
+  }
+
+  function drawHistogram() {
+    const v = app.main;
+    const cv = ui.hist, ctx = cv.getContext('2d');
+    ctx.clearRect(0, 0, cv.width, cv.height);
+    const c = v.diag[WD.C];
+    const vtop = isFinite(c) ? c : 1.25 * Math.max(v.diag[WD.VMAX], 1e-300);
+    const hp = api.histogram(v.w, HIST_BINS, vtop) >> 3;
+    const h = M.HEAPF64.slice(hp, hp + 3 * HIST_BINS + 2);
+    app.hist = h;
+    let top = 0;
+    for (let k = 0; k < 3 * HIST_BINS; k++) if (isFinite(h[k])) top = Math.max(top, h[k]);
+    if (!(top > 0)) return;
+    const pad = 4, W = cv.width, H = cv.height - 2 * pad, bw = W / HIST_BINS;
+    ctx.fillStyle = '#9fb8d8';
+    for (let k = 0; k < HIST_BINS; k++) {
+      const hh = H * h[k] / top;
+      ctx.fillRect(k * bw + 1, pad + H - hh, bw - 2, hh);
+    }
+    const curve = (off, colour, dash) => {
+      ctx.beginPath();
+      ctx.setLineDash(dash);
+      for (let k = 0; k < HIST_BINS; k++) {
+        const x = (k + 0.5) * bw, y = pad + H - H * h[off + k] / top;
+        if (k === 0) ctx.moveTo(x, y); else ctx.lineTo(x, y);
+      }
+      ctx.strokeStyle = colour;
+      ctx.lineWidth = 2;
+      ctx.stroke();
+      ctx.setLineDash([]);
+    };
+    curve(HIST_BINS, '#c0392b', []);
+    curve(2 * HIST_BINS, '#2c3e50', [6, 4]);
+    const theta = h[3 * HIST_BINS];
+    ui.theta.textContent = '(0 … ' + (isFinite(c) ? 'c' : fmt(vtop, 3)) + ')' +
+      (isFinite(theta) ? ', θ = kT/mc² = ' + fmt(theta, 4) : '');
+  }
+
+  function showReadouts() {
+    const d = app.main.diag;
+    $('r-time').textContent = d[WD.TIME].toFixed(4);
+    $('r-coll').textContent = String(d[WD.COLL]);
+    $('r-eerr').textContent = d[WD.EERR].toExponential(2);
+    $('r-perr').textContent = d[WD.PERR].toExponential(2);
+    $('r-ov').textContent = (100 * d[WD.OVSHARE]).toFixed(3) + ' % (' + d[WD.OVERLAPS] + ')';
+    $('r-gamma').textContent = d[WD.MEANG].toFixed(6);
+    $('r-vmax').textContent = fmt(d[WD.VMAX], 4) + (isFinite(d[WD.C]) ? ' = ' + (d[WD.VMAX] / d[WD.C]).toFixed(4) + ' c' : '');
+    $('r-fps').textContent = app.fps.toFixed(0);
+    ui.capMain.textContent = 'c = ' + (isFinite(app.c) ? fmt(app.c, 4) : '∞') +
+      '  (fastest ball ' + fmt(d[WD.VMAX], 4) + ')';
+  }
+
+  // The slider's floor follows the fastest ball (its speed at c = inf, |p|/m, which every
+  // c keeps it below); the thumb follows c, except while it is being dragged.
+  function followSlider() {
+    app.cMin = 1.01 * Math.max(app.main.diag[WD.PCLASS], 1e-300);
+    if (!app.dragging) ui.c.value = String(sliderFor(app.c));
+  }
+
+  function draw() {
+    if (!app.main) return;
+    followSlider();
+    drawWorld(app.main, ui.canvasMain);
+    if (app.ref) drawWorld(app.ref, ui.canvasRef);
+    drawHistogram();
+    showReadouts();
+  }
+
+  function hover(e, cv) {
+    const v = cv === ui.canvasRef ? app.ref : app.main;
+    if (!v) return;
+    const r = cv.getBoundingClientRect();
+    const bx = v.diag[WD.BOXX], by = v.diag[WD.BOXY];
+    const x = (e.clientX - r.left) / r.width * bx, y = (1 - (e.clientY - r.top) / r.height) * by;
+    const b = v.balls;
+    let best = -1, bestD = Infinity;
+    for (let i = 0; i < v.diag[WD.N]; i++) {
+      const o = i * WB.N, dx = b[o + WB.X] - x, dy = b[o + WB.Y] - y;
+      const d2 = dx * dx + dy * dy;
+      if (d2 < bestD && d2 <= b[o + WB.R] * b[o + WB.R] * 1.5) { bestD = d2; best = i; }
+    }
+    if (best < 0) { ui.tip.hidden = true; return; }
+    const o = best * WB.N;
+    ui.tip.textContent = 'ball ' + best + '\nproper time τ = ' + b[o + WB.TAU].toFixed(6) +
+      '\nγ = ' + b[o + WB.GAMMA].toFixed(6) + '\nspeed ' + fmt(b[o + WB.SPEED], 4);
+    ui.tip.style.left = (e.clientX + 14) + 'px';
+    ui.tip.style.top = (e.clientY + 10) + 'px';
+    ui.tip.hidden = false;
+  }
+
+  // ---- the loop: the engine brings every ball to the display time -----------------------
+
+  let fpsT0 = null, fpsN = 0;
+  function frame(now) {
+    const w0 = performance.now();
+    if (app.playing && app.main && !app.error) {
+      const dt = app.lastNow === null ? 0 : Math.min(0.1, (now - app.lastNow) / 1000);
+      advanceTo(app.t + dt * app.speed);
+    }
+    app.lastNow = now;
+    if (fpsT0 === null) fpsT0 = now;
+    fpsN++;
+    if (now - fpsT0 >= 500) { app.fps = 1000 * fpsN / (now - fpsT0); fpsT0 = now; fpsN = 0; }
+    app.frames++;
+    draw();
+    // the page's own work a frame (engine, read-outs, drawing), averaged
+    app.workMs = 0.95 * app.workMs + 0.05 * (performance.now() - w0);
+    requestAnimationFrame(frame);
+  }
+
+  // ---- what tests and scripts read (window.relcol) --------------------------------------
+
+  function worldState(v) {
+    const d = v.diag, b = v.balls, balls = [];
+    for (let i = 0; i < d[WD.N]; i++) {
+      const o = i * WB.N;
+      balls.push({ x: b[o + WB.X], y: b[o + WB.Y], px: b[o + WB.PX], py: b[o + WB.PY],
+                   r: b[o + WB.R], m: b[o + WB.M], tau: b[o + WB.TAU], gamma: b[o + WB.GAMMA],
+                   speed: b[o + WB.SPEED], a: b[o + WB.A], b: b[o + WB.B], angle: b[o + WB.ANGLE] });
+    }
+    const named = {};
+    for (const k of Object.keys(WD)) if (k !== 'COUNT') named[k.toLowerCase()] = d[WD[k]];
+    named.c = isFinite(named.c) ? named.c : 'inf';
+    return { diag: named, balls: balls };
+  }
+
+  window.relcol = {
+    ready: false,
+    state: () => ({
+      t: app.t, playing: app.playing, split: app.split, speed: app.speed, cMin: app.cMin,
+      fps: app.fps, frames: app.frames, workMs: app.workMs, error: app.error, scenario: app.source.name,
+      main: worldState(app.main), ref: app.ref ? worldState(app.ref) : null,
+      hist: app.hist ? Array.from(app.hist) : null,
+    }),
+    sliderFor: sliderFor,
+    cFor: cFor,
+    advanceTo: (t) => { const ok = advanceTo(t); draw(); return ok; },
+    // bench_engine's set-up in the page: benchSetup makes and melts it (a handle), benchRun
+    // times the measured part (wall clock; the caller may read CPU time around it)
+    benchSetup: (dim, n, packing, c, frameName, melt) => {
+      let frame = -1;
+      for (let i = 0; i < api.frameCount(); i++) if (api.frameName(i) === frameName) frame = i;
+      return api.benchSetup(dim, n, packing, c, frame, melt);
+    },
+    benchRun: (h, measure) => {
+      const t0 = performance.now();
+      const collisions = api.benchRun(h, measure);
+      return { collisions: collisions, wall: (performance.now() - t0) / 1000 };
+    },
+    benchFree: (h) => api.benchFree(h),
+  };
+
+  setStatus('loading the library…');
+  createRelcol().then((mod) => {
+    M = mod;
+    bind();
+    fillTables();
+    wire();
+    load();
+    showControls();
+    draw();
+    window.relcol.ready = true;
+    requestAnimationFrame(frame);
+  }, (err) => setStatus('cannot load the library: ' + err, true));
+})();
