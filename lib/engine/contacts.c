@@ -1,7 +1,10 @@
-/* engine/contacts.c — simultaneous contacts resolved together, independent of their order
- * (papers/simultaneous-contacts.md): one four-impulse J_j q_j per contact, the J_j found
- * by Newton's method on the k restitution conditions of the zmf law (a k x k linear
- * system each step, solved by LU); classically the conditions are linear and one step is exact. */
+/* engine/contacts.c — simultaneous contacts resolved together (papers/simultaneous-contacts.md):
+ * one four-impulse J_j q_j per contact, the J_j found by Newton's method on the restitution
+ * conditions of the zmf law of the contacts that push (a k x k linear system each step,
+ * solved by LU; classically the conditions are linear and one step is exact), the set of
+ * pushing contacts found by principal pivoting (the `simultaneous` rule) or by dropping the
+ * most pulling one (the `drop` rule); rc_contacts_solve also dispatches the `sequential`
+ * rule (contacts_seq.c). */
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
@@ -10,6 +13,7 @@
 #include "relcol/kinematics.h"
 #include "relcol/sim.h"
 #include "relcol/status.h"
+#include "contacts.h"
 
 /* Newton stops when every step is below this fraction of the largest impulse or ball
  * momentum (relative, a few ulps above the round-off floor of the residuals, which are
@@ -20,6 +24,15 @@
 /* A pivot smaller than this fraction of the largest diagonal entry means the contact
  * normals are linearly dependent: the impulses are not unique (RC_ENOCONVERGE). */
 #define PIVOT_REL_TOL 1e-13
+/* Complementarity is violated by an impulse below -CP_REL_TOL times the largest impulse or
+ * ball momentum, or by a contact without impulse whose post-group approach exceeds what
+ * restitution allows by more than CP_REL_TOL times the largest ball momentum: far above
+ * the round-off of Newton's converged impulses (NEWTON_REL_TOL), so that a contact whose
+ * exact impulse is 0 does not flip for ever on round-off. */
+#define CP_REL_TOL 1e-12
+/* Principal pivots allowed (Murty's least-index rule ends in finitely many for the
+ * positive definite classical matrix; a handful for the groups an engine meets). */
+#define CP_MAX_PIVOTS(k) (16 + 8 * (k))
 
 typedef struct cwork {
     size_t k;
@@ -28,7 +41,8 @@ typedef struct cwork {
     const rc_particle *b0; /* states before the group */
     const double *M0;
     double *qt;            /* time component of q_j: u_j.n_j / c^2 (0 for walls) */
-    double *a0;            /* pre-group ZMF-normal approach of each contact */
+    double *a0;            /* pre-group ZMF-normal approach of each contact, floored at 0
+                              (a receding contact may at most stop receding) */
     double *Mp;            /* post states for the current J */
     rc_vec3 *pp;
 } cwork;
@@ -306,8 +320,9 @@ static int keep_rest_masses(double inv_c2, size_t nb, const rc_particle *b0, siz
     return RC_OK;
 }
 
-int rc_contacts_resolve(double inv_c2, size_t nballs, rc_particle *balls, size_t k,
-                        const rc_contact *contacts, double *jout)
+/* Validation shared by the entry points. */
+static int check_input(double inv_c2, size_t nballs, const rc_particle *balls, size_t k,
+                       const rc_contact *contacts)
 {
     if (!balls || (!contacts && k) || !(inv_c2 >= 0.0) || isinf(inv_c2))
         return RC_EINVAL;
@@ -328,6 +343,38 @@ int rc_contacts_resolve(double inv_c2, size_t nballs, rc_particle *balls, size_t
         if (!(c->eps >= 0.0 && c->eps <= 1.0))
             return RC_ERESTITUTION;
     }
+    return RC_OK;
+}
+
+/* The first contact that violates complementarity at J (post states current), k if none:
+ * an active contact that pulls, or an inactive one approaching beyond its restitution. */
+static size_t first_violation(const cwork *w, size_t nb, const double *J)
+{
+    double pscale = 0.0, jmax = 0.0;
+    for (size_t i = 0; i < nb; i++)
+        pscale = fmax(pscale, rc_v3_norm(w->b0[i].p));
+    for (size_t j = 0; j < w->k; j++)
+        jmax = fmax(jmax, fabs(J[j]));
+    for (size_t j = 0; j < w->k; j++) {
+        if (w->active[j]) {
+            if (J[j] < -CP_REL_TOL * (jmax + pscale))
+                return j;
+            continue;
+        }
+        const rc_contact *c = &w->c[j];
+        /* residual / (M_a' + M_b'): post approach plus eps times the pre-group one */
+        const double g = c->b < 0 ? residual(w, j) : residual(w, j) / (w->Mp[c->a] + w->Mp[c->b]);
+        if (g > CP_REL_TOL * pscale)
+            return j;
+    }
+    return w->k;
+}
+
+/* The joint solve: pivot = 1 the simultaneous rule (principal pivoting until the impulses
+ * are complementary), 0 the drop rule. Input validated. */
+static int joint(int pivot, double inv_c2, size_t nballs, rc_particle *balls, size_t k,
+                 const rc_contact *contacts, double *jout)
+{
     if (k == 0)
         return RC_OK;
 
@@ -358,22 +405,45 @@ int rc_contacts_resolve(double inv_c2, size_t nballs, rc_particle *balls, size_t
             qt[j] = (pan + pbn) / Mt * inv_c2;
             a0[j] = (M0[c->b] * pan - M0[c->a] * pbn) / Mt;
         }
-        /* a contact that is not approaching takes no impulse */
+        /* a contact that is not approaching takes no impulse to begin with */
         active[j] = a0[j] > 0.0;
+        if (!active[j])
+            a0[j] = 0.0;
     }
     cwork w = {k, contacts, active, balls, M0, qt, a0, Mp, pp};
-    /* Active set: solve, drop the most pulling contact, repeat (at most k times). */
-    for (;;) {
-        st = newton(&w, nballs, J, A, rhs, idx, piv);
-        if (st != RC_OK)
-            goto done;
-        size_t worst = k;
-        for (size_t j = 0; j < k; j++)
-            if (active[j] && J[j] < 0.0 && (worst == k || J[j] < J[worst]))
-                worst = j;
-        if (worst == k)
-            break;
-        active[worst] = 0;
+    if (pivot) {
+        /* Murty's least-index principal pivoting: solve on the active set, then flip the
+         * first contact that violates complementarity (a pulling one leaves, one that
+         * would approach beyond its restitution joins), until none does. From the
+         * approaching contacts: where none pulls, the first solve is the answer. */
+        for (size_t np = 0;; np++) {
+            st = newton(&w, nballs, J, A, rhs, idx, piv);
+            if (st != RC_OK)
+                goto done;
+            post_states(&w, nballs, J);
+            const size_t flip = first_violation(&w, nballs, J);
+            if (flip == k)
+                break;
+            if (np == CP_MAX_PIVOTS(k)) {
+                st = RC_ENOCONVERGE;
+                goto done;
+            }
+            active[flip] = !active[flip];
+        }
+    } else {
+        /* Active set: solve, drop the most pulling contact, repeat (at most k times). */
+        for (;;) {
+            st = newton(&w, nballs, J, A, rhs, idx, piv);
+            if (st != RC_OK)
+                goto done;
+            size_t worst = k;
+            for (size_t j = 0; j < k; j++)
+                if (active[j] && J[j] < 0.0 && (worst == k || J[j] < J[worst]))
+                    worst = j;
+            if (worst == k)
+                break;
+            active[worst] = 0;
+        }
     }
     post_states(&w, nballs, J);
     size_t nactive = 0;
@@ -427,4 +497,30 @@ done:
     free(active);
     free(piv);
     return st;
+}
+
+int rc_contacts_resolve(double inv_c2, size_t nballs, rc_particle *balls, size_t k,
+                        const rc_contact *contacts, double *jout)
+{
+    const int st = check_input(inv_c2, nballs, balls, k, contacts);
+    return st != RC_OK ? st : joint(0, inv_c2, nballs, balls, k, contacts, jout);
+}
+
+int rc_contacts_solve(const rc_collision_params *prm, size_t nballs, rc_particle *balls,
+                      size_t k, const rc_contact *contacts, double *jout)
+{
+    double inv_c2;
+    if (!prm || rc_inv_c2(prm->c, &inv_c2) != RC_OK || !rc_group_rule_name(prm->groups))
+        return RC_EINVAL;
+    const int st = check_input(inv_c2, nballs, balls, k, contacts);
+    if (st != RC_OK)
+        return st;
+    switch (prm->groups) {
+    case RC_GROUPS_SEQUENTIAL:
+        return eng_contacts_sequential(prm, nballs, balls, k, contacts, jout);
+    case RC_GROUPS_DROP:
+        return joint(0, inv_c2, nballs, balls, k, contacts, jout);
+    default:
+        return joint(1, inv_c2, nballs, balls, k, contacts, jout);
+    }
 }
