@@ -165,8 +165,9 @@ static void lu_solve(const double *LU, size_t m, const size_t *piv, double *x)
 }
 
 /* Newton on the active contacts; J of inactive ones stays 0. */
+/* Newton from J = 0, or from start (k entries, those of the active contacts read). */
 static int newton(cwork *w, size_t nb, double *J, double *A, double *rhs, size_t *idx,
-                  size_t *piv)
+                  size_t *piv, const double *start)
 {
     double pscale = 0.0;
     for (size_t i = 0; i < nb; i++)
@@ -174,8 +175,11 @@ static int newton(cwork *w, size_t nb, double *J, double *A, double *rhs, size_t
     size_t m = 0;
     for (size_t j = 0; j < w->k; j++) {
         J[j] = 0.0;
-        if (w->active[j])
+        if (w->active[j]) {
             idx[m++] = j;
+            if (start)
+                J[j] = start[j];
+        }
     }
     if (m == 0)
         return RC_OK;
@@ -346,6 +350,23 @@ static int check_input(double inv_c2, size_t nballs, const rc_particle *balls, s
     return RC_OK;
 }
 
+/* Whether an active contact's impulse pulls (beyond round-off). */
+static int pulls(const cwork *w, const double *J)
+{
+    double pscale = 0.0, jmax = 0.0;
+    for (size_t j = 0; j < w->k; j++)
+        jmax = fmax(jmax, fabs(J[j]));
+    for (size_t i = 0; i < w->k; i++) {
+        pscale = fmax(pscale, rc_v3_norm(w->b0[w->c[i].a].p));
+        if (w->c[i].b >= 0)
+            pscale = fmax(pscale, rc_v3_norm(w->b0[w->c[i].b].p));
+    }
+    for (size_t j = 0; j < w->k; j++)
+        if (w->active[j] && J[j] < -CP_REL_TOL * (jmax + pscale))
+            return 1;
+    return 0;
+}
+
 /* The first contact that violates complementarity at J (post states current), k if none:
  * an active contact that pulls, or an inactive one approaching beyond its restitution. */
 static size_t first_violation(const cwork *w, size_t nb, const double *J)
@@ -389,7 +410,11 @@ static int joint(int pivot, double inv_c2, size_t nballs, rc_particle *balls, si
     size_t *idx = malloc(k * sizeof *idx);
     int *active = malloc(k * sizeof *active);
     size_t *piv = malloc(k * sizeof *piv);
-    if (!M0 || !Mp || !pp || !qt || !a0 || !J || !A || !rhs || !idx || !active || !piv)
+    /* the simultaneous rule's second start: zero energy parts, its root, the Newton run */
+    double *qz = pivot ? calloc(k, sizeof *qz) : NULL;
+    double *Jg = pivot ? malloc(k * sizeof *Jg) : NULL, *Jt = pivot ? malloc(k * sizeof *Jt) : NULL;
+    if (!M0 || !Mp || !pp || !qt || !a0 || !J || !A || !rhs || !idx || !active || !piv ||
+        (pivot && (!qz || !Jg || !Jt)))
         goto done;
 
     for (size_t i = 0; i < nballs; i++)
@@ -417,9 +442,24 @@ static int joint(int pivot, double inv_c2, size_t nballs, rc_particle *balls, si
          * would approach beyond its restitution joins), until none does. From the
          * approaching contacts: where none pulls, the first solve is the answer. */
         for (size_t np = 0;; np++) {
-            st = newton(&w, nballs, J, A, rhs, idx, piv);
+            st = newton(&w, nballs, J, A, rhs, idx, piv, NULL);
             if (st != RC_OK)
                 goto done;
+            if (inv_c2 != 0.0 && pulls(&w, J)) {
+                /* At finite c the conditions are quadratic in J, and from J = 0 Newton can
+                 * reach a root that pulls while one that pushes exists (fast symmetric
+                 * groups: the middle ball of a head-on trio gains energy from both
+                 * contacts). Try again from the root of the conditions with each ball's
+                 * energy frozen (linear: one step), which is near the pushing one. */
+                double *qsave = w.qt;
+                w.qt = qz;
+                int s2 = newton(&w, nballs, Jg, A, rhs, idx, piv, NULL);
+                w.qt = qsave;
+                if (s2 == RC_OK && !pulls(&w, Jg) &&
+                    newton(&w, nballs, Jt, A, rhs, idx, piv, Jg) == RC_OK && !pulls(&w, Jt))
+                    for (size_t j = 0; j < k; j++)
+                        J[j] = Jt[j];
+            }
             post_states(&w, nballs, J);
             const size_t flip = first_violation(&w, nballs, J);
             if (flip == k)
@@ -433,7 +473,7 @@ static int joint(int pivot, double inv_c2, size_t nballs, rc_particle *balls, si
     } else {
         /* Active set: solve, drop the most pulling contact, repeat (at most k times). */
         for (;;) {
-            st = newton(&w, nballs, J, A, rhs, idx, piv);
+            st = newton(&w, nballs, J, A, rhs, idx, piv, NULL);
             if (st != RC_OK)
                 goto done;
             size_t worst = k;
@@ -496,6 +536,9 @@ done:
     free(idx);
     free(active);
     free(piv);
+    free(qz);
+    free(Jg);
+    free(Jt);
     return st;
 }
 
@@ -504,6 +547,91 @@ int rc_contacts_resolve(double inv_c2, size_t nballs, rc_particle *balls, size_t
 {
     const int st = check_input(inv_c2, nballs, balls, k, contacts);
     return st != RC_OK ? st : joint(0, inv_c2, nballs, balls, k, contacts, jout);
+}
+
+/* A rule run in the group's zero-momentum frame (of the balls in its contacts), so that
+ * its outcome does not depend on the frame the states are given in: states boosted there,
+ * each normal as its four-vector q = (u.n/c^2, n) (orthogonal to its pair's momentum, so
+ * that the zmf law's own covariance carries over), each event as an event; the outcome
+ * boosted back, the impulses rescaled to the given normals. A group with a wall stays in
+ * the wall's rest frame, the given one (an infinite mass at rest is its ZMF); so does a
+ * classical group, whose rules are Galilean invariant. */
+static int in_group_zmf(const rc_collision_params *prm, double inv_c2, size_t nballs,
+                        rc_particle *balls, size_t k, const rc_contact *contacts, double *jout)
+{
+    const int seq = prm->groups == RC_GROUPS_SEQUENTIAL;
+    int wall = 0;
+    for (size_t j = 0; j < k; j++)
+        wall |= contacts[j].b < 0;
+    if (inv_c2 == 0.0 || wall || k == 0)
+        return seq ? eng_contacts_sequential(prm, nballs, balls, k, contacts, jout)
+                   : joint(1, inv_c2, nballs, balls, k, contacts, jout);
+    int st = RC_ENOMEM;
+    rc_particle *B = malloc(nballs * sizeof *B);
+    rc_contact *C = malloc(k * sizeof *C);
+    double *f = malloc(k * sizeof *f), *J = malloc(k * sizeof *J);
+    if (!B || !C || !f || !J)
+        goto done;
+    rc_vec3 P = rc_v3(0, 0, 0);
+    double Mt = 0.0;
+    for (size_t i = 0; i < nballs; i++) {
+        int in = 0;
+        for (size_t j = 0; j < k && !in; j++)
+            in = contacts[j].a == (int)i || contacts[j].b == (int)i;
+        if (!in)
+            continue;
+        P = rc_v3_add(P, balls[i].p);
+        Mt += sqrt(balls[i].m * balls[i].m + rc_v3_norm2(balls[i].p) * inv_c2);
+    }
+    const rc_vec3 u = rc_v3_scale(1.0 / Mt, P);
+    st = RC_ENOCONVERGE; /* (a boost of finite, timelike data does not fail) */
+    for (size_t i = 0; i < nballs; i++) {
+        rc_four q = {sqrt(balls[i].m * balls[i].m + rc_v3_norm2(balls[i].p) * inv_c2), balls[i].p};
+        if (rc_boost(u, inv_c2, &q) != RC_OK)
+            goto done;
+        B[i].m = balls[i].m;
+        B[i].p = q.x;
+    }
+    for (size_t j = 0; j < k; j++) {
+        const rc_contact *c = &contacts[j];
+        const rc_particle *a = &balls[c->a], *b = &balls[c->b];
+        const double Ma = sqrt(a->m * a->m + rc_v3_norm2(a->p) * inv_c2);
+        const double Mb = sqrt(b->m * b->m + rc_v3_norm2(b->p) * inv_c2);
+        rc_four q = {rc_v3_dot(rc_v3_add(a->p, b->p), c->n) / (Ma + Mb) * inv_c2, c->n};
+        rc_four e = {c->t, c->x};
+        if (rc_boost(u, inv_c2, &q) != RC_OK || rc_boost(u, inv_c2, &e) != RC_OK)
+            goto done;
+        f[j] = rc_v3_norm(q.x);
+        if (!(f[j] > 0.0))
+            goto done;
+        C[j] = *c;
+        C[j].n = rc_v3_scale(1.0 / f[j], q.x);
+        C[j].t = e.t;
+        C[j].x = e.x;
+    }
+    st = seq ? eng_contacts_sequential(prm, nballs, B, k, C, J) : joint(1, inv_c2, nballs, B, k, C, J);
+    if (st != RC_OK)
+        goto done;
+    const rc_vec3 back = rc_v3_scale(-1.0, u);
+    for (size_t i = 0; i < nballs; i++) {
+        rc_four q = {sqrt(B[i].m * B[i].m + rc_v3_norm2(B[i].p) * inv_c2), B[i].p};
+        if (rc_boost(back, inv_c2, &q) != RC_OK) {
+            st = RC_ENOCONVERGE;
+            goto done;
+        }
+        balls[i].m = B[i].m;
+        balls[i].p = q.x;
+    }
+    /* the four-impulse J q_z in the ZMF is (J / f) q in the given frame */
+    if (jout)
+        for (size_t j = 0; j < k; j++)
+            jout[j] = J[j] / f[j];
+done:
+    free(B);
+    free(C);
+    free(f);
+    free(J);
+    return st;
 }
 
 int rc_contacts_solve(const rc_collision_params *prm, size_t nballs, rc_particle *balls,
@@ -515,12 +643,7 @@ int rc_contacts_solve(const rc_collision_params *prm, size_t nballs, rc_particle
     const int st = check_input(inv_c2, nballs, balls, k, contacts);
     if (st != RC_OK)
         return st;
-    switch (prm->groups) {
-    case RC_GROUPS_SEQUENTIAL:
-        return eng_contacts_sequential(prm, nballs, balls, k, contacts, jout);
-    case RC_GROUPS_DROP:
+    if (prm->groups == RC_GROUPS_DROP)
         return joint(0, inv_c2, nballs, balls, k, contacts, jout);
-    default:
-        return joint(1, inv_c2, nballs, balls, k, contacts, jout);
-    }
+    return in_group_zmf(prm, inv_c2, nballs, balls, k, contacts, jout);
 }
