@@ -153,6 +153,26 @@ static void test_three_balls_soft_limit(void)
            "%.3g apart\n", d3.x, d3.y, s3.x, s3.y, dist(s3, d3));
 }
 
+/* The table of papers/simultaneous-contacts.md ("Compared with the soft model"). */
+static void print_table(void)
+{
+    const double cs[6] = {INFINITY, 100, 30, 10, 3, 1.5};
+    printf("| c | dt' | simultaneous | sequential | drop | soft 1e7 | 1e9 | 1e11 | 1e13 |\n");
+    for (int i = 0; i < 6; i++) {
+        const double c = cs[i];
+        printf("| %g | %.2g |", c, three_dt(c));
+        for (int rule = 0; rule < 3; rule++) {
+            const rc_vec3 v = three_rule(rule, c, 0, 0);
+            printf(" (%.4f, %.4f) |", v.x, v.y);
+        }
+        for (int e = 7; e <= 13; e += 2) {
+            const rc_vec3 v = three_soft(c, pow(10.0, e));
+            printf(" (%.4f, %.4f) |", v.x, v.y);
+        }
+        printf("\n");
+    }
+}
+
 /* ---- hand-solved groups --------------------------------------------------------------- */
 
 /* A (m, +v) and C (m, -v) strike B (m, at rest) from both sides at once. By symmetry B
@@ -636,6 +656,7 @@ static void test_engine_option(void)
 
 int main(void)
 {
+    print_table();
     RUN_TEST(test_three_balls_soft_limit);
     RUN_TEST(test_head_on_trio);
     RUN_TEST(test_cradle);
