@@ -317,7 +317,8 @@ static int solve_perm(const rc_particle in[3], const int lab[3], int swap, doubl
     rc_particle P[3];
     for (int i = 0; i < 3; i++)
         P[lab[i]] = in[i];
-    rc_contact C[2] = {{lab[0], lab[1], n[0], eps, 0.0, {0, 0, 0}}, {lab[0], lab[2], n[1], eps, 0.0, {0, 0, 0}}};
+    rc_contact C[2] = {{lab[0], lab[1], n[0], eps, 0.0, {0, 0, 0}},
+                       {lab[0], lab[2], n[1], eps, 0.0, {0, 0, 0}}};
     if (swap) {
         rc_contact t = C[0];
         C[0] = C[1];

@@ -609,7 +609,8 @@ static int in_group_zmf(const rc_collision_params *prm, double inv_c2, size_t nb
         C[j].t = e.t;
         C[j].x = e.x;
     }
-    st = seq ? eng_contacts_sequential(prm, nballs, B, k, C, J) : joint(1, inv_c2, nballs, B, k, C, J);
+    st = seq ? eng_contacts_sequential(prm, nballs, B, k, C, J)
+             : joint(1, inv_c2, nballs, B, k, C, J);
     if (st != RC_OK)
         goto done;
     const rc_vec3 back = rc_v3_scale(-1.0, u);

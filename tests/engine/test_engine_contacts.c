@@ -64,7 +64,8 @@ static void test_collide2_closed_form(void)
             P[k] = (rc_particle){pow(s[k].r, 3), rc_v3(pow(s[k].r, 3) * s[k].v,
                                                        pow(s[k].r, 3) * s[k].w, 0)};
         for (int k = 0; k < 2; k++)
-            C[k] = (rc_contact){0, k + 1, unit(rc_v3(s[k + 1].x, s[k + 1].y, 0)), eps, 0.0, {0, 0, 0}};
+            C[k] = (rc_contact){0, k + 1, unit(rc_v3(s[k + 1].x, s[k + 1].y, 0)), eps, 0.0,
+                                {0, 0, 0}};
         double J[2];
         int st = rc_contacts_resolve(0.0, 3, P, 2, C, J);
         ENSURE(st == RC_OK);
@@ -177,7 +178,8 @@ static void test_groups_conserve_and_order(void)
                                    unit(rc_v3(rc_test_range(&R, -1, 1), rc_test_range(&R, -1, 1),
                                               rc_test_range(&R, -1, 1))),
                                    rc_test_uniform(&R), 0.0, {0, 0, 0}};
-        C[nc++] = (rc_contact){0, -1, rc_v3(-1, 0, 0), rc_test_uniform(&R), 0.0, {0, 0, 0}}; /* a wall */
+        C[nc++] = (rc_contact){0, -1, rc_v3(-1, 0, 0), rc_test_uniform(&R), 0.0,
+                               {0, 0, 0}}; /* a wall */
         rc_particle Q[6], S[6];
         for (int i = 0; i < nb; i++)
             Q[i] = P[i];
@@ -239,7 +241,8 @@ static void test_group_rest_masses(void)
     const rc_vec3 x1 = rc_v3(12.252982782684304, 55.568602895127718, 0);
     rc_particle G[2] = {{1.0, rc_v3(-0.57687298846651103, 0.55152411821159275, 0)},
                         {1.0, rc_v3(-0.91259096605624812, 0.34675320581145286, 0)}};
-    rc_contact GC[2] = {{0, 1, unit(rc_v3_sub(x1, x0)), 1.0, 0.0, {0, 0, 0}}, {1, -1, rc_v3(0, 1, 0), 1.0, 0.0, {0, 0, 0}}};
+    rc_contact GC[2] = {{0, 1, unit(rc_v3_sub(x1, x0)), 1.0, 0.0, {0, 0, 0}},
+                        {1, -1, rc_v3(0, 1, 0), 1.0, 0.0, {0, 0, 0}}};
     const double E0 = rc_mass_rel(G[0].m, G[0].p, 1.0) + rc_mass_rel(G[1].m, G[1].p, 1.0);
     ENSURE(rc_contacts_resolve(1.0, 2, G, 2, GC, NULL) == RC_OK);
     ENSURE_REL(G[0].m, 1.0, 1e-13);
@@ -264,7 +267,8 @@ static void test_group_rest_masses(void)
                                    unit(rc_v3(rc_test_range(&R, -1, 1), rc_test_range(&R, -1, 1),
                                               rc_test_range(&R, -1, 1))),
                                    elastic ? 1.0 : rc_test_uniform(&R), 0.0, {0, 0, 0}};
-        C[nc++] = (rc_contact){0, -1, rc_v3(-1, 0, 0), elastic ? 1.0 : rc_test_uniform(&R), 0.0, {0, 0, 0}};
+        C[nc++] = (rc_contact){0, -1, rc_v3(-1, 0, 0), elastic ? 1.0 : rc_test_uniform(&R), 0.0,
+                               {0, 0, 0}};
         const int st = rc_contacts_resolve(k, (size_t)nb, Q, (size_t)nc, C, NULL);
         /* an elastic group always has its outcome (the targets are the rest masses, below
          * the invariant mass); an inelastic one may have none */
@@ -303,7 +307,8 @@ static void test_corner(void)
                          rc_v3(rc_test_range(&R, 0.1, 4), rc_test_range(&R, 0.1, 4),
                                dim == 3 ? rc_test_range(&R, 0.1, 4) : 0.0)};
         rc_particle Q = P;
-        rc_contact C[3] = {{0, -1, rc_v3(1, 0, 0), eps, 0.0, {0, 0, 0}}, {0, -1, rc_v3(0, 1, 0), eps, 0.0, {0, 0, 0}},
+        rc_contact C[3] = {{0, -1, rc_v3(1, 0, 0), eps, 0.0, {0, 0, 0}},
+                           {0, -1, rc_v3(0, 1, 0), eps, 0.0, {0, 0, 0}},
                            {0, -1, rc_v3(0, 0, 1), eps, 0.0, {0, 0, 0}}};
         ENSURE(rc_contacts_resolve(k, 1, &Q, (size_t)dim, C, NULL) == RC_OK);
         /* (the impulses come from one LU solve of the identity system, then a subtraction:
@@ -328,7 +333,8 @@ static void test_classical_limit(void)
 {
     rc_particle P0[3] = {{1.0, rc_v3(1.0, 0.2, 0)}, {2.0, rc_v3(-0.3, 0.1, 0)},
                          {1.5, rc_v3(0.2, -0.4, 0)}};
-    rc_contact C[2] = {{0, 1, unit(rc_v3(1, 0.3, 0)), 0.7, 0.0, {0, 0, 0}}, {0, 2, unit(rc_v3(0.8, -0.9, 0)), 0.4, 0.0, {0, 0, 0}}};
+    rc_contact C[2] = {{0, 1, unit(rc_v3(1, 0.3, 0)), 0.7, 0.0, {0, 0, 0}},
+                       {0, 2, unit(rc_v3(0.8, -0.9, 0)), 0.4, 0.0, {0, 0, 0}}};
     rc_particle cl[3] = {P0[0], P0[1], P0[2]};
     ENSURE(rc_contacts_resolve(0.0, 3, cl, 2, C, NULL) == RC_OK);
     double prev = INFINITY;

@@ -43,9 +43,10 @@ typedef struct rc_collision_params {
 typedef enum rc_group_rule {
     /* all impulses together: J >= 0 on every contact, each contact with J > 0 meets its
      * restitution condition, each with J = 0 leaves no more approaching than restitution
-     * allows (a complementarity problem, solved by principal pivoting around Newton);
-     * relativistically then the rest-mass step. The default: where no impulse pulls it is
-     * today's drop rule to the bit. */
+     * allows (a complementarity problem, solved by principal pivoting around Newton) in
+     * the group's zero-momentum frame; relativistically then the rest-mass step. The
+     * default: classically, and with a wall, it has the drop rule's bits where no impulse
+     * pulls. */
     RC_GROUPS_SIMULTANEOUS = 0,
     /* the contacts one after another in the order of their events' times in the group's
      * zero-momentum frame (a group with a wall: the wall's rest frame), each by the law's

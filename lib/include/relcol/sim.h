@@ -311,7 +311,11 @@ int rc_contacts_resolve(double inv_c2, size_t nballs, rc_particle *balls, size_t
 
 /* The zmf law's group solver with the rule prm->groups (relcol/law.h, rc_group_rule;
  * prm->c the speed of light, prm->eps not used): RC_GROUPS_DROP is rc_contacts_resolve
- * above; RC_GROUPS_SIMULTANEOUS replaces its dropping by principal pivoting, so that on
+ * above, in the frame of the given states. The other two rules run in the group's
+ * zero-momentum frame (states, normals as their four-vectors q and events boosted there and
+ * back; with a wall, or classically, in the given frame), so that their outcome does not
+ * depend on the frame the states are given in. RC_GROUPS_SIMULTANEOUS replaces the
+ * dropping by principal pivoting, so that on
  * return every impulse jout[j] >= 0, a contact with an impulse meets its restitution
  * condition and one without approaches no more than restitution allows (to round-off,
  * before the rest-mass step, which moves them by O((v/c)^2)); RC_GROUPS_SEQUENTIAL
