@@ -24,7 +24,7 @@ const rc_law *rc_law_find(const char *name)
 
 rc_collision_params rc_collision_params_default(void)
 {
-    rc_collision_params p = {INFINITY, 1.0, NAN, 0.0};
+    rc_collision_params p = {INFINITY, 1.0, NAN, 0.0, RC_GROUPS_SIMULTANEOUS};
     return p;
 }
 
@@ -63,6 +63,35 @@ static int check_pair(const rc_particle *a, const rc_particle *b, rc_vec3 *n, do
         return RC_EZERONORMAL;
     *n = rc_v3_unit(*n, len);
     return RC_OK;
+}
+
+/* The group rules by their enum value (relcol/law.h). */
+static const struct {
+    const char *name, *summary;
+} group_rules[] = {
+    {"simultaneous", "all impulses together, none pulling (complementarity); default"},
+    {"sequential", "one contact after another in the order of the group's ZMF times"},
+    {"drop", "joint solve; the most pulling contact dropped until none pulls, not re-checked"},
+};
+
+const char *rc_group_rule_name(int rule)
+{
+    return rule >= 0 && rule < (int)(sizeof group_rules / sizeof *group_rules)
+               ? group_rules[rule].name
+               : NULL;
+}
+
+const char *rc_group_rule_summary(int rule)
+{
+    return rc_group_rule_name(rule) ? group_rules[rule].summary : NULL;
+}
+
+int rc_group_rule_find(const char *name)
+{
+    for (int r = 0; name && rc_group_rule_name(r); r++)
+        if (strcmp(group_rules[r].name, name) == 0)
+            return r;
+    return -1;
 }
 
 int rc_collide(const rc_law *law, const rc_collision_params *prm, rc_particle *a,

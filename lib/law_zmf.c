@@ -37,12 +37,12 @@ static int zmf_collide(const rc_collision_params *prm, rc_particle *a, rc_partic
     return RC_OK;
 }
 
-/* The group solver: the same restitution condition on every contact, solved together
- * (lib/engine/contacts.c). */
+/* The group solver: the same restitution condition on every contact, by the rule
+ * prm->groups (lib/engine/contacts.c). */
 static int zmf_group(const rc_collision_params *prm, size_t nballs, rc_particle *balls,
                      size_t k, const rc_contact *contacts, double *jout)
 {
-    return rc_contacts_resolve(rc_inv_c2_of(prm->c), nballs, balls, k, contacts, jout);
+    return rc_contacts_solve(prm, nballs, balls, k, contacts, jout);
 }
 
 const rc_law rc_law_zmf = {

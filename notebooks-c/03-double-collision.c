@@ -94,7 +94,7 @@ static int engine2(const Ball b[3], double eps, double inv_c2, double vout[3][2]
     rc_contact C[2];
     for (int k = 0; k < 2; k++) {
         rc_vec3 d = rc_v3(b[k + 1].x - b[0].x, b[k + 1].y - b[0].y, 0);
-        C[k] = (rc_contact){0, k + 1, rc_v3_scale(1 / rc_v3_norm(d), d), eps};
+        C[k] = (rc_contact){0, k + 1, rc_v3_scale(1 / rc_v3_norm(d), d), eps, 0.0, {0, 0, 0}};
     }
     int st = rc_contacts_resolve(inv_c2, 3, P, 2, C, J);
     for (int i = 0; i < 3; i++) {
@@ -320,7 +320,8 @@ static int solve_perm(const rc_particle in[3], const int lab[3], int swap, doubl
     rc_particle P[3];
     for (int i = 0; i < 3; i++)
         P[lab[i]] = in[i];
-    rc_contact C[2] = {{lab[0], lab[1], n[0], eps}, {lab[0], lab[2], n[1], eps}};
+    rc_contact C[2] = {{lab[0], lab[1], n[0], eps, 0.0, {0, 0, 0}},
+                       {lab[0], lab[2], n[1], eps, 0.0, {0, 0, 0}}};
     if (swap) {
         rc_contact t = C[0];
         C[0] = C[1];

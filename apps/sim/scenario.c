@@ -555,7 +555,8 @@ int scn_parse_ext(const char *text, const char *name, const scn_tables *extra,
                   scn_scenario *s, char *err)
 {
     static const char *const keys[] = {"relcol", "dim", "box", "boundary", "c", "law",
-                                       "restitution", "contact_frame", "tc", "seed", "time",
+                                       "restitution", "contact_frame", "groups", "tc", "seed",
+                                       "time",
                                        "t_end", "restart", "checkpoint", "balls", "generate",
                                        "outputs", NULL};
     memset(s, 0, sizeof *s);
@@ -655,6 +656,18 @@ int scn_parse_ext(const char *text, const char *name, const scn_tables *extra,
         char list[256];
         bad(&c, "contact_frame", "unknown frame '%s' (expected %s)", frame,
             name_list(extra, 1, list, sizeof list));
+        goto done;
+    }
+    const char *groups = NULL;
+    if (get_str(&c, root, "", "groups", "simultaneous", &groups))
+        goto done;
+    if ((s->groups = rc_group_rule_find(groups)) < 0) {
+        char list[128] = "";
+        for (int r = 0; rc_group_rule_name(r); r++)
+            snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s", r ? ", " : "",
+                     rc_group_rule_name(r));
+        bad(&c, "groups", "unknown rule for simultaneous contacts '%s' (expected %s)", groups,
+            list);
         goto done;
     }
     if (get_num(&c, root, "", "tc", 0, 0, 0, &s->t_c) || get_num(&c, root, "", "seed", 0, 1, 0, &seed) ||
@@ -816,6 +829,7 @@ rc_sim_def scn_sim_def(const scn_scenario *s)
     def.law = s->law;
     def.restart = s->restart;
     def.frame = s->frame;
+    def.groups = s->groups;
     for (int d = 0; d < 3; d++)
         def.boundary[d] = s->boundary[d];
     return def;

@@ -35,6 +35,7 @@ typedef struct scn_scenario {
     const rc_law *law;
     double eps_ball, eps_wall;
     const rc_toi_frame *frame; /* contact frame (the library's or the caller's table) */
+    int groups;                /* rule for simultaneous contacts (rc_group_rule) */
     double t_c;                /* TC model, proper time; 0 off */
     uint64_t seed;
     double time;               /* start time (a restart carries the time it stopped at) */

@@ -75,8 +75,8 @@ int scn_write(FILE *f, const scn_scenario *s, double t, double t_end, size_t n,
         fprintf(f, ",\n \"c\": %.17g", s->c);
     fprintf(f, ", \"law\": \"%s\", \"restitution\": {\"ball\": %.17g, \"wall\": %.17g},\n",
             s->law->name, s->eps_ball, s->eps_wall);
-    fprintf(f, " \"contact_frame\": \"%s\", \"tc\": %.17g, \"seed\": %llu,\n", s->frame->name, s->t_c,
-            (unsigned long long)s->seed);
+    fprintf(f, " \"contact_frame\": \"%s\", \"groups\": \"%s\", \"tc\": %.17g, \"seed\": %llu,\n",
+            s->frame->name, rc_group_rule_name(s->groups), s->t_c, (unsigned long long)s->seed);
     fprintf(f, " \"time\": %.17g, \"t_end\": %.17g, \"restart\": true,\n", t, t_end);
     if (s->checkpoint) {
         fprintf(f, " \"checkpoint\": ");

@@ -56,6 +56,9 @@ static void usage(FILE *f)
 "exit status: 0 done; 2 bad scenario or option (one line naming the JSON path and the\n"
 "reason); 1 run or I/O failure; 3 simulated time stands still (the balls and the time\n"
 "named, the state written); 130 interrupted (restart state written).\n");
+    fprintf(f, "\nSimultaneous contacts (scenario key \"groups\"; found in the table frame):\n");
+    for (int r = 0; rc_group_rule_name(r); r++)
+        fprintf(f, "  %-13s %s\n", rc_group_rule_name(r), rc_group_rule_summary(r));
 }
 
 /* "relcol-sim: message" on stderr, returning the exit status code */

@@ -97,6 +97,10 @@ static uint64_t def_print(const rc_sim *s)
     h = fnv_bytes(h, &it, sizeof it);
     h = fnv_double(h, d->sim_tol);
     h = fnv_double(h, d->approach_tol);
+    if (d->groups != RC_GROUPS_SIMULTANEOUS) { /* (the default leaves the print as it was) */
+        const int32_t g = (int32_t)d->groups;
+        h = fnv_bytes(h, &g, sizeof g);
+    }
     h = fnv_double(h, d->overlap_tol);
     h = fnv_double(h, d->cell_size);
     h = fnv_double(h, d->density);

@@ -1,7 +1,10 @@
-/* engine/contacts.c — simultaneous contacts resolved together, independent of their order
- * (papers/simultaneous-contacts.md): one four-impulse J_j q_j per contact, the J_j found
- * by Newton's method on the k restitution conditions of the zmf law (a k x k linear
- * system each step, solved by LU); classically the conditions are linear and one step is exact. */
+/* engine/contacts.c — simultaneous contacts resolved together (papers/simultaneous-contacts.md):
+ * one four-impulse J_j q_j per contact, the J_j found by Newton's method on the restitution
+ * conditions of the zmf law of the contacts that push (a k x k linear system each step,
+ * solved by LU; classically the conditions are linear and one step is exact), the set of
+ * pushing contacts found by principal pivoting (the `simultaneous` rule) or by dropping the
+ * most pulling one (the `drop` rule); rc_contacts_solve also dispatches the `sequential`
+ * rule (contacts_seq.c). */
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
@@ -10,6 +13,7 @@
 #include "relcol/kinematics.h"
 #include "relcol/sim.h"
 #include "relcol/status.h"
+#include "contacts.h"
 
 /* Newton stops when every step is below this fraction of the largest impulse or ball
  * momentum (relative, a few ulps above the round-off floor of the residuals, which are
@@ -20,6 +24,15 @@
 /* A pivot smaller than this fraction of the largest diagonal entry means the contact
  * normals are linearly dependent: the impulses are not unique (RC_ENOCONVERGE). */
 #define PIVOT_REL_TOL 1e-13
+/* Complementarity is violated by an impulse below -CP_REL_TOL times the largest impulse or
+ * ball momentum, or by a contact without impulse whose post-group approach exceeds what
+ * restitution allows by more than CP_REL_TOL times the largest ball momentum: far above
+ * the round-off of Newton's converged impulses (NEWTON_REL_TOL), so that a contact whose
+ * exact impulse is 0 does not flip for ever on round-off. */
+#define CP_REL_TOL 1e-12
+/* Principal pivots allowed (Murty's least-index rule ends in finitely many for the
+ * positive definite classical matrix; a handful for the groups an engine meets). */
+#define CP_MAX_PIVOTS(k) (16 + 8 * (k))
 
 typedef struct cwork {
     size_t k;
@@ -28,7 +41,8 @@ typedef struct cwork {
     const rc_particle *b0; /* states before the group */
     const double *M0;
     double *qt;            /* time component of q_j: u_j.n_j / c^2 (0 for walls) */
-    double *a0;            /* pre-group ZMF-normal approach of each contact */
+    double *a0;            /* pre-group ZMF-normal approach of each contact, floored at 0
+                              (a receding contact may at most stop receding) */
     double *Mp;            /* post states for the current J */
     rc_vec3 *pp;
 } cwork;
@@ -151,8 +165,9 @@ static void lu_solve(const double *LU, size_t m, const size_t *piv, double *x)
 }
 
 /* Newton on the active contacts; J of inactive ones stays 0. */
+/* Newton from J = 0, or from start (k entries, those of the active contacts read). */
 static int newton(cwork *w, size_t nb, double *J, double *A, double *rhs, size_t *idx,
-                  size_t *piv)
+                  size_t *piv, const double *start)
 {
     double pscale = 0.0;
     for (size_t i = 0; i < nb; i++)
@@ -160,8 +175,11 @@ static int newton(cwork *w, size_t nb, double *J, double *A, double *rhs, size_t
     size_t m = 0;
     for (size_t j = 0; j < w->k; j++) {
         J[j] = 0.0;
-        if (w->active[j])
+        if (w->active[j]) {
             idx[m++] = j;
+            if (start)
+                J[j] = start[j];
+        }
     }
     if (m == 0)
         return RC_OK;
@@ -306,8 +324,9 @@ static int keep_rest_masses(double inv_c2, size_t nb, const rc_particle *b0, siz
     return RC_OK;
 }
 
-int rc_contacts_resolve(double inv_c2, size_t nballs, rc_particle *balls, size_t k,
-                        const rc_contact *contacts, double *jout)
+/* Validation shared by the entry points. */
+static int check_input(double inv_c2, size_t nballs, const rc_particle *balls, size_t k,
+                       const rc_contact *contacts)
 {
     if (!balls || (!contacts && k) || !(inv_c2 >= 0.0) || isinf(inv_c2))
         return RC_EINVAL;
@@ -328,6 +347,55 @@ int rc_contacts_resolve(double inv_c2, size_t nballs, rc_particle *balls, size_t
         if (!(c->eps >= 0.0 && c->eps <= 1.0))
             return RC_ERESTITUTION;
     }
+    return RC_OK;
+}
+
+/* Whether an active contact's impulse pulls (beyond round-off). */
+static int pulls(const cwork *w, const double *J)
+{
+    double pscale = 0.0, jmax = 0.0;
+    for (size_t j = 0; j < w->k; j++)
+        jmax = fmax(jmax, fabs(J[j]));
+    for (size_t i = 0; i < w->k; i++) {
+        pscale = fmax(pscale, rc_v3_norm(w->b0[w->c[i].a].p));
+        if (w->c[i].b >= 0)
+            pscale = fmax(pscale, rc_v3_norm(w->b0[w->c[i].b].p));
+    }
+    for (size_t j = 0; j < w->k; j++)
+        if (w->active[j] && J[j] < -CP_REL_TOL * (jmax + pscale))
+            return 1;
+    return 0;
+}
+
+/* The first contact that violates complementarity at J (post states current), k if none:
+ * an active contact that pulls, or an inactive one approaching beyond its restitution. */
+static size_t first_violation(const cwork *w, size_t nb, const double *J)
+{
+    double pscale = 0.0, jmax = 0.0;
+    for (size_t i = 0; i < nb; i++)
+        pscale = fmax(pscale, rc_v3_norm(w->b0[i].p));
+    for (size_t j = 0; j < w->k; j++)
+        jmax = fmax(jmax, fabs(J[j]));
+    for (size_t j = 0; j < w->k; j++) {
+        if (w->active[j]) {
+            if (J[j] < -CP_REL_TOL * (jmax + pscale))
+                return j;
+            continue;
+        }
+        const rc_contact *c = &w->c[j];
+        /* residual / (M_a' + M_b'): post approach plus eps times the pre-group one */
+        const double g = c->b < 0 ? residual(w, j) : residual(w, j) / (w->Mp[c->a] + w->Mp[c->b]);
+        if (g > CP_REL_TOL * pscale)
+            return j;
+    }
+    return w->k;
+}
+
+/* The joint solve: pivot = 1 the simultaneous rule (principal pivoting until the impulses
+ * are complementary), 0 the drop rule. Input validated. */
+static int joint(int pivot, double inv_c2, size_t nballs, rc_particle *balls, size_t k,
+                 const rc_contact *contacts, double *jout)
+{
     if (k == 0)
         return RC_OK;
 
@@ -342,7 +410,11 @@ int rc_contacts_resolve(double inv_c2, size_t nballs, rc_particle *balls, size_t
     size_t *idx = malloc(k * sizeof *idx);
     int *active = malloc(k * sizeof *active);
     size_t *piv = malloc(k * sizeof *piv);
-    if (!M0 || !Mp || !pp || !qt || !a0 || !J || !A || !rhs || !idx || !active || !piv)
+    /* the simultaneous rule's second start: zero energy parts, its root, the Newton run */
+    double *qz = pivot ? calloc(k, sizeof *qz) : NULL;
+    double *Jg = pivot ? malloc(k * sizeof *Jg) : NULL, *Jt = pivot ? malloc(k * sizeof *Jt) : NULL;
+    if (!M0 || !Mp || !pp || !qt || !a0 || !J || !A || !rhs || !idx || !active || !piv ||
+        (pivot && (!qz || !Jg || !Jt)))
         goto done;
 
     for (size_t i = 0; i < nballs; i++)
@@ -358,22 +430,60 @@ int rc_contacts_resolve(double inv_c2, size_t nballs, rc_particle *balls, size_t
             qt[j] = (pan + pbn) / Mt * inv_c2;
             a0[j] = (M0[c->b] * pan - M0[c->a] * pbn) / Mt;
         }
-        /* a contact that is not approaching takes no impulse */
+        /* a contact that is not approaching takes no impulse to begin with */
         active[j] = a0[j] > 0.0;
+        if (!active[j])
+            a0[j] = 0.0;
     }
     cwork w = {k, contacts, active, balls, M0, qt, a0, Mp, pp};
-    /* Active set: solve, drop the most pulling contact, repeat (at most k times). */
-    for (;;) {
-        st = newton(&w, nballs, J, A, rhs, idx, piv);
-        if (st != RC_OK)
-            goto done;
-        size_t worst = k;
-        for (size_t j = 0; j < k; j++)
-            if (active[j] && J[j] < 0.0 && (worst == k || J[j] < J[worst]))
-                worst = j;
-        if (worst == k)
-            break;
-        active[worst] = 0;
+    if (pivot) {
+        /* Murty's least-index principal pivoting: solve on the active set, then flip the
+         * first contact that violates complementarity (a pulling one leaves, one that
+         * would approach beyond its restitution joins), until none does. From the
+         * approaching contacts: where none pulls, the first solve is the answer. */
+        for (size_t np = 0;; np++) {
+            st = newton(&w, nballs, J, A, rhs, idx, piv, NULL);
+            if (st != RC_OK)
+                goto done;
+            if (inv_c2 != 0.0 && pulls(&w, J)) {
+                /* At finite c the conditions are quadratic in J, and from J = 0 Newton can
+                 * reach a root that pulls while one that pushes exists (fast symmetric
+                 * groups: the middle ball of a head-on trio gains energy from both
+                 * contacts). Try again from the root of the conditions with each ball's
+                 * energy frozen (linear: one step), which is near the pushing one. */
+                double *qsave = w.qt;
+                w.qt = qz;
+                int s2 = newton(&w, nballs, Jg, A, rhs, idx, piv, NULL);
+                w.qt = qsave;
+                if (s2 == RC_OK && !pulls(&w, Jg) &&
+                    newton(&w, nballs, Jt, A, rhs, idx, piv, Jg) == RC_OK && !pulls(&w, Jt))
+                    for (size_t j = 0; j < k; j++)
+                        J[j] = Jt[j];
+            }
+            post_states(&w, nballs, J);
+            const size_t flip = first_violation(&w, nballs, J);
+            if (flip == k)
+                break;
+            if (np == CP_MAX_PIVOTS(k)) {
+                st = RC_ENOCONVERGE;
+                goto done;
+            }
+            active[flip] = !active[flip];
+        }
+    } else {
+        /* Active set: solve, drop the most pulling contact, repeat (at most k times). */
+        for (;;) {
+            st = newton(&w, nballs, J, A, rhs, idx, piv, NULL);
+            if (st != RC_OK)
+                goto done;
+            size_t worst = k;
+            for (size_t j = 0; j < k; j++)
+                if (active[j] && J[j] < 0.0 && (worst == k || J[j] < J[worst]))
+                    worst = j;
+            if (worst == k)
+                break;
+            active[worst] = 0;
+        }
     }
     post_states(&w, nballs, J);
     size_t nactive = 0;
@@ -426,5 +536,115 @@ done:
     free(idx);
     free(active);
     free(piv);
+    free(qz);
+    free(Jg);
+    free(Jt);
     return st;
+}
+
+int rc_contacts_resolve(double inv_c2, size_t nballs, rc_particle *balls, size_t k,
+                        const rc_contact *contacts, double *jout)
+{
+    const int st = check_input(inv_c2, nballs, balls, k, contacts);
+    return st != RC_OK ? st : joint(0, inv_c2, nballs, balls, k, contacts, jout);
+}
+
+/* A rule run in the group's zero-momentum frame (of the balls in its contacts), so that
+ * its outcome does not depend on the frame the states are given in: states boosted there,
+ * each normal as its four-vector q = (u.n/c^2, n) (orthogonal to its pair's momentum, so
+ * that the zmf law's own covariance carries over), each event as an event; the outcome
+ * boosted back, the impulses rescaled to the given normals. A group with a wall stays in
+ * the wall's rest frame, the given one (an infinite mass at rest is its ZMF); so does a
+ * classical group, whose rules are Galilean invariant. */
+static int in_group_zmf(const rc_collision_params *prm, double inv_c2, size_t nballs,
+                        rc_particle *balls, size_t k, const rc_contact *contacts, double *jout)
+{
+    const int seq = prm->groups == RC_GROUPS_SEQUENTIAL;
+    int wall = 0;
+    for (size_t j = 0; j < k; j++)
+        wall |= contacts[j].b < 0;
+    if (inv_c2 == 0.0 || wall || k == 0)
+        return seq ? eng_contacts_sequential(prm, nballs, balls, k, contacts, jout)
+                   : joint(1, inv_c2, nballs, balls, k, contacts, jout);
+    int st = RC_ENOMEM;
+    rc_particle *B = malloc(nballs * sizeof *B);
+    rc_contact *C = malloc(k * sizeof *C);
+    double *f = malloc(k * sizeof *f), *J = malloc(k * sizeof *J);
+    if (!B || !C || !f || !J)
+        goto done;
+    rc_vec3 P = rc_v3(0, 0, 0);
+    double Mt = 0.0;
+    for (size_t i = 0; i < nballs; i++) {
+        int in = 0;
+        for (size_t j = 0; j < k && !in; j++)
+            in = contacts[j].a == (int)i || contacts[j].b == (int)i;
+        if (!in)
+            continue;
+        P = rc_v3_add(P, balls[i].p);
+        Mt += sqrt(balls[i].m * balls[i].m + rc_v3_norm2(balls[i].p) * inv_c2);
+    }
+    const rc_vec3 u = rc_v3_scale(1.0 / Mt, P);
+    st = RC_ENOCONVERGE; /* (a boost of finite, timelike data does not fail) */
+    for (size_t i = 0; i < nballs; i++) {
+        rc_four q = {sqrt(balls[i].m * balls[i].m + rc_v3_norm2(balls[i].p) * inv_c2), balls[i].p};
+        if (rc_boost(u, inv_c2, &q) != RC_OK)
+            goto done;
+        B[i].m = balls[i].m;
+        B[i].p = q.x;
+    }
+    for (size_t j = 0; j < k; j++) {
+        const rc_contact *c = &contacts[j];
+        const rc_particle *a = &balls[c->a], *b = &balls[c->b];
+        const double Ma = sqrt(a->m * a->m + rc_v3_norm2(a->p) * inv_c2);
+        const double Mb = sqrt(b->m * b->m + rc_v3_norm2(b->p) * inv_c2);
+        rc_four q = {rc_v3_dot(rc_v3_add(a->p, b->p), c->n) / (Ma + Mb) * inv_c2, c->n};
+        rc_four e = {c->t, c->x};
+        if (rc_boost(u, inv_c2, &q) != RC_OK || rc_boost(u, inv_c2, &e) != RC_OK)
+            goto done;
+        f[j] = rc_v3_norm(q.x);
+        if (!(f[j] > 0.0))
+            goto done;
+        C[j] = *c;
+        C[j].n = rc_v3_scale(1.0 / f[j], q.x);
+        C[j].t = e.t;
+        C[j].x = e.x;
+    }
+    st = seq ? eng_contacts_sequential(prm, nballs, B, k, C, J)
+             : joint(1, inv_c2, nballs, B, k, C, J);
+    if (st != RC_OK)
+        goto done;
+    const rc_vec3 back = rc_v3_scale(-1.0, u);
+    for (size_t i = 0; i < nballs; i++) {
+        rc_four q = {sqrt(B[i].m * B[i].m + rc_v3_norm2(B[i].p) * inv_c2), B[i].p};
+        if (rc_boost(back, inv_c2, &q) != RC_OK) {
+            st = RC_ENOCONVERGE;
+            goto done;
+        }
+        balls[i].m = B[i].m;
+        balls[i].p = q.x;
+    }
+    /* the four-impulse J q_z in the ZMF is (J / f) q in the given frame */
+    if (jout)
+        for (size_t j = 0; j < k; j++)
+            jout[j] = J[j] / f[j];
+done:
+    free(B);
+    free(C);
+    free(f);
+    free(J);
+    return st;
+}
+
+int rc_contacts_solve(const rc_collision_params *prm, size_t nballs, rc_particle *balls,
+                      size_t k, const rc_contact *contacts, double *jout)
+{
+    double inv_c2;
+    if (!prm || rc_inv_c2(prm->c, &inv_c2) != RC_OK || !rc_group_rule_name(prm->groups))
+        return RC_EINVAL;
+    const int st = check_input(inv_c2, nballs, balls, k, contacts);
+    if (st != RC_OK)
+        return st;
+    if (prm->groups == RC_GROUPS_DROP)
+        return joint(0, inv_c2, nballs, balls, k, contacts, jout);
+    return in_group_zmf(prm, inv_c2, nballs, balls, k, contacts, jout);
 }

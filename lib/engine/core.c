@@ -80,6 +80,11 @@ static int add_contact(rc_sim *s, size_t *nc, int a, int b, rc_vec3 n)
     c->b = b;
     c->n = n;
     c->eps = 0.0;
+    /* the event, for a rule that orders the contacts (members are at the group's time):
+     * the point at ball a's rest radius along n (on a periodic axis a's own image) */
+    const eng_ball *ba = &s->b[s->grp_ball[a]];
+    c->t = ba->t;
+    c->x = rc_v3_axpy(ba->x, ba->r, n);
     return RC_OK;
 }
 

@@ -28,6 +28,7 @@ rc_sim_def rc_sim_def_default(void)
     d.toi = rc_toi_params_default();
     d.toi.c = NAN; /* the engine's c */
     d.sim_tol = 1e-9;
+    d.groups = RC_GROUPS_SIMULTANEOUS;
     d.approach_tol = 1e-10;
     d.overlap_tol = 1e-9;
     d.cell_size = 0.0;
@@ -53,6 +54,8 @@ static int check_def(const rc_sim_def *d)
     if (!(d->t_c >= 0.0 && d->sim_tol >= 0.0 && d->sim_tol < 1e-3 && d->approach_tol >= 0.0 &&
           d->approach_tol < 1e-3 && d->overlap_tol >= 0.0 && d->cell_size >= 0.0 &&
           d->density > 0.0))
+        return RC_EINVAL;
+    if (!rc_group_rule_name(d->groups))
         return RC_EINVAL;
     if (!d->law || !d->law->collide)
         return RC_EINVAL;
@@ -140,6 +143,7 @@ int rc_sim_create(const rc_sim_def *def, rc_sim **out)
     }
     s->prm = rc_collision_params_default();
     s->prm.c = def->c;
+    s->prm.groups = def->groups;
     s->toi = def->toi;
     s->toi.c = def->c;
     s->simd = choose_simd(def->simd);

@@ -32,6 +32,8 @@ typedef struct rc_law {
 extern const rc_law *const rc_laws[];
 const rc_law *rc_law_find(const char *name);
 rc_collision_params rc_collision_params_default(void);
+const char *rc_group_rule_name(int rule);
+int rc_group_rule_find(const char *name);
 int rc_collide_many(const rc_law *law, const rc_collision_params *prm, size_t n_pairs,
                     double *m0, rc_vec3 *p0, double *m1, rc_vec3 *p1, const rc_vec3 *n,
                     int *status, size_t *hits, size_t *bad);
@@ -83,7 +85,7 @@ typedef struct rc_sim_def {
     int dim; rc_vec3 box; double c; double eps_ball; double eps_wall; double t_c;
     const rc_law *law; const rc_toi_frame *frame; rc_toi_params toi; double sim_tol;
     double approach_tol; double overlap_tol; double cell_size; double density; int restart;
-    int boundary[3]; ...;
+    int boundary[3]; int groups; ...;
 } rc_sim_def;
 typedef struct rc_sim_ball {
     rc_vec3 x; rc_vec3 p; double r; double m; double tau; int collided; double tau_last;

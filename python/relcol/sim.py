@@ -3,7 +3,7 @@ the JSON object relcol-sim reads (apps/sim/SCENARIO.md), as a dict or a file -- 
 steps to a time; its state and diagnostics come back as numpy arrays and a dict.
 
 The scenario keys are relcol-sim's: relcol, dim, box, boundary, c, law, restitution,
-contact_frame, tc, seed, time, t_end, restart, balls, generate (rack, gas) and outputs
+contact_frame, groups, tc, seed, time, t_end, restart, balls, generate (rack, gas) and outputs
 (accepted and ignored: a Sim writes no files). `balls` may also be a dict of arrays,
 {"x": (N, dim), "v" or "p": (N, dim), "r": (N,) or scalar, "m": (N,) or scalar (default
 r^3), "tau": (N,), "tau_last": (N,) (NaN: no collision yet), "image": (N, dim)}, which is
@@ -23,7 +23,7 @@ from .kinematics import momentum
 from .laws import find_law
 from .toi import find_frame
 
-_KEYS = {"relcol", "dim", "box", "boundary", "c", "law", "restitution", "contact_frame",
+_KEYS = {"relcol", "dim", "box", "boundary", "c", "law", "restitution", "contact_frame", "groups",
          "tc", "seed", "time", "t_end", "restart", "checkpoint", "balls", "generate",
          "outputs"}
 _EVENTS = ("ball", "wall", "group", "cell", "stale", "tc")
@@ -136,6 +136,12 @@ class Sim:
         d.c = c
         d.law = find_law(s.get("law", "zmf"))
         d.frame = find_frame(s.get("contact_frame", "table"))
+        rule = s.get("groups", "simultaneous")
+        g = lib.rc_group_rule_find(rule.encode() if isinstance(rule, str) else b"")
+        if g < 0:
+            raise ValueError("groups: unknown rule for simultaneous contacts %r (expected "
+                             "simultaneous, sequential, drop)" % (rule,))
+        d.groups = g
         rest = s.get("restitution", {})
         d.eps_ball = _num(rest.get("ball", 1.0), "restitution.ball")
         d.eps_wall = _num(rest.get("wall", 1.0), "restitution.wall")

@@ -64,7 +64,8 @@ static void test_collide2_closed_form(void)
             P[k] = (rc_particle){pow(s[k].r, 3), rc_v3(pow(s[k].r, 3) * s[k].v,
                                                        pow(s[k].r, 3) * s[k].w, 0)};
         for (int k = 0; k < 2; k++)
-            C[k] = (rc_contact){0, k + 1, unit(rc_v3(s[k + 1].x, s[k + 1].y, 0)), eps};
+            C[k] = (rc_contact){0, k + 1, unit(rc_v3(s[k + 1].x, s[k + 1].y, 0)), eps, 0.0,
+                                {0, 0, 0}};
         double J[2];
         int st = rc_contacts_resolve(0.0, 3, P, 2, C, J);
         ENSURE(st == RC_OK);
@@ -99,8 +100,8 @@ static void test_straight_back(void)
                                 {1.0, rc_v3(0, 0, 0)}};
             rc_momentum_from_velocity(1.0, rc_v3(0.9, 0, 0), k, &P[0].p);
             /* balls of radius 1 at (2 cos 30, +-1): contact normals at +-30 degrees */
-            rc_contact C[2] = {{0, 1, rc_v3(cos(M_PI / 6), sin(M_PI / 6), 0), eps},
-                               {0, 2, rc_v3(cos(M_PI / 6), -sin(M_PI / 6), 0), eps}};
+            rc_contact C[2] = {{0, 1, rc_v3(cos(M_PI / 6), sin(M_PI / 6), 0), eps, 0.0, {0, 0, 0}},
+                               {0, 2, rc_v3(cos(M_PI / 6), -sin(M_PI / 6), 0), eps, 0.0, {0, 0, 0}}};
             double J[2];
             ENSURE(rc_contacts_resolve(k, 3, P, 2, C, J) == RC_OK);
             /* the two y impulses are equal and opposite: zero up to LU round-off */
@@ -136,7 +137,7 @@ static void test_single_is_zmf_law(void)
         prm.eps = eps;
         rc_particle la = a, lb = b, P[2] = {a, b};
         int st = rc_law_zmf.collide(&prm, &la, &lb, n);
-        rc_contact C = {0, 1, n, eps};
+        rc_contact C = {0, 1, n, eps, 0.0, {0, 0, 0}};
         ENSURE(rc_contacts_resolve(k, 2, P, 1, &C, NULL) == RC_OK);
         if (st != RC_OK)
             continue; /* separating: the solver leaves them (checked below) */
@@ -150,7 +151,7 @@ static void test_single_is_zmf_law(void)
     }
     /* separating pair: nothing happens */
     rc_particle P[2] = {{1, rc_v3(-1, 0, 0)}, {1, rc_v3(1, 0, 0)}};
-    rc_contact C = {0, 1, rc_v3(1, 0, 0), 0.5};
+    rc_contact C = {0, 1, rc_v3(1, 0, 0), 0.5, 0.0, {0, 0, 0}};
     ENSURE(rc_contacts_resolve(0.25, 2, P, 1, &C, NULL) == RC_OK);
     ENSURE(P[0].p.x == -1.0 && P[1].p.x == 1.0);
 }
@@ -176,8 +177,9 @@ static void test_groups_conserve_and_order(void)
             C[nc++] = (rc_contact){(int)(rc_test_uniform(&R) * i), i,
                                    unit(rc_v3(rc_test_range(&R, -1, 1), rc_test_range(&R, -1, 1),
                                               rc_test_range(&R, -1, 1))),
-                                   rc_test_uniform(&R)};
-        C[nc++] = (rc_contact){0, -1, rc_v3(-1, 0, 0), rc_test_uniform(&R)}; /* a wall */
+                                   rc_test_uniform(&R), 0.0, {0, 0, 0}};
+        C[nc++] = (rc_contact){0, -1, rc_v3(-1, 0, 0), rc_test_uniform(&R), 0.0,
+                               {0, 0, 0}}; /* a wall */
         rc_particle Q[6], S[6];
         for (int i = 0; i < nb; i++)
             Q[i] = P[i];
@@ -239,7 +241,8 @@ static void test_group_rest_masses(void)
     const rc_vec3 x1 = rc_v3(12.252982782684304, 55.568602895127718, 0);
     rc_particle G[2] = {{1.0, rc_v3(-0.57687298846651103, 0.55152411821159275, 0)},
                         {1.0, rc_v3(-0.91259096605624812, 0.34675320581145286, 0)}};
-    rc_contact GC[2] = {{0, 1, unit(rc_v3_sub(x1, x0)), 1.0}, {1, -1, rc_v3(0, 1, 0), 1.0}};
+    rc_contact GC[2] = {{0, 1, unit(rc_v3_sub(x1, x0)), 1.0, 0.0, {0, 0, 0}},
+                        {1, -1, rc_v3(0, 1, 0), 1.0, 0.0, {0, 0, 0}}};
     const double E0 = rc_mass_rel(G[0].m, G[0].p, 1.0) + rc_mass_rel(G[1].m, G[1].p, 1.0);
     ENSURE(rc_contacts_resolve(1.0, 2, G, 2, GC, NULL) == RC_OK);
     ENSURE_REL(G[0].m, 1.0, 1e-13);
@@ -263,8 +266,9 @@ static void test_group_rest_masses(void)
             C[nc++] = (rc_contact){(int)(rc_test_uniform(&R) * i), i,
                                    unit(rc_v3(rc_test_range(&R, -1, 1), rc_test_range(&R, -1, 1),
                                               rc_test_range(&R, -1, 1))),
-                                   elastic ? 1.0 : rc_test_uniform(&R)};
-        C[nc++] = (rc_contact){0, -1, rc_v3(-1, 0, 0), elastic ? 1.0 : rc_test_uniform(&R)};
+                                   elastic ? 1.0 : rc_test_uniform(&R), 0.0, {0, 0, 0}};
+        C[nc++] = (rc_contact){0, -1, rc_v3(-1, 0, 0), elastic ? 1.0 : rc_test_uniform(&R), 0.0,
+                               {0, 0, 0}};
         const int st = rc_contacts_resolve(k, (size_t)nb, Q, (size_t)nc, C, NULL);
         /* an elastic group always has its outcome (the targets are the rest masses, below
          * the invariant mass); an inelastic one may have none */
@@ -303,8 +307,9 @@ static void test_corner(void)
                          rc_v3(rc_test_range(&R, 0.1, 4), rc_test_range(&R, 0.1, 4),
                                dim == 3 ? rc_test_range(&R, 0.1, 4) : 0.0)};
         rc_particle Q = P;
-        rc_contact C[3] = {{0, -1, rc_v3(1, 0, 0), eps}, {0, -1, rc_v3(0, 1, 0), eps},
-                           {0, -1, rc_v3(0, 0, 1), eps}};
+        rc_contact C[3] = {{0, -1, rc_v3(1, 0, 0), eps, 0.0, {0, 0, 0}},
+                           {0, -1, rc_v3(0, 1, 0), eps, 0.0, {0, 0, 0}},
+                           {0, -1, rc_v3(0, 0, 1), eps, 0.0, {0, 0, 0}}};
         ENSURE(rc_contacts_resolve(k, 1, &Q, (size_t)dim, C, NULL) == RC_OK);
         /* (the impulses come from one LU solve of the identity system, then a subtraction:
          * a few ulp) */
@@ -328,7 +333,8 @@ static void test_classical_limit(void)
 {
     rc_particle P0[3] = {{1.0, rc_v3(1.0, 0.2, 0)}, {2.0, rc_v3(-0.3, 0.1, 0)},
                          {1.5, rc_v3(0.2, -0.4, 0)}};
-    rc_contact C[2] = {{0, 1, unit(rc_v3(1, 0.3, 0)), 0.7}, {0, 2, unit(rc_v3(0.8, -0.9, 0)), 0.4}};
+    rc_contact C[2] = {{0, 1, unit(rc_v3(1, 0.3, 0)), 0.7, 0.0, {0, 0, 0}},
+                       {0, 2, unit(rc_v3(0.8, -0.9, 0)), 0.4, 0.0, {0, 0, 0}}};
     rc_particle cl[3] = {P0[0], P0[1], P0[2]};
     ENSURE(rc_contacts_resolve(0.0, 3, cl, 2, C, NULL) == RC_OK);
     double prev = INFINITY;

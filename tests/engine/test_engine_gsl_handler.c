@@ -35,7 +35,8 @@ void *realloc(void *p, size_t n) { return fail_now() ? NULL : __libc_realloc(p, 
  * than k times: RC_ENOMEM or RC_OK, never the handler. */
 static void test_contacts_out_of_memory(void)
 {
-    const rc_contact c[2] = {{0, 1, {1, 0, 0}, 0.5}, {1, 2, {0, 1, 0}, 0.5}};
+    const rc_contact c[2] = {{0, 1, {1, 0, 0}, 0.5, 0.0, {0, 0, 0}},
+                             {1, 2, {0, 1, 0}, 0.5, 0.0, {0, 0, 0}}};
     int nomem = 0;
     for (long k = 0;; k++) {
         rc_particle b[3] = {{1.0, rc_v3(1, 0, 0)}, {1.0, rc_v3(0, 0, 0)},
@@ -120,7 +121,8 @@ static void test_handler_catches(void)
 static void test_contacts_bad(void)
 {
     rc_particle b[3] = {{1.0, rc_v3(1, 0, 0)}, {1.0, rc_v3(0, 0, 0)}, {1.0, rc_v3(-1, 0, 0)}};
-    const rc_contact twice[2] = {{0, 1, {1, 0, 0}, 1.0}, {0, 1, {1, 0, 0}, 1.0}};
+    const rc_contact twice[2] = {{0, 1, {1, 0, 0}, 1.0, 0.0, {0, 0, 0}},
+                                 {0, 1, {1, 0, 0}, 1.0, 0.0, {0, 0, 0}}};
     const double inv_c2s[] = {0.0, 1.0, 1e300, 1e-300};
     for (int i = 0; i < 4; i++) {
         rc_particle q[3] = {b[0], b[1], b[2]};
@@ -128,13 +130,15 @@ static void test_contacts_bad(void)
         ENSURE_MSG(st != RC_OK || isfinite(q[0].p.x), "singular group: %d", st);
     }
     /* a wall and a ball contact along one normal: dependent too */
-    const rc_contact wall_ball[2] = {{1, -1, {1, 0, 0}, 0.0}, {0, 1, {1, 0, 0}, 0.0}};
+    const rc_contact wall_ball[2] = {{1, -1, {1, 0, 0}, 0.0, 0.0, {0, 0, 0}},
+                                     {0, 1, {1, 0, 0}, 0.0, 0.0, {0, 0, 0}}};
     rc_particle q[3] = {b[0], b[1], b[2]};
     (void)rc_contacts_resolve(1.0, 3, q, 2, wall_ball, NULL);
     /* a chain at nearly c: momenta of 1e150 (gamma ~ 1e150) */
     rc_particle fast[3] = {{1.0, rc_v3(1e150, 0, 0)}, {1.0, rc_v3(0, 0, 0)},
                            {1.0, rc_v3(-1e150, 0, 0)}};
-    const rc_contact chain[2] = {{0, 1, {1, 0, 0}, 0.5}, {1, 2, {1, 0, 0}, 0.5}};
+    const rc_contact chain[2] = {{0, 1, {1, 0, 0}, 0.5, 0.0, {0, 0, 0}},
+                                 {1, 2, {1, 0, 0}, 0.5, 0.0, {0, 0, 0}}};
     (void)rc_contacts_resolve(1.0, 3, fast, 2, chain, NULL);
     /* four copies of one contact: a 4 x 4 singular system */
     const rc_contact four[4] = {twice[0], twice[0], twice[0], twice[0]};

@@ -31,6 +31,8 @@ reject negc "{$B, \"c\": -1, \"balls\": [$ball]}" 'c: must be > 0'
 reject epsw "{$B, \"restitution\": {\"wall\": 1.5}, \"balls\": [$ball]}" 'restitution.wall: must be in [0, 1]'
 reject frame "{$B, \"contact_frame\": \"lab\", \"balls\": [$ball]}" "contact_frame: unknown frame 'lab'"
 reject law "{$B, \"law\": \"sticky\", \"balls\": [$ball]}" "law: unknown collision law 'sticky'"
+reject groups "{$B, \"groups\": \"together\", \"balls\": [$ball]}" "groups: unknown rule for simultaneous contacts 'together' (expected simultaneous, sequential, drop)"
+reject groupstype "{$B, \"groups\": 1, \"balls\": [$ball]}" 'groups: must be a string'
 reject noballs "{$B}" 'balls: missing'
 reject both "{$B, \"balls\": [$ball], \"generate\": {\"kind\": \"rack\"}}" 'give either balls or generate'
 reject outside "{$B, \"balls\": [{\"r\": 1, \"x\": [9.5, 5]}]}" "balls[0]: the ball's shape is not inside the box"

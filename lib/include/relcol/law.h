@@ -31,7 +31,39 @@ typedef struct rc_collision_params {
      * of the normal about that direction. alpha = NAN: take the normal from n instead. */
     double alpha;
     double azimuth;
+    /* How a law's group solver resolves simultaneous contacts (rc_group_rule below;
+     * default RC_GROUPS_SIMULTANEOUS). Laws without a group solver do not read it. */
+    int groups;
 } rc_collision_params;
+
+/* Rules for a group of contacts that the engine found simultaneous (touching and
+ * approaching at one table time; papers/simultaneous-contacts.md). Multiple impacts have
+ * no unique answer, even classically: these are named models, compared with the soft
+ * model's limit there. */
+typedef enum rc_group_rule {
+    /* all impulses together: J >= 0 on every contact, each contact with J > 0 meets its
+     * restitution condition, each with J = 0 leaves no more approaching than restitution
+     * allows (a complementarity problem, solved by principal pivoting around Newton) in
+     * the group's zero-momentum frame; relativistically then the rest-mass step. The
+     * default: classically, and with a wall, it has the drop rule's bits where no impulse
+     * pulls. */
+    RC_GROUPS_SIMULTANEOUS = 0,
+    /* the contacts one after another in the order of their events' times in the group's
+     * zero-momentum frame (a group with a wall: the wall's rest frame), each by the law's
+     * pair kernel (the wall law), until none approaches; contacts whose times tie to
+     * round-off (always classically, where table simultaneity is absolute) are resolved
+     * together by the simultaneous rule */
+    RC_GROUPS_SEQUENTIAL = 1,
+    /* the rule before complementarity: a joint Newton solve from which the most pulling
+     * contact is dropped until none pulls; a dropped contact is not re-checked */
+    RC_GROUPS_DROP = 2
+} rc_group_rule;
+
+/* Name of a rule ("simultaneous", "sequential", "drop"), NULL if not one; its one-line
+ * summary for --help (NULL if not one); a rule by name, -1 if unknown. */
+const char *rc_group_rule_name(int rule);
+const char *rc_group_rule_summary(int rule);
+int rc_group_rule_find(const char *name);
 
 /* Law kernel. On RC_OK, *a and *b hold the outcome. RC_NO_COLLISION (a and b untouched)
  * when the balls do not approach along n. Kernels assume validated input (finite, m > 0,
@@ -41,11 +73,15 @@ typedef int (*rc_law_fn)(const rc_collision_params *prm, rc_particle *a, rc_part
                          rc_vec3 n);
 
 /* A contact of a group: ball a against ball b (b >= 0) or against a wall (b < 0), with
- * unit normal n from a towards b (or into the wall) and restitution eps. */
+ * unit normal n from a towards b (or into the wall) and restitution eps; t and x are its
+ * event (time and point, in the frame the balls' states are given in), read only by the
+ * sequential rule to order the contacts (left 0: every event the same, all tie). */
 typedef struct rc_contact {
     int a, b;
     rc_vec3 n;
     double eps;
+    double t;
+    rc_vec3 x;
 } rc_contact;
 
 /* Group solver: resolve k simultaneous contacts among balls[0, nballs) together (each
@@ -93,7 +129,8 @@ extern const rc_law *const rc_laws[];
 /* Law by name, NULL if unknown. */
 const rc_law *rc_law_find(const char *name);
 
-rc_collision_params rc_collision_params_default(void); /* c = inf, eps = 1, alpha NAN */
+/* c = inf, eps = 1, alpha NAN, groups RC_GROUPS_SIMULTANEOUS */
+rc_collision_params rc_collision_params_default(void);
 
 /* Validating entry point: checks the particles, c, eps and n (normalised here; a zero
  * normal is RC_EZERONORMAL), then calls law->collide. */

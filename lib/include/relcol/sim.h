@@ -100,6 +100,11 @@ typedef struct rc_sim_def {
      * together with it (relative, dimensionless; default 1e-9: far above the 1e-16
      * round-off of a computed contact, far below any physical gap). */
     double sim_tol;
+    /* How such a group is resolved by a law with a group solver (rc_group_rule in
+     * relcol/law.h: RC_GROUPS_SIMULTANEOUS, the default, RC_GROUPS_SEQUENTIAL or
+     * RC_GROUPS_DROP; RC_EINVAL otherwise). The group itself is found in the table frame,
+     * at one table time; the sequential rule orders it in the group's ZMF. */
+    int groups;
     /* A touching pair whose normal approach speed is below approach_tol times its relative
      * speed scale counts as not approaching (dimensionless, default 1e-10): this stops the
      * zero-time re-collisions that round-off would otherwise create after an eps = 0 or a
@@ -335,6 +340,22 @@ size_t rc_sim_bytes(const rc_sim *s);
  * resolve the contacts one at a time), RC_EMASS if a rest mass would become imaginary. */
 int rc_contacts_resolve(double inv_c2, size_t nballs, rc_particle *balls, size_t k,
                         const rc_contact *contacts, double *jout);
+
+/* The zmf law's group solver with the rule prm->groups (relcol/law.h, rc_group_rule;
+ * prm->c the speed of light, prm->eps not used): RC_GROUPS_DROP is rc_contacts_resolve
+ * above, in the frame of the given states. The other two rules run in the group's
+ * zero-momentum frame (states, normals as their four-vectors q and events boosted there and
+ * back; with a wall, or classically, in the given frame), so that their outcome does not
+ * depend on the frame the states are given in. RC_GROUPS_SIMULTANEOUS replaces the
+ * dropping by principal pivoting, so that on
+ * return every impulse jout[j] >= 0, a contact with an impulse meets its restitution
+ * condition and one without approaches no more than restitution allows (to round-off,
+ * before the rest-mass step, which moves them by O((v/c)^2)); RC_GROUPS_SEQUENTIAL
+ * resolves the contacts one after another in the order of their events' times
+ * (rc_contact.t, .x) in the group's zero-momentum frame (jout: each contact's impulses
+ * summed). RC_EINVAL for a rule that is not one. Other codes as rc_contacts_resolve. */
+int rc_contacts_solve(const rc_collision_params *prm, size_t nballs, rc_particle *balls,
+                      size_t k, const rc_contact *contacts, double *jout);
 
 /* ---- initial states ------------------------------------------------------------- */
 
