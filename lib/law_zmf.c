@@ -79,7 +79,7 @@ static int zmf_collide(const rc_collision_params *prm, rc_particle *a, rc_partic
      * move the same way along n and so make the ZMF fast (pair_axis.h): the cheap tests
      * first keep the common path plain */
     if (!(w > RC_PAIR_FAST) &&
-        !(pn0 * pn1 > 0.0 && M0 > RC_GAMMA_FAST * a->m && M1 > RC_GAMMA_FAST * b->m &&
+        !(M0 > RC_GAMMA_FAST * a->m && M1 > RC_GAMMA_FAST * b->m && pn0 * pn1 > 0.0 &&
           rc_v3_norm2(rc_v3_add(a->p, b->p)) * k > RC_PAIR_FAST * Mt * Mt)) {
         /* a0 = mu (v0 - v1).n with mu = M0 M1 / (M0 + M1): > 0 when approaching */
         a0 = (M1 * pn0 - M0 * pn1) / Mt;
