@@ -9,6 +9,7 @@
 #include "relcol/law.h"
 #include "relcol/status.h"
 #include "kinematics_private.h"
+#include "pair_axis.h"
 
 /* Unit vectors e1, e2 completing phat to a right-handed frame, with e1 the in-plane
  * (xy) perpendicular rotated +90 degrees, so that azimuth 0 keeps a 2-D problem 2-D. */
@@ -30,26 +31,43 @@ static int cm_isotropic_collide(const rc_collision_params *prm, rc_particle *a,
     const double Mt = M0 + M1;
     const rc_vec3 P = rc_v3_add(a->p, b->p);
     const rc_vec3 u = rc_v3_scale(1.0 / Mt, P);
-    const double g = Mt / rc_pair_invariant_mass(a, b, k); /* gamma of the ZMF */
-
-    /* Ball 0 in the ZMF: (Mbar0, pbar). Boosting p0 directly computes p0 - gamma M0 u + ...,
-     * which cancels when ball 0 moves nearly with the ZMF (a heavy ball 0), and then costs
-     * the light ball its accuracy. With d = p0 - M0 u = (M1 p0 - M0 p1)/(M0 + M1) the boost
-     * is pbar = d + (gamma - 1)(d.uhat) uhat: no cancellation beyond that of v0 - v1. */
-    const rc_vec3 d =
-        rc_v3_scale(1.0 / Mt, rc_v3_sub(rc_v3_scale(M1, a->p), rc_v3_scale(M0, b->p)));
+    const int fast = rc_v3_norm2(P) * k > RC_PAIR_FAST * Mt * Mt;
+    rc_pair_split z = {0};
+    double g;
     rc_four A;
-    A.x = rc_v3_axpy(d, g * g * k / (g + 1.0) * rc_v3_dot(d, u), u);
+    if (!fast) {
+        g = Mt / rc_pair_invariant_mass(a, b, k); /* gamma of the ZMF */
+        /* Ball 0 in the ZMF: (Mbar0, pbar). Boosting p0 directly computes p0 - gamma M0 u
+         * + ..., which cancels when ball 0 moves nearly with the ZMF (a heavy ball 0), and
+         * then costs the light ball its accuracy. With d = p0 - M0 u = (M1 p0 - M0 p1)/(M0 +
+         * M1) the boost is pbar = d + (gamma - 1)(d.uhat) uhat: no cancellation beyond that
+         * of v0 - v1, which a slow ZMF keeps to a few bits (RC_PAIR_FAST). */
+        const rc_vec3 d =
+            rc_v3_scale(1.0 / Mt, rc_v3_sub(rc_v3_scale(M1, a->p), rc_v3_scale(M0, b->p)));
+        A.x = rc_v3_axpy(d, g * g * k / (g + 1.0) * rc_v3_dot(d, u), u);
+    } else {
+        /* A fast ZMF: v0 - v1 and 1/gamma^2 would cancel to order gamma^2 (balls moving
+         * together near c); pair_axis.h forms d without it, and pbar = t0 + gamma dl uhat */
+        rc_pair_split_of(a, b, M0, M1, k, sqrt(k), &z);
+        g = z.g;
+        A.x = rc_v3_axpy(z.t0, g * z.dl, z.uhat);
+    }
     const double pb2 = rc_v3_norm2(A.x);
     A.t = sqrt(a->m * a->m + pb2 * k);
     if (!(pb2 > 0.0))
         return RC_NO_COLLISION;
 
     rc_vec3 nh;
-    if (isnan(prm->alpha)) {
+    if (isnan(prm->alpha) && !fast) {
         rc_four q = {rc_v3_dot(u, n) * k, n}; /* normal four-vector -> (0, nbar) */
         rc_boost_g(u, g, k, &q);
         nh = rc_v3_scale(1.0 / rc_v3_norm(q.x), q.x);
+    } else if (isnan(prm->alpha)) {
+        /* the boosted normal four-vector is n across uhat plus (n.uhat)/gamma along it:
+         * the boost's own form subtracts numbers of order gamma to get the 1/gamma */
+        const double nl = rc_v3_dot(n, z.uhat);
+        const rc_vec3 nb = rc_v3_axpy(rc_v3_axpy(n, -nl, z.uhat), nl / g, z.uhat);
+        nh = rc_v3_scale(1.0 / rc_v3_norm(nb), nb);
     } else {
         rc_vec3 ph = rc_v3_scale(1.0 / sqrt(pb2), A.x), e1, e2;
         perp_frame(ph, &e1, &e2);

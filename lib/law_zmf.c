@@ -5,12 +5,64 @@
  * ZMF energy is unchanged. Writing a0 = p0.n - M0 u.n = (M1 p0.n - M0 p1.n)/(M0 + M1)
  * (the ZMF normal momentum of ball 0 times sqrt(s), s = 1 - (u.n)^2/c^2), restitution
  * on the ZMF normal momentum gives J = -(1 + eps) a0 / s and the rest-mass rise
- * m'^2 = m^2 + (1 - eps^2) a0^2 / (s c^2), the same for both balls. */
+ * m'^2 = m^2 + (1 - eps^2) a0^2 / (s c^2), the same for both balls.
+ *
+ * When the pair moves fast along n or both balls are fast (pair_axis.h: RC_PAIR_FAST,
+ * RC_GAMMA_FAST), a0 and s can be differences of numbers gamma^2 times their size (balls
+ * moving together near c) and are computed without the cancellation instead: a0 from the
+ * rapidity difference along n or as d.n from the split of d = mu (v0 - v1) along and
+ * across the total momentum, s as a sum of positive terms. The plain forms would lose
+ * every digit by gamma ~ 1e8 and call an approaching pair separating. Otherwise they
+ * lose a few bits at most and are kept (the classical path is one of them). */
 #include <math.h>
 
 #include "relcol/law.h"
 #include "relcol/sim.h"
 #include "relcol/status.h"
+#include "pair_axis.h"
+
+/* |p x n|^2: as |p|^2 - (p.n)^2 when p is at least 45 degrees off n (a bit lost at most),
+ * else from the cross product formed to its own accuracy. */
+static double across2(rc_vec3 p, double pn, rc_vec3 n)
+{
+    const double p2 = rc_v3_norm2(p);
+    return pn * pn <= 0.5 * p2 ? p2 - pn * pn : rc_v3_norm2(rc_cross_exact(p, n));
+}
+
+/* a0 and s for a fast pair, kept out of line (and returned in registers) so that the
+ * common path stays small. */
+typedef struct {
+    double a0, s;
+} zmf_as;
+
+__attribute__((noinline)) static zmf_as zmf_fast(const rc_particle *a, const rc_particle *b,
+                                                 rc_vec3 n, double k, double M0, double M1,
+                                                 double pn0, double pn1)
+{
+    const double Mt = M0 + M1;
+    const double sqrt_k = sqrt(k);
+    const rc_axis ax = {M0, M1, pn0, pn1, a->m * a->m + across2(a->p, pn0, n) * k,
+                        b->m * b->m + across2(b->p, pn1, n) * k};
+    /* Two cancellation-free forms with different weak spots: along n (the rapidity
+     * difference along n), poor when the balls move fast across n, whose large
+     * transverse masses T then nearly cancel; and d.n with d split along the total
+     * momentum, whose rounding (of order |t0| + |dl|) 1/s amplifies when n lies
+     * nearly along the motion. Each form's rounding is bounded, in units of 2^-53,
+     * by the sizes of the terms it adds: along n, for pn0 pn1 > 0, (T1 |pn0| + T0
+     * |pn1|) r / Mt (rc_axis_approach), otherwise 0 (terms of one sign); the smaller
+     * bound wins, and d is formed only when the first is not already within a few
+     * units of a0 itself. */
+    double a0 = rc_axis_approach(&ax) / Mt;
+    const double tn = sqrt(ax.T12) * fabs(pn0) + sqrt(ax.T02) * fabs(pn1);
+    const double err_n = pn0 * pn1 > 0.0 ? tn * tn / (fabs(M1 * pn0 + M0 * pn1) * Mt) : 0.0;
+    if (err_n > 8.0 * fabs(a0) && rc_v3_norm2(rc_v3_add(a->p, b->p)) > 0.0) {
+        rc_pair_split z;
+        rc_pair_split_of(a, b, M0, M1, k, sqrt_k, &z);
+        if (rc_v3_norm(z.t0) + fabs(z.dl) < err_n)
+            a0 = rc_v3_dot(z.d, n);
+    }
+    return (zmf_as){a0, rc_axis_s(&ax, sqrt_k)};
+}
 
 static int zmf_collide(const rc_collision_params *prm, rc_particle *a, rc_particle *b,
                        rc_vec3 n)
@@ -21,11 +73,24 @@ static int zmf_collide(const rc_collision_params *prm, rc_particle *a, rc_partic
     const double Mt = M0 + M1;
     const double pn0 = rc_v3_dot(a->p, n), pn1 = rc_v3_dot(b->p, n);
     const double un = (pn0 + pn1) / Mt;
-    /* a0 = mu (v0 - v1).n with mu = M0 M1 / (M0 + M1): > 0 when approaching */
-    const double a0 = (M1 * pn0 - M0 * pn1) / Mt;
+    double a0, s;
+    const double w = un * un * k;
+    /* s cancels only when the pair moves fast along n, a0 only when both balls are fast,
+     * move the same way along n and so make the ZMF fast (pair_axis.h): the cheap tests
+     * first keep the common path plain */
+    if (!(w > RC_PAIR_FAST) &&
+        !(M0 > RC_GAMMA_FAST * a->m && M1 > RC_GAMMA_FAST * b->m && pn0 * pn1 > 0.0 &&
+          rc_v3_norm2(rc_v3_add(a->p, b->p)) * k > RC_PAIR_FAST * Mt * Mt)) {
+        /* a0 = mu (v0 - v1).n with mu = M0 M1 / (M0 + M1): > 0 when approaching */
+        a0 = (M1 * pn0 - M0 * pn1) / Mt;
+        s = 1.0 - w;
+    } else {
+        const zmf_as f = zmf_fast(a, b, n, k, M0, M1, pn0, pn1);
+        a0 = f.a0;
+        s = f.s;
+    }
     if (!(a0 > 0.0))
         return RC_NO_COLLISION;
-    const double s = 1.0 - un * un * k;
     const double J = -(1.0 + eps) * a0 / s;
     a->p = rc_v3_axpy(a->p, J, n);
     b->p = rc_v3_axpy(b->p, -J, n);

@@ -163,6 +163,16 @@ cmp -s "$T/out" "$T/r7" && bad "--seed 8 gave the same draw as --seed 7" || ok
 run 'm,vx,vy,vz\n1,0.6,0,0\n2,0,0,0\n' --law cm-isotropic --alpha 0.3 --azimuth 1
 expect_ok "3-D alpha azimuth"
 
+# ---------------------------------------------------------------- near c (issue 16)
+# balls moving together at gamma 1e6 and 1e8, the faster behind: they approach, and equal
+# masses swap their momenta exactly (the law's old form said 'no collision')
+for P in "1e6 999990" "1e8 99999000"; do
+    run "m,px\n1,${P% *}\n1,${P#* }\n" --c 1
+    expect_ok "gamma ${P% *} co-moving"
+    close "gamma ${P% *} px0" "$(field 0 px)" "${P#* }" $TOL
+    close "gamma ${P% *} px1" "$(field 1 px)" "${P% *}" $TOL
+done
+
 # ---------------------------------------------------------------- separating: exit 3
 for args in "m,vx\n1,-0.6\n1,0.6\n|" "m,vx,x\n1,0.6,1\n1,0,0\n|" "m,vx,vy\n1,0.6,0\n1,0,0\n|--normal 0,1"; do
     input=${args%%|*} opts=${args#*|}
