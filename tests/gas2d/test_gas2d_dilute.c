@@ -166,7 +166,11 @@ static void test_thermometers_dilute(void)
     }
     ENSURE_CLOSE(z[0].th_pv, z[0].th_g, 4.0, z[0].se_diff);
     const double d0 = z[0].th_pv - z[0].th_g, d2 = z[2].th_pv - z[2].th_g;
-    ENSURE_MSG(d2 - d0 > 5.0 * hypot(z[0].se_diff, z[2].se_diff),
+    /* (3 combined sigma: the expected separation, ~0.0037, is 4-6 of the block errors
+     * these sample sizes give, and the errors themselves scatter by tens of percent from
+     * seed to seed and build to build; a deviation that did not grow passes 3 sigma by
+     * chance ~1e-3 of the time) */
+    ENSURE_MSG(d2 - d0 > 3.0 * hypot(z[0].se_diff, z[2].se_diff),
                "zmf deviation at packing 0.25 (%g) not above the dilute one (%g)", d2, d0);
     dilute_run t = {.frame = "table", .n = 500, .packing = 0.01, .t_eq = 1500,
                     .t_sample = 6000, .n_snap = 60, .seed = 4};

@@ -15,6 +15,10 @@ only so that a reader can see them), and two numbers both below 1e-12 in magnitu
 round-off alike. A line "..." in the README stands for any number of lines, and "…"
 inside a line for any text.
 
+With --update, an example whose output differs and has no "..." or "…" gets the app's
+output written into the README in place of its own (for a maintainer who changed an app
+on purpose: the diff then shows what changed).
+
 Commands that cannot run here are named in SKIP with the reason (benchmarks against
 other code, a checkout of another repository); every other `$` line is run.
 """
@@ -89,10 +93,11 @@ def examples(text):
                 cmd += "\n" + lines[i]
             exp = []
             i += 1
+            first = i
             while i < len(lines) and not lines[i].startswith("$ ") and not lines[i].startswith("```"):
                 exp.append(lines[i])
                 i += 1
-            out.append((start, cmd, exp))
+            out.append((start, cmd, exp, first))
             continue
         i += 1
     return out
@@ -151,9 +156,13 @@ def matches(exp, got):
 
 
 def main():
-    readme, bindir = sys.argv[1], os.path.abspath(sys.argv[2])
-    src = os.path.abspath(sys.argv[3] if len(sys.argv) > 3 else os.path.dirname(readme))
-    exs = examples(open(readme, encoding="utf-8").read())
+    update = "--update" in sys.argv
+    args = [a for a in sys.argv[1:] if a != "--update"]
+    readme, bindir = args[0], os.path.abspath(args[1])
+    src = os.path.abspath(args[2] if len(args) > 2 else os.path.dirname(readme))
+    text = open(readme, encoding="utf-8").read().split("\n")
+    exs = examples("\n".join(text))
+    edits = []
     apps = sorted({os.path.join(bindir, "apps", d) for d in os.listdir(os.path.join(bindir, "apps"))
                    if os.path.isdir(os.path.join(bindir, "apps", d))})
     env = dict(os.environ, PATH=os.pathsep.join(apps + [os.environ.get("PATH", "")]),
@@ -164,7 +173,7 @@ def main():
         os.symlink(os.path.join(src, d), os.path.join(work, d))
     fails = ran = skipped = 0
     try:
-        for line, cmd, exp in exs:
+        for line, cmd, exp, first in exs:
             why = next((r for k, r in SKIP.items() if cmd.startswith(k)), None)
             if why:
                 skipped += 1
@@ -180,6 +189,11 @@ def main():
                 exp = exp[:-1]
             if matches(exp, got) or matches_any_layout(exp, got):
                 print(f"ok README:{line}: {cmd.splitlines()[0]}")
+            elif update and not any(e.strip() == "..." or "…" in e for e in exp):
+                # (the README's own lines, indented as they were)
+                pad = "    " if text[line - 1].startswith("    $ ") else ""
+                edits.append((first, len(exp), [pad + g for g in got]))
+                print(f"updated README:{line}: {cmd.splitlines()[0]}")
             else:
                 fails += 1
                 print(f"FAILED README:{line}: {cmd.splitlines()[0]}")
@@ -187,6 +201,11 @@ def main():
                 print("  the app says:\n" + "\n".join("    " + g for g in got))
     finally:
         shutil.rmtree(work, ignore_errors=True)
+    if edits:
+        for first, n, new in sorted(edits, reverse=True):
+            text[first:first + n] = new
+        with open(readme, "w", encoding="utf-8") as f:
+            f.write("\n".join(text))
     print(f"{ran - fails} passed, {fails} failed, {skipped} skipped")
     return 1 if fails or ran == 0 else 0
 
