@@ -248,8 +248,56 @@ static void test_toi_brute(void)
     rc_toi_workspace_free(&ws);
 }
 
+/* Windows of random elastic pair collisions (zmf law, c = 1, r = 1): the contact event
+ * lies on the ball's section, so H reaches it inside the window, t_first <= t_x <= t_last.
+ * Prints the mean window and the mean lead of its start over the contact (the figures of
+ * papers/shape-change.md, section 4). */
+static void test_window_lengths(void)
+{
+    for (int vi = 0; vi < 2; vi++) {
+        const double vr = vi ? 0.9 : 0.5;
+        unsigned seed = 11;
+        double wsum = 0.0, lsum = 0.0;
+        int n = 0;
+        for (int trial = 0; trial < 10000; trial++) {
+            rc_particle P[2];
+            for (int i = 0; i < 2; i++) {
+                rc_vec3 v; /* uniform components of rms vr / sqrt(2): rms speed vr in 2-D */
+                do
+                    v = rvec(&seed, vr * sqrt(1.5), 2);
+                while (rc_v3_norm2(v) >= 0.99);
+                P[i].m = 1.0;
+                P[i].p = rc_v3_scale(1.0 / sqrt(1.0 - rc_v3_norm2(v)), v);
+            }
+            const double a = 2.0 * M_PI * urand(&seed);
+            const rc_vec3 nn = rc_v3(cos(a), sin(a), 0.0);
+            rc_particle Q[2] = {P[0], P[1]};
+            rc_collision_params cp = rc_collision_params_default();
+            cp.c = 1.0;
+            if (rc_law_zmf.collide(&cp, &Q[0], &Q[1], nn) != RC_OK)
+                continue; /* not approaching along nn */
+            /* the contact point: ball 0's support point along nn */
+            const double M0 = sqrt(1.0 + rc_v3_norm2(P[0].p));
+            const rc_vec3 b = rc_v3_scale(1.0 / M0, P[0].p);
+            const double bn = rc_v3_dot(b, nn);
+            const rc_vec3 X = rc_v3_scale(1.0 / sqrt(1.0 - bn * bn), rc_v3_axpy(nn, -bn, b));
+            rc_glue g;
+            ENSURE(rc_glue_make(1.0, 1.0, &P[0], &Q[0], 0.0, rc_v3(0, 0, 0), X, &g) == RC_OK);
+            /* (round-off of terms of size r) */
+            ENSURE_MSG(g.t_first <= 1e-12 && g.t_last >= -1e-12, "window [%g, %g]", g.t_first,
+                       g.t_last);
+            wsum += g.t_last - g.t_first;
+            lsum -= g.t_first;
+            n++;
+        }
+        printf("  rms %.1fc: %d collisions, mean window %.3f r/c, mean start %.3f r/c before "
+               "the contact\n", vr, n, wsum / n, lsum / n);
+    }
+}
+
 int main(void)
 {
+    RUN_TEST(test_window_lengths);
     RUN_TEST(test_toi_brute);
     RUN_TEST(test_sections_match);
     RUN_TEST(test_window_mixes);
