@@ -144,11 +144,20 @@ static void test_bad_input(void)
 /* 1 if k's shape at time t (centre ck, state kb) meets the glued section: its boundary
  * sampled at nb points, each tested with rc_glue_inside (independent of rc_glue_toi). */
 #define NB 720
+static int g_dim = 2; /* the dimension brute_meets samples (a circle or a sphere) */
 static int brute_meets(const rc_glue *g, double t, rc_vec3 ck, const rc_toi_shape *hk, int nb)
 {
-    for (int j = 0; j < nb; j++) {
-        const double a = 2.0 * M_PI * j / nb;
-        const rc_vec3 u = rc_v3(cos(a), sin(a), 0.0);
+    const int m = g_dim == 3 ? 6 * nb : nb;
+    for (int j = 0; j < m; j++) {
+        rc_vec3 u;
+        if (g_dim == 3) { /* (a Fibonacci lattice on the sphere) */
+            const double z = 1.0 - (2.0 * j + 1.0) / m, a = j * M_PI * (3.0 - sqrt(5.0));
+            const double q = sqrt(1.0 - z * z);
+            u = rc_v3(q * cos(a), q * sin(a), z);
+        } else {
+            const double a = 2.0 * M_PI * j / nb;
+            u = rc_v3(cos(a), sin(a), 0.0);
+        }
         /* boundary point of k along u: the rest-frame length of s u equals r */
         const double bu = rc_v3_dot(hk->beta, u);
         const double s = hk->r / sqrt(1.0 + bu * bu / hk->g2);
@@ -161,23 +170,28 @@ static int brute_meets(const rc_glue *g, double t, rc_vec3 ck, const rc_toi_shap
 /* rc_glue_toi against a scan in time of the sampled sections (2-D): the first time the
  * scan sees k meet the glued ball lies within one step after the solver's time, the
  * scan sees no meeting before it, and the contact point lies on k's boundary. */
-static void test_toi_brute(void)
+static void toi_brute(int dim, int trials, double tol)
 {
+    g_dim = dim;
     unsigned seed = 7;
     rc_toi_params prm = rc_toi_params_default();
     prm.c = 1.0;
     rc_toi_workspace *ws = NULL;
     ENSURE(rc_toi_workspace_create(&ws) == RC_OK);
     int found = 0, on_h = 0, pieces[3] = {0, 0, 0}, overl = 0;
-    for (int trial = 0; trial < 400; trial++) {
+    for (int trial = 0; trial < trials; trial++) {
         const double r = 1.0;
-        rc_particle in = {1.0, rmom(&seed, 2)}, out = {1.0, rmom(&seed, 2)};
+        rc_particle in = {1.0, rmom(&seed, dim)}, out = {1.0, rmom(&seed, dim)};
         const double a0 = 2.0 * M_PI * urand(&seed);
         const rc_vec3 xc = rc_v3(0, 0, 0);
         rc_glue g0;
         ENSURE(rc_glue_make(1.0, r, &in, &out, 0.0, xc, rc_v3(0, 0, 0), &g0) == RC_OK);
         /* X on the incoming section's boundary at t_x = 0 */
-        const rc_vec3 u = rc_v3(cos(a0), sin(a0), 0.0);
+        rc_vec3 u = rc_v3(cos(a0), sin(a0), 0.0);
+        if (dim == 3) {
+            const double z = 2.0 * urand(&seed) - 1.0;
+            u = rc_v3(sqrt(1.0 - z * z) * u.x, sqrt(1.0 - z * z) * u.y, z);
+        }
         const double bu = rc_v3_dot(g0.in.beta, u);
         const rc_vec3 X = rc_v3_scale(r / sqrt(1.0 + bu * bu / g0.in.g2), u);
         rc_glue g;
@@ -185,9 +199,12 @@ static void test_toi_brute(void)
         /* k near the ball at t_from, a little before the window */
         const double t_from = g.t_first - 0.05 * urand(&seed);
         /* k just outside the bounding circles, moving towards the ball */
-        const double ak = 2.0 * M_PI * urand(&seed);
-        const rc_vec3 dk = rc_v3(cos(ak), sin(ak), 0.0);
-        rc_vec3 vk0 = rc_v3_add(rc_v3_scale(-0.6 * urand(&seed), dk), rvec(&seed, 0.25, 2));
+        rc_vec3 dk;
+        do
+            dk = rvec(&seed, 1.0, dim);
+        while (!(rc_v3_norm2(dk) > 0.01 && rc_v3_norm2(dk) <= 1.0));
+        dk = rc_v3_scale(1.0 / rc_v3_norm(dk), dk);
+        rc_vec3 vk0 = rc_v3_add(rc_v3_scale(-0.6 * urand(&seed), dk), rvec(&seed, 0.25, dim));
         /* (every fourth nearer: its shape may overlap the glued section already) */
         const double dist = trial % 4 ? 2.0 + 0.2 * urand(&seed) : 1.2 + 0.8 * urand(&seed);
         rc_toi_ball k = {rc_v3_axpy(rc_glue_centre(&g, t_from), dist, dk),
@@ -234,7 +251,16 @@ static void test_toi_brute(void)
         on_h += piece == 2;
         /* (the sampled boundary's chord depth, (pi / NB)^2 / 2 radii, over approach
          * speeds of 0.01 c and more) */
-        ENSURE_MSG(fabs(tb - t) <= 2e-3, "trial %d piece %d: t %.9g scan %.9g",
+        if (!(tb <= t + tol)) {
+            /* a shallow touch (a ridge of the crease grazed) can slip between the scan's
+             * samples: look again near t, ten times denser in time and in directions */
+            for (double s = t - tol; s < t + 10.0 * tol; s += 0.05 * tol)
+                if (brute_meets(&g, s, rc_v3_axpy(k.x, s - t_from, vk), &hk, 10 * NB)) {
+                    tb = s;
+                    break;
+                }
+        }
+        ENSURE_MSG(fabs(tb - t) <= tol, "trial %d piece %d: t %.9g scan %.9g",
                    trial, piece, t, tb);
         const rc_vec3 ck = rc_v3_axpy(k.x, t - t_from, vk);
         const rc_vec3 d = rc_v3_sub(y, ck);
@@ -242,11 +268,18 @@ static void test_toi_brute(void)
         ENSURE_CLOSE(rc_v3_norm2(d) + bd * bd, 1.0, 1e-7, 1.0);
         ENSURE_CLOSE(rc_v3_norm(n), 1.0, 1e-12, 1.0);
     }
-    printf("  contacts %d (incoming %d, outgoing %d, on H %d), overlapping starts %d\n", found,
+    printf("  %d-D: contacts %d (incoming %d, outgoing %d, on H %d), overlapping starts %d\n", dim, found,
            pieces[0], pieces[1], pieces[2], overl);
-    ENSURE(found > 100 && pieces[0] > 0 && pieces[1] > 0 && on_h > 0 && overl > 0);
+    ENSURE(found > trials / 4 && pieces[0] > 0 && pieces[1] > 0 && overl > 0);
+    ENSURE(dim == 3 || on_h > 0);
     rc_toi_workspace_free(&ws);
 }
+
+/* (2-D: the sampled circle's chord depth, (pi / NB)^2 / 2 radii, over approach speeds of
+ * 0.01c and more; 3-D: the 6 NB points of the Fibonacci sphere are about 0.05 radii apart,
+ * a chord depth of 4e-4 radii) */
+static void test_toi_brute(void) { toi_brute(2, 400, 2e-3); }
+static void test_toi_brute_3d(void) { toi_brute(3, 80, 2e-2); }
 
 /* Windows of random elastic pair collisions (zmf law, c = 1, r = 1): the contact event
  * lies on the ball's section, so H reaches it inside the window, t_first <= t_x <= t_last.
@@ -299,6 +332,7 @@ int main(void)
 {
     RUN_TEST(test_window_lengths);
     RUN_TEST(test_toi_brute);
+    RUN_TEST(test_toi_brute_3d);
     RUN_TEST(test_sections_match);
     RUN_TEST(test_window_mixes);
     RUN_TEST(test_classical);
