@@ -187,6 +187,54 @@ int rc_toi_box(const rc_toi_params *prm, int contracted, const rc_toi_ball *a, i
                const double lo[], const double hi[], double *t, int *side, rc_vec3 *n,
                rc_vec3 *x);
 
+/* ---- shape change through a collision (papers/shape-change.md) ---- */
+
+/* The world tube of one ball through one collision: its incoming and outgoing world
+ * cylinders (same rest radius r) glued on the hyperplane H through the contact event X
+ * with normal u_in + u_out, where their sections coincide. In the table frame H is the
+ * plane t - t_x = kappa . (y - x), which sweeps the ball's section (|kappa| < 1/c, so
+ * faster than light) in [t_first, t_last]; the centre changes velocity where H meets its
+ * worldline, (t_c, x_c). Before H a point of the ball belongs to the incoming cylinder,
+ * after it to the outgoing one. With inv_c2 = 0 kappa = 0 and every time is t_x. */
+typedef struct rc_glue {
+    double inv_c2;
+    double r;
+    rc_toi_shape in, out; /* the table-frame shapes before and after */
+    rc_vec3 v_in, v_out;
+    double t_x;           /* contact event X */
+    rc_vec3 x;
+    rc_vec3 kappa;        /* H: t - t_x = kappa . (y - x) */
+    double t_c;           /* the centre's event on H */
+    rc_vec3 x_c;
+    double t_first, t_last;
+} rc_glue;
+
+/* The glued tube of a ball of rest radius r whose state goes from `in` to `out` through
+ * the contact event (t_x, X), its centre at time t_x on the incoming worldline being xc
+ * (X need not lie on the ball's surface: any event fixes one H). RC_EINVAL for a bad
+ * argument, the particle checks' codes for a bad state. */
+int rc_glue_make(double inv_c2, double r, const rc_particle *in, const rc_particle *out,
+                 double t_x, rc_vec3 xc, rc_vec3 X, rc_glue *g);
+
+/* 1 if the point y belongs to the ball's table-frame section at time t (the incoming
+ * cylinder's part before H, the outgoing one's after it), else 0. */
+int rc_glue_inside(const rc_glue *g, double t, rc_vec3 y);
+
+/* The ball's centre at time t: on the incoming worldline before t_c, the outgoing after. */
+rc_vec3 rc_glue_centre(const rc_glue *g, double t);
+
+/* First contact at a time >= t_from of the glued tube g with a rigid contracted ball k
+ * (k->x its centre at t_from), from the convex pieces of the tube: the incoming cylinder
+ * before H and the outgoing one after it, each met either where its own contact with k
+ * lies on its side of H, or on H itself (papers/shape-change.md). *t the time, *y the
+ * contact point, *n the unit normal from the glued ball to k (on H, where the tube has a
+ * crease, k's own normal), *piece 0 incoming, 1 outgoing, 2 on H. Outcomes as rc_toi's:
+ * RC_OK, RC_MISS, RC_EOVERLAP (k overlaps the tube's section at t_from), or a negative
+ * code for invalid input. */
+int rc_glue_toi(const rc_glue *g, const rc_toi_params *prm, rc_toi_workspace *ws,
+                double t_from, const rc_toi_ball *k, double *t, rc_vec3 *y, rc_vec3 *n,
+                int *piece);
+
 #ifdef __cplusplus
 }
 #endif

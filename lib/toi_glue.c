@@ -1,0 +1,295 @@
+/* toi_glue.c — a ball's world tube through one collision: the incoming and outgoing world
+ * cylinders glued on the hyperplane H through the contact event with normal u_in + u_out,
+ * where their sections coincide, so the tube is continuous and the table-frame shape
+ * changes while H sweeps the ball (papers/shape-change.md). */
+#include <math.h>
+
+#include "relcol/kinematics.h"
+#include "relcol/status.h"
+#include "relcol/toi.h"
+#include "toi_private.h"
+
+int rc_glue_make(double inv_c2, double r, const rc_particle *in, const rc_particle *out,
+                 double t_x, rc_vec3 xc, rc_vec3 X, rc_glue *g)
+{
+    if (!in || !out || !g || !(inv_c2 >= 0.0) || isinf(inv_c2) || !isfinite(t_x) ||
+        !rc_v3_isfinite(xc) || !rc_v3_isfinite(X))
+        return RC_EINVAL;
+    if (!(r > 0.0) || !isfinite(r))
+        return RC_ERADIUS;
+    int st;
+    if ((st = rc_particle_check(in)) != RC_OK || (st = rc_particle_check(out)) != RC_OK)
+        return st;
+    const double M0 = rc_mass_rel(in->m, in->p, inv_c2), M1 = rc_mass_rel(out->m, out->p, inv_c2);
+    g->inv_c2 = inv_c2;
+    g->r = r;
+    g->in = rc_toi_shape_M_(r, in->m, in->p, inv_c2, M0);
+    g->out = rc_toi_shape_M_(r, out->m, out->p, inv_c2, M1);
+    g->v_in = rc_v3_scale(1.0 / M0, in->p);
+    g->v_out = rc_v3_scale(1.0 / M1, out->p);
+    g->t_x = t_x;
+    g->x = X;
+    /* w = u_in + u_out = (c (g0 + g1), g0 v0 + g1 v1) with g v = p / m, g = M / m; the
+     * plane w.(Y - X) = 0 in the table frame: t - t_x = (g0 v0 + g1 v1).(y - X) / (c^2
+     * (g0 + g1)) */
+    const double W0 = M0 / in->m + M1 / out->m;
+    const rc_vec3 Wv = rc_v3_add(rc_v3_scale(1.0 / in->m, in->p), rc_v3_scale(1.0 / out->m, out->p));
+    g->kappa = rc_v3_scale(inv_c2 / W0, Wv);
+    /* the centre's event on H: (t_c - t_x)(1 - kappa.v_in) = kappa.(xc - X) */
+    const double kv = rc_v3_dot(g->kappa, g->v_in);
+    const double dt = rc_v3_dot(g->kappa, rc_v3_sub(xc, X)) / (1.0 - kv);
+    g->t_c = t_x + dt;
+    g->x_c = rc_v3_axpy(xc, dt, g->v_in);
+    /* H meets the incoming section first and last where it is tangent to it:
+     * t - t_c = -+ h_in(kappa) / (1 - kappa.v_in), h the support times |kappa| (the same
+     * from the outgoing side: the sections on H coincide; papers/shape-change.md) */
+    const double k2 = rc_v3_norm2(g->kappa);
+    const double h = k2 > 0.0 ? rc_toi_support_scaled_(&g->in, g->kappa, k2) : 0.0;
+    const double D = h / (1.0 - kv);
+    g->t_first = g->t_c - D;
+    g->t_last = g->t_c + D;
+    return RC_OK;
+}
+
+rc_vec3 rc_glue_centre(const rc_glue *g, double t)
+{
+    return rc_v3_axpy(g->x_c, t - g->t_c, t < g->t_c ? g->v_in : g->v_out);
+}
+
+/* Inside the shape s centred at the origin: the rest-frame length of d, |d|^2 +
+ * gamma^2 (beta.d)^2, at most r^2. */
+static int inside_shape(const rc_toi_shape *s, rc_vec3 d)
+{
+    const double bd = rc_v3_dot(s->beta, d);
+    return rc_v3_norm2(d) + bd * bd / s->g2 <= s->r * s->r;
+}
+
+int rc_glue_inside(const rc_glue *g, double t, rc_vec3 y)
+{
+    /* reached by H (its future side) once t - t_x > kappa.(y - X) */
+    const int after = t - g->t_x > rc_v3_dot(g->kappa, rc_v3_sub(y, g->x));
+    if (after)
+        return inside_shape(&g->out, rc_v3_sub(y, rc_v3_axpy(g->x_c, t - g->t_c, g->v_out)));
+    return inside_shape(&g->in, rc_v3_sub(y, rc_v3_axpy(g->x_c, t - g->t_c, g->v_in)));
+}
+
+/* ---- first contact with the glued tube ------------------------------------------- */
+
+/* Rest-frame metric of a shape: d is inside iff d^T G d <= 1, G = (I + u u^T) / r^2 with
+ * u = gamma beta (the shape's rest-frame length of d over r, squared). */
+static rc_sym3 shape_metric(const rc_toi_shape *s)
+{
+    const rc_vec3 u = rc_v3_scale(1.0 / s->g, s->beta);
+    const double f = 1.0 / (s->r * s->r);
+    const rc_sym3 G = {f * (1.0 + u.x * u.x), f * (1.0 + u.y * u.y), f * (1.0 + u.z * u.z),
+                       f * u.x * u.y,         f * u.x * u.z,         f * u.y * u.z};
+    return G;
+}
+
+/* L^T G L for L = I - v k^T: G - k (G v)^T - (G v) k^T + (v^T G v) k k^T. */
+static rc_sym3 pull_back(const rc_sym3 *G, rc_vec3 v, rc_vec3 k)
+{
+    const rc_vec3 w = rc_sym3_mul_(G, v, 0);
+    const double q = rc_v3_dot(v, w);
+    rc_sym3 A;
+    A.xx = G->xx - 2.0 * k.x * w.x + q * k.x * k.x;
+    A.yy = G->yy - 2.0 * k.y * w.y + q * k.y * k.y;
+    A.zz = G->zz - 2.0 * k.z * w.z + q * k.z * k.z;
+    A.xy = G->xy - k.x * w.y - w.x * k.y + q * k.x * k.y;
+    A.xz = G->xz - k.x * w.z - w.x * k.z + q * k.x * k.z;
+    A.yz = G->yz - k.y * w.z - w.y * k.z + q * k.y * k.z;
+    return A;
+}
+
+/* The dual value at lam of min k.z over {(z - m1)^T A1 (z - m1) <= 1} and the same for
+ * 2: the minimum of k.z over the blended ellipsoid (1 - lam) q1 + lam q2 <= 1, a lower
+ * bound of the minimum over the intersection, INFINITY if the blend is empty (then so is
+ * the intersection). *z its minimiser. */
+static double dual_at(const rc_sym3 *A1, rc_vec3 b1, double c1, const rc_sym3 *A2, rc_vec3 b2,
+                      double c2, rc_vec3 k, double lam, rc_vec3 *z)
+{
+    const rc_sym3 A = rc_sym3_blend_(A1, A2, lam, 0);
+    rc_sym3 adj;
+    const double det = rc_sym3_adj_(&A, &adj, 0);
+    if (!(det > 0.0))
+        return NAN;
+    const rc_vec3 b = rc_v3_add(rc_v3_scale(1.0 - lam, b1), rc_v3_scale(lam, b2));
+    const rc_vec3 m = rc_v3_scale(1.0 / det, rc_sym3_mul_(&adj, b, 0));
+    const double e = (1.0 - lam) * c1 + lam * c2 - rc_v3_dot(b, m);
+    if (e > 1.0)
+        return INFINITY;
+    const rc_vec3 aik = rc_v3_scale(1.0 / det, rc_sym3_mul_(&adj, k, 0)); /* A^-1 k */
+    const double s = rc_v3_dot(k, aik);
+    const double f = s > 0.0 ? sqrt((1.0 - e) / s) : 0.0;
+    *z = rc_v3_axpy(m, -f, aik);
+    return rc_v3_dot(k, m) - f * s;
+}
+
+/* Golden-section steps on lam in [0, 1]: the dual value is quasi-concave in lam (the
+ * best scale of a concave dual along each direction), so it is unimodal; 90 steps narrow
+ * the bracket below the round-off of lam. */
+#define DUAL_STEPS 90
+
+/* min k.z over the intersection of two ellipsoids {(z - m_i)^T A_i (z - m_i) <= 1}:
+ * strong duality of the convex problem makes it the largest dual value. INFINITY if
+ * the intersection is empty; *z the minimiser. */
+static double lin_min2(const rc_sym3 *A1, rc_vec3 m1, const rc_sym3 *A2, rc_vec3 m2, rc_vec3 k,
+                       rc_vec3 *z)
+{
+    const rc_vec3 b1 = rc_sym3_mul_(A1, m1, 0), b2 = rc_sym3_mul_(A2, m2, 0);
+    const double c1 = rc_v3_dot(m1, b1), c2 = rc_v3_dot(m2, b2);
+    const double gr = 0.5 * (sqrt(5.0) - 1.0);
+    double lo = 0.0, hi = 1.0;
+    double x1 = hi - gr * (hi - lo), x2 = lo + gr * (hi - lo);
+    rc_vec3 z1, z2, zb = m1;
+    double f1 = dual_at(A1, b1, c1, A2, b2, c2, k, x1, &z1);
+    double f2 = dual_at(A1, b1, c1, A2, b2, c2, k, x2, &z2);
+    for (int it = 0; it < DUAL_STEPS; it++) {
+        if (f1 == INFINITY || f2 == INFINITY)
+            return INFINITY;
+        if (isnan(f1) || isnan(f2))
+            return NAN;
+        if (f1 < f2) {
+            lo = x1;
+            x1 = x2;
+            f1 = f2;
+            z1 = z2;
+            x2 = lo + gr * (hi - lo);
+            f2 = dual_at(A1, b1, c1, A2, b2, c2, k, x2, &z2);
+        } else {
+            hi = x2;
+            x2 = x1;
+            f2 = f1;
+            z2 = z1;
+            x1 = hi - gr * (hi - lo);
+            f1 = dual_at(A1, b1, c1, A2, b2, c2, k, x1, &z1);
+        }
+    }
+    /* the ends: one ellipsoid's own minimiser may lie inside the other */
+    double best = f1 > f2 ? f1 : f2;
+    zb = f1 > f2 ? z1 : z2;
+    rc_vec3 ze;
+    for (int e = 0; e < 2; e++) {
+        const double fe = dual_at(A1, b1, c1, A2, b2, c2, k, (double)e, &ze);
+        if (fe == INFINITY)
+            return INFINITY;
+        if (fe > best) {
+            best = fe;
+            zb = ze;
+        }
+    }
+    *z = zb;
+    return best;
+}
+
+/* The section of ball a's world cylinder (shape s, velocity v, centre ca at time ta) by
+ * H, in z = y - X: the ellipsoid (z - m)^T A (z - m) <= 1. On H, y's table time is
+ * t_x + kappa.z, so the offset from the centre is L z + e with L = I - v kappa^T and
+ * e = X - c(t_x); m = -L^-1 e = -(e + v (kappa.e) / (1 - kappa.v)) (Sherman-Morrison). */
+static void section_on_h(const rc_glue *g, const rc_toi_shape *s, rc_vec3 v, rc_vec3 ca, double ta,
+                         rc_sym3 *A, rc_vec3 *m)
+{
+    const rc_sym3 G = shape_metric(s);
+    *A = pull_back(&G, v, g->kappa);
+    const rc_vec3 e = rc_v3_sub(g->x, rc_v3_axpy(ca, g->t_x - ta, v));
+    const double ke = rc_v3_dot(g->kappa, e) / (1.0 - rc_v3_dot(g->kappa, v));
+    *m = rc_v3_scale(-1.0, rc_v3_axpy(e, ke, v));
+}
+
+int rc_glue_toi(const rc_glue *g, const rc_toi_params *prm, rc_toi_workspace *ws,
+                double t_from, const rc_toi_ball *k, double *t, rc_vec3 *y, rc_vec3 *n,
+                int *piece)
+{
+    if (!g || !prm || !ws || !k || !t || !y || !n || !piece || !isfinite(t_from))
+        return RC_EINVAL;
+    if (!rc_v3_isfinite(k->x) || !isfinite(k->r))
+        return RC_ENONFINITE;
+    if (!(k->r > 0.0))
+        return RC_ERADIUS;
+    const rc_particle kp = {k->m, k->p};
+    int st = rc_particle_check(&kp);
+    if (st != RC_OK)
+        return st;
+    const double ic2 = g->inv_c2;
+    const double Mk = rc_mass_rel(k->m, k->p, ic2);
+    const rc_toi_shape sk = rc_toi_shape_M_(k->r, k->m, k->p, ic2, Mk);
+    const rc_vec3 vk = rc_v3_scale(1.0 / Mk, k->p);
+    const rc_sym3 Gk = shape_metric(&sk);
+    /* which side of H a point is on: ell > 0 not yet reached (incoming), < 0 reached */
+#define ELL(Y, T) (rc_v3_dot(g->kappa, rc_v3_sub((Y), g->x)) - ((T) - g->t_x))
+    double bt = INFINITY;
+    rc_vec3 by = rc_v3(0, 0, 0), bn = by;
+    int bp = -1, need_h = 0;
+    for (int pc = 0; pc < 2; pc++) {
+        const rc_toi_shape *sa = pc ? &g->out : &g->in;
+        const rc_vec3 va = pc ? g->v_out : g->v_in;
+        const rc_vec3 ca = rc_v3_axpy(g->x_c, t_from - g->t_c, va);
+        double ta;
+        rc_vec3 ya, na;
+        st = rc_toi_shapes_rel(sa, &sk, rc_v3_sub(k->x, ca), rc_v3_sub(vk, va), prm, ws, &ta,
+                               &ya, &na);
+        if (st == RC_MISS)
+            continue; /* the whole cylinders never meet: neither does the piece */
+        if (st == RC_EOVERLAP) {
+            /* overlapping whole shapes now: the piece overlaps k if the common part reaches
+             * its side of H; else its first contact is on H */
+            const rc_sym3 Ga = shape_metric(sa);
+            rc_vec3 z;
+            const rc_vec3 dir = rc_v3_scale(pc ? 1.0 : -1.0, g->kappa);
+            const double lo = lin_min2(&Ga, rc_v3_sub(ca, g->x), &Gk, rc_v3_sub(k->x, g->x), dir, &z);
+            const double side = pc ? lo - (t_from - g->t_x) : -lo - (t_from - g->t_x);
+            /* (pc 0: the largest ell over the common part, > 0 reaches the incoming side;
+             * pc 1: the least, < 0 reaches the outgoing side; a tolerance of touch_tol
+             * radii of H's travel, as rc_toi's own overlap verdict) */
+            const double tol = prm->touch_tol * g->r * rc_v3_norm(g->kappa);
+            if (lo != INFINITY && (pc ? side < -tol : side > tol))
+                return RC_EOVERLAP;
+            need_h = 1;
+            continue;
+        }
+        if (st != RC_OK)
+            return st;
+        const double tc = t_from + ta;
+        const rc_vec3 Y = rc_v3_add(rc_v3_axpy(ca, ta, va), ya);
+        const double ell = ELL(Y, tc);
+        if (pc ? ell <= 0.0 : ell >= 0.0) {
+            if (tc < bt) {
+                bt = tc;
+                by = Y;
+                bn = na;
+                bp = pc;
+            }
+        } else {
+            need_h = 1;
+        }
+    }
+    if (need_h) {
+        /* on H: min of t_x + kappa.z over both cylinders' sections (the incoming and the
+         * outgoing cylinder have the same one) */
+        rc_sym3 Aa, Ak;
+        rc_vec3 ma, mk, z;
+        section_on_h(g, &g->in, g->v_in, g->x_c, g->t_c, &Aa, &ma);
+        section_on_h(g, &sk, vk, k->x, t_from, &Ak, &mk);
+        const double lo = lin_min2(&Aa, ma, &Ak, mk, g->kappa, &z);
+        if (isnan(lo))
+            return RC_EINVAL;
+        const double th = g->t_x + lo;
+        if (lo != INFINITY && th >= t_from && th < bt) {
+            bt = th;
+            by = rc_v3_add(g->x, z);
+            /* k's outward normal at the point, reversed: from the glued ball to k */
+            const rc_vec3 ck = rc_v3_axpy(k->x, th - t_from, vk);
+            const rc_vec3 gr = rc_sym3_mul_(&Gk, rc_v3_sub(ck, by), 0);
+            bn = rc_v3_scale(1.0 / rc_v3_norm(gr), gr);
+            bp = 2;
+        }
+    }
+#undef ELL
+    if (bp < 0)
+        return RC_MISS;
+    *t = bt;
+    *y = by;
+    *n = bn;
+    *piece = bp;
+    return RC_OK;
+}
