@@ -22,6 +22,8 @@ typedef struct scn_outputs {
     double xyz_every;          /* extended-XYZ frame interval; 0 = no trajectory */
     double xyz_from;           /* frames at xyz_from + k xyz_every, those >= time (a
                                   continued run keeps the grid of the run it continues) */
+    double h5md_every;         /* H5MD frame interval (frames at xyz_from + k h5md_every);
+                                  0 = no trajectory.h5 */
     int plots;                 /* trajectory PNG (and GIF for 2-D) when gnuplot exists */
     int gif;                   /* animated GIF for 2-D runs */
     int summary;               /* summary.txt */

@@ -88,7 +88,9 @@ int scn_write(FILE *f, const scn_scenario *s, double t, double t_end, size_t n,
     fprintf(f, ", \"xyz_every\": %.17g, \"plots\": %s, \"gif\": %s, \"summary\": %s",
             s->out.xyz_every, s->out.plots ? "true" : "false", s->out.gif ? "true" : "false",
             s->out.summary ? "true" : "false");
-    if (s->out.xyz_every > 0)
+    if (s->out.h5md_every > 0)
+        fprintf(f, ", \"h5md_every\": %.17g", s->out.h5md_every);
+    if (s->out.xyz_every > 0 || s->out.h5md_every > 0)
         fprintf(f, ", \"xyz_from\": %.17g", s->out.xyz_from);
     /* the snapshot times still ahead (a run interrupted before them takes them along); at
      * the scenario's own start (--dump) one at t is ahead too, later it has been written */

@@ -169,13 +169,14 @@ cmp -s "$tmp/a" "$tmp/c" && ok "same scenario twice -> identical final state" \
 
 # the outputs do not change the run: no outputs at all, and outputs at irregular times
 sed 's/"outputs": {[^}]*}/"outputs": {"plots": false, "gif": false, "summary": false}/' "$tmp/run.json" > "$tmp/quiet.json"
-sed 's/"snapshots": \[10, 20\], "xyz_every": 5/"snapshots": [0.3, 1.7, 2.71828, 19.99, 33.3], "xyz_every": 0.37/' "$tmp/run.json" > "$tmp/busy.json"
+sed 's/"snapshots": \[10, 20\], "xyz_every": 5/"snapshots": [0.3, 1.7, 2.71828, 19.99, 33.3], "xyz_every": 0.37, "h5md_every": 0.29/' "$tmp/run.json" > "$tmp/busy.json"
 "$sim" "$tmp/quiet.json" --out "$tmp/quiet" > /dev/null 2>&1
 "$sim" "$tmp/busy.json" --out "$tmp/busy" > /dev/null 2>&1
 sed -n '/"balls"/,$p' "$tmp/quiet/final.json" > "$tmp/q"
 sed -n '/"balls"/,$p' "$tmp/busy/final.json" > "$tmp/b2"
 [ -s "$tmp/q" ] && cmp -s "$tmp/a" "$tmp/q" && cmp -s "$tmp/a" "$tmp/b2" \
-    && ok "outputs change no bit: no outputs, every 5, 109 frames and 5 snapshots at odd times" \
+    && [ -s "$tmp/busy/trajectory.h5" ] \
+    && ok "outputs change no bit: no outputs, every 5, 109 XYZ and 138 H5MD frames and 5 snapshots at odd times" \
     || ko "the outputs changed the run"
 
 # a checkpoint that is not this state, or not there: refused, naming why
