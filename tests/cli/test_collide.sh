@@ -244,6 +244,11 @@ expect_bad "azimuth without alpha" "$G" '--azimuth: only with a numeric --alpha'
 run '# two balls\r\n vx , m \r\n 0.6 , 1 \r\n0,2\r\n\r\n\n' --c 1
 expect_ok "CRLF, spaces, blank lines"
 close "CRLF v0" "$(field 0 vx)" "$(awk 'BEGIN { printf "%.17g", -9 / 41 }')" $TOL
+# a spreadsheet's "CSV UTF-8" export: byte order mark, CRLF, every header and field quoted
+run '\357\273\277"vx","m"\r\n"0.6","1"\r\n"0","2"\r\n' --c 1
+expect_ok "BOM, CRLF, quoted header and fields"
+close "quoted v0" "$(field 0 vx)" "$(awk 'BEGIN { printf "%.17g", -9 / 41 }')" $TOL
+expect_bad "unclosed quote" 'm,vx\n1,"0.6\n0,2\n' 'line 2: a quoted field is not closed' --c 1
 
 # ---------------------------------------------------------------- --help
 "$C" --help > "$T/out" 2> "$T/err"
