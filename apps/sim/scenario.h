@@ -84,7 +84,7 @@ rc_sim_def scn_sim_def(const scn_scenario *s);
 char *scn_next_dir(const char *dir);
 
 /* Write s with the given balls at time t, to be run until t_end, as a scenario to f,
- * numbers in %.17g so that reading it back gives the same bits. */
+ * numbers in %.17g so that reading it back gives the same bits (one ball a line). */
 int scn_write(FILE *f, const scn_scenario *s, double t, double t_end, size_t n,
               const rc_sim_ball *balls);
 

@@ -288,13 +288,16 @@ done:
 }
 
 /* summary.json: the run's results for programs (what summary.txt says to a person), numbers
- * in round-trip precision (cJSON prints %.15g, or %.17g where that would not read back);
- * counts and impulses are this run's, from its start time to t. */
+ * in round-trip precision: %.17g, raw (cJSON's own printer takes its 15-digit form whenever
+ * that reads back within an epsilon of the value, not to the bit: 0.1 + 0.2 would be
+ * printed 0.3); counts and impulses are this run's, from its start time to t. */
 static cJSON *num(double x)
 {
+    char b[32];
+    snprintf(b, sizeof b, "%.17g", x);
     /* (JSON has no infinity or NaN: c = inf as in a scenario, an undefined ratio as null) */
     return isinf(x) && x > 0 ? cJSON_CreateString("inf")
-           : isfinite(x)     ? cJSON_CreateNumber(x)
+           : isfinite(x)     ? cJSON_CreateRaw(b)
                              : cJSON_CreateNull();
 }
 

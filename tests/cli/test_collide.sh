@@ -138,12 +138,12 @@ awk -v m="$m0" 'BEGIN { exit !(m > 1.5) }' && ok || bad "eps < 1 must raise rest
 run 'm,vx,vy\n1,0.6,0.1\n2,0,0\n' --format json --c 1 --eps 0.5
 expect_ok "json"
 awk -f "$JSON_AWK" "$T/out" > "$T/jc" && ok || bad "json syntax: $(cat "$T/jc")"
-grep -q '"law": "zmf"' "$T/out" && grep -q '"dimension": 2' "$T/out" &&
-    grep -q '"eps": 0.5' "$T/out" && grep -q '"c": 1,' "$T/out" &&
-    [ "$(grep -c '"ball": ' "$T/out")" -eq 2 ] && grep -q '"p": \[[^],]*, [^],]*\]' "$T/out" &&
+grep -q '"law":"zmf"' "$T/out" && grep -q '"dimension":2' "$T/out" &&
+    grep -q '"eps":0.5' "$T/out" && grep -q '"c":1,' "$T/out" &&
+    [ "$(grep -c '"ball":' "$T/out")" -eq 2 ] && grep -q '"p":\[[^],]*,[^],]*\]' "$T/out" &&
     ok || bad "json fields: $(cat "$T/out")"
 run 'm,vx\n1,0.6\n2,0\n' --format json
-grep -q '"c": "inf"' "$T/out" && ok || bad "json c = inf must be the string \"inf\""
+grep -q '"c":"inf"' "$T/out" && ok || bad "json c = inf must be the string \"inf\""
 awk -f "$JSON_AWK" "$T/out" > "$T/jc" && ok || bad "json syntax (inf): $(cat "$T/jc")"
 # the checker itself must be able to fail
 printf '{"c": inf}' | awk -f "$JSON_AWK" > /dev/null 2>&1 && bad "json checker accepts bad JSON" || ok
