@@ -22,7 +22,7 @@ target=${1:-scenario}
 secs=${2:-300}
 case "$target" in
 scenario) seeds=("$here"/data/scenarios/*.json); extra=("$here/apps/sim/scenario.c" "$here/apps/sim/scenario_write.c"); libs=(-lcjson) ;;
-table) seeds=("$here"/data/examples/*.csv); extra=(); libs=() ;;
+table) seeds=("$here"/data/examples/*.csv "$here"/tests/fuzz/table-seeds/*.csv); extra=(); libs=() ;;
 engine) seeds=("$here"/tests/fuzz/engine-seeds/*); extra=(); libs=() ;;
 *) echo "fuzz: target '$target': not scenario, table or engine" >&2; exit 2 ;;
 esac

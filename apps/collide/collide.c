@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <cjson/cJSON.h>
 #include <gsl/gsl_rng.h>
 
 #include "app.h"
@@ -165,6 +166,21 @@ static int parse_options(int argc, char **argv, options *o)
     return 0;
 }
 
+static cJSON *json_num(double x)
+{
+    char b[32];
+    snprintf(b, sizeof b, "%.17g", x);
+    return cJSON_CreateRaw(b);
+}
+
+static cJSON *json_vec(rc_vec3 v, int dim)
+{
+    cJSON *a = cJSON_CreateArray();
+    for (int d = 0; a && d < dim; d++)
+        cJSON_AddItemToArray(a, json_num(rc_v3_get(v, d)));
+    return a;
+}
+
 static void print_vec(FILE *out, rc_vec3 v, int dim, const char *sep)
 {
     for (int i = 0; i < dim; i++)
@@ -286,25 +302,40 @@ int main(int argc, char **argv)
             goto out;
         }
     if (o.json) {
-        fprintf(out, "{\"c\": ");
-        if (isinf(o.c))
-            fprintf(out, "\"inf\"");
-        else
-            fprintf(out, "%.17g", o.c);
-        fprintf(out, ", \"law\": \"%s\", \"eps\": %.17g, \"dimension\": %d", o.law->name,
-                o.eps, dim);
+        /* printed by cJSON, each ball on a line; numbers raw %.17g (cJSON's own printer
+         * keeps 15 digits whenever they read back within an epsilon, not to the bit) */
+        cJSON *j = cJSON_CreateObject();
+        cJSON_AddItemToObject(j, "c", isinf(o.c) ? cJSON_CreateString("inf") : json_num(o.c));
+        cJSON_AddItemToObject(j, "law", cJSON_CreateString(o.law->name));
+        cJSON_AddItemToObject(j, "eps", json_num(o.eps));
+        cJSON_AddItemToObject(j, "dimension", json_num(dim));
         if (o.alpha_given)
-            fprintf(out, ", \"alpha\": %.17g", prm.alpha);
-        fprintf(out, ", \"balls\": [");
+            cJSON_AddItemToObject(j, "alpha", json_num(prm.alpha));
+        char *head = j ? cJSON_PrintUnformatted(j) : NULL;
+        cJSON_Delete(j);
+        char *row[2] = {NULL, NULL};
         for (int i = 0; i < 2; i++) {
-            fprintf(out, "%s\n  {\"ball\": %d, \"m\": %.17g, \"p\": [", i ? "," : "", i,
-                    ball[i].m);
-            print_vec(out, ball[i].p, dim, ", ");
-            fprintf(out, "], \"v\": [");
-            print_vec(out, v[i], dim, ", ");
-            fprintf(out, "], \"E\": %.17g}", E[i]);
+            cJSON *b = cJSON_CreateObject();
+            cJSON_AddItemToObject(b, "ball", json_num(i));
+            cJSON_AddItemToObject(b, "m", json_num(ball[i].m));
+            cJSON_AddItemToObject(b, "p", json_vec(ball[i].p, dim));
+            cJSON_AddItemToObject(b, "v", json_vec(v[i], dim));
+            cJSON_AddItemToObject(b, "E", json_num(E[i]));
+            row[i] = b ? cJSON_PrintUnformatted(b) : NULL;
+            cJSON_Delete(b);
         }
-        fprintf(out, "\n]}\n");
+        size_t hl = head ? strlen(head) : 0;
+        if (hl >= 2 && row[0] && row[1]) {
+            head[hl - 1] = '\0'; /* the balls go inside the object */
+            fprintf(out, "%s,\"balls\":[\n  %s,\n  %s\n]}\n", head, row[0], row[1]);
+        }
+        free(head);
+        free(row[0]);
+        free(row[1]);
+        if (hl < 2 || !row[0] || !row[1]) {
+            rc = app_fail(prog, 1, "out of memory");
+            goto out;
+        }
     } else {
         static const char *const pn[3] = {"px", "py", "pz"}, *const vn[3] = {"vx", "vy", "vz"};
         fprintf(out, "ball,m");

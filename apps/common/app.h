@@ -109,9 +109,11 @@ int app_parse_list(const char *s, double *out, int max, int *n, char *err);
 
 /* ---- CSV tables ------------------------------------------------------------------- */
 
-/* A CSV table: a header line of column names, then rows of fields. Fields are trimmed of
- * blanks, CR of CRLF files is dropped, blank lines are skipped (trailing or not), lines
- * starting with '#' are comments. No quoting: relcol tables hold numbers and names. */
+/* A CSV table: a header line of column names, then rows of fields, as spreadsheets export
+ * them: a UTF-8 byte order mark is skipped, CR of CRLF files dropped, a field may be
+ * quoted (RFC 4180: "a, b", "say ""x""", a quoted field may span lines). Unquoted fields
+ * are trimmed of blanks; blank lines are skipped (trailing or not), lines starting with
+ * '#' are comments. */
 typedef struct app_table {
     int ncols;
     char **names;    /* ncols column names */

@@ -18,31 +18,84 @@ static char *trim(char *s)
     return s;
 }
 
-/* Split a line at commas into trimmed, malloc'ed fields. Returns the count or -1. */
-static int split(char *line, char ***out)
+/* Split a record at commas into malloc'ed fields, as spreadsheets write CSV (RFC 4180):
+ * a field may be quoted ("a, b" holds a comma, "say ""x""" a quote, and a quoted field
+ * may span lines); unquoted fields are trimmed of blanks, quoted ones kept as quoted
+ * (blanks outside the quotes dropped). Returns the count, -1 out of memory, or -2 with
+ * the reason in why (text after a closing quote). */
+static int split(const char *line, char ***out, char *why)
 {
+    size_t len = strlen(line);
     int n = 1;
     for (const char *p = line; *p; p++)
-        n += (*p == ',');
+        n += (*p == ','); /* (a bound: commas inside quotes make fewer fields) */
     char **f = calloc((size_t)n, sizeof *f);
-    if (!f)
+    char *buf = malloc(len + 1);
+    if (!f || !buf) {
+        free(f);
+        free(buf);
         return -1;
-    char *p = line;
-    for (int i = 0; i < n; i++) {
-        char *comma = strchr(p, ',');
-        if (comma)
-            *comma = '\0';
-        f[i] = strdup(trim(p));
-        if (!f[i]) {
-            for (int j = 0; j < i; j++)
-                free(f[j]);
-            free(f);
-            return -1;
-        }
-        p = comma ? comma + 1 : p + strlen(p);
     }
+    int k = 0;
+    const char *p = line;
+    for (;;) {
+        while (*p == ' ' || *p == '\t')
+            p++;
+        size_t b = 0;
+        if (*p == '"') {
+            for (p++; *p; p++) {
+                if (*p == '"' && p[1] == '"')
+                    buf[b++] = *++p;
+                else if (*p == '"')
+                    break;
+                else
+                    buf[b++] = *p;
+            }
+            if (*p == '"')
+                p++;
+            while (*p && isspace((unsigned char)*p))
+                p++;
+            if (*p && *p != ',') {
+                app_errf(why, "field %d: text after its closing quote", k + 1);
+                buf[b] = '\0';
+                goto bad;
+            }
+        } else {
+            while (*p && *p != ',')
+                buf[b++] = *p++;
+            while (b > 0 && isspace((unsigned char)buf[b - 1]))
+                b--;
+        }
+        buf[b] = '\0';
+        if (!(f[k++] = strdup(buf))) {
+            k--;
+            goto nomem;
+        }
+        if (*p != ',')
+            break;
+        p++;
+    }
+    free(buf);
     *out = f;
-    return n;
+    return k;
+nomem:
+    why[0] = '\0';
+bad:
+    for (int j = 0; j < k; j++)
+        free(f[j]);
+    free(f);
+    free(buf);
+    return why[0] ? -2 : -1;
+}
+
+/* Whether s ends inside a quoted field (an odd number of quotes: "" inside a quoted field
+ * counts two, so the parity says where a record ends). */
+static int open_quote(const char *s)
+{
+    int q = 0;
+    for (; *s; s++)
+        q ^= (*s == '"');
+    return q;
 }
 
 static void free_fields(char **f, int n)
@@ -72,20 +125,69 @@ int app_table_read(FILE *f, app_table *t, char *err)
     memset(t, 0, sizeof *t);
     char *buf = NULL;
     size_t cap = 0, rows_cap = 0;
-    long lineno = 0;
+    long lineno = 0, rec_line = 0;
     ssize_t got;
     int rc = -1;
+    char *rec = NULL; /* a record: one line, or more when a quoted field spans lines */
+    size_t rec_len = 0;
     while ((got = getline(&buf, &cap, f)) >= 0) {
         lineno++;
         if (memchr(buf, '\0', (size_t)got)) {
             app_errf(err, "line %ld: NUL byte (binary input?)", lineno);
             goto out;
         }
-        char *s = trim(buf);
-        if (*s == '\0' || *s == '#')
-            continue; /* blank lines (trailing ones too) and comments */
+        char *line = buf;
+        /* a UTF-8 byte order mark (spreadsheets' "CSV UTF-8") is not part of the text */
+        if (lineno == 1 && (unsigned char)line[0] == 0xEF && (unsigned char)line[1] == 0xBB &&
+            (unsigned char)line[2] == 0xBF)
+            line += 3;
+        if (rec) { /* continuing a quoted field: keep the line end, as LF */
+            size_t l = strlen(line);
+            char *r2 = realloc(rec, rec_len + l + 1);
+            if (!r2) {
+                app_errf(err, "out of memory");
+                goto out;
+            }
+            rec = r2;
+            memcpy(rec + rec_len, line, l + 1);
+            rec_len += l;
+        } else {
+            char *s0 = trim(line);
+            if (*s0 == '\0' || *s0 == '#')
+                continue; /* blank lines (trailing ones too) and comments */
+            if (!(rec = strdup(s0))) {
+                app_errf(err, "out of memory");
+                goto out;
+            }
+            rec_len = strlen(rec);
+            rec_line = lineno;
+        }
+        if (open_quote(rec)) {
+            /* (CRLF inside a quoted field becomes LF) */
+            if (rec_len > 0 && rec[rec_len - 1] == '\n')
+                rec[--rec_len] = '\0';
+            if (rec_len > 0 && rec[rec_len - 1] == '\r')
+                rec[--rec_len] = '\0';
+            char *r2 = realloc(rec, rec_len + 2);
+            if (!r2) {
+                app_errf(err, "out of memory");
+                goto out;
+            }
+            rec = r2;
+            rec[rec_len++] = '\n';
+            rec[rec_len] = '\0';
+            continue;
+        }
+        char *s = trim(rec);
         char **fields;
-        int n = split(s, &fields);
+        char why[APP_ERR_LEN];
+        int n = split(s, &fields, why);
+        free(rec);
+        rec = NULL;
+        if (n == -2) {
+            app_errf(err, "line %ld: %s", rec_line, why);
+            goto out;
+        }
         if (n < 0) {
             app_errf(err, "out of memory");
             goto out;
@@ -93,17 +195,17 @@ int app_table_read(FILE *f, app_table *t, char *err)
         if (!t->names) {
             t->names = fields;
             t->ncols = n;
-            t->header_line = lineno;
+            t->header_line = rec_line;
             for (int i = 0; i < n; i++) {
                 if (fields[i][0] == '\0') {
-                    app_errf(err, "line %ld (header): column %d has an empty name", lineno,
+                    app_errf(err, "line %ld (header): column %d has an empty name", rec_line,
                              i + 1);
                     goto out;
                 }
                 for (int j = 0; j < i; j++)
                     if (strcmp(fields[i], fields[j]) == 0) {
                         app_errf(err, "line %ld (header), column %s: repeated column",
-                                 lineno, fields[i]);
+                                 rec_line, fields[i]);
                         goto out;
                     }
             }
@@ -111,7 +213,7 @@ int app_table_read(FILE *f, app_table *t, char *err)
         }
         if (n != t->ncols) {
             app_errf(err, "line %ld: %d field%s, but the header (line %ld) has %d columns",
-                     lineno, n, n == 1 ? "" : "s", t->header_line, t->ncols);
+                     rec_line, n, n == 1 ? "" : "s", t->header_line, t->ncols);
             free_fields(fields, n);
             goto out;
         }
@@ -132,10 +234,14 @@ int app_table_read(FILE *f, app_table *t, char *err)
         }
         memcpy(t->cells + t->nrows * (size_t)t->ncols, fields, (size_t)n * sizeof *fields);
         free(fields); /* the strings now belong to cells */
-        t->line[t->nrows++] = lineno;
+        t->line[t->nrows++] = rec_line;
     }
     if (ferror(f)) {
         app_errf(err, "read error after line %ld", lineno);
+        goto out;
+    }
+    if (rec) {
+        app_errf(err, "line %ld: a quoted field is not closed (a '\"' missing)", rec_line);
         goto out;
     }
     if (!t->names) {
@@ -144,6 +250,7 @@ int app_table_read(FILE *f, app_table *t, char *err)
     }
     rc = 0;
 out:
+    free(rec);
     free(buf);
     if (rc != 0)
         app_table_free(t);

@@ -470,7 +470,8 @@ static int cmp_double(const void *a, const void *b)
 
 static int parse_outputs(const ctx *c, const cJSON *o, scn_scenario *s)
 {
-    static const char *const keys[] = {"dir", "snapshots", "xyz_every", "xyz_from", "plots",
+    static const char *const keys[] = {"dir", "snapshots", "xyz_every", "xyz_from", "h5md_every",
+                                       "plots",
                                        "gif", "summary", NULL};
     scn_outputs *out = &s->out;
     out->plots = 1;
@@ -486,6 +487,7 @@ static int parse_outputs(const ctx *c, const cJSON *o, scn_scenario *s)
         if (get_str(c, o, "outputs", "dir", dir, &dir) ||
             get_num(c, o, "outputs", "xyz_every", 0, 0, 0, &out->xyz_every) ||
             get_num(c, o, "outputs", "xyz_from", 0, s->time, 0, &out->xyz_from) ||
+            get_num(c, o, "outputs", "h5md_every", 0, 0, 0, &out->h5md_every) ||
             get_bool(c, o, "outputs", "plots", 1, &out->plots) ||
             get_bool(c, o, "outputs", "gif", s->dim == 2, &out->gif) ||
             get_bool(c, o, "outputs", "summary", 1, &out->summary))
@@ -497,6 +499,12 @@ static int parse_outputs(const ctx *c, const cJSON *o, scn_scenario *s)
         if (out->xyz_every > 0 && (s->t_end - s->time) / out->xyz_every > SCN_MAX_FRAMES)
             return bad(c, "outputs.xyz_every", "gives %.3g frames from %g to %g, more than %d",
                        (s->t_end - s->time) / out->xyz_every, s->time, s->t_end,
+                       SCN_MAX_FRAMES);
+        if (out->h5md_every < 0)
+            return bad(c, "outputs.h5md_every", "must be >= 0 (0: no H5MD trajectory)");
+        if (out->h5md_every > 0 && (s->t_end - s->time) / out->h5md_every > SCN_MAX_FRAMES)
+            return bad(c, "outputs.h5md_every", "gives %.3g frames from %g to %g, more than %d",
+                       (s->t_end - s->time) / out->h5md_every, s->time, s->t_end,
                        SCN_MAX_FRAMES);
         if (!(out->xyz_from <= s->time))
             return bad(c, "outputs.xyz_from", "must be <= the start time %.17g (the grid's "

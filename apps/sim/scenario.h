@@ -22,6 +22,8 @@ typedef struct scn_outputs {
     double xyz_every;          /* extended-XYZ frame interval; 0 = no trajectory */
     double xyz_from;           /* frames at xyz_from + k xyz_every, those >= time (a
                                   continued run keeps the grid of the run it continues) */
+    double h5md_every;         /* H5MD frame interval (frames at xyz_from + k h5md_every);
+                                  0 = no trajectory.h5 */
     int plots;                 /* trajectory PNG (and GIF for 2-D) when gnuplot exists */
     int gif;                   /* animated GIF for 2-D runs */
     int summary;               /* summary.txt */
@@ -83,7 +85,7 @@ rc_sim_def scn_sim_def(const scn_scenario *s);
 char *scn_next_dir(const char *dir);
 
 /* Write s with the given balls at time t, to be run until t_end, as a scenario to f,
- * numbers in %.17g so that reading it back gives the same bits. */
+ * numbers in %.17g so that reading it back gives the same bits (one ball a line). */
 int scn_write(FILE *f, const scn_scenario *s, double t, double t_end, size_t n,
               const rc_sim_ball *balls);
 

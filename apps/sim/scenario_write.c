@@ -1,10 +1,12 @@
 /* scenario_write.c — a scenario written back as JSON (a run's final state is itself a
- * scenario: scn_write), and the folder a continued run writes into (scn_next_dir). Every
- * number is written with %.17g, so that reading it back gives the same bits. */
+ * scenario: scn_write), and the folder a continued run writes into (scn_next_dir). Written
+ * by cJSON's printer; every number with %.17g, so that reading it back gives the same bits. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include <cjson/cJSON.h>
 
 #include "scenario.h"
 
@@ -29,93 +31,138 @@ char *scn_next_dir(const char *dir)
     return out;
 }
 
-/* s as a JSON string: quotes, backslashes and control characters escaped (a folder name
- * may hold any of them; written raw, final.json would not read back). */
-static void put_string(FILE *f, const char *s)
+/* A double as JSON that reads back to the same bits: %.17g, raw. cJSON's own printer does
+ * not: it keeps its 15-digit form whenever that reads back within an epsilon of the value
+ * (0.1 + 0.2 comes out 0.3), and prints -0 as 0 (a ball's momentum of -0 must come back as
+ * -0 for the checkpoint to match it). */
+static cJSON *scn_json_number(double x)
 {
-    fputc('"', f);
-    for (const unsigned char *p = (const unsigned char *)s; *p; p++) {
-        if (*p == '"' || *p == '\\')
-            fprintf(f, "\\%c", *p);
-        else if (*p < 0x20)
-            fprintf(f, "\\u%04x", *p);
-        else
-            fputc(*p, f);
+    char b[32];
+    snprintf(b, sizeof b, "%.17g", x);
+    return cJSON_CreateRaw(b);
+}
+
+static cJSON *vec(rc_vec3 v, int dim)
+{
+    cJSON *a = cJSON_CreateArray();
+    for (int d = 0; a && d < dim; d++)
+        cJSON_AddItemToArray(a, scn_json_number(rc_v3_get(v, d)));
+    return a;
+}
+
+static void put(cJSON *o, const char *key, cJSON *item) { cJSON_AddItemToObject(o, key, item); }
+
+static void put_num(cJSON *o, const char *key, double x) { put(o, key, scn_json_number(x)); }
+
+/* (cJSON_Add... on an object that failed to allocate is a no-op: a missing piece is found
+ * by the print that fails) */
+static cJSON *header(const scn_scenario *s, double t, double t_end, int periodic, int mixed)
+{
+    cJSON *j = cJSON_CreateObject(), *x;
+    char b[32];
+    put(j, "relcol", cJSON_CreateRaw("1"));
+    snprintf(b, sizeof b, "%d", s->dim);
+    put(j, "dim", cJSON_CreateRaw(b));
+    put(j, "box", vec(s->box, s->dim));
+    if (periodic && !mixed) /* (walls, the default, are not written) */
+        put(j, "boundary", cJSON_CreateString("periodic"));
+    if (periodic && mixed) {
+        put(j, "boundary", x = cJSON_CreateArray());
+        for (int d = 0; x && d < s->dim; d++)
+            cJSON_AddItemToArray(x, cJSON_CreateString(s->boundary[d] == RC_SIM_PERIODIC
+                                                           ? "periodic" : "walls"));
     }
-    fputc('"', f);
+    put(j, "c", isinf(s->c) ? cJSON_CreateString("inf") : scn_json_number(s->c));
+    put(j, "law", cJSON_CreateString(s->law->name));
+    put(j, "restitution", x = cJSON_CreateObject());
+    put_num(x, "ball", s->eps_ball);
+    put_num(x, "wall", s->eps_wall);
+    put(j, "contact_frame", cJSON_CreateString(s->frame->name));
+    put(j, "groups", cJSON_CreateString(rc_group_rule_name(s->groups)));
+    put_num(j, "tc", s->t_c);
+    snprintf(b, sizeof b, "%llu", (unsigned long long)s->seed); /* (all 64 bits) */
+    put(j, "seed", cJSON_CreateRaw(b));
+    put_num(j, "time", t);
+    put_num(j, "t_end", t_end);
+    put(j, "restart", cJSON_CreateTrue());
+    if (s->checkpoint)
+        put(j, "checkpoint", cJSON_CreateString(s->checkpoint));
+    put(j, "outputs", x = cJSON_CreateObject());
+    put(x, "dir", cJSON_CreateString(s->out.dir));
+    put_num(x, "xyz_every", s->out.xyz_every);
+    if (s->out.h5md_every > 0)
+        put_num(x, "h5md_every", s->out.h5md_every);
+    if (s->out.xyz_every > 0 || s->out.h5md_every > 0)
+        put_num(x, "xyz_from", s->out.xyz_from);
+    put(x, "plots", cJSON_CreateBool(s->out.plots));
+    put(x, "gif", cJSON_CreateBool(s->out.gif));
+    put(x, "summary", cJSON_CreateBool(s->out.summary));
+    /* the snapshot times still ahead (a run interrupted before them takes them along); at
+     * the scenario's own start (--dump) one at t is ahead too, later it has been written */
+    cJSON *sn = NULL;
+    for (size_t k = 0; k < s->out.n_snap; k++)
+        if ((s->out.snap[k] > t || (t == s->time && s->out.snap[k] == t)) &&
+            s->out.snap[k] <= t_end) {
+            if (!sn)
+                put(x, "snapshots", sn = cJSON_CreateArray());
+            if (sn)
+                cJSON_AddItemToArray(sn, scn_json_number(s->out.snap[k]));
+        }
+    return j;
 }
 
-static void put_vec(FILE *f, rc_vec3 v, int dim)
+static cJSON *ball(const rc_sim_ball *b, int dim, int periodic)
 {
-    fputc('[', f);
-    for (int d = 0; d < dim; d++)
-        fprintf(f, "%s%.17g", d ? ", " : "", rc_v3_get(v, d));
-    fputc(']', f);
+    cJSON *j = cJSON_CreateObject();
+    put_num(j, "r", b->r);
+    put_num(j, "m", b->m);
+    put_num(j, "tau", b->tau);
+    if (b->collided)
+        put_num(j, "tau_last", b->tau_last);
+    put(j, "x", vec(b->x, dim));
+    put(j, "p", vec(b->p, dim));
+    if (periodic) { /* (the wraps: x + image L is the unwrapped position) */
+        cJSON *a = cJSON_CreateArray();
+        put(j, "image", a);
+        for (int d = 0; a && d < dim; d++) {
+            char n[16];
+            snprintf(n, sizeof n, "%d", (int)b->image[d]);
+            cJSON_AddItemToArray(a, cJSON_CreateRaw(n));
+        }
+    }
+    return j;
 }
 
+/* Printed by cJSON (strings escaped by it, numbers as scn_json_number), one ball a line:
+ * the balls are streamed, each its own small tree, so that a million balls never make
+ * one tree of millions of nodes. */
 int scn_write(FILE *f, const scn_scenario *s, double t, double t_end, size_t n,
               const rc_sim_ball *balls)
 {
-    fprintf(f, "{\"relcol\": 1, \"dim\": %d, \"box\": ", s->dim);
-    put_vec(f, s->box, s->dim);
     int periodic = 0, mixed = 0;
     for (int d = 0; d < s->dim; d++) {
         periodic |= s->boundary[d] == RC_SIM_PERIODIC;
         mixed |= s->boundary[d] != s->boundary[0];
     }
-    if (periodic && !mixed) /* (walls, the default, are not written) */
-        fprintf(f, ", \"boundary\": \"periodic\"");
-    for (int d = 0; periodic && mixed && d < s->dim; d++)
-        fprintf(f, "%s\"%s\"%s", d ? ", " : ", \"boundary\": [",
-                s->boundary[d] == RC_SIM_PERIODIC ? "periodic" : "walls",
-                d + 1 < s->dim ? "" : "]");
-    if (isinf(s->c))
-        fprintf(f, ",\n \"c\": \"inf\"");
-    else
-        fprintf(f, ",\n \"c\": %.17g", s->c);
-    fprintf(f, ", \"law\": \"%s\", \"restitution\": {\"ball\": %.17g, \"wall\": %.17g},\n",
-            s->law->name, s->eps_ball, s->eps_wall);
-    fprintf(f, " \"contact_frame\": \"%s\", \"groups\": \"%s\", \"tc\": %.17g, \"seed\": %llu,\n",
-            s->frame->name, rc_group_rule_name(s->groups), s->t_c, (unsigned long long)s->seed);
-    fprintf(f, " \"time\": %.17g, \"t_end\": %.17g, \"restart\": true,\n", t, t_end);
-    if (s->checkpoint) {
-        fprintf(f, " \"checkpoint\": ");
-        put_string(f, s->checkpoint);
-        fprintf(f, ",\n");
+    cJSON *h = header(s, t, t_end, periodic, mixed);
+    char *text = h ? cJSON_PrintUnformatted(h) : NULL;
+    cJSON_Delete(h);
+    size_t len = text ? strlen(text) : 0;
+    if (len < 2 || text[len - 1] != '}') { /* (out of memory) */
+        free(text);
+        return -1;
     }
-    fprintf(f, " \"outputs\": {\"dir\": ");
-    put_string(f, s->out.dir);
-    fprintf(f, ", \"xyz_every\": %.17g, \"plots\": %s, \"gif\": %s, \"summary\": %s",
-            s->out.xyz_every, s->out.plots ? "true" : "false", s->out.gif ? "true" : "false",
-            s->out.summary ? "true" : "false");
-    if (s->out.xyz_every > 0)
-        fprintf(f, ", \"xyz_from\": %.17g", s->out.xyz_from);
-    /* the snapshot times still ahead (a run interrupted before them takes them along); at
-     * the scenario's own start (--dump) one at t is ahead too, later it has been written */
-    int first = 1;
-    for (size_t k = 0; k < s->out.n_snap; k++)
-        if ((s->out.snap[k] > t || (t == s->time && s->out.snap[k] == t)) &&
-            s->out.snap[k] <= t_end) {
-            fprintf(f, "%s%.17g", first ? ",\n  \"snapshots\": [" : ", ", s->out.snap[k]);
-            first = 0;
-        }
-    fprintf(f, "%s},\n", first ? "" : "]");
-    fprintf(f, " \"balls\": [\n");
+    text[len - 1] = '\0'; /* the balls go inside the object */
+    fprintf(f, "%s,\n \"balls\": [\n", text);
+    free(text);
     for (size_t i = 0; i < n; i++) {
-        fprintf(f, "  {\"r\": %.17g, \"m\": %.17g, \"tau\": %.17g, ", balls[i].r, balls[i].m,
-                balls[i].tau);
-        if (balls[i].collided)
-            fprintf(f, "\"tau_last\": %.17g, ", balls[i].tau_last);
-        fprintf(f, "\"x\": ");
-        put_vec(f, balls[i].x, s->dim);
-        fprintf(f, ", \"p\": ");
-        put_vec(f, balls[i].p, s->dim);
-        if (periodic) /* (the wraps: x + image L is the unwrapped position) */
-            fprintf(f, ", \"image\": [%d, %d%s", (int)balls[i].image[0], (int)balls[i].image[1],
-                    s->dim == 3 ? "" : "]");
-        if (periodic && s->dim == 3)
-            fprintf(f, ", %d]", (int)balls[i].image[2]);
-        fprintf(f, "}%s\n", i + 1 < n ? "," : "");
+        cJSON *b = ball(&balls[i], s->dim, periodic);
+        char *bt = b ? cJSON_PrintUnformatted(b) : NULL;
+        cJSON_Delete(b);
+        if (!bt)
+            return -1;
+        fprintf(f, "  %s%s\n", bt, i + 1 < n ? "," : "");
+        free(bt);
     }
     fprintf(f, " ]}\n");
     return ferror(f) ? -1 : 0;

@@ -1,5 +1,5 @@
 /* sim.c — relcol-sim: runs a scenario with the event-driven engine and writes what the
- * scenario asks for: CSV snapshots, an extended-XYZ trajectory (OVITO reads it), a
+ * scenario asks for: CSV snapshots, an extended-XYZ trajectory (OVITO, ASE) and an H5MD one, a
  * summary, the final state as a scenario (continuing from it is bit-identical to not
  * stopping), trajectory and animation figures through gnuplot. Ctrl-C writes the restart
  * state and exits cleanly. Every file is written atomically (temporary name, rename).
@@ -42,10 +42,11 @@ static void usage(FILE *f)
 "  --dump          print the scenario as relcol reads it (JSON) and exit\n"
 "\n"
 "Writes into the output folder: snapshots/snap-NNNN.csv at the scenario's snapshot times,\n"
-"trajectory.xyz (extended XYZ, when outputs.xyz_every > 0), summary.txt, summary.json\n"
-"(the same for programs), final.json (the final state as a scenario) and final.ckpt (the\n"
-"engine's whole state, which final.json names): `relcol-sim DIR/final.json` continues\n"
-"the run, writing into DIR.1, then DIR.2, ... (the run it continues keeps its files),\n"
+"trajectory.xyz (extended XYZ, when outputs.xyz_every > 0), trajectory.h5 (H5MD, when\n"
+"outputs.h5md_every > 0), summary.txt, summary.json (the same for programs), final.json\n"
+"(the final state as a scenario) and final.ckpt (the engine's whole state, which\n"
+"final.json names): `relcol-sim DIR/final.json` continues the run, writing into DIR.1,\n"
+"then DIR.2, ... (the run it continues keeps its files),\n"
 "and with gnuplot trajectories.png and, for 2-D runs, table.gif. A progress bar shows on\n"
 "a terminal. Ctrl-C stops at the next event batch, writes final.json and the files so far.\n"
 "\n"

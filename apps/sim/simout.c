@@ -11,25 +11,40 @@
 
 static const char *const axes = "xyz";
 
+/* The first point of the frame grid xyz_from + k dt at or after the start (INFINITY if
+ * none, or dt = 0), by the same expression that places every later frame, so that a
+ * continued run's frames lie on the uninterrupted run's; *k gets its index. */
+static double grid_start(const scn_scenario *s, double dt, double *k_out)
+{
+    *k_out = 0.0;
+    if (!(dt > 0))
+        return INFINITY;
+    const double from = s->out.xyz_from;
+    double k = fmax(0.0, ceil((s->time - from) / dt));
+    while (k > 0.0 && from + dt * (k - 1.0) >= s->time)
+        k -= 1.0;
+    while (from + dt * k < s->time)
+        k += 1.0;
+    *k_out = k;
+    return from + dt * k <= s->t_end ? from + dt * k : INFINITY;
+}
+
+/* The next point of that grid after index *k (advanced), INFINITY past t_end. */
+static double grid_next(const scn_scenario *s, double dt, double *k)
+{
+    *k += 1.0;
+    double t = s->out.xyz_from + dt * *k;
+    return t > s->t_end ? INFINITY : t;
+}
+
 int simout_open(sim_output *o, const scn_scenario *s, const char *prog, char *err)
 {
     memset(o, 0, sizeof *o);
     o->s = s;
     o->prog = prog;
-    o->next_frame = INFINITY;
-    if (s->out.xyz_every > 0) {
-        /* the first point of the grid xyz_from + k xyz_every at or after the start, by the
-         * same expression that places every later frame (so on the uninterrupted run's) */
-        const double from = s->out.xyz_from, dt = s->out.xyz_every;
-        double k = fmax(0.0, ceil((s->time - from) / dt));
-        while (k > 0.0 && from + dt * (k - 1.0) >= s->time)
-            k -= 1.0;
-        while (from + dt * k < s->time)
-            k += 1.0;
-        o->frame_k = k;
-        o->next_frame = from + dt * k <= s->t_end ? from + dt * k : INFINITY;
-        o->first_frame = from + dt * k;
-    }
+    o->next_frame = grid_start(s, s->out.xyz_every, &o->frame_k);
+    o->first_frame = s->out.xyz_from + s->out.xyz_every * o->frame_k;
+    o->next_h5 = grid_start(s, s->out.h5md_every, &o->h5_k);
     if (simout_stage_open(s->out.dir, &o->dir, err))
         return -1;
     if (s->out.n_snap) {
@@ -60,6 +75,23 @@ int simout_open(sim_output *o, const scn_scenario *s, const char *prog, char *er
         double nframes = (s->t_end - s->time) / s->out.xyz_every + 1;
         o->gif_stride = nframes > 300 ? (size_t)ceil(nframes / 300) : 1;
     }
+    if (s->out.h5md_every > 0) {
+        char *p = app_path_join(o->dir, "trajectory.h5");
+        int r = p ? h5md_open(&o->h5, p, s, s->n, prog, err) : -1;
+        if (!p)
+            app_errf(err, "out of memory");
+        free(p);
+        if (r) {
+            if (o->have_xyz) {
+                app_atomic_abort(&o->xyz);
+                app_atomic_abort(&o->frames);
+                o->have_xyz = 0;
+            }
+            simout_stage_discard(o->dir);
+            o->dir = NULL;
+            return -1;
+        }
+    }
     return 0;
 }
 
@@ -68,7 +100,7 @@ double simout_next_time(const sim_output *o, double t)
     double next = o->s->t_end;
     if (o->next_snap < o->s->out.n_snap)
         next = fmin(next, o->s->out.snap[o->next_snap]);
-    next = fmin(next, o->next_frame);
+    next = fmin(next, fmin(o->next_frame, o->next_h5));
     return next > t ? next : fmin(o->s->t_end, nextafter(t, INFINITY));
 }
 
@@ -85,7 +117,10 @@ static int write_snapshot(const sim_output *o, const rc_sim *sim, size_t k, char
     }
     free(path);
     double k2 = isinf(s->c) ? 0.0 : 1.0 / (s->c * s->c);
-    fprintf(a.f, "# relcol-sim snapshot at t = %.17g\nball,t", rc_sim_time(sim));
+    /* the header is the first line (no comment before it: csv.DictReader, pandas and
+     * numpy.genfromtxt(names=True) take the first line for the names); the time is the
+     * t column */
+    fprintf(a.f, "ball,t");
     for (int d = 0; d < s->dim; d++)
         fprintf(a.f, ",%c", axes[d]);
     for (int d = 0; d < s->dim; d++)
@@ -125,9 +160,13 @@ static void write_frame(sim_output *o, const rc_sim *sim)
     size_t n = rc_sim_count(sim);
     double k2 = isinf(s->c) ? 0.0 : 1.0 / (s->c * s->c);
     double Lz = s->dim == 3 ? s->box.z : 0.0;
+    /* column names as ASE's extxyz reader maps them: momenta and masses become
+     * get_momenta() and get_masses(), so get_velocities() = momenta / masses is v; masses
+     * is the relativistic mass M = gamma m (p = M v), rest_mass is m; velo is v for OVITO.
+     * ASE applies no units: the numbers are relcol's, in the units of c. */
     fprintf(o->xyz.f, "%zu\nLattice=\"%.17g 0 0 0 %.17g 0 0 0 %.17g\" Origin=\"0 0 0\" "
-                      "Properties=species:S:1:pos:R:3:velo:R:3:radius:R:1:mass:R:1:gamma:R:1 "
-                      "Time=%.17g pbc=\"%c %c %c\"\n",
+                      "Properties=species:S:1:pos:R:3:velo:R:3:momenta:R:3:masses:R:1:"
+                      "rest_mass:R:1:radius:R:1:gamma:R:1 Time=%.17g pbc=\"%c %c %c\"\n",
             n, s->box.x, s->box.y, Lz, rc_sim_time(sim),
             s->boundary[0] == RC_SIM_PERIODIC ? 'T' : 'F',
             s->boundary[1] == RC_SIM_PERIODIC ? 'T' : 'F',
@@ -137,11 +176,12 @@ static void write_frame(sim_output *o, const rc_sim *sim)
         rc_sim_ball b;
         rc_sim_get_ball(sim, i, &b);
         rc_vec3 v = rc_velocity(b.m, b.p, k2);
-        fprintf(o->xyz.f, "B %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g\n", b.x.x, b.x.y,
-                b.x.z, v.x, v.y, v.z, b.r, b.m, rc_gamma(b.m, b.p, k2));
+        const double g = rc_gamma(b.m, b.p, k2);
+        fprintf(o->xyz.f,
+                "B %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g\n",
+                b.x.x, b.x.y, b.x.z, v.x, v.y, v.z, b.p.x, b.p.y, b.p.z, g * b.m, b.m, b.r, g);
         /* figure data: ball, x, y, radius, contracted semi-axis along v, angle of v */
         if (in_gif) {
-            double g = rc_gamma(b.m, b.p, k2);
             fprintf(o->frames.f, "%zu %.8g %.8g %.8g %.8g %.8g\n", i, b.x.x, b.x.y, b.r, b.r / g,
                     atan2(v.y, v.x) * 180 / M_PI);
         }
@@ -170,10 +210,14 @@ int simout_at(sim_output *o, const rc_sim *sim, char *err)
     }
     if (o->have_xyz && o->next_frame <= t) {
         write_frame(o, sim);
-        o->frame_k += 1.0;
-        o->next_frame = s->out.xyz_from + s->out.xyz_every * o->frame_k;
-        if (o->next_frame > s->t_end)
-            o->next_frame = INFINITY;
+        o->next_frame = grid_next(s, s->out.xyz_every, &o->frame_k);
+    }
+    if (o->h5 && o->next_h5 <= t) {
+        if (h5md_frame(o->h5, sim, (long long)o->h5_k, err)) {
+            o->failed = 1;
+            return -1;
+        }
+        o->next_h5 = grid_next(s, s->out.h5md_every, &o->h5_k);
     }
     return 0;
 }
@@ -255,13 +299,16 @@ done:
 }
 
 /* summary.json: the run's results for programs (what summary.txt says to a person), numbers
- * in round-trip precision (cJSON prints %.15g, or %.17g where that would not read back);
- * counts and impulses are this run's, from its start time to t. */
+ * in round-trip precision: %.17g, raw (cJSON's own printer takes its 15-digit form whenever
+ * that reads back within an epsilon of the value, not to the bit: 0.1 + 0.2 would be
+ * printed 0.3); counts and impulses are this run's, from its start time to t. */
 static cJSON *num(double x)
 {
+    char b[32];
+    snprintf(b, sizeof b, "%.17g", x);
     /* (JSON has no infinity or NaN: c = inf as in a scenario, an undefined ratio as null) */
     return isinf(x) && x > 0 ? cJSON_CreateString("inf")
-           : isfinite(x)     ? cJSON_CreateNumber(x)
+           : isfinite(x)     ? cJSON_CreateRaw(b)
                              : cJSON_CreateNull();
 }
 
@@ -564,10 +611,16 @@ int simout_close(sim_output *o, const rc_sim *sim, double wall, int interrupted,
         goto out;
     o->n_balls = rc_sim_count(sim);
     if (o->have_xyz) {
-        if (app_atomic_commit(&o->xyz, err) || app_atomic_commit(&o->frames, err))
+        if (app_atomic_commit(&o->xyz, err)) {
+            app_atomic_abort(&o->frames); /* (its temporary goes too) */
             r = -1;
+        } else if (app_atomic_commit(&o->frames, err)) {
+            r = -1;
+        }
         o->have_xyz = r == 0;
     }
+    if (o->h5 && h5md_close(&o->h5, r == 0, err))
+        r = -1;
     if (!r)
         r = write_final(o, sim, interrupted, err);
     if (!r)
@@ -577,6 +630,10 @@ int simout_close(sim_output *o, const rc_sim *sim, double wall, int interrupted,
 out:
     if (r || o->failed) {
         /* (err already holds the failure's reason) */
+        if (o->h5) {
+            char ignored[APP_ERR_LEN];
+            h5md_close(&o->h5, 0, ignored);
+        }
         if (o->have_xyz) {
             app_atomic_abort(&o->xyz);
             app_atomic_abort(&o->frames);

@@ -5,6 +5,7 @@
 
 #include "app.h"
 #include "scenario.h"
+#include "h5md.h"
 
 /* The engine's state beside final.json, which names it. */
 #define SIMOUT_CHECKPOINT "final.ckpt"
@@ -22,6 +23,9 @@ typedef struct sim_output {
     app_atomic xyz;       /* trajectory.xyz, committed at the end */
     app_atomic frames;    /* frames.dat (x y r per ball, one block per frame) for figures */
     int have_xyz;
+    double next_h5;       /* time of the next H5MD frame (INFINITY if none) */
+    double h5_k;          /* its place on the grid: next_h5 = xyz_from + h5_k h5md_every */
+    sim_h5md *h5;         /* trajectory.h5, committed at the end */
     size_t gif_stride;    /* keep every k-th frame in the GIF */
     size_t gif_frames;    /* frames written to frames.dat */
     size_t n_balls;
@@ -37,7 +41,8 @@ int simout_open(sim_output *o, const scn_scenario *s, const char *prog, char *er
 double simout_next_time(const sim_output *o, double t);
 /* Write whatever is due at the engine's current time. */
 int simout_at(sim_output *o, const rc_sim *sim, char *err);
-/* Finish: final.json, summary.txt, trajectory.xyz, figures; then move them into the
+/* Finish: final.json, summary.txt, trajectory.xyz, trajectory.h5,
+ * figures; then move them into the
  * output folder, replacing the previous run's. If any output failed (here or in
  * simout_at), nothing is moved, the previous run's files stay, and err says so. */
 int simout_close(sim_output *o, const rc_sim *sim, double wall_seconds, int interrupted,

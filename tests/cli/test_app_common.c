@@ -79,6 +79,22 @@ static void test_table(void)
     ENSURE(read_str("m,m\n1,1\n", &t, err) != 0 && strstr(err, "repeated"));
     ENSURE(read_str("m,,vx\n", &t, err) != 0 && strstr(err, "empty name"));
     ENSURE(read_str("\n\n", &t, err) != 0 && strstr(err, "empty input"));
+    /* a spreadsheet's export: byte order mark, CRLF, quoted header and fields (a comma,
+     * a doubled quote, a line break inside quotes, blanks outside them) */
+    ENSURE(read_str("\xEF\xBB\xBF\"m\",\"vx\",\"name\"\r\n\"1\", -0.5 ,\"a, \"\"b\"\"\"\r\n"
+                    "2,\"0.25\" ,\"two\r\nlines\"\r\n", &t, err) == 0);
+    ENSURE(t.ncols == 3 && t.nrows == 2 && app_table_col(&t, "m") == 0 &&
+           app_table_col(&t, "name") == 2);
+    ENSURE(strcmp(app_table_cell(&t, 0, 2), "a, \"b\"") == 0 &&
+           strcmp(app_table_cell(&t, 1, 2), "two\nlines") == 0 && t.line[1] == 3);
+    ENSURE(app_table_double(&t, 1, 1, "ball 1", 0, &x, err) == 0 && x == 0.25);
+    ENSURE(app_table_double(&t, 0, 1, "ball 0", 0, &x, err) == 0 && x == -0.5);
+    app_table_free(&t);
+    ENSURE(read_str("m,vx\n1,\"0.5\n", &t, err) != 0 &&
+           strcmp(err, "line 2: a quoted field is not closed (a '\"' missing)") == 0);
+    ENSURE(read_str("m,vx\n1,\"0.5\"x\n", &t, err) != 0 &&
+           strcmp(err, "line 2: field 2: text after its closing quote") == 0);
+    ENSURE(read_str("\"m\",\"m\"\n1,1\n", &t, err) != 0 && strstr(err, "repeated"));
 }
 
 static void test_balls(void)

@@ -138,12 +138,12 @@ awk -v m="$m0" 'BEGIN { exit !(m > 1.5) }' && ok || bad "eps < 1 must raise rest
 run 'm,vx,vy\n1,0.6,0.1\n2,0,0\n' --format json --c 1 --eps 0.5
 expect_ok "json"
 awk -f "$JSON_AWK" "$T/out" > "$T/jc" && ok || bad "json syntax: $(cat "$T/jc")"
-grep -q '"law": "zmf"' "$T/out" && grep -q '"dimension": 2' "$T/out" &&
-    grep -q '"eps": 0.5' "$T/out" && grep -q '"c": 1,' "$T/out" &&
-    [ "$(grep -c '"ball": ' "$T/out")" -eq 2 ] && grep -q '"p": \[[^],]*, [^],]*\]' "$T/out" &&
+grep -q '"law":"zmf"' "$T/out" && grep -q '"dimension":2' "$T/out" &&
+    grep -q '"eps":0.5' "$T/out" && grep -q '"c":1,' "$T/out" &&
+    [ "$(grep -c '"ball":' "$T/out")" -eq 2 ] && grep -q '"p":\[[^],]*,[^],]*\]' "$T/out" &&
     ok || bad "json fields: $(cat "$T/out")"
 run 'm,vx\n1,0.6\n2,0\n' --format json
-grep -q '"c": "inf"' "$T/out" && ok || bad "json c = inf must be the string \"inf\""
+grep -q '"c":"inf"' "$T/out" && ok || bad "json c = inf must be the string \"inf\""
 awk -f "$JSON_AWK" "$T/out" > "$T/jc" && ok || bad "json syntax (inf): $(cat "$T/jc")"
 # the checker itself must be able to fail
 printf '{"c": inf}' | awk -f "$JSON_AWK" > /dev/null 2>&1 && bad "json checker accepts bad JSON" || ok
@@ -254,6 +254,11 @@ expect_bad "azimuth without alpha" "$G" '--azimuth: only with a numeric --alpha'
 run '# two balls\r\n vx , m \r\n 0.6 , 1 \r\n0,2\r\n\r\n\n' --c 1
 expect_ok "CRLF, spaces, blank lines"
 close "CRLF v0" "$(field 0 vx)" "$(awk 'BEGIN { printf "%.17g", -9 / 41 }')" $TOL
+# a spreadsheet's "CSV UTF-8" export: byte order mark, CRLF, every header and field quoted
+run '\357\273\277"vx","m"\r\n"0.6","1"\r\n"0","2"\r\n' --c 1
+expect_ok "BOM, CRLF, quoted header and fields"
+close "quoted v0" "$(field 0 vx)" "$(awk 'BEGIN { printf "%.17g", -9 / 41 }')" $TOL
+expect_bad "unclosed quote" 'm,vx\n1,"0.6\n0,2\n' 'line 2: a quoted field is not closed' --c 1
 
 # ---------------------------------------------------------------- --help
 "$C" --help > "$T/out" 2> "$T/err"

@@ -118,11 +118,11 @@ grep -q 'overlaps         0 found' "$tmp/full/summary.txt" && ok "no overlaps" |
 # continuing from final.json writes into a folder of its own (full.1, then full.2), and
 # the run it continues keeps its files
 cp "$tmp/full/trajectory.xyz" "$tmp/traj-first.xyz"
-grep -qF "\"dir\": \"$tmp/full.1\"" "$tmp/full/final.json" && ok "final.json continues into full.1" \
-    || ko "final.json's outputs.dir: $(grep -o '"dir": "[^"]*"' "$tmp/full/final.json")"
+grep -qF "\"dir\":\"$tmp/full.1\"" "$tmp/full/final.json" && ok "final.json continues into full.1" \
+    || ko "final.json's outputs.dir: $(grep -o '"dir":"[^"]*"' "$tmp/full/final.json")"
 if "$sim" "$tmp/full/final.json" > /dev/null 2> "$tmp/err" && [ -s "$tmp/full.1/final.json" ] &&
     cmp -s "$tmp/traj-first.xyz" "$tmp/full/trajectory.xyz" &&
-    grep -qF "\"dir\": \"$tmp/full.2\"" "$tmp/full.1/final.json"; then
+    grep -qF "\"dir\":\"$tmp/full.2\"" "$tmp/full.1/final.json"; then
     ok "continuing: wrote full.1/, left full/ as it was, next into full.2"
 else
     ko "continuing from final.json: $(cat "$tmp/err")"
@@ -132,7 +132,7 @@ fi
 # (the edited copy stays beside final.ckpt, the checkpoint final.json names)
 sed 's/"t_end": 40/"t_end": 20/' "$tmp/run.json" > "$tmp/half.json"
 "$sim" "$tmp/half.json" --out "$tmp/half" > /dev/null 2>&1
-sed 's/"t_end": [0-9.e+-]*/"t_end": 40/' "$tmp/half/final.json" > "$tmp/half/cont.json"
+sed 's/"t_end":[0-9.e+-]*/"t_end": 40/' "$tmp/half/final.json" > "$tmp/half/cont.json"
 "$sim" "$tmp/half/cont.json" --out "$tmp/cont" > /dev/null 2> "$tmp/err"
 sed -n '/"balls"/,$p' "$tmp/full/final.json" > "$tmp/a"
 sed -n '/"balls"/,$p' "$tmp/cont/final.json" > "$tmp/b"
@@ -151,12 +151,12 @@ EOF
 sed 's/"t_end": 20/"t_end": 10/' "$tmp/per.json" > "$tmp/perhalf.json"
 "$sim" "$tmp/per.json" --out "$tmp/perfull" > /dev/null 2>&1
 "$sim" "$tmp/perhalf.json" --out "$tmp/perhalf" > /dev/null 2>&1
-sed 's/"t_end": [0-9.e+-]*/"t_end": 20/' "$tmp/perhalf/final.json" > "$tmp/perhalf/cont.json"
+sed 's/"t_end":[0-9.e+-]*/"t_end": 20/' "$tmp/perhalf/final.json" > "$tmp/perhalf/cont.json"
 "$sim" "$tmp/perhalf/cont.json" --out "$tmp/percont" > /dev/null 2> "$tmp/err"
 sed -n '/"balls"/,$p' "$tmp/perfull/final.json" > "$tmp/pa"
 sed -n '/"balls"/,$p' "$tmp/percont/final.json" > "$tmp/pb"
-if [ -s "$tmp/pa" ] && cmp -s "$tmp/pa" "$tmp/pb" && grep -q '"image": \[-\{0,1\}[1-9]' "$tmp/pa" &&
-    grep -qF '"boundary": ["periodic", "walls", "periodic"]' "$tmp/percont/final.json" &&
+if [ -s "$tmp/pa" ] && cmp -s "$tmp/pa" "$tmp/pb" && grep -q '"image":\[-\{0,1\}[1-9]' "$tmp/pa" &&
+    grep -qF '"boundary":["periodic","walls","periodic"]' "$tmp/percont/final.json" &&
     head -2 "$tmp/perfull/snapshots/snap-0000.csv" | grep -q ',image_x,image_y,image_z$'; then
     ok "periodic: restart from final.json is bit-identical, images and boundary kept"
 else
@@ -171,17 +171,18 @@ cmp -s "$tmp/a" "$tmp/c" && ok "same scenario twice -> identical final state" \
 
 # the outputs do not change the run: no outputs at all, and outputs at irregular times
 sed 's/"outputs": {[^}]*}/"outputs": {"plots": false, "gif": false, "summary": false}/' "$tmp/run.json" > "$tmp/quiet.json"
-sed 's/"snapshots": \[10, 20\], "xyz_every": 5/"snapshots": [0.3, 1.7, 2.71828, 19.99, 33.3], "xyz_every": 0.37/' "$tmp/run.json" > "$tmp/busy.json"
+sed 's/"snapshots": \[10, 20\], "xyz_every": 5/"snapshots": [0.3, 1.7, 2.71828, 19.99, 33.3], "xyz_every": 0.37, "h5md_every": 0.29/' "$tmp/run.json" > "$tmp/busy.json"
 "$sim" "$tmp/quiet.json" --out "$tmp/quiet" > /dev/null 2>&1
 "$sim" "$tmp/busy.json" --out "$tmp/busy" > /dev/null 2>&1
 sed -n '/"balls"/,$p' "$tmp/quiet/final.json" > "$tmp/q"
 sed -n '/"balls"/,$p' "$tmp/busy/final.json" > "$tmp/b2"
 [ -s "$tmp/q" ] && cmp -s "$tmp/a" "$tmp/q" && cmp -s "$tmp/a" "$tmp/b2" \
-    && ok "outputs change no bit: no outputs, every 5, 109 frames and 5 snapshots at odd times" \
+    && [ -s "$tmp/busy/trajectory.h5" ] \
+    && ok "outputs change no bit: no outputs, every 5, 109 XYZ and 138 H5MD frames and 5 snapshots at odd times" \
     || ko "the outputs changed the run"
 
 # a checkpoint that is not this state, or not there: refused, naming why
-sed '0,/"tau": [0-9.e+-]*/s//"tau": 12345/' "$tmp/half/final.json" > "$tmp/half/edited.json"
+sed '0,/"tau":[0-9.e+-]*/s//"tau":12345/' "$tmp/half/final.json" > "$tmp/half/edited.json"
 "$sim" "$tmp/half/edited.json" --out "$tmp/edited" > /dev/null 2> "$tmp/err"; st=$?
 [ $st -eq 2 ] && grep -q 'balls\[0\]: differs from the state in the checkpoint' "$tmp/err" \
     && ok "an edited ball against its checkpoint -> exit 2: $(cat "$tmp/err")" \
@@ -192,7 +193,7 @@ cp "$tmp/half/final.json" "$tmp/moved.json"
     && ok "final.json away from its checkpoint -> exit 2: $(cat "$tmp/err")" \
     || ko "missing checkpoint: exit $st: $(cat "$tmp/err")"
 head -c 100 "$tmp/half/final.ckpt" > "$tmp/cut.ckpt"
-sed 's/"checkpoint": "final.ckpt"/"checkpoint": "cut.ckpt"/' "$tmp/half/final.json" > "$tmp/cut.json"
+sed 's/"checkpoint":"final.ckpt"/"checkpoint":"cut.ckpt"/' "$tmp/half/final.json" > "$tmp/cut.json"
 "$sim" "$tmp/cut.json" --out "$tmp/cut" > /dev/null 2> "$tmp/err"; st=$?
 [ $st -eq 2 ] && grep -q 'not a whole, undamaged relcol checkpoint' "$tmp/err" \
     && ok "a cut checkpoint -> exit 2" || ko "cut checkpoint: exit $st: $(cat "$tmp/err")"
@@ -239,7 +240,7 @@ if [ $st -eq 130 ]; then
     sed -n '/"balls"/,$p' "$tmp/mid-full/final.json" > "$tmp/m1"
     sed -n '/"balls"/,$p' "$tmp/mid.1/final.json" > "$tmp/m2"
     [ -s "$tmp/m1" ] && cmp -s "$tmp/m1" "$tmp/m2" \
-        && ok "stopped by SIGINT at t = $(sed -n 's/.*"time": \([^,]*\),.*/\1/p' "$tmp/mid/final.json") and continued: bit-identical at t = 300" \
+        && ok "stopped by SIGINT at t = $(sed -n 's/.*"time":\([^,]*\),.*/\1/p' "$tmp/mid/final.json") and continued: bit-identical at t = 300" \
         || ko "SIGINT restart differs: $(cat "$tmp/err")"
     grep '^Lattice=' "$tmp/mid-full/trajectory.xyz" | grep -o 'Time=[^ ]*' > "$tmp/t-full"
     cat "$tmp/mid/trajectory.xyz" "$tmp/mid.1/trajectory.xyz" | grep '^Lattice=' | grep -o 'Time=[^ ]*' | sort -u -t= -k2 -g > "$tmp/t-parts"
@@ -250,7 +251,7 @@ else
 fi
 
 # ... and takes the snapshot times still ahead along (here all ten: every 1e8 up to 1e9)
-nsnap=$(grep -o '"snapshots": \[[^]]*\]' "$tmp/long/final.json" | tr ',' '\n' | grep -c '[0-9]')
+nsnap=$(grep -o '"snapshots":\[[^]]*\]' "$tmp/long/final.json" | tr ',' '\n' | grep -c '[0-9]')
 [ "$nsnap" -eq 10 ] && ok "Ctrl-C: final.json carries the 10 snapshot times ahead" \
     || ko "Ctrl-C: final.json carries $nsnap snapshot times, want 10"
 
@@ -303,6 +304,18 @@ if "$sim" "$tmp/quote.json" --out "$q" > /dev/null 2> "$tmp/err" &&
     ok "final.json of a folder named with a quote and a backslash reads back"
 else
     ko "folder with a quote: $(cat "$tmp/err")"
+fi
+
+# a momentum component of -0 written as -0 (cJSON's own number printer writes 0): the
+# continuation's balls must equal the checkpoint's to the bit
+printf '{"relcol": 1, "dim": 2, "box": [10, 10], "t_end": 1, "balls": [{"r": 1, "x": [5, 5],
+ "p": [-0.0, 0]}, {"r": 1, "x": [2, 2], "p": [0.5, -0.0]}], "outputs": {"plots": false}}' > "$tmp/negz.json"
+if "$sim" "$tmp/negz.json" --out "$tmp/negz" > /dev/null 2> "$tmp/err" &&
+    grep -qF '"p":[-0,0]' "$tmp/negz/final.json" &&
+    "$sim" "$tmp/negz/final.json" > /dev/null 2> "$tmp/err"; then
+    ok "momentum -0 written as -0, and the continuation accepts its checkpoint"
+else
+    ko "momentum -0: $(cat "$tmp/err")"
 fi
 
 echo "$((n - fails)) passed, $fails failed"
