@@ -80,19 +80,16 @@ static inline int eos_start(const eos_in *in, rc_sim **out, double *box_edge, ch
         const double g0 = jt_mean_gamma(in->dim, in->theta);
         p0 = in->c * sqrt((g0 - 1.0) * (g0 + 1.0));
     }
-    uint64_t z = in->seed ^ 0x5eedULL;
+    rc_rng z = {in->seed ^ 0x5eedULL};
     for (size_t i = 0; i < in->n; i++) {
-        /* splitmix64 directions (Gaussian components, normalised) */
+        /* isotropic directions: points uniform in a ball, normalised */
         double u[3];
         double nn = 0.0;
         do {
             nn = 0.0;
             for (int k = 0; k < 3; k++) {
-                uint64_t r1 = (z += 0x9e3779b97f4a7c15ULL);
-                r1 = (r1 ^ (r1 >> 30)) * 0xbf58476d1ce4e5b9ULL;
-                r1 = (r1 ^ (r1 >> 27)) * 0x94d049bb133111ebULL;
-                r1 ^= r1 >> 31;
-                u[k] = k < in->dim ? (double)(r1 >> 11) * 0x1.0p-53 - 0.5 : 0.0;
+                const double r1 = rc_rng_uniform(&z); /* (drawn for every k: same stream) */
+                u[k] = k < in->dim ? r1 - 0.5 : 0.0;
                 nn += u[k] * u[k];
             }
         } while (nn > 0.25 || nn < 1e-6); /* uniform in the ball: isotropic */

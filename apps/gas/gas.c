@@ -277,26 +277,14 @@ static int parse_options(int argc, char **argv, options *o)
 
 /* ---- the gases -------------------------------------------------------------------- */
 
-typedef struct rng {
-    uint64_t s;
-} rng;
-
-static double rng_uniform(rng *r) /* splitmix64 */
-{
-    uint64_t z = (r->s += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return (double)((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
-}
-
 /* A unit vector uniform on the circle / sphere. */
-static rc_vec3 random_direction(int dim, rng *r)
+static rc_vec3 random_direction(int dim, rc_rng *r)
 {
     if (dim == 2) {
-        const double a = 2.0 * M_PI * rng_uniform(r);
+        const double a = 2.0 * M_PI * rc_rng_uniform(r);
         return rc_v3(cos(a), sin(a), 0.0);
     }
-    const double z = 2.0 * rng_uniform(r) - 1.0, a = 2.0 * M_PI * rng_uniform(r);
+    const double z = 2.0 * rc_rng_uniform(r) - 1.0, a = 2.0 * M_PI * rc_rng_uniform(r);
     const double s = sqrt((1.0 - z) * (1.0 + z));
     return rc_v3(s * cos(a), s * sin(a), z);
 }
@@ -384,7 +372,7 @@ static int sim_start(const options *o, samples *S, rc_sim **out, char *err)
     S->boxv = box;
     /* every ball m = 1 (density 8 x r^3), |p| = m c sqrt(gamma0^2 - 1), random direction */
     const double p0 = o->c * sqrt((S->gamma0 - 1.0) * (S->gamma0 + 1.0));
-    rng R = {o->seed ^ 0x6a5ULL};
+    rc_rng R = {o->seed ^ 0x6a5ULL};
     for (size_t i = 0; i < n; i++) {
         b[i].p = rc_v3_scale(p0, random_direction(o->dim, &R));
         b[i].m = 1.0;
@@ -397,7 +385,7 @@ static int sim_start(const options *o, samples *S, rc_sim **out, char *err)
     for (size_t i = 1; o->periodic && i + (n % 2 ? 2 : 0) < n; i += 2)
         b[i].p = rc_v3_scale(-1.0, b[i - 1].p);
     if (o->periodic && n % 2) {
-        const double a = 2.0 * M_PI * rng_uniform(&R);
+        const double a = 2.0 * M_PI * rc_rng_uniform(&R);
         for (size_t k = 0; k < 3; k++) {
             const double ak = a + 2.0 * M_PI * (double)k / 3.0;
             b[n - 3 + k].p = rc_v3(p0 * cos(ak), p0 * sin(ak), 0.0);
@@ -487,14 +475,14 @@ static int run_gas1d(const options *o, samples *S, char *err)
         app_errf(err, "out of memory");
         goto out;
     }
-    rng R = {o->seed};
+    rc_rng R = {o->seed};
     size_t count[MAXSPEC] = {0, 0};
     for (size_t i = 0; i < n; i++) {
-        x[i] = (double)i + 0.1 + 0.8 * rng_uniform(&R);
-        S->spec[i] = rng_uniform(&R) < 0.5;
+        x[i] = (double)i + 0.1 + 0.8 * rc_rng_uniform(&R);
+        S->spec[i] = rc_rng_uniform(&R) < 0.5;
         count[S->spec[i]]++;
         m[i] = mix_mass[S->spec[i]];
-        p[i] = rng_uniform(&R) < 0.5 ? -1.0 : 1.0; /* the direction; the size below */
+        p[i] = rc_rng_uniform(&R) < 0.5 ? -1.0 : 1.0; /* the direction; the size below */
     }
     /* the species are drawn at random, so the start's energy is that of the counts drawn,
      * not of a 50/50 mixture: the gas then settles at theta_start */

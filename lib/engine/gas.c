@@ -7,6 +7,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "relcol/rng.h"
 #include "relcol/sim.h"
 #include "relcol/status.h"
 
@@ -16,26 +17,6 @@
 #define GAS_MIN_CLEARANCE 1e-6
 /* Bisection on the momentum scale stops at this relative width. */
 #define GAS_SCALE_TOL 1e-15
-
-typedef struct rng {
-    uint64_t s;
-} rng;
-
-static uint64_t rng_next(rng *r)
-{
-    uint64_t z = (r->s += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-}
-
-static double rng_uniform(rng *r) { return (double)(rng_next(r) >> 11) * 0x1.0p-53; }
-
-static double rng_gauss(rng *r)
-{
-    double u = rng_uniform(r), v = rng_uniform(r);
-    return sqrt(-2.0 * log1p(-u)) * cos(2.0 * M_PI * v);
-}
 
 /* Random sequential addition: n centres in [lo, hi]^dim, each more than dmin from every
  * earlier one, GAS_RSA_TRIES tries a ball, and the whole placement begun again up to
@@ -49,15 +30,15 @@ static double rng_gauss(rng *r)
  * reach is refused in a fraction of a second, not after every start */
 #define GAS_RSA_BUDGET 2000000
 
-static int place_once(rng *R, int dim, size_t n, double lo, double hi, double dmin,
+static int place_once(rc_rng *R, int dim, size_t n, double lo, double hi, double dmin,
                       rc_vec3 *x, long *budget)
 {
     for (size_t i = 0; i < n; i++) {
         int placed = 0;
         for (long t = 0; t < GAS_RSA_TRIES && !placed && (*budget)-- > 0; t++) {
             const double w = hi - lo;
-            const rc_vec3 c = rc_v3(lo + w * rng_uniform(R), lo + w * rng_uniform(R),
-                                    dim == 3 ? lo + w * rng_uniform(R) : 0.0);
+            const rc_vec3 c = rc_v3(lo + w * rc_rng_uniform(R), lo + w * rc_rng_uniform(R),
+                                    dim == 3 ? lo + w * rc_rng_uniform(R) : 0.0);
             placed = 1;
             for (size_t j = 0; j < i && placed; j++)
                 placed = rc_v3_norm2(rc_v3_sub(c, x[j])) > dmin * dmin;
@@ -70,7 +51,7 @@ static int place_once(rng *R, int dim, size_t n, double lo, double hi, double dm
     return 0;
 }
 
-static int place_rsa(rng *R, int dim, size_t n, double lo, double hi, double dmin,
+static int place_rsa(rc_rng *R, int dim, size_t n, double lo, double hi, double dmin,
                      rc_vec3 *x)
 {
     long budget = GAS_RSA_BUDGET;
@@ -118,7 +99,7 @@ int rc_sim_gas_init(const rc_sim_gas_def *g, rc_vec3 *box, rc_sim_ball *balls)
     while ((dim == 3 ? side * side * side : side * side) < g->n)
         side++;
     const double a = L / (double)side;
-    rng R = {g->seed};
+    rc_rng R = {g->seed};
     rc_vec3 *xs = NULL; /* positions placed at random, where the lattice has no room */
     if (!(a > 2.0 * r * (1.0 + GAS_MIN_CLEARANCE))) {
         /* too dense for the lattice start: a few balls may still fit at random (a lattice
@@ -142,7 +123,7 @@ int rc_sim_gas_init(const rc_sim_gas_def *g, rc_vec3 *box, rc_sim_ball *balls)
     for (size_t i = 0; i < sites; i++)
         perm[i] = i;
     for (size_t i = sites - 1; i > 0; i--) { /* Fisher-Yates */
-        size_t j = (size_t)(rng_uniform(&R) * (double)(i + 1));
+        size_t j = (size_t)(rc_rng_uniform(&R) * (double)(i + 1));
         size_t t = perm[i];
         perm[i] = perm[j];
         perm[j] = t;
@@ -154,7 +135,7 @@ int rc_sim_gas_init(const rc_sim_gas_def *g, rc_vec3 *box, rc_sim_ball *balls)
         size_t ix = s % side, iy = (s / side) % side, iz = s / (side * side);
         balls[i].x = xs ? xs[i]
                         : rc_v3((ix + 0.5) * a, (iy + 0.5) * a, dim == 3 ? (iz + 0.5) * a : 0.0);
-        balls[i].p = rc_v3(rng_gauss(&R), rng_gauss(&R), dim == 3 ? rng_gauss(&R) : 0.0);
+        balls[i].p = rc_v3(rc_rng_gauss(&R), rc_rng_gauss(&R), dim == 3 ? rc_rng_gauss(&R) : 0.0);
         balls[i].r = r;
         balls[i].m = m;
         balls[i].tau = 0.0;
