@@ -48,7 +48,8 @@ if [ -z "$pc" ]; then bad "relcol.pc not installed"; else
     export PKG_CONFIG_PATH=$(dirname "$pc")
     flags=$(pkg-config --define-variable=prefix="$P" --cflags --libs relcol)
     libdir=$(pkg-config --define-variable=prefix="$P" --variable=libdir relcol)
-    if "$CC" -std=c11 -Wall -Werror "$SOURCE/tests/install/version_check.c" -o "$T/vc" \
+    # shellcheck disable=SC2086  # (RELCOL_EXTRA_CFLAGS: words, e.g. -fsanitize=address,undefined)
+    if "$CC" -std=c11 -Wall -Werror ${RELCOL_EXTRA_CFLAGS:-} "$SOURCE/tests/install/version_check.c" -o "$T/vc" \
             $flags -Wl,-rpath,"$libdir" 2> "$T/err"; then
         out=$("$T/vc")
         case "$out" in
