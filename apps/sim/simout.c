@@ -37,6 +37,23 @@ static double grid_next(const scn_scenario *s, double dt, double *k)
     return t > s->t_end ? INFINITY : t;
 }
 
+/* Give up the run's outputs: the open streams closed and their temporaries removed, the
+ * staging folder with everything in it removed (the output folder keeps what it had). */
+static void abort_all(sim_output *o)
+{
+    if (o->h5) {
+        char ignored[APP_ERR_LEN];
+        h5md_close(&o->h5, 0, ignored);
+    }
+    if (o->have_xyz) {
+        app_atomic_abort(&o->xyz);
+        app_atomic_abort(&o->frames);
+        o->have_xyz = 0;
+    }
+    simout_stage_discard(o->dir);
+    o->dir = NULL;
+}
+
 int simout_open(sim_output *o, const scn_scenario *s, const char *prog, char *err)
 {
     memset(o, 0, sizeof *o);
@@ -52,7 +69,7 @@ int simout_open(sim_output *o, const scn_scenario *s, const char *prog, char *er
         int r = d ? app_mkdir_p(d, err) : -1;
         free(d);
         if (r) {
-            simout_stage_discard(o->dir);
+            abort_all(o);
             return -1;
         }
     }
@@ -68,7 +85,7 @@ int simout_open(sim_output *o, const scn_scenario *s, const char *prog, char *er
         free(p);
         free(q);
         if (r) {
-            simout_stage_discard(o->dir);
+            abort_all(o);
             return -1;
         }
         o->have_xyz = 1;
@@ -82,13 +99,7 @@ int simout_open(sim_output *o, const scn_scenario *s, const char *prog, char *er
             app_errf(err, "out of memory");
         free(p);
         if (r) {
-            if (o->have_xyz) {
-                app_atomic_abort(&o->xyz);
-                app_atomic_abort(&o->frames);
-                o->have_xyz = 0;
-            }
-            simout_stage_discard(o->dir);
-            o->dir = NULL;
+            abort_all(o);
             return -1;
         }
     }
@@ -630,17 +641,7 @@ int simout_close(sim_output *o, const rc_sim *sim, double wall, int interrupted,
 out:
     if (r || o->failed) {
         /* (err already holds the failure's reason) */
-        if (o->h5) {
-            char ignored[APP_ERR_LEN];
-            h5md_close(&o->h5, 0, ignored);
-        }
-        if (o->have_xyz) {
-            app_atomic_abort(&o->xyz);
-            app_atomic_abort(&o->frames);
-            o->have_xyz = 0;
-        }
-        simout_stage_discard(o->dir);
-        o->dir = NULL;
+        abort_all(o);
         if (!r) {
             app_errf(err, "nothing of this run was kept: the files in %s are the previous "
                      "run's", o->s->out.dir);

@@ -572,17 +572,9 @@ static int in_group_zmf(const rc_collision_params *prm, double inv_c2, size_t nb
     double *f = malloc(k * sizeof *f), *J = malloc(k * sizeof *J);
     if (!B || !C || !f || !J)
         goto done;
-    rc_vec3 P = rc_v3(0, 0, 0);
-    double Mt = 0.0;
-    for (size_t i = 0; i < nballs; i++) {
-        int in = 0;
-        for (size_t j = 0; j < k && !in; j++)
-            in = contacts[j].a == (int)i || contacts[j].b == (int)i;
-        if (!in)
-            continue;
-        P = rc_v3_add(P, balls[i].p);
-        Mt += sqrt(balls[i].m * balls[i].m + rc_v3_norm2(balls[i].p) * inv_c2);
-    }
+    rc_vec3 P;
+    double Mt;
+    eng_group_momentum(inv_c2, nballs, balls, k, contacts, &P, &Mt);
     const rc_vec3 u = rc_v3_scale(1.0 / Mt, P);
     st = RC_ENOCONVERGE; /* (a boost of finite, timelike data does not fail) */
     for (size_t i = 0; i < nballs; i++) {
@@ -647,4 +639,22 @@ int rc_contacts_solve(const rc_collision_params *prm, size_t nballs, rc_particle
     if (prm->groups == RC_GROUPS_DROP)
         return joint(0, inv_c2, nballs, balls, k, contacts, jout);
     return in_group_zmf(prm, inv_c2, nballs, balls, k, contacts, jout);
+}
+
+void eng_group_momentum(double inv_c2, size_t nballs, const rc_particle *balls, size_t k,
+                        const rc_contact *contacts, rc_vec3 *Pout, double *Mtout)
+{
+    rc_vec3 P = rc_v3(0, 0, 0);
+    double Mt = 0.0;
+    for (size_t i = 0; i < nballs; i++) {
+        int in = 0;
+        for (size_t j = 0; j < k && !in; j++)
+            in = contacts[j].a == (int)i || contacts[j].b == (int)i;
+        if (!in)
+            continue;
+        P = rc_v3_add(P, balls[i].p);
+        Mt += sqrt(balls[i].m * balls[i].m + rc_v3_norm2(balls[i].p) * inv_c2);
+    }
+    *Pout = P;
+    *Mtout = Mt;
 }

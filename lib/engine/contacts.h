@@ -11,4 +11,9 @@
 int eng_contacts_sequential(const rc_collision_params *prm, size_t nballs, rc_particle *balls,
                             size_t k, const rc_contact *contacts, double *jout);
 
+/* The total momentum *P and energy / c^2 *Mt of the balls that take part in the group's
+ * contacts (the others are bystanders): the group's zero-momentum velocity is *P / *Mt. */
+void eng_group_momentum(double inv_c2, size_t nballs, const rc_particle *balls, size_t k,
+                        const rc_contact *contacts, rc_vec3 *P, double *Mt);
+
 #endif

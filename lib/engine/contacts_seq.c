@@ -41,18 +41,10 @@ int eng_contacts_sequential(const rc_collision_params *prm, size_t nballs, rc_pa
     const double inv_c2 = rc_inv_c2_of(prm->c);
     /* The group's zero-momentum velocity: of the balls in its contacts; with a wall, whose
      * mass is infinite, the wall's rest frame. */
-    rc_vec3 P = rc_v3(0, 0, 0);
-    double Mt = 0.0;
+    rc_vec3 P;
+    double Mt;
     int wall = 0;
-    for (size_t i = 0; i < nballs; i++) {
-        int in = 0;
-        for (size_t j = 0; j < k && !in; j++)
-            in = contacts[j].a == (int)i || contacts[j].b == (int)i;
-        if (!in)
-            continue;
-        P = rc_v3_add(P, balls[i].p);
-        Mt += sqrt(balls[i].m * balls[i].m + rc_v3_norm2(balls[i].p) * inv_c2);
-    }
+    eng_group_momentum(inv_c2, nballs, balls, k, contacts, &P, &Mt);
     for (size_t j = 0; j < k; j++)
         wall |= contacts[j].b < 0;
     const rc_vec3 u = wall ? rc_v3(0, 0, 0) : rc_v3_scale(1.0 / Mt, P);
