@@ -12,7 +12,7 @@
   const WD = { TIME: 0, COLL: 1, ENERGY: 2, EERR: 3, PERR: 4, OVERLAPS: 5, OVSHARE: 6,
                MEANG: 7, VMAX: 8, C: 9, KINETIC: 10, HEAT: 11, GROUPSEQ: 12, MAXGROUP: 13,
                N: 14, BOXX: 15, BOXY: 16, PCLASS: 17, EPS: 18, FRAME: 19, LAW: 20,
-               CONTRACTED: 21, COUNT: 22 };
+               CONTRACTED: 21, GROUPS: 22, COUNT: 23 };
   const C_DECADES = 3;   // the c slider spans c_min .. c_min 10^3, then its last notch is inf
   const C_POS_MAX = 1000;
   const HIST_BINS = 32;
@@ -22,7 +22,7 @@
     status: $('status'), scenario: $('scenario'), file: $('file'), play: $('play'),
     step: $('step'), reset: $('reset'), speed: $('speed'), speedOut: $('speed-out'),
     split: $('split'), c: $('c'), cOut: $('c-out'), eps: $('eps'), epsOut: $('eps-out'),
-    frame: $('frame'), law: $('law'), viewRef: $('view-ref'), capMain: $('cap-main'),
+    frame: $('frame'), law: $('law'), groups: $('groups'), viewRef: $('view-ref'), capMain: $('cap-main'),
     canvasRef: $('canvas-ref'), canvasMain: $('canvas-main'), hist: $('hist'),
     theta: $('theta'), tip: $('tip'),
   };
@@ -74,7 +74,7 @@
       free: f('web_free', null, ['number']),
       reset: f('web_reset', 'number', ['number']),
       setC: f('web_set_c', 'number', ['number', 'number']),
-      setModel: f('web_set_model', 'number', ['number', 'number', 'number', 'number']),
+      setModel: f('web_set_model', 'number', ['number', 'number', 'number', 'number', 'number']),
       advance: f('web_advance', 'number', ['number', 'number']),
       stepEvent: f('web_step_event', 'number', ['number']),
       time: f('web_time', 'number', ['number']),
@@ -89,6 +89,9 @@
       lawName: f('web_law_name', 'string', ['number']),
       lawSummary: f('web_law_summary', 'string', ['number']),
       lawGroup: f('web_law_group', 'number', ['number']),
+      groupCount: f('web_group_count', 'number', []),
+      groupName: f('web_group_name', 'string', ['number']),
+      groupSummary: f('web_group_summary', 'string', ['number']),
       benchSetup: f('web_bench_setup', 'number', ['number', 'number', 'number', 'number',
                                                   'number', 'number']),
       benchRun: f('web_bench_run', 'number', ['number', 'number']),
@@ -145,6 +148,7 @@
     ui.eps.value = String(main.diag[WD.EPS]);
     ui.frame.value = String(main.diag[WD.FRAME]);
     ui.law.value = String(main.diag[WD.LAW]);
+    ui.groups.value = String(main.diag[WD.GROUPS]);
     if (app.split && !makeRef()) return false;
     sizeCanvases();
     showControls();
@@ -159,8 +163,8 @@
     // the same break: the chosen model, at the main world's time
     const md = app.main.diag;
     if (ref.diag[WD.EPS] !== md[WD.EPS] || ref.diag[WD.FRAME] !== md[WD.FRAME] ||
-        ref.diag[WD.LAW] !== md[WD.LAW]) {
-      if (api.setModel(ref.w, md[WD.EPS], md[WD.FRAME], md[WD.LAW]) !== 0) { fail('split view'); return false; }
+        ref.diag[WD.LAW] !== md[WD.LAW] || ref.diag[WD.GROUPS] !== md[WD.GROUPS]) {
+      if (api.setModel(ref.w, md[WD.EPS], md[WD.FRAME], md[WD.LAW], md[WD.GROUPS]) !== 0) { fail('split view'); return false; }
     }
     if (api.advance(ref.w, app.t) !== 0) { fail('split view'); return false; }
     readWorld(ref);
@@ -204,8 +208,9 @@
 
   function setModel() {
     const eps = Number(ui.eps.value), frame = Number(ui.frame.value), law = Number(ui.law.value);
+    const groups = Number(ui.groups.value);
     for (const v of worlds()) {
-      if (api.setModel(v.w, eps, frame, law) !== 0) { fail('model'); break; }
+      if (api.setModel(v.w, eps, frame, law, groups) !== 0) { fail('model'); break; }
       readWorld(v);
     }
     showControls();
@@ -253,9 +258,17 @@
     for (let i = 0; i < api.lawCount(); i++) {
       const o = document.createElement('option');
       o.value = String(i);
-      o.textContent = api.lawName(i) + (api.lawGroup(i) ? ' — groups solved together' : ' — groups one by one');
+      o.textContent = api.lawName(i) + (api.lawGroup(i) ? '' : ' (no group solver: contacts one by one)');
       o.title = api.lawSummary(i);
       ui.law.appendChild(o);
+    }
+    ui.groups.innerHTML = '';
+    for (let i = 0; i < api.groupCount(); i++) {
+      const o = document.createElement('option');
+      o.value = String(i);
+      o.textContent = api.groupName(i);
+      o.title = api.groupSummary(i);
+      ui.groups.appendChild(o);
     }
   }
 
@@ -295,6 +308,7 @@
     ui.eps.addEventListener('change', setModel);
     ui.frame.addEventListener('change', setModel);
     ui.law.addEventListener('change', setModel);
+    ui.groups.addEventListener('change', setModel);
     for (const cv of [ui.canvasMain, ui.canvasRef]) {
       cv.addEventListener('mousemove', (e) => hover(e, cv));
       cv.addEventListener('mouseleave', () => { ui.tip.hidden = true; });

@@ -24,7 +24,7 @@ enum { WB_X, WB_Y, WB_PX, WB_PY, WB_R, WB_M, WB_TAU, WB_GAMMA, WB_SPEED, WB_A, W
 /* values in web_diag's array */
 enum { WD_TIME, WD_COLL, WD_ENERGY, WD_EERR, WD_PERR, WD_OVERLAPS, WD_OVSHARE, WD_MEANG,
        WD_VMAX, WD_C, WD_KINETIC, WD_HEAT, WD_GROUPSEQ, WD_MAXGROUP, WD_N, WD_BOXX, WD_BOXY,
-       WD_PCLASS, WD_EPS, WD_FRAME, WD_LAW, WD_CONTRACTED, WD_COUNT };
+       WD_PCLASS, WD_EPS, WD_FRAME, WD_LAW, WD_CONTRACTED, WD_GROUPS, WD_COUNT };
 
 typedef struct web_world {
     scn_scenario sc; /* as read: reset starts from it */
@@ -151,10 +151,11 @@ WEB_EXPORT int web_set_c(web_world *w, double c)
     return RC_OK;
 }
 
-/* Restitution, contact frame and law (indices into rc_toi_frames and rc_laws; -1 keeps):
+/* Restitution, contact frame, law and group rule (indices into rc_toi_frames, rc_laws and
+ * the rc_group_rule names; -1 keeps):
  * the run goes on from its state now in a new engine (a restart of the synced state). On
  * failure the old engine runs on. */
-WEB_EXPORT int web_set_model(web_world *w, double eps_ball, int frame, int law)
+WEB_EXPORT int web_set_model(web_world *w, double eps_ball, int frame, int law, int groups)
 {
     int st = rc_sim_sync(w->s);
     size_t n = rc_sim_count(w->s), bad = 0;
@@ -176,6 +177,7 @@ WEB_EXPORT int web_set_model(web_world *w, double eps_ball, int frame, int law)
         nl++;
     def.frame = frame >= 0 && (size_t)frame < nf ? rc_toi_frames[frame] : w->sc.frame;
     def.law = law >= 0 && (size_t)law < nl ? rc_laws[law] : w->sc.law;
+    def.groups = rc_group_rule_name(groups) ? groups : w->sc.groups;
     def.restart = 1;
     rc_sim *s = NULL;
     st = rc_sim_create(&def, &s);
@@ -196,6 +198,7 @@ WEB_EXPORT int web_set_model(web_world *w, double eps_ball, int frame, int law)
     w->sc.eps_ball = def.eps_ball;
     w->sc.frame = def.frame;
     w->sc.law = def.law;
+    w->sc.groups = def.groups;
     take_reference(w);
     return RC_OK;
 }
@@ -316,6 +319,7 @@ WEB_EXPORT double *web_update(web_world *w)
     x[WD_FRAME] = index_of_frame(f);
     x[WD_LAW] = index_of_law(w->sc.law);
     x[WD_CONTRACTED] = contracted;
+    x[WD_GROUPS] = w->sc.groups;
     return x;
 }
 
@@ -404,6 +408,16 @@ WEB_EXPORT const char *web_law_name(int i) { return rc_laws[i]->name; }
 WEB_EXPORT const char *web_law_summary(int i) { return rc_laws[i]->summary; }
 /* 1: the law resolves simultaneous contacts together; 0: one at a time, in order */
 WEB_EXPORT int web_law_group(int i) { return rc_laws[i]->group != NULL; }
+/* The rules for simultaneous contacts (relcol/law.h), for laws with a group solver */
+WEB_EXPORT int web_group_count(void)
+{
+    int n = 0;
+    while (rc_group_rule_name(n))
+        n++;
+    return n;
+}
+WEB_EXPORT const char *web_group_name(int i) { return rc_group_rule_name(i); }
+WEB_EXPORT const char *web_group_summary(int i) { return rc_group_rule_summary(i); }
 
 /* ---- engine speed in the page (bench_engine's set-up) ----------------------------- */
 

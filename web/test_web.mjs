@@ -250,6 +250,13 @@ async function checksRun() {
   const frames = await page.locator('#frame option').allInnerTexts();
   const laws = await page.locator('#law option').allInnerTexts();
   check(frames.length >= 3 && frames.some((f) => f.startsWith('zmf')) && laws.length >= 2, 'frames and laws from the library', frames.join(', ') + ' | ' + laws.join(', '));
+  // the rules for simultaneous contacts by name, and the run going on under another one
+  const rules = await page.locator('#groups option').allInnerTexts();
+  check(rules.join(',') === 'simultaneous,sequential,drop', 'group rules from the library', rules.join(', '));
+  await page.selectOption('#groups', { label: 'sequential' });
+  await page.waitForTimeout(300);
+  s = await state();
+  check(s.main.diag.groups === 1 && !s.error, 'the sequential rule applied', 'groups ' + s.main.diag.groups + (s.error ? ', ' + s.error : ''));
   check(consoleErrors.length === 0, 'no console error in the whole run', consoleErrors.join(' | '));
 }
 
