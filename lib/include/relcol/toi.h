@@ -157,11 +157,19 @@ typedef struct rc_toi_frame {
      * those table-frame shapes (centre-line separating axis, overlap certificate).
      * table says rc_toi_shapes_rel. */
     rc_toi_shapes_fn shapes;
+    /* Whether toi decides contact by its own criterion between points rather than
+     * between shapes (transport says 1: a cross-section criterion, contracted 0 as it
+     * contracts nothing). The engine then asks toi about every pair whose bounding
+     * spheres of radius r can meet, as it does for a contracted frame. */
+    int pointlike;
 } rc_toi_frame;
 
 extern const rc_toi_frame rc_toi_frame_table;  /* contact of the table-frame shapes */
 extern const rc_toi_frame rc_toi_frame_zmf;    /* contact found in the pair's ZMF */
 extern const rc_toi_frame rc_toi_frame_sphere; /* contraction ignored (naive model) */
+/* transport codes' criterion: points, closest approach in the pair's CM frame with
+ * transverse distance d_T < r0 + r1 (papers/time-of-impact.md) */
+extern const rc_toi_frame rc_toi_frame_transport;
 extern const rc_toi_frame *const rc_toi_frames[]; /* NULL-terminated */
 const rc_toi_frame *rc_toi_frame_find(const char *name); /* NULL if unknown */
 
@@ -169,6 +177,14 @@ const rc_toi_frame *rc_toi_frame_find(const char *name); /* NULL if unknown */
  * (finite, r > 0, m > 0) and ws, then calls frame->toi. */
 int rc_toi(const rc_toi_frame *frame, const rc_toi_params *prm, const rc_toi_ball *a,
            const rc_toi_ball *b, rc_toi_workspace *ws, rc_toi_contact *out);
+
+/* The transport frame's impact parameter: *dT2 = d_T^2, the squared distance of the two
+ * centres at their closest approach in the pair's centre-of-momentum frame (|d|^2 if
+ * they do not move apart there), and *tcm (may be NULL) the CM time of that approach
+ * (the CM clock reads 0 at the table event (0, 0)). Frame-independent; whether the
+ * approach lies ahead is rc_toi's answer. Validating as rc_toi. */
+int rc_toi_transport_impact(const rc_toi_params *prm, const rc_toi_ball *a,
+                            const rc_toi_ball *b, double *dT2, double *tcm);
 
 /* ---- walls ---- */
 
