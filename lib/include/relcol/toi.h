@@ -11,7 +11,9 @@
  * Contact frames are `const rc_toi_frame` objects (GSL style, like rc_law): "table"
  * finds contact between the table-frame shapes, "zmf" finds it in the pair's
  * zero-momentum frame and transforms the event and the normal back, "sphere" ignores
- * the contraction. A frame is one table entry with declared properties (below); the
+ * the contraction, "transport" takes the balls as points with the transport codes'
+ * criterion (closest approach in the pair's CM frame, impact parameter below r0 + r1;
+ * never RC_EOVERLAP). A frame is one table entry with declared properties (below); the
  * engine and the apps read the properties and never name a frame. A frame need not live
  * in the library: any `const rc_toi_frame` can be given to rc_toi() and rc_sim_def.frame
  * (README "Adding a contact frame"); to make it built-in, define it in a new lib/toi_*.c,
