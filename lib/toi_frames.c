@@ -86,6 +86,7 @@ const rc_toi_frame *const rc_toi_frames[] = {
     &rc_toi_frame_table,
     &rc_toi_frame_zmf,
     &rc_toi_frame_sphere,
+    &rc_toi_frame_transport,
     NULL,
 };
 

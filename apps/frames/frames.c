@@ -37,7 +37,7 @@ static void usage(FILE *f)
 "(log-spaced from F v to T v) and each contact frame\n",
             impacts[0], impacts[NB - 1]);
     for (size_t i = 0; rc_toi_frames[i]; i++)
-        fprintf(f, "  %-7s %s\n", rc_toi_frames[i]->name, rc_toi_frames[i]->summary);
+        fprintf(f, "  %-9s %s\n", rc_toi_frames[i]->name, rc_toi_frames[i]->summary);
     fprintf(f,
 "the contact normal found by relcol-toi's routine is fed to the zmf collision law\n"
 "(restitution E), and the outcomes are compared between frames, pair by pair:\n"

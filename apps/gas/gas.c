@@ -82,7 +82,7 @@ static void usage(FILE *f)
 "                   frame whose stationary state is not Jüttner, notebook 08):\n",
             2 * NBLOCK, gas_default_frame()->name);
     for (size_t i = 0; rc_toi_frames[i]; i++)
-        fprintf(f, "                     %-7s %s\n", rc_toi_frames[i]->name,
+        fprintf(f, "                     %-9s %s\n", rc_toi_frames[i]->name,
                 rc_toi_frames[i]->summary);
     fprintf(f,
 "  --boundary B     2-D/3-D: walls (default) or periodic on every axis (periodic in the\n"

@@ -9,12 +9,15 @@
  *    depends on the velocities and the equilibrium moves off Jüttner (issue 17, item 3);
  *  - contracted shapes in a frame that is not covariant (the table frame): the curvature
  *    of the shapes at the contact changes with the velocities the collision changes, the
- *    balance fails already in the dilute limit (notebook 08, tests/gas2d/test_gain_loss.c). */
+ *    balance fails already in the dilute limit (notebook 08, tests/gas2d/test_gain_loss.c);
+ *  - covariant point-like criteria (transport): sigma times the Moller flux is invariant and
+ *    unchanged by the collision, so the dilute gas is Jüttner; the collisions are non-local
+ *    (centres d_T apart), and the dense gas is not measured. */
 #include "gas_thermal.h"
 
 int gas_frame_thermal(const rc_toi_frame *f)
 {
-    if (!f->contracted)
+    if (!f->contracted && !f->pointlike)
         return 2;
     return f->covariant ? 1 : 0;
 }
@@ -35,6 +38,10 @@ void gas_frame_warn(FILE *f, const char *prog, const rc_toi_frame *frame, double
                    "shapes in a frame that is not covariant collide at rates that break the "
                    "Boltzmann gain-loss balance, notebook 08): theta from <p.v> reads low "
                    "and the chi2 fails at any density\n", prog, frame->name);
+    else if (t == 1 && frame->pointlike)
+        fprintf(f, "%s: warning: frame %s: Jüttner in the dilute limit only; its collisions "
+                   "are non-local (centres d_T apart) and at packing %g it is not measured\n",
+                prog, frame->name, packing);
     else if (t == 1)
         fprintf(f, "%s: warning: frame %s: Jüttner in the dilute limit only; at packing %g "
                    "its theta from <p.v> reads above theta from <gamma>, more as the packing "

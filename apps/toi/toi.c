@@ -37,7 +37,7 @@ static void usage(FILE *f)
 "  --c C|inf         speed of light, > 0 (default inf: no contraction)\n"
 "  --frame FRAME     where contact is decided (default table):\n");
     for (size_t i = 0; rc_toi_frames[i]; i++)
-        fprintf(f, "                      %-7s %s\n", rc_toi_frames[i]->name,
+        fprintf(f, "                      %-9s %s\n", rc_toi_frames[i]->name,
                 rc_toi_frames[i]->summary);
     fprintf(f,
 "  --wall X0,X1[,Y0,Y1[,Z0,Z1]]  box walls x = X0, x = X1, ... (X0 < X1); axes not\n"

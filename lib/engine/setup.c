@@ -148,7 +148,7 @@ int rc_sim_create(const rc_sim_def *def, rc_sim **out)
     s->toi.c = def->c;
     s->simd = choose_simd(def->simd);
     /* the frame's declared properties choose the paths (relcol/toi.h) */
-    s->narrow = def->frame && def->frame->contracted;
+    s->narrow = def->frame && (def->frame->contracted || def->frame->pointlike);
     s->table = s->narrow && def->frame->shapes;
     s->shapes = s->table ? def->frame->shapes : NULL;
     s->defer = s->narrow && def->frame->deferrable && defer_wanted(def->defer);
@@ -223,7 +223,7 @@ int rc_sim_set_time(rc_sim *s, double t)
 /* Does the contact frame see contracted shapes (walls and pairs)? */
 static int contracted(const rc_sim *s)
 {
-    return s->inv_c2 > 0.0 && s->narrow;
+    return s->inv_c2 > 0.0 && s->narrow && s->def.frame->contracted;
 }
 
 /* Do balls i and k (storage slots, states at s->now) overlap by more than overlap_tol in

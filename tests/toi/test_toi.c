@@ -1,5 +1,5 @@
 /* test_toi.c — time of impact: the issue's worked cases (head-on t = 7, wall at 0.8 r),
- * seed 002's eq. (17), c = inf equal (==) to the sphere result in every frame, the
+ * seed 002's eq. (17), c = inf equal (==) to the sphere result in every frame of shapes, the
  * documented outcomes (touching-but-separating, overlap, grazing, miss), the zmf frame
  * against an independent boost of the worldlines, the contracted solver without the
  * contact point giving the same bits, and input validation. */
@@ -33,6 +33,8 @@ static void test_head_on(void)
     rc_toi_ball a = ball_v(0, 0, 0, 1, 0.6, 0, 0, 1.0), b = ball_v(10, 0, 0, 1, -0.6, 0, 0, 1.0);
     rc_toi_contact c;
     for (int i = 0; rc_toi_frames[i]; i++) {
+        if (rc_toi_frames[i]->pointlike)
+            continue; /* points meet at closest approach: test_transport.c */
         int st = rc_toi(rc_toi_frames[i], &prm, &a, &b, ws, &c);
         ENSURE(st == RC_OK);
         const double want = rc_toi_frames[i] == &rc_toi_frame_sphere ? 20.0 / 3.0 : 7.0;
@@ -153,7 +155,7 @@ static void test_seed002_eq17(void)
     ENSURE_MSG(compared > 300, "%d", compared);
 }
 
-/* c = inf: every frame returns exactly (==) the uncontracted-sphere result. */
+/* c = inf: every frame of shapes returns exactly (==) the uncontracted-sphere result. */
 static void test_classical_exact(void)
 {
     rc_toi_params prm = rc_toi_params_default();
@@ -177,6 +179,8 @@ static void test_classical_exact(void)
         rc_toi_contact cs, c;
         const int ss = rc_toi(&rc_toi_frame_sphere, &prm, &a, &b, ws, &cs);
         for (int f = 0; rc_toi_frames[f]; f++) {
+            if (rc_toi_frames[f]->pointlike)
+                continue; /* another event by design: test_transport.c's c = inf test */
             const int st = rc_toi(rc_toi_frames[f], &prm, &a, &b, ws, &c);
             ENSURE_MSG(st == ss, "frame %s: %d vs %d", rc_toi_frames[f]->name, st, ss);
             if (st == RC_OK && ss == RC_OK) {

@@ -11,7 +11,9 @@
  * Contact frames are `const rc_toi_frame` objects (GSL style, like rc_law): "table"
  * finds contact between the table-frame shapes, "zmf" finds it in the pair's
  * zero-momentum frame and transforms the event and the normal back, "sphere" ignores
- * the contraction. A frame is one table entry with declared properties (below); the
+ * the contraction, "transport" takes the balls as points with the transport codes'
+ * criterion (closest approach in the pair's CM frame, impact parameter below r0 + r1;
+ * never RC_EOVERLAP). A frame is one table entry with declared properties (below); the
  * engine and the apps read the properties and never name a frame. A frame need not live
  * in the library: any `const rc_toi_frame` can be given to rc_toi() and rc_sim_def.frame
  * (README "Adding a contact frame"); to make it built-in, define it in a new lib/toi_*.c,
@@ -157,11 +159,19 @@ typedef struct rc_toi_frame {
      * those table-frame shapes (centre-line separating axis, overlap certificate).
      * table says rc_toi_shapes_rel. */
     rc_toi_shapes_fn shapes;
+    /* Whether toi decides contact by its own criterion between points rather than
+     * between shapes (transport says 1: a cross-section criterion, contracted 0 as it
+     * contracts nothing). The engine then asks toi about every pair whose bounding
+     * spheres of radius r can meet, as it does for a contracted frame. */
+    int pointlike;
 } rc_toi_frame;
 
 extern const rc_toi_frame rc_toi_frame_table;  /* contact of the table-frame shapes */
 extern const rc_toi_frame rc_toi_frame_zmf;    /* contact found in the pair's ZMF */
 extern const rc_toi_frame rc_toi_frame_sphere; /* contraction ignored (naive model) */
+/* transport codes' criterion: points, closest approach in the pair's CM frame with
+ * transverse distance d_T < r0 + r1 (papers/time-of-impact.md) */
+extern const rc_toi_frame rc_toi_frame_transport;
 extern const rc_toi_frame *const rc_toi_frames[]; /* NULL-terminated */
 const rc_toi_frame *rc_toi_frame_find(const char *name); /* NULL if unknown */
 
@@ -169,6 +179,14 @@ const rc_toi_frame *rc_toi_frame_find(const char *name); /* NULL if unknown */
  * (finite, r > 0, m > 0) and ws, then calls frame->toi. */
 int rc_toi(const rc_toi_frame *frame, const rc_toi_params *prm, const rc_toi_ball *a,
            const rc_toi_ball *b, rc_toi_workspace *ws, rc_toi_contact *out);
+
+/* The transport frame's impact parameter: *dT2 = d_T^2, the squared distance of the two
+ * centres at their closest approach in the pair's centre-of-momentum frame (|d|^2 if
+ * they do not move apart there), and *tcm (may be NULL) the CM time of that approach
+ * (the CM clock reads 0 at the table event (0, 0)). Frame-independent; whether the
+ * approach lies ahead is rc_toi's answer. Validating as rc_toi. */
+int rc_toi_transport_impact(const rc_toi_params *prm, const rc_toi_ball *a,
+                            const rc_toi_ball *b, double *dT2, double *tcm);
 
 /* ---- walls ---- */
 
