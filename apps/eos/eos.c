@@ -37,11 +37,13 @@ static void usage(FILE *f)
 "  --blocks B       independent blocks for the standard errors (default 20)\n"
 "  --per-block K    moment readings per block with --transport (default 100)\n"
 "  --transport      also D, eta, lambda (Einstein–Helfand; reads every position)\n"
-"  --lag T          Helfand lag in mean free times (default 20, within a block)\n"
+"  --lag T          Helfand lag in mean free times (default 20, within a block;\n"
+"                   D of a dense gas needs about 100 to take in the long-time tail)\n"
 "  --out DIR        output folder (default out/eos): eos.csv, eos.gp, eos.png\n"
 "Theory columns: 3-D Kolafa and Carnahan–Starling, 2-D virial series (Clisby & McCoy)\n"
-"and Santos et al.; transport (3-D): Enskog, and Speedy's D with the finite-box\n"
-"correction (Yeh & Hummer). Z, kT, P, D, eta, lambda each with a standard error\n"
+"and Santos et al.; transport (3-D): Enskog, and Speedy's D (a fit to 500-sphere\n"
+"runs) moved to this box by Yeh & Hummer's finite-size law. Z, kT, P, D, eta, lambda\n"
+"each with a standard error\n"
 "from the blocks.\n");
 }
 
@@ -219,7 +221,7 @@ static int write_script(const char *path, const options *o, char *err)
 "set ylabel 'D'\n"
 "plot 'eos.csv' skip 1 using 5:14:15 with yerrorbars pt 7 lc rgb '#1f77b4' title 'relcol', \\\n"
 "     '' skip 1 using 5:20 with linespoints lc rgb '#d62728' title 'Enskog', \\\n"
-"     '' skip 1 using 5:23 with linespoints dt 2 lc rgb '#2ca02c' title 'Speedy − finite box'\n"
+"     '' skip 1 using 5:23 with linespoints dt 2 lc rgb '#2ca02c' title 'Speedy (N = 500) moved to this box'\n"
 "set ylabel 'η_s'\n"
 "plot 'eos.csv' skip 1 using 5:16:17 with yerrorbars pt 7 lc rgb '#1f77b4' title 'relcol', \\\n"
 "     '' skip 1 using 5:21 with linespoints lc rgb '#d62728' title 'Enskog'\n"
@@ -285,7 +287,7 @@ int main(int argc, char **argv)
                 de = tr_d_enskog(eta, r.kT);
                 ee = tr_eta_enskog(eta, r.kT);
                 le = tr_lambda_enskog(eta, r.kT);
-                ds = tr_d_speedy(eta, r.kT) - tr_d_finite_size(r.kT, ee, r.box);
+                ds = tr_d_speedy_box(eta, r.kT, ee, r.box);
             }
             fprintf(a.f, "%d,%s,%zu,%.6g,%.6g,%.8g,%.3g,%.8g,%.3g,%.8g,%.8g,%.8g,%.3g,%.6g,%.3g,"
                          "%.6g,%.3g,%.6g,%.3g,%.6g,%.6g,%.6g,%.6g,%llu,%llu,%.3f\n",
