@@ -14,6 +14,7 @@
 #include "app.h"
 #include "eos_theory.h"
 #include "eos_run.h"
+#include "tr_first_order.h"
 
 static const char *prog = "relcol-eos";
 #define EXIT_BAD_INPUT 2
@@ -37,12 +38,14 @@ static void usage(FILE *f)
 "  --blocks B       independent blocks for the standard errors (default 20)\n"
 "  --per-block K    moment readings per block with --transport (default 100)\n"
 "  --transport      also D, eta, lambda (Einstein–Helfand; reads every position)\n"
-"  --lag T          Helfand lag in mean free times (default 20, within a block)\n"
+"  --lag T          Helfand lag in mean free times (default 20, within a block;\n"
+"                   D of a dense gas needs about 100 to take in the long-time tail)\n"
 "  --out DIR        output folder (default out/eos): eos.csv, eos.gp, eos.png\n"
 "Theory columns: 3-D Kolafa and Carnahan–Starling, 2-D virial series (Clisby & McCoy)\n"
-"and Santos et al.; transport (3-D): Enskog, and Speedy's D with the finite-box\n"
-"correction (Yeh & Hummer). Z, kT, P, D, eta, lambda each with a standard error\n"
-"from the blocks.\n");
+"and Santos et al.; transport (3-D): Enskog, and Speedy's D (a fit to 500-sphere\n"
+"runs) moved to this box by Yeh & Hummer's finite-size law, and for uncontracted\n"
+"spheres at any c their own Chapman-Enskog D (D_chapman_enskog). Z, kT, P, D, eta,\n"
+"lambda each with a standard error from the blocks.\n");
 }
 
 typedef struct options {
@@ -219,7 +222,8 @@ static int write_script(const char *path, const options *o, char *err)
 "set ylabel 'D'\n"
 "plot 'eos.csv' skip 1 using 5:14:15 with yerrorbars pt 7 lc rgb '#1f77b4' title 'relcol', \\\n"
 "     '' skip 1 using 5:20 with linespoints lc rgb '#d62728' title 'Enskog', \\\n"
-"     '' skip 1 using 5:23 with linespoints dt 2 lc rgb '#2ca02c' title 'Speedy − finite box'\n"
+"     '' skip 1 using 5:23 with linespoints dt 2 lc rgb '#2ca02c' title 'Speedy (N = 500) moved to this box', \\\n"
+"     '' skip 1 using 5:27 with linespoints dt 3 lc rgb '#9467bd' title 'Chapman–Enskog, sphere kernel'\n"
 "set ylabel 'η_s'\n"
 "plot 'eos.csv' skip 1 using 5:16:17 with yerrorbars pt 7 lc rgb '#1f77b4' title 'relcol', \\\n"
 "     '' skip 1 using 5:21 with linespoints lc rgb '#d62728' title 'Enskog'\n"
@@ -257,7 +261,7 @@ int main(int argc, char **argv)
     }
     fprintf(a.f, "dim,c,n,packing,theta,kT,kT_se,Z,Z_se,Z_theory,Z_theory2,P,P_se,D,D_se,"
                  "eta,eta_se,lambda,lambda_se,D_enskog,eta_enskog,lambda_enskog,D_speedy_box,"
-                 "collisions,overlaps,seconds\n");
+                 "collisions,overlaps,seconds,D_chapman_enskog\n");
     printf("%s: %d-D, N = %zu, c = %s, frame %s, periodic box; Z against %s\n", prog,
            o.in.dim, o.in.n, app_fmt(o.in.c, fc), o.in.frame ? o.in.frame->name : "sphere",
            o.in.dim == 3 ? "Kolafa (Z_theory) and Carnahan–Starling"
@@ -285,22 +289,29 @@ int main(int argc, char **argv)
                 de = tr_d_enskog(eta, r.kT);
                 ee = tr_eta_enskog(eta, r.kT);
                 le = tr_lambda_enskog(eta, r.kT);
-                ds = tr_d_speedy(eta, r.kT) - tr_d_finite_size(r.kT, ee, r.box);
+                ds = tr_d_speedy_box(eta, r.kT, ee, r.box);
             }
+            /* the uncontracted-sphere kernel's own Chapman–Enskog D (tr_first_order.h):
+             * Galerkin on {p_x, v_x}, over Enskog's chi; other kernels have none here */
+            double dce = NAN, dce_se;
+            if (in.dim == 3 && in.transport && !(in.frame && in.frame->contracted) &&
+                tr_nd_sphere(in.c, r.kT, 2, 200000, in.seed, &dce, &dce_se) == 0)
+                dce /= 6.0 * eta / M_PI * eos_chi(3, eta);
             fprintf(a.f, "%d,%s,%zu,%.6g,%.6g,%.8g,%.3g,%.8g,%.3g,%.8g,%.8g,%.8g,%.3g,%.6g,%.3g,"
-                         "%.6g,%.3g,%.6g,%.3g,%.6g,%.6g,%.6g,%.6g,%llu,%llu,%.3f\n",
+                         "%.6g,%.3g,%.6g,%.3g,%.6g,%.6g,%.6g,%.6g,%llu,%llu,%.3f,%.6g\n",
                     in.dim, app_fmt(in.c, fc), in.n, eta, in.theta, r.kT, r.kT_se, r.z, r.z_se,
                     zt, zt2, r.p, r.p_se, r.d, r.d_se, r.eta, r.eta_se, r.lambda, r.lambda_se,
                     de, ee, le, ds, (unsigned long long)r.collisions,
-                    (unsigned long long)r.overlaps, sec);
+                    (unsigned long long)r.overlaps, sec, dce);
             printf("packing %.4g theta %.4g: kT = %.5f +- %.5f  Z = %.5f +- %.5f  (theory %.5f: "
                    "%+.3f %% +- %.3f %%)  %llu collisions, %.1f s\n",
                    eta, in.theta, r.kT, r.kT_se, r.z, r.z_se, zt, 100.0 * (r.z / zt - 1.0),
                    100.0 * r.z_se / zt, (unsigned long long)r.collisions, sec);
             if (in.transport)
-                printf("    D = %.5f +- %.5f (Enskog %.5f, Speedy in this box %.5f)  eta = %.5f "
-                       "+- %.5f (Enskog %.5f)  lambda = %.5f +- %.5f (Enskog %.5f)\n",
-                       r.d, r.d_se, de, ds, r.eta, r.eta_se, ee, r.lambda, r.lambda_se, le);
+                printf("    D = %.5f +- %.5f (Enskog %.5f, Speedy in this box %.5f, Chapman-Enskog "
+                       "of this kernel %.5f)  eta = %.5f +- %.5f (Enskog %.5f)  lambda = %.5f +- "
+                       "%.5f (Enskog %.5f)\n", r.d, r.d_se, de, ds, dce, r.eta, r.eta_se, ee,
+                       r.lambda, r.lambda_se, le);
             fflush(stdout);
         }
     if (rc != 0) {

@@ -73,9 +73,11 @@ static inline double tr_lambda_enskog(double eta, double kT)
     const double bn = 4.0 * eta, chi = eos_chi(3, eta);
     return tr_lambda0(kT) * (1.0 / chi + 1.2 * bn + 0.7574 * bn * bn * chi);
 }
-/* Self-diffusion of the hard-sphere fluid in the infinite system, Speedy (1987), a fit
- * to the simulations of Alder, Gass & Wainwright (1970) and Erpenbeck & Wood (1991) that
- * includes the dense-fluid correction D / D_E: n* = n sigma^3. */
+/* Self-diffusion of the hard-sphere fluid, Speedy (1987): a fit to the simulations of
+ * Alder, Gass & Wainwright (1970) and later ones that includes the dense-fluid correction
+ * D / D_E; n* = n sigma^3. The data it represents are those of systems of about 500
+ * spheres, not the infinite system (Sigurgeirsson & Heyes 2003 find it fits their N ~ 500
+ * runs, while D keeps rising with N): papers/transport.md, section 3. */
 static inline double tr_d_speedy(double eta, double kT)
 {
     const double n = 6.0 * eta / M_PI;
@@ -86,6 +88,15 @@ static inline double tr_d_speedy(double eta, double kT)
 static inline double tr_d_finite_size(double kT, double eta_s, double L)
 {
     return 2.837297 * kT / (6.0 * M_PI * eta_s * L);
+}
+/* Speedy's fit carried from the 500-sphere box it represents to a cube of edge L: the
+ * Yeh-Hummer difference between the two boxes (zero at N = 500). */
+enum { TR_SPEEDY_N = 500 };
+static inline double tr_d_speedy_box(double eta, double kT, double eta_s, double L)
+{
+    const double l500 = cbrt((double)TR_SPEEDY_N * M_PI / (6.0 * eta));
+    return tr_d_speedy(eta, kT) + tr_d_finite_size(kT, eta_s, l500) -
+           tr_d_finite_size(kT, eta_s, L);
 }
 
 #endif
