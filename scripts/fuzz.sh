@@ -32,10 +32,18 @@ out="$here/build-fuzz/$target"
 mkdir -p "$out/corpus"
 cp -n "${seeds[@]}" "$out/corpus/" 2>/dev/null || true
 
+# relcol/version.h, as lib/include/relcol/meson.build makes it from project()'s version
+ver=$(sed -n "s/^ *version *: *'\([0-9.]*\)'.*/\1/p" "$here/meson.build" | head -1)
+[[ "$ver" =~ ^[0-9]+\.[0-9]+\.[0-9]+$ ]] || { echo "fuzz: cannot read the version from meson.build" >&2; exit 2; }
+mkdir -p "$out/include/relcol"
+IFS=. read -r vmaj vmin vpat <<< "$ver"
+sed -e "s/@VERSION@/$ver/" -e "s/@MAJOR@/$vmaj/" -e "s/@MINOR@/$vmin/" -e "s/@PATCH@/$vpat/" \
+    "$here/lib/include/relcol/version.h.in" > "$out/include/relcol/version.h"
+
 # the library, the apps' common code and the reader, compiled together with the harness;
 # the engine's AVX2 and AVX-512 lanes each for their instruction set (as lib/meson.build)
 flags=(-g -O1 -fno-sanitize-recover=undefined -std=c11 -D_GNU_SOURCE -ffp-contract=off
-       -I"$here/lib/include" -I"$here/lib" -I"$here/apps/common" -I"$here/apps/sim")
+       -I"$out/include" -I"$here/lib/include" -I"$here/lib" -I"$here/apps/common" -I"$here/apps/sim")
 clang "${flags[@]}" -fsanitize=fuzzer-no-link,address,undefined -mavx2 \
     -c "$here/lib/engine/lanes_avx2.c" -o "$out/lanes_avx2.o"
 clang "${flags[@]}" -fsanitize=fuzzer-no-link,address,undefined -mavx512f -mavx512vl \
@@ -56,7 +64,8 @@ dict="$out/scenario.dict"
     for k in relcol dim box c law restitution ball wall contact_frame tc seed time t_end \
         restart balls generate kind gas rack n radius packing v_rms density speed aim gap \
         outputs dir snapshots every xyz_every plots gif summary r m x v p tau tau_last inf \
-        table zmf sphere boundary periodic walls image; do
+        table zmf sphere transport boundary periodic walls image groups simultaneous \
+        sequential drop h5md_every xyz_from checkpoint; do
         printf '"\\"%s\\""\n' "$k"
     done
     printf '"%s"\n' true false null 1e308 -0 1e-320 0.45 0.7
