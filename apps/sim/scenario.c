@@ -274,6 +274,28 @@ static int scaled_vec(const ctx *c, const char *path, rc_vec3 v, int dim)
     return 0;
 }
 
+/* The balls a generator made, within app_check_scale's range like balls given one by one
+ * (a gas of radius 1e67 has masses density r^3 of 1e202, whose squares overflow): the
+ * error names the generator's key and the ball. */
+static int scaled_generated(const ctx *c, const scn_scenario *s, const char *key)
+{
+    char why[APP_ERR_LEN];
+    for (size_t i = 0; i < s->n; i++) {
+        const rc_sim_ball *b = &s->balls[i];
+        const double v[2] = {b->r, b->m};
+        static const char *const what[2] = {"radius", "rest mass"};
+        for (int k = 0; k < 2; k++)
+            if (app_check_scale(v[k], 1, why))
+                return bad(c, key, "gives ball %zu a %s out of range: %s", i, what[k], why);
+        for (int d = 0; d < s->dim; d++)
+            if (app_check_scale(rc_v3_get(b->x, d), 0, why) ||
+                app_check_scale(rc_v3_get(b->p, d), 0, why))
+                return bad(c, key, "gives ball %zu a position or momentum out of range: %s",
+                           i, why);
+    }
+    return 0;
+}
+
 static int parse_balls(const ctx *c, const cJSON *arr, scn_scenario *s)
 {
     static const char *const keys[] = {"r", "m", "x", "v", "p", "tau", "tau_last", "image", NULL};
@@ -411,6 +433,8 @@ static int parse_generate(const ctx *c, const cJSON *g, const cJSON *jbox, scn_s
             return bad(c, "generate.v_rms", "too large: the momenta would overflow");
         if (st != RC_OK)
             return bad(c, "generate", "cannot make the gas: %s", rc_strerror(st));
+        if (scaled_generated(c, s, "generate.radius"))
+            return -1;
         snprintf(s->generator, sizeof s->generator, "gas");
         return 0;
     }
@@ -456,6 +480,8 @@ static int parse_generate(const ctx *c, const cJSON *g, const cJSON *jbox, scn_s
                 b[i].m = r * r * r;
                 b[i].x = rc_v3(x0 + row * pitch * sqrt(3) / 2, y0 + (j - row / 2.0) * pitch, 0);
             }
+        if (scaled_generated(c, s, "generate.radius"))
+            return -1;
         snprintf(s->generator, sizeof s->generator, "rack");
         return 0;
     }
