@@ -72,26 +72,14 @@ static herr_t attr_numbers(hid_t obj, const char *name, hid_t file_type, hid_t m
     return r;
 }
 
-/* A fixed dataset of rank 1 (n values) or a scalar string (text). */
-static herr_t dataset_doubles(hid_t loc, const char *name, hsize_t n, const double *v)
+/* A fixed dataset of rank 1 (n values of type mem, stored as file). */
+static herr_t dataset_1d(hid_t loc, const char *name, hsize_t n, hid_t file_type,
+                         hid_t mem_type, const void *v)
 {
     hid_t sp = H5Screate_simple(1, &n, NULL);
-    hid_t d = sp >= 0 ? H5Dcreate2(loc, name, H5T_IEEE_F64LE, sp, H5P_DEFAULT, H5P_DEFAULT,
+    hid_t d = sp >= 0 ? H5Dcreate2(loc, name, file_type, sp, H5P_DEFAULT, H5P_DEFAULT,
                                    H5P_DEFAULT) : -1;
-    herr_t r = d >= 0 ? H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v) : -1;
-    if (d >= 0)
-        H5Dclose(d);
-    if (sp >= 0)
-        H5Sclose(sp);
-    return r;
-}
-
-static herr_t dataset_ints(hid_t loc, const char *name, hsize_t n, const int *v)
-{
-    hid_t sp = H5Screate_simple(1, &n, NULL);
-    hid_t d = sp >= 0 ? H5Dcreate2(loc, name, H5T_STD_I32LE, sp, H5P_DEFAULT, H5P_DEFAULT,
-                                   H5P_DEFAULT) : -1;
-    herr_t r = d >= 0 ? H5Dwrite(d, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, v) : -1;
+    herr_t r = d >= 0 ? H5Dwrite(d, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, v) : -1;
     if (d >= 0)
         H5Dclose(d);
     if (sp >= 0)
@@ -246,7 +234,7 @@ static int build(sim_h5md *h, const scn_scenario *s, const char *prog)
     if (r >= 0)
         r = attr_numbers(box, "dimension", H5T_STD_I32LE, H5T_NATIVE_INT, 0, &D);
     if (r >= 0) /* a box that does not change: edges is a plain dataset */
-        r = dataset_doubles(box, "edges", (hsize_t)D, edges);
+        r = dataset_1d(box, "edges", (hsize_t)D, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, edges);
     H5Gclose(box);
     if (r < 0)
         return -1;
@@ -259,9 +247,10 @@ static int build(sim_h5md *h, const scn_scenario *s, const char *prog)
     for (size_t i = 0; !r && i < h->n; i++)
         radius[i] = s->balls[i].r;
     if (r >= 0)
-        r = dataset_ints(h->all, "species", (hsize_t)h->n, zeros);
+        r = dataset_1d(h->all, "species", (hsize_t)h->n, H5T_STD_I32LE, H5T_NATIVE_INT, zeros);
     if (r >= 0)
-        r = dataset_doubles(h->all, "radius", (hsize_t)h->n, radius);
+        r = dataset_1d(h->all, "radius", (hsize_t)h->n, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
+                       radius);
     free(zeros);
     free(radius);
     if (r < 0)
