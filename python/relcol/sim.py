@@ -41,6 +41,31 @@ def _num(value, path, allow_inf=False):
     return value
 
 
+# relcol-sim's range for a ball's numbers (app_check_scale in apps/common/table.c): squares
+# and products of magnitudes in [1e-150, 1e150] are finite, normal doubles, so nothing the
+# engine forms from them overflows; zero is allowed where the number may be zero.
+_SCALE_MIN, _SCALE_MAX = 1e-150, 1e150
+
+
+def _check_scale(r, m, x, p, source):
+    """ValueError naming `source` and the first ball whose radius, rest mass, position or
+    momentum lies outside relcol-sim's range, as relcol-sim refuses it."""
+    def bad(a, zero_ok):
+        a = np.abs(np.asarray(a, dtype=float))
+        out = ~((a >= _SCALE_MIN) & (a <= _SCALE_MAX))
+        return out & ~(a == 0) if zero_ok else out
+    for what, arr, zero_ok in (("radius", r, False), ("rest mass", m, False),
+                               ("position", x, True), ("momentum", p, True)):
+        hit = bad(arr, zero_ok)
+        if hit.ndim > 1:
+            hit = hit.any(axis=1)
+        if hit.any():
+            i = int(np.argmax(hit))
+            raise ValueError("%s: gives ball %d a %s out of range: magnitudes must lie in "
+                             "[1e-150, 1e150], where their squares and products are finite, "
+                             "normal doubles" % (source(i), i, what))
+
+
 def load_scenario(source):
     """A scenario as a dict: source is a dict (copied), a path to a JSON file or JSON text."""
     if isinstance(source, dict):
@@ -186,12 +211,12 @@ class Sim:
         ptr = ffi.new("rc_sim **")
         check(lib.rc_sim_create(self._def, ptr), "Sim")
         self._sim = ffi.gc(ptr[0], lambda q: lib.rc_sim_free(ffi.new("rc_sim **", q)))
-        self._balls(balls, c)
+        self._balls(balls, c, "generate.radius" if gen is not None else None)
         check(lib.rc_sim_set_time(self._sim, _num(s.get("time", 0.0), "time")), "time")
         self._set(self._cballs)
         self._d0 = self._diag()
 
-    def _balls(self, balls, c):
+    def _balls(self, balls, c, generated=None):
         """rc_sim_ball records from a list of ball objects or a dict of arrays."""
         dim = self.dim
         if isinstance(balls, dict):
@@ -239,6 +264,8 @@ class Sim:
             raise ValueError("balls: x and v (or p) must be (N, %d) arrays" % dim)
         if np.any(m <= 0):
             raise RelcolError(-3, "balls", int(np.argmax(m <= 0)))
+        _check_scale(r, m, x, p, (lambda i: generated) if generated else
+                     (lambda i: "balls[%d]" % i))
         cb = ffi.new("rc_sim_ball[]", n)
         for i in range(n):
             bi = cb[i]

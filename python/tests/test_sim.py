@@ -83,3 +83,22 @@ def test_scenario_errors():
     assert e.value.index is not None
     with pytest.raises(relcol.RelcolError, match="law 'newton'"):
         relcol.Sim(RACK, law="newton")
+
+
+def test_ball_numbers_out_of_range_are_refused_as_relcol_sim_refuses_them():
+    # The fuzzer's input (tests/fuzz/regress): a gas of radius 4.5e67 has rest masses
+    # r^3 = 8.9e202 whose squares overflow; relcol-sim refuses it naming generate.radius.
+    reg = os.path.join(SOURCE, "tests", "fuzz", "regress", "gas-radius-mass-overflow.json")
+    with pytest.raises(ValueError, match=r"generate\.radius: gives ball 0 a rest mass out of range"):
+        relcol.Sim(reg)
+    if "RELCOL_SIM" in os.environ:
+        out = subprocess.run([os.environ["RELCOL_SIM"], reg, "--out", os.devnull],
+                             capture_output=True, text=True)
+        assert out.returncode != 0 and "generate.radius" in out.stderr
+    with pytest.raises(ValueError, match=r"balls\[1\]: gives ball 1 a position out of range"):
+        relcol.Sim(dim=2, box=[4, 4], balls=[{"x": [1, 1], "r": 0.5},
+                                             {"x": [3, 1e-200], "r": 0.5}])
+    with pytest.raises(ValueError, match=r"balls\[0\]: gives ball 0 a radius out of range"):
+        relcol.Sim(dim=2, box=[4, 4], balls={"x": [[1, 1]], "r": 1e-160, "m": 1.0})
+    # zero positions and momenta are in range
+    relcol.Sim(dim=2, box=[4, 4], balls={"x": [[1, 1]], "p": [[0.0, 0.0]], "r": 0.5})
