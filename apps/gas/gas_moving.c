@@ -183,26 +183,27 @@ out:
 
 /* ---- 1-D: the mixture, event by event ------------------------------------------------ */
 
-enum { MC1 = 20 }; /* cells per species, equiprobable under its boosted law */
+enum { MC1 = 20, MH1 = 80 }; /* cells per species, equiprobable under its boosted law;
+                               * figure bins per species */
 
 static int write_files_1d(const char *prog, const char *dir, const double *mom, size_t rows,
                           size_t n, const unsigned char *spec, gas_moving_result *r, char *err)
 {
-    /* histogram range per species: the boosted law's rapidities to e^-12 of its peak */
-    double lo[2], hi[2], h[2][MH], tot[2] = {0.0, 0.0};
+    /* histogram range per species: the laws' rapidities to e^-8 of their peaks */
+    double lo[2], hi[2], h[2][MH1], tot[2] = {0.0, 0.0};
     memset(h, 0, sizeof h);
     for (int q = 0; q < r->nspec; q++) {
-        const double Y = acosh(1.0 + 12.0 * r->sp_theta[q]), eta = atanh(r->v);
-        lo[q] = sinh(-eta - Y);
-        hi[q] = sinh(-eta + Y);
+        const double Y = acosh(1.0 + 8.0 * r->sp_theta[q]), eta = atanh(r->v);
+        lo[q] = sinh(fmin(-eta, 0.0) - Y); /* both laws, boosted and at rest */
+        hi[q] = sinh(fmax(-eta, 0.0) + Y);
     }
     for (size_t k = 0; k < rows * n; k++) {
         const int q = spec[k % n];
         if (isnan(mom[2 * k]))
             continue;
         tot[q] += 1.0;
-        const int b = (int)floor((mom[2 * k] - lo[q]) / (hi[q] - lo[q]) * MH);
-        if (b >= 0 && b < MH)
+        const int b = (int)floor((mom[2 * k] - lo[q]) / (hi[q] - lo[q]) * MH1);
+        if (b >= 0 && b < MH1)
             h[q][b] += 1.0;
     }
     char *csv = app_path_join(dir, "observer.csv"), *gp = app_path_join(dir, "observer.gp");
@@ -217,8 +218,8 @@ static int write_files_1d(const char *prog, const char *dir, const double *mom, 
     fprintf(a.f, "species,mass,theta,p_lo,p_hi,p_mid,density,density_err,boosted_juttner,"
                  "juttner_at_rest\n");
     for (int q = 0; q < r->nspec; q++) {
-        const double bw = (hi[q] - lo[q]) / MH;
-        for (int b = 0; b < MH; b++) {
+        const double bw = (hi[q] - lo[q]) / MH1;
+        for (int b = 0; b < MH1; b++) {
             const double x0 = lo[q] + bw * b, xm = x0 + 0.5 * bw;
             fprintf(a.f, "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", q,
                     r->sp_mass[q], r->sp_theta[q], x0, x0 + bw, xm, h[q][b] / tot[q] / bw,
@@ -242,7 +243,8 @@ static int write_files_1d(const char *prog, const char *dir, const double *mom, 
             "p' on its hyperplanes\\n{/*0.8 χ²/φ = %.1f for %g dof against boosted Jüttner "
             "(both species)}\"\n"
             "set xlabel \"p' / (m c)\"\nset ylabel 'probability density'\nset grid\n"
-            "set key top right box opaque\n", r->v, r->chi2, r->dof);
+            "set yrange [0:*]\nset key top %s box opaque\n", r->v, r->chi2, r->dof,
+            r->v > 0.0 ? "left" : "right"); /* the side the law leans away from */
     for (int q = 0; q < r->nspec; q++)
         fprintf(a.f,
                 "set title 'm = %g, θ = %.4f'\n"

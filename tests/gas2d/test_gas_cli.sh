@@ -134,7 +134,7 @@ for v in 0.5 -0.5; do
     awk -v x="$x" -v y="$x0" 'BEGIN { exit !(x > 0 && x < 98.5 && y > 1000) }' && ok \
         || bad "1-D observer at $v: chi2 $x (boosted), $x0 (at rest)"
     rows=$(awk -F, 'NR > 1 { n[$1]++ } END { print n[0] "," n[1] }' "$T/g1o/observer.csv")
-    [ "$rows" = "50,50" ] && ok || bad "1-D observer.csv species rows: $rows"
+    [ "$rows" = "80,80" ] && ok || bad "1-D observer.csv species rows: $rows"
 done
 
 # the 1-D start hits its target: the start's energy is that of the species counts drawn
