@@ -138,24 +138,30 @@ static inline double bj1_density(double theta, double V, double u)
            (2.0 * gV * gsl_sf_bessel_K1_scaled(1.0 / theta));
 }
 
-/* weight per unit observer rapidity, unnormalised */
+/* weight per unit observer rapidity, unnormalised; par: theta, eta and 1 for Jüttner or
+ * 0 for the "modified Jüttner" law exp(-E/kT)/E per du (exp(-cosh y/theta) per box
+ * rapidity: the alternative Cubero et al. tested against), whose weight on the
+ * hyperplanes is Jüttner's divided by E = cosh(y' + eta) (the counting argument above
+ * holds for any stationary f(p)) */
 static inline double bj1_weight_y(double y, void *par)
 {
-    const double *tv = par; /* theta, eta */
+    const double *tv = par; /* theta, eta, juttner */
     const double a = (cosh(y + tv[1]) - 1.0) / tv[0];
     if (!(a < 745.0)) /* the tails of an infinite cell: exp underflows while cosh overflows */
         return 0.0;
-    return exp(-a) * cosh(y);
+    return tv[2] != 0.0 ? exp(-a) * cosh(y) : exp(-a) * cosh(y) / cosh(y + tv[1]);
 }
 
 /* Edges edge[0..ncell] in the observer's rapidity, edge[0] = -inf and edge[ncell] = inf,
  * inner ones equiprobable under f' (to a fine grid's accuracy: the probabilities do not
  * rely on it), and the cell probabilities prob[k] by adaptive quadrature (GSL), summing
- * to 1. 0, or -1 without memory or if a quadrature fails. */
-static inline int bj1_cells(double theta, double V, int ncell, double *edge, double *prob)
+ * to 1, for the law juttner = 1 (bj1_density) or the modified one (juttner = 0). 0, or -1
+ * without memory or if a quadrature fails. */
+static inline int bj1_cells_law(double theta, double V, int juttner, int ncell, double *edge,
+                                double *prob)
 {
     enum { NFINE = 20000 };
-    double tv[2] = {theta, atanh(V)};
+    double tv[3] = {theta, atanh(V), juttner ? 1.0 : 0.0};
     const double Y = acosh(1.0 + 40.0 * theta); /* e^-40 beyond */
     const double lo = -tv[1] - Y, h = 2.0 * Y / NFINE;
     double *cum = malloc((NFINE + 1) * sizeof *cum);
@@ -198,6 +204,11 @@ out:
     gsl_integration_workspace_free(w);
     free(cum);
     return rc;
+}
+
+static inline int bj1_cells(double theta, double V, int ncell, double *edge, double *prob)
+{
+    return bj1_cells_law(theta, V, 1, ncell, edge, prob);
 }
 
 /* The cell of momentum u' = p'/(m c) among bj1_cells' edges. */
