@@ -305,6 +305,20 @@ int rc_gas1d_get(const rc_gas1d *g, double *x, double *m, double *p)
     return RC_OK;
 }
 
+int rc_gas1d_segment_get(const rc_gas1d *g, size_t i, rc_gas1d_segment *out)
+{
+    if (!g || !out || i >= g->n)
+        return RC_EINVAL;
+    /* the local clock moves only at the particle's own events (move_to), so (tl, x) is
+     * its last event */
+    out->t = g->tl[i];
+    out->x = g->x[i];
+    out->m = g->m[i];
+    out->p = g->p[i];
+    out->v = g->v[i];
+    return RC_OK;
+}
+
 int rc_gas1d_stats_get(const rc_gas1d *g, rc_gas1d_stats *s)
 {
     if (!g || !s)

@@ -75,7 +75,8 @@ static void usage(FILE *f)
 "                   (theta_start and the theta V settles at: within [1e-3, 1e3])\n"
 "  --packing P      area / volume fraction (default 0.25 in 2-D, 0.2 in 3-D; not 1-D)\n"
 "  --t-equil T      table time run before sampling (default 50/c; 1-D 500/c)\n"
-"  --t-sample T     table time sampled after it (default 400/c; 1-D 1000/c)\n"
+"  --t-sample T     table time sampled after it (default 400/c; 1-D 1000/c, with\n"
+"                   --observer-velocity 20000/c)\n"
 "  --snapshots K    snapshots spread evenly over the sample, >= %d (default 100)\n"
 "  --seed S         random seed of positions, species and directions (default 1)\n"
 "  --frame NAME     contact frame (2-D/3-D; default %s; a warning on stderr names a\n"
@@ -88,11 +89,12 @@ static void usage(FILE *f)
 "  --boundary B     2-D/3-D: walls (default) or periodic on every axis (periodic in the\n"
 "                   box frame; the balls start in pairs of opposite momenta, so the\n"
 "                   total momentum is zero and the gas settles at rest)\n"
-"  --observer-velocity V  2-D, walls: also sample the gas as seen by an observer moving\n"
-"                   at V along x (|V| < c): every ball's momentum where its worldline\n"
-"                   crosses the observer's simultaneity hyperplanes (one per snapshot,\n"
-"                   a second run of the same gas, worldlines rebuilt exactly), chi2\n"
-"                   against the boosted Jüttner law at theta from <gamma>; writes\n"
+"  --observer-velocity V  1-D, or 2-D with walls: also sample the gas as seen by an\n"
+"                   observer moving at V along x (|V| < c): every ball's momentum where\n"
+"                   its worldline crosses the observer's simultaneity hyperplanes (one\n"
+"                   per snapshot, a second run of the same gas, worldlines rebuilt\n"
+"                   exactly; 1-D: followed event by event), chi2 against the boosted\n"
+"                   Jüttner law at theta from <gamma> (1-D: each species'); writes\n"
 "                   DIR/observer.csv, observer.gp, observer.png\n"
 "  --out DIR        output folder, created if missing (default out/gas)\n"
 "\n"
@@ -243,8 +245,8 @@ static int parse_options(int argc, char **argv, options *o)
                         g < jt_mean_gamma(d, THETA_MIN) ? "below" : "above",
                         g < jt_mean_gamma(d, THETA_MIN) ? THETA_MIN : THETA_MAX);
     }
-    if (o->obs_given && o->dim != 2)
-        return fail("--observer-velocity: 2-D only");
+    if (o->obs_given && o->dim == 3)
+        return fail("--observer-velocity: 1-D and 2-D only");
     if (o->obs_given && o->boundary_given && o->periodic)
         return fail("--observer-velocity: needs walls (a hyperplane cuts a walled box's "
                     "world-tube once per ball)");
@@ -265,8 +267,11 @@ static int parse_options(int argc, char **argv, options *o)
                     app_fmt(o->packing, f1), pmax, o->dim);
     if (!o->tequil_given)
         o->t_equil = (o->dim == 1 ? 500.0 : 50.0) / o->c;
+    /* a 1-D hyperplane's energy carries the gas's slow collective modes (correlated over
+     * a few hundred time units, the walls' sound crossing), so its observer needs blocks of
+     * hyperplanes far apart */
     if (!o->tsample_given)
-        o->t_sample = (o->dim == 1 ? 1000.0 : 400.0) / o->c;
+        o->t_sample = (o->dim == 1 ? (o->obs_given ? 20000.0 : 1000.0) : 400.0) / o->c;
     if ((double)o->n * (double)o->snapshots > MAX_SAMPLES)
         return fail("--snapshots: n x snapshots = %.3g exceeds %.3g stored samples",
                     (double)o->n * (double)o->snapshots, MAX_SAMPLES);
@@ -464,13 +469,14 @@ static int run_sim(const options *o, samples *S, char *err)
 }
 
 /* 1-D: n points on [0, n], one per unit cell in its middle 80 %, species at random, every
- * |v| equal (gamma0) with a random sign (the set-up of tests/gas/, Cubero et al. 2007). */
-static int run_gas1d(const options *o, samples *S, char *err)
+ * |v| equal (gamma0) with a random sign (the set-up of tests/gas/, Cubero et al. 2007): the
+ * gas at t = 0 (the same for every call), the species in S->spec, S->gamma0 and
+ * S->theta_energy set, the start's energy in *e0. */
+static int gas1d_start(const options *o, samples *S, rc_gas1d **out, double *e0, char *err)
 {
     const size_t n = S->n;
     double *x = malloc(n * sizeof *x), *m = malloc(n * sizeof *m), *p = malloc(n * sizeof *p);
     int rc = -1;
-    rc_gas1d *g = NULL;
     if (!x || !m || !p) {
         app_errf(err, "out of memory");
         goto out;
@@ -490,10 +496,10 @@ static int run_gas1d(const options *o, samples *S, char *err)
         S->gamma0 = start_gamma_mixture(o->theta_start, count);
     S->theta_energy = theta_of_energy_1d(count, S->gamma0);
     const double beta = sqrt((S->gamma0 - 1.0) * (S->gamma0 + 1.0)) / S->gamma0;
-    double e0 = 0.0;
+    *e0 = 0.0;
     for (size_t i = 0; i < n; i++) {
         p[i] *= m[i] * S->gamma0 * beta * o->c; /* p = m gamma v */
-        e0 += m[i] * S->gamma0;
+        *e0 += m[i] * S->gamma0;
     }
     rc_gas1d_def d = rc_gas1d_def_default();
     d.n = n;
@@ -502,11 +508,33 @@ static int run_gas1d(const options *o, samples *S, char *err)
     d.x = x;
     d.m = m;
     d.p = p;
-    int st = rc_gas1d_create(&d, &g, NULL);
+    int st = rc_gas1d_create(&d, out, NULL);
     S->box = (double)n;
+    if (st != RC_OK)
+        app_errf(err, "1-D gas: %s", rc_strerror(st));
+    else
+        rc = 0;
+out:
+    free(x), free(m), free(p);
+    return rc;
+}
+
+static int run_gas1d(const options *o, samples *S, char *err)
+{
+    const size_t n = S->n;
+    double *m = malloc(n * sizeof *m), *p = malloc(n * sizeof *p);
+    int rc = -1;
+    rc_gas1d *g = NULL;
+    if (!m || !p) {
+        app_errf(err, "out of memory");
+        goto out;
+    }
+    double e0;
+    if (gas1d_start(o, S, &g, &e0, err) != 0)
+        goto out;
+    const double inv_c2 = rc_inv_c2_of(o->c);
     rc_gas1d_stats gs;
-    if (st == RC_OK)
-        st = rc_gas1d_advance(g, o->t_equil, 0);
+    int st = rc_gas1d_advance(g, o->t_equil, 0);
     if (st == RC_OK && (st = rc_gas1d_stats_get(g, &gs)) == RC_OK)
         S->coll[0] = gs.pair_events;
     app_progress bar;
@@ -517,7 +545,7 @@ static int run_gas1d(const options *o, samples *S, char *err)
             st = rc_gas1d_get(g, NULL, m, p);
         double e = 0.0;
         for (size_t i = 0; i < n && st == RC_OK; i++) {
-            const double u = p[i] * p[i] * rc_inv_c2_of(d.c) / (m[i] * m[i]);
+            const double u = p[i] * p[i] * inv_c2 / (m[i] * m[i]);
             S->u[(j - 1) * n + i] = u;
             e += m[i] * sqrt(1.0 + u);
             S->mass_drift = fmax(S->mass_drift, fabs(m[i] - mix_mass[S->spec[i]]) /
@@ -537,36 +565,11 @@ static int run_gas1d(const options *o, samples *S, char *err)
         rc = 0;
 out:
     rc_gas1d_free(&g);
-    free(x), free(m), free(p);
+    free(m), free(p);
     return rc;
 }
 
 /* ---- statistics ------------------------------------------------------------------- */
-
-/* Integrated autocorrelation time (in snapshot intervals) of a series: 1/2 + sum of the
- * autocorrelations up to the first that is not positive (or lag K/4). */
-static double tau_int(const double *x, size_t k)
-{
-    double mean = 0.0, var = 0.0;
-    for (size_t i = 0; i < k; i++)
-        mean += x[i];
-    mean /= (double)k;
-    for (size_t i = 0; i < k; i++)
-        var += (x[i] - mean) * (x[i] - mean);
-    if (!(var > 0.0))
-        return 0.5;
-    double tau = 0.5;
-    for (size_t lag = 1; lag < k / 4; lag++) {
-        double c = 0.0;
-        for (size_t i = 0; i + lag < k; i++)
-            c += (x[i] - mean) * (x[i + lag] - mean);
-        const double rho = c / var;
-        if (!(rho > 0.0))
-            break;
-        tau += rho;
-    }
-    return tau;
-}
 
 typedef struct species_stats {
     double mass;
@@ -619,7 +622,7 @@ static void analyse(int d, const samples *S, int q, species_stats *ss, double *t
         bmpv[k] = spv / cnt;
         bd[k] = bpv[k] - bg[k];
     }
-    *tau = series ? tau_int(series, per * NBLOCK) : NAN;
+    *tau = series ? gs_tau_int(series, per * NBLOCK) : NAN;
     free(series);
     ss->th_g = gs_mean_se(bg, NBLOCK, &ss->se_g);
     ss->th_pv = gs_mean_se(bpv, NBLOCK, &ss->se_pv);
@@ -871,7 +874,29 @@ int main(int argc, char **argv)
     }
     gas_moving_result mv;
     memset(&mv, 0, sizeof mv);
-    if (o.obs_given) {
+    if (o.obs_given && o.dim == 1) {
+        /* a second run of the same gas, followed event by event */
+        rc_gas1d *g2 = NULL;
+        double e0;
+        int r2 = gas1d_start(&o, &S, &g2, &e0, err);
+        if (r2 == 0 && rc_gas1d_advance(g2, o.t_equil, 0) != RC_OK) {
+            app_errf(err, "1-D gas: cannot reach t = %g", o.t_equil);
+            r2 = -1;
+        }
+        /* each species' theta from <gamma>, as in 2-D: one run's species share their
+         * energy slowly (a wander of ~1 % over the run), which the gas's common kT of
+         * its energy would count against the boosted law */
+        const double th[MAXSPEC] = {ss[0].th_g, ss[1].th_g};
+        if (r2 == 0)
+            r2 = gas_moving_run_1d(prog, g2, S.n, S.spec, mix_mass, th, o.c, o.v_obs,
+                                   o.t_equil, o.t_sample / (double)S.ns, (long)S.ns, S.box,
+                                   o.out, &mv, err);
+        rc_gas1d_free(&g2);
+        if (r2 != 0) {
+            fprintf(stderr, "%s: %s\n", prog, err);
+            goto out;
+        }
+    } else if (o.obs_given) {
         rc_sim *s2 = NULL;
         int r2 = sim_start(&o, &S, &s2, err);
         if (r2 == 0 && rc_sim_advance(s2, o.t_equil, 0) != RC_OK) {
@@ -908,6 +933,16 @@ int main(int argc, char **argv)
         sum.obs_chi2_rest = mv.chi2_rest;
         sum.obs_phi = mv.phi;
         sum.obs_dof = mv.dof;
+        sum.obs_nspec = mv.nspec;
+        sum.obs_tau = mv.tau;
+        for (int q = 0; q < mv.nspec; q++) {
+            sum.obs_sp[q].mass = mv.sp_mass[q];
+            sum.obs_sp[q].theta = mv.sp_theta[q];
+            sum.obs_sp[q].chi2 = mv.sp_chi2[q];
+            sum.obs_sp[q].chi2_rest = mv.sp_chi2_rest[q];
+            sum.obs_sp[q].phi = mv.sp_phi[q];
+            sum.obs_sp[q].dof = mv.sp_dof[q];
+        }
     }
     if (write_csv(csv, nspec, ss, err) != 0 || write_script(gp, &o, nspec, ss, err) != 0 ||
         gas_summary_write(js, &sum, err) != 0) {
@@ -986,7 +1021,26 @@ int main(int argc, char **argv)
             fprintf(stderr, "%s: warning: blocks are shorter than 4 correlation times: error "
                             "bars may be understated (raise --t-sample)\n", prog);
     }
-    if (o.obs_given) {
+    if (o.obs_given && o.dim == 1) {
+        printf("observer at %g c along x: %llu particles sampled on %zu hyperplanes, %llu "
+               "lost (worldlines followed event by event)\n", mv.v,
+               (unsigned long long)mv.sampled, S.ns, (unsigned long long)mv.lost);
+        for (int q = 0; q < mv.nspec; q++)
+            printf("species m = %g: chi2/phi of its momenta (%d cells, dof %g, phi %.2f) "
+                   "against the boosted Jüttner law at theta = %.5f: %.1f (p = %.2g); "
+                   "Jüttner at rest %.4g\n", mv.sp_mass[q], (int)mv.sp_dof[q] + 1,
+                   mv.sp_dof[q], mv.sp_phi[q], mv.sp_theta[q], mv.sp_chi2[q],
+                   gs_chi2_p(mv.sp_chi2[q], mv.sp_dof[q]), mv.sp_chi2_rest[q]);
+        printf("both species (dof %g): boosted Jüttner %.1f (p = %.2g), Jüttner at rest "
+               "%.4g; 5 sigma bound %.1f\n", mv.dof, mv.chi2, gs_chi2_p(mv.chi2, mv.dof),
+               mv.chi2_rest, gs_chi2_sigma_bound(mv.dof, 5.0));
+        printf("block check: energy on a hyperplane, correlation time %.2f hyperplanes, "
+               "blocks of %zu\n", mv.tau, S.ns / NBLOCK);
+        if ((double)(S.ns / NBLOCK) < 4.0 * mv.tau)
+            fprintf(stderr, "%s: warning: the observer's blocks are shorter than 4 "
+                            "correlation times: its phi is understated and its chi2 "
+                            "overstated (raise --t-sample)\n", prog);
+    } else if (o.obs_given) {
         printf("observer at %g c along x: %llu balls sampled on %zu hyperplanes, %llu lost "
                "(two collisions in one step of %.3g)\n", mv.v, (unsigned long long)mv.sampled,
                S.ns, (unsigned long long)mv.lost, mv.step);
@@ -994,6 +1048,8 @@ int main(int argc, char **argv)
                "(p = %.2g), Jüttner at rest %.4g; 5 sigma bound %.1f\n", (int)mv.dof + 1, mv.dof, mv.phi,
                mv.chi2, gs_chi2_p(mv.chi2, mv.dof), mv.chi2_rest,
                gs_chi2_sigma_bound(mv.dof, 5.0));
+    }
+    if (o.obs_given) {
         if (mv.made_png)
             printf("wrote %s/observer.csv, %s/observer.gp, %s/observer.png\n", o.out, o.out,
                    o.out);

@@ -1,9 +1,12 @@
 /* gas_observer.c — sampling a gas on a moving observer's simultaneity hyperplanes from the
- * balls' worldlines (gas_observer.h). c = 1 units inside: velocities v/c, times c t. */
+ * balls' worldlines (gas_observer.h): rebuilt from grid states and proper times (2-D/3-D
+ * engine) or followed event by event (1-D gas). c = 1 units inside: velocities v/c,
+ * times c t. */
 #include <math.h>
 #include <stdlib.h>
 
 #include "gas_observer.h"
+#include "relcol/status.h"
 
 /* Round-off allowance, relative to the grid step, for deciding whether a ball's last
  * collision lies inside the last grid interval and whether the straight lines before and
@@ -14,6 +17,7 @@
 
 typedef struct ball_state {
     double t, x, y, px, py, E, tau; /* at the last grid time; x, y unwrapped; E = gamma m */
+    double vx;                      /* 1-D: the engine's velocity on the current segment */
     size_t next;                    /* the next hyperplane it crosses */
     int started;
 } ball_state;
@@ -131,6 +135,55 @@ int gas_obs_record(gas_obs *o, double t, const rc_sim_ball *b, const double *L)
             q->started = 1;
         }
         q->t = t, q->x = x, q->y = y, q->px = px, q->py = py, q->E = E, q->tau = tau;
+    }
+    return bad ? -1 : 0;
+}
+
+/* 1-D: ball i's worldline from its last event on, in c = 1 units. */
+static void load_segment(const gas_obs *o, ball_state *q, const rc_gas1d_segment *sg)
+{
+    const double c = o->c;
+    q->t = sg->t * c;
+    q->x = sg->x;
+    q->vx = sg->v / c;
+    q->px = sg->p / (sg->m * c);
+    q->E = sqrt(1.0 + q->px * q->px);
+}
+
+int gas_obs_follow_gas1d(gas_obs *o, rc_gas1d *g, double L)
+{
+    if (!o || !g || rc_gas1d_count(g) != o->n || !(L > 0.0))
+        return -1;
+    double ta, tb;
+    gas_obs_window(o, L, &ta, &tb);
+    if (!(rc_gas1d_time(g) <= ta))
+        return -1;
+    /* one spacing past the window, so that a ball at x = L crosses the last hyperplane
+     * inside the run rather than at its end */
+    const double t_stop = tb + o->dtau / o->c;
+    rc_gas1d_segment sg;
+    for (size_t i = 0; i < o->n; i++) {
+        rc_gas1d_segment_get(g, i, &sg);
+        load_segment(o, &o->s[i], &sg);
+    }
+    const double tol = OBS_TOL * fmax(L, 1.0);
+    int bad = 0;
+    rc_gas1d_event ev;
+    while (rc_gas1d_step(g, t_stop, &ev) == RC_OK) {
+        const double te = ev.t * o->c;
+        const size_t i1 = ev.kind == RC_GAS1D_PAIR ? ev.i + 1 : ev.i;
+        for (size_t i = ev.i; i <= i1; i++) {
+            ball_state *q = &o->s[i];
+            /* the segment that ends here must reach the event (a bug otherwise) */
+            bad |= !(fabs(q->x + q->vx * (te - q->t) - ev.x) <= tol);
+            cross(o, i, q, q->t, q->x, q->vx, q->px, 0.0, q->E, q->t, te);
+            rc_gas1d_segment_get(g, i, &sg);
+            load_segment(o, q, &sg);
+        }
+    }
+    for (size_t i = 0; i < o->n; i++) {
+        ball_state *q = &o->s[i];
+        cross(o, i, q, q->t, q->x, q->vx, q->px, 0.0, q->E, q->t, t_stop * o->c);
     }
     return bad ? -1 : 0;
 }

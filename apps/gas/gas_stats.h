@@ -1,7 +1,8 @@
 /* gas_stats.h — the statistics of a sampled gas shared by relcol-gas and the Jüttner
  * reproduction tests (header only): block means with standard errors, the cell of a sample
  * among sorted edges, the Pearson chi-square of block counts with its variance inflation,
- * and chi-square p-values and bounds from GSL's distribution functions. */
+ * chi-square p-values and bounds from GSL's distribution functions, and the integrated
+ * autocorrelation time that says whether blocks are long enough. */
 #ifndef RELCOL_GAS_STATS_H
 #define RELCOL_GAS_STATS_H
 
@@ -103,6 +104,31 @@ static inline double gs_chi2_p(double chi2, double dof) { return gsl_cdf_chisq_Q
 static inline double gs_chi2_sigma_bound(double dof, double nsigma)
 {
     return gsl_cdf_chisq_Qinv(gsl_cdf_ugaussian_Q(nsigma), dof);
+}
+
+/* Integrated autocorrelation time (in sampling intervals) of a series: 1/2 + sum of the
+ * autocorrelations up to the first that is not positive (or lag K/4). */
+static inline double gs_tau_int(const double *x, size_t k)
+{
+    double mean = 0.0, var = 0.0;
+    for (size_t i = 0; i < k; i++)
+        mean += x[i];
+    mean /= (double)k;
+    for (size_t i = 0; i < k; i++)
+        var += (x[i] - mean) * (x[i] - mean);
+    if (!(var > 0.0))
+        return 0.5;
+    double tau = 0.5;
+    for (size_t lag = 1; lag < k / 4; lag++) {
+        double c = 0.0;
+        for (size_t i = 0; i + lag < k; i++)
+            c += (x[i] - mean) * (x[i + lag] - mean);
+        const double rho = c / var;
+        if (!(rho > 0.0))
+            break;
+        tau += rho;
+    }
+    return tau;
 }
 
 #endif

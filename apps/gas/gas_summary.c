@@ -110,6 +110,22 @@ int gas_summary_write(const char *path, const gas_summary *s, char *err)
         add(ob, "chi2_boosted_juttner", s->obs_chi2);
         add(ob, "chi2_boosted_juttner_p", gs_chi2_p(s->obs_chi2, s->obs_dof));
         add(ob, "chi2_juttner_at_rest", s->obs_chi2_rest);
+        if (s->obs_nspec > 0) {
+            add(ob, "correlation_time_hyperplanes", s->obs_tau);
+            cJSON *sa = cJSON_CreateArray();
+            for (int q = 0; sa && q < s->obs_nspec; q++) {
+                cJSON *o = cJSON_CreateObject();
+                add(o, "mass", s->obs_sp[q].mass);
+                add(o, "theta", s->obs_sp[q].theta);
+                add(o, "dof", s->obs_sp[q].dof);
+                add(o, "phi", s->obs_sp[q].phi);
+                add(o, "chi2_boosted_juttner", s->obs_sp[q].chi2);
+                add(o, "chi2_boosted_juttner_p", gs_chi2_p(s->obs_sp[q].chi2, s->obs_sp[q].dof));
+                add(o, "chi2_juttner_at_rest", s->obs_sp[q].chi2_rest);
+                cJSON_AddItemToArray(sa, o);
+            }
+            cJSON_AddItemToObject(ob, "species", sa);
+        }
         cJSON_AddItemToObject(j, "observer", ob);
     }
     add(j, "collisions", (double)s->collisions);

@@ -45,6 +45,11 @@ typedef struct gas_summary {
     int observer;
     double obs_v, obs_chi2, obs_chi2_rest, obs_phi, obs_dof;
     uint64_t obs_sampled, obs_lost;
+    int obs_nspec; /* 1-D: per species (the top level sums their chi2/phi; phi null) */
+    double obs_tau; /* 1-D: correlation time of a hyperplane's energy, in hyperplanes */
+    struct {
+        double mass, theta, chi2, chi2_rest, phi, dof;
+    } obs_sp[2];
 } gas_summary;
 
 /* Write s as JSON to path atomically (a temporary beside it, renamed); -1 with err

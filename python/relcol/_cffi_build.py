@@ -135,6 +135,11 @@ size_t rc_gas1d_count(const rc_gas1d *g);
 double rc_gas1d_time(const rc_gas1d *g);
 int rc_gas1d_get(const rc_gas1d *g, double *x, double *m, double *p);
 int rc_gas1d_stats_get(const rc_gas1d *g, rc_gas1d_stats *s);
+typedef struct rc_gas1d_event { double t; double x; int kind; size_t i; ...; } rc_gas1d_event;
+int rc_gas1d_step(rc_gas1d *g, double t_end, rc_gas1d_event *ev);
+typedef struct rc_gas1d_segment { double t; double x; double m; double p; double v; ...; }
+    rc_gas1d_segment;
+int rc_gas1d_segment_get(const rc_gas1d *g, size_t i, rc_gas1d_segment *out);
 """
 
 

@@ -57,6 +57,28 @@ class Gas1D:
     def time(self):
         return lib.rc_gas1d_time(self._g)
 
+    _KINDS = ("pair", "wall_left", "wall_right")
+
+    def step(self, t_end=math.inf):
+        """Process the next event if it happens by t_end and return it as a dict {"t", "x",
+        "kind" ("pair": particles i and i + 1; "wall_left", "wall_right": particle i), "i"};
+        otherwise move the gas's time to t_end and return None."""
+        ev = ffi.new("rc_gas1d_event *")
+        rc = lib.rc_gas1d_step(self._g, float(t_end), ev)
+        if rc == lib.RC_MISS:
+            return None
+        check(rc, "step")
+        return {"t": ev.t, "x": ev.x, "kind": self._KINDS[ev.kind], "i": int(ev.i)}
+
+    def segment(self, i):
+        """Particle i's worldline since its last event: {"t", "x"} of that event (or the
+        start), and "m", "p", "v" on the straight line x + v (t' - t) until its next one.
+        Read after each step() for the particles the event names, these rebuild every
+        worldline exactly."""
+        s = ffi.new("rc_gas1d_segment *")
+        check(lib.rc_gas1d_segment_get(self._g, int(i), s), "segment", int(i))
+        return {"t": s.t, "x": s.x, "m": s.m, "p": s.p, "v": s.v}
+
     def state(self):
         """(x, m, p) arrays, left to right, at the gas's time."""
         x, m, p = np.empty(self.n), np.empty(self.n), np.empty(self.n)

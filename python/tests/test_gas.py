@@ -29,3 +29,29 @@ def test_gas1d_conserves_energy():
     with pytest.raises(relcol.RelcolError) as e:
         relcol.Gas1D([0.5, 0.2], 1, [0, 0])
     assert e.value.index == 1
+
+
+def test_gas1d_worldlines_from_events():
+    """step() and segment() rebuild every worldline: the segment an event ends reaches
+    the event's point, and the state at a later time lies on the current segments."""
+    n = 40
+    rng = np.random.default_rng(3)
+    x = np.sort(rng.uniform(0, 40, n))
+    g = relcol.Gas1D(x, rng.choice([1.0, 2.0], n), rng.normal(size=n), length=40.0, c=1.0)
+    seg = [g.segment(i) for i in range(n)]
+    assert seg[0]["t"] == 0.0 and seg[0]["x"] == x[0]
+    events = 0
+    while (ev := g.step(30.0)) is not None:
+        events += 1
+        last = ev["i"] + 1 if ev["kind"] == "pair" else ev["i"]
+        for i in range(ev["i"], last + 1):
+            s = seg[i]
+            assert s["x"] + s["v"] * (ev["t"] - s["t"]) == pytest.approx(ev["x"], abs=1e-10)
+            seg[i] = g.segment(i)
+            assert seg[i]["t"] == ev["t"] and seg[i]["x"] == ev["x"]
+    assert events > 100 and g.time == 30.0
+    xs = g.state()[0]
+    on = [min(max(s["x"] + s["v"] * (30.0 - s["t"]), 0.0), 40.0) for s in seg]
+    assert np.array_equal(xs, on)
+    with pytest.raises(relcol.RelcolError):
+        g.segment(n)

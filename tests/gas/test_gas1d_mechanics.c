@@ -1,6 +1,7 @@
 /* test_gas1d_mechanics.c — the 1-D gas engine: input checks, conservation bookkeeping
  * over >= 1e6 collisions, every event against a brute-force all-pairs prediction, the
- * classical limit, equal masses only exchanging momenta, ties and determinism. */
+ * classical limit, equal masses only exchanging momenta, ties, determinism, and the
+ * worldline segments that rebuild every particle's path. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -572,6 +573,70 @@ static void test_determinism(void)
     gas_setup_free(&s);
 }
 
+/* The worldline record (rc_gas1d_segment_get): read after every event for the particles
+ * it names, the segments are continuous (the old line reaches the event), start at the
+ * event, leave the other particles' segments alone, and give the state rc_gas1d_get
+ * reports at any later time; bad indices are refused. */
+static void test_segments(void)
+{
+    enum { NP = 200 };
+    gas_setup s;
+    ENSURE(gas_setup_mixture(&s, NP, 1.0, 1.0, 2.0, 0.5, 0.8, 43) == RC_OK);
+    rc_gas1d *g;
+    ENSURE(gas_setup_create(&s, &g) == RC_OK);
+    rc_gas1d_segment seg[NP], q;
+    for (size_t i = 0; i < NP; i++) {
+        ENSURE(rc_gas1d_segment_get(g, i, &seg[i]) == RC_OK);
+        ENSURE(seg[i].t == 0.0 && seg[i].x == s.x[i] && seg[i].p == s.p[i] &&
+               seg[i].m == s.m[i]);
+    }
+    ENSURE(rc_gas1d_segment_get(g, NP, &q) == RC_EINVAL);
+    ENSURE(rc_gas1d_segment_get(NULL, 0, &q) == RC_EINVAL);
+    ENSURE(rc_gas1d_segment_get(g, 0, NULL) == RC_EINVAL);
+    /* round-off of a position carried over many events, in units of the box (the event
+     * point is the mean of two lines that meet exactly in exact arithmetic) */
+    const double tol = 1e-11 * s.L;
+    double worst = 0.0, x[NP];
+    uint64_t events = 0;
+    int bad_start = 0, bad_other = 0, bad_get = 0;
+    for (int k = 1; k <= 200; k++) {
+        const double t_end = 2.0 * k;
+        rc_gas1d_event ev;
+        while (rc_gas1d_step(g, t_end, &ev) == RC_OK) {
+            events++;
+            const size_t i1 = ev.kind == RC_GAS1D_PAIR ? ev.i + 1 : ev.i;
+            for (size_t i = ev.i; i <= i1; i++) {
+                const double reach = seg[i].x + seg[i].v * (ev.t - seg[i].t);
+                worst = fmax(worst, fabs(reach - ev.x));
+                rc_gas1d_segment_get(g, i, &seg[i]);
+                bad_start |= seg[i].t != ev.t || seg[i].x != ev.x ||
+                             seg[i].v != vel(seg[i].m, seg[i].p, 1.0);
+            }
+            /* a neighbour the event does not name keeps its segment */
+            const size_t j = i1 + 1 < NP ? i1 + 1 : (ev.i > 0 ? ev.i - 1 : NP);
+            if (j < NP) {
+                rc_gas1d_segment_get(g, j, &q);
+                bad_other |= memcmp(&q, &seg[j], sizeof q) != 0;
+            }
+        }
+        rc_gas1d_get(g, x, NULL, NULL);
+        for (size_t i = 0; i < NP; i++) {
+            double xi = seg[i].x + seg[i].v * (t_end - seg[i].t);
+            xi = xi < 0.0 ? 0.0 : (xi > s.L ? s.L : xi);
+            bad_get |= xi != x[i];
+        }
+    }
+    printf("  %llu events: worldlines continuous to %.2g (box %g)\n",
+           (unsigned long long)events, worst, s.L);
+    ENSURE(events > 10000);
+    ENSURE_MSG(worst <= tol, "a segment misses its event by %g", worst);
+    ENSURE(!bad_start);
+    ENSURE(!bad_other);
+    ENSURE(!bad_get);
+    rc_gas1d_free(&g);
+    gas_setup_free(&s);
+}
+
 int main(void)
 {
     RUN_TEST(test_validation);
@@ -584,5 +649,6 @@ int main(void)
     RUN_TEST(test_equal_masses_swap);
     RUN_TEST(test_ties);
     RUN_TEST(test_determinism);
+    RUN_TEST(test_segments);
     RC_TEST_MAIN_END();
 }

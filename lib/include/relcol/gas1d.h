@@ -11,8 +11,9 @@
  * however often they are sampled.
  *
  * Lifecycle: fill an rc_gas1d_def from rc_gas1d_def_default(), rc_gas1d_create,
- * rc_gas1d_advance / rc_gas1d_step, read with rc_gas1d_get / rc_gas1d_stats_get,
- * rc_gas1d_free. Units: positions and L in one length unit, momenta p = m gamma v. */
+ * rc_gas1d_advance / rc_gas1d_step, read with rc_gas1d_get / rc_gas1d_stats_get (and a
+ * particle's worldline since its last event with rc_gas1d_segment_get), rc_gas1d_free.
+ * Units: positions and L in one length unit, momenta p = m gamma v. */
 #ifndef RELCOL_GAS1D_H
 #define RELCOL_GAS1D_H
 
@@ -78,6 +79,19 @@ double rc_gas1d_time(const rc_gas1d *g);
 /* State of every particle at the gas's time, in order left to right (x, m, p each of n
  * entries, any may be NULL). Positions are clamped into [0, L] against round-off. */
 int rc_gas1d_get(const rc_gas1d *g, double *x, double *m, double *p);
+
+/* Particle i's worldline since its last event: it left the event (t, x) -- its last pair
+ * collision or wall hit, or (t0, its start) -- with rest mass m, momentum p and velocity v,
+ * and moves on the line x + v (t' - t) until its next event. Read after each
+ * rc_gas1d_step for the particles its event names, these segments rebuild every worldline
+ * exactly (a moving observer's hyperplanes cut them anywhere, not at common table times:
+ * apps/gas/gas_observer.c). v is the velocity the engine moves the particle with. */
+typedef struct rc_gas1d_segment {
+    double t, x, m, p, v;
+} rc_gas1d_segment;
+
+/* RC_EINVAL if g or out is NULL or i >= n. Never changes the trajectory. */
+int rc_gas1d_segment_get(const rc_gas1d *g, size_t i, rc_gas1d_segment *out);
 
 typedef struct rc_gas1d_stats {
     uint64_t pair_events;      /* pair collisions */
