@@ -46,7 +46,7 @@ static void usage(FILE *f)
 "and Santos et al.; transport (3-D): Enskog, and Speedy's D (a fit to 500-sphere\n"
 "runs) moved to this box by Yeh & Hummer's finite-size law, and for uncontracted\n"
 "spheres at any c their own Chapman-Enskog D, eta and lambda (D_chapman_enskog,\n"
-"eta_chapman_enskog, lambda_chapman_enskog: dilute values times Enskog's factors).\n"
+"eta_chapman_enskog, lambda_chapman_enskog: dilute values times Enskog-type factors).\n"
 "Z, kT, P, D, eta, lambda each with a standard error from the blocks.\n");
 }
 
@@ -303,14 +303,13 @@ int main(int argc, char **argv)
                 tr_nd_sphere(in.c, r.kT, 2, 200000, in.seed, &dce, &dce_se) == 0)
                 dce /= 6.0 * eta / M_PI * eos_chi(3, eta);
             /* and its eta, lambda (tr_shear_heat.h): Galerkin on two functions each, the
-             * dilute values times Enskog's factors */
+             * dilute values carried to this packing by Enskog's factors with the kernel's
+             * own collisional transfer and the measured heat moment's enthalpy */
             double ece = NAN, lce = NAN;
             tr_shear_heat sh;
             if (in.dim == 3 && in.transport && !(in.frame && in.frame->contracted) &&
-                tr_shear_heat_sphere(3, in.c, r.kT, 2, 200000, in.seed, &sh) == 0) {
-                ece = sh.eta * tr_eta_enskog_factor(eta);
-                lce = sh.lambda * tr_lambda_enskog_factor(eta);
-            }
+                tr_shear_heat_sphere(3, in.c, r.kT, 2, 200000, in.seed, &sh) == 0)
+                tr_shear_heat_enskog(&sh, in.c, r.kT, eta, &ece, &lce);
             fprintf(a.f, "%d,%s,%zu,%.6g,%.6g,%.8g,%.3g,%.8g,%.3g,%.8g,%.8g,%.8g,%.3g,%.6g,%.3g,"
                          "%.6g,%.3g,%.6g,%.3g,%.6g,%.6g,%.6g,%.6g,%llu,%llu,%.3f,%.6g,%.6g,%.6g\n",
                     in.dim, app_fmt(in.c, fc), in.n, eta, in.theta, r.kT, r.kT_se, r.z, r.z_se,

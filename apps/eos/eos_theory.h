@@ -63,25 +63,15 @@ static inline double tr_d_enskog(double eta, double kT)
     const double n = 6.0 * eta / M_PI;
     return tr_d0(n, kT) / eos_chi(3, eta);
 }
-/* Enskog's factors on the dilute eta and lambda (also carried over to the relativistic
- * dilute values of tr_shear_heat.h, where they are an approximation: papers/transport.md) */
-static inline double tr_eta_enskog_factor(double eta)
-{
-    const double bn = 4.0 * eta, chi = eos_chi(3, eta);
-    return 1.0 / chi + 0.8 * bn + 0.7614 * bn * bn * chi;
-}
-static inline double tr_lambda_enskog_factor(double eta)
-{
-    const double bn = 4.0 * eta, chi = eos_chi(3, eta);
-    return 1.0 / chi + 1.2 * bn + 0.7574 * bn * bn * chi;
-}
 static inline double tr_eta_enskog(double eta, double kT)
 {
-    return tr_eta0(kT) * tr_eta_enskog_factor(eta);
+    const double bn = 4.0 * eta, chi = eos_chi(3, eta);
+    return tr_eta0(kT) * (1.0 / chi + 0.8 * bn + 0.7614 * bn * bn * chi);
 }
 static inline double tr_lambda_enskog(double eta, double kT)
 {
-    return tr_lambda0(kT) * tr_lambda_enskog_factor(eta);
+    const double bn = 4.0 * eta, chi = eos_chi(3, eta);
+    return tr_lambda0(kT) * (1.0 / chi + 1.2 * bn + 0.7574 * bn * bn * chi);
 }
 /* Self-diffusion of the hard-sphere fluid, Speedy (1987): a fit to the simulations of
  * Alder, Gass & Wainwright (1970) and later ones that includes the dense-fluid correction

@@ -9,11 +9,12 @@
  * psi_i (Galerkin): coefficient = (2 / kT^s) b^T M^-1 b, with
  *     M_ij = sigma_T < |v0 - v1| Psi_j . (Psi_i - Psi_i') >,   b_i = < psi_i . S >
  * per Cartesian component (isotropy), S the source:
- *     shear (s = 1): S = p_x v_y,  trial {p_x v_y, K p_x v_y};
+ *     shear (s = 1): S = p_x v_y,  trial x^j p_x v_y,  x = K / kT;
  *     heat  (s = 2): S = (K - h) v_x, h = <K> + kT the enthalpy per particle less the rest
  *                    energy (Eckart's force grad T - T grad P / (n h)), trial
- *                    {(K - h) v_x, (K - h)^2 v_x minus its p_x part},
- * K = E - m c^2. Relativistically {p v, K p v} spans {p_x p_y / E, p_x p_y}, and E v = c^2 p
+ *                    (K - h) y^j v_x minus its p_x part,  y = (K - h) / kT,
+ * j = 0 .. nfun - 1, K = E - m c^2. Relativistically {p v, K p v} spans {p_x p_y / E,
+ * p_x p_y}, and E v = c^2 p
  * makes (K - h) v = c^2 p - (h + m c^2) v: heat is carried by v_x off the momentum, and
  * every heat trial function must be orthogonal to p_x (b is; M ignores it when the pair
  * measure is preserved, checked as `heat_inv`). Classically the first functions give
@@ -25,6 +26,7 @@
 #include <math.h>
 #include <stdint.h>
 
+#include "eos_theory.h"
 #include "juttner.h"
 #include "tr_first_order.h"
 
@@ -65,25 +67,35 @@ typedef struct tr_shear_heat {
      * pair measure (then the drifting Jüttner is an equilibrium and the momentum part of
      * phi drops out); the fraction of M_11 a momentum part would carry otherwise */
     double heat_inv, heat_inv_se;
+    /* Enskog's linear density term, alpha: the collisional transfer (momentum, energy
+     * moved by sigma n at each collision) that the kinetic deviation phi drives, over
+     * b n times the kinetic value (b n = 2 pi n sigma^3 / 3, pi n sigma^2 / 2 in 2-D).
+     * Enskog's factor is 1/chi + 2 alpha b n + O((b n)^2); classically alpha = 2/5 (eta)
+     * and 3/5 (lambda) */
+    double alpha_eta, alpha_eta_se, alpha_lambda, alpha_lambda_se;
 } tr_shear_heat;
 
-/* The trial functions at momentum p: shear tensors s[k][9] (traceless p v and K times it)
- * and heat vectors q[k] ((K - h) v and (K - h)^2 v - a2 p). */
-static inline void tr_sh_trial(int dim, rc_vec3 p, double inv_c2, double h, double a2,
-                               double s[2][9], rc_vec3 q[2])
+enum { TR_SH_NFUN = 3 }; /* the most trial functions per coefficient */
+
+/* The trial functions at momentum p: shear tensors s[j][9] (x^j times traceless p v) and
+ * heat vectors q[j] ((K - h) y^j v - ap[j] p). */
+static inline void tr_sh_trial(int dim, rc_vec3 p, double inv_c2, double kT, double h,
+                               const double ap[TR_SH_NFUN], double s[TR_SH_NFUN][9],
+                               rc_vec3 q[TR_SH_NFUN])
 {
     const rc_vec3 v = rc_velocity(1.0, p, inv_c2);
     const double K = tr_kinetic(p, inv_c2), pv = rc_v3_dot(p, v) / dim;
     const double pa[3] = {p.x, p.y, p.z}, va[3] = {v.x, v.y, v.z};
+    const double x = K / kT, e = K - h, y = e / kT;
     for (int a = 0; a < 3; a++)
         for (int b = 0; b < 3; b++) {
-            const double t = a < dim && b < dim ? pa[a] * va[b] - (a == b ? pv : 0.0) : 0.0;
-            s[0][3 * a + b] = t;
-            s[1][3 * a + b] = K * t;
+            double t = a < dim && b < dim ? pa[a] * va[b] - (a == b ? pv : 0.0) : 0.0;
+            for (int j = 0; j < TR_SH_NFUN; j++, t *= x)
+                s[j][3 * a + b] = t;
         }
-    const double e = K - h;
-    q[0] = rc_v3_scale(e, v);
-    q[1] = rc_v3_sub(rc_v3_scale(e * e, v), rc_v3_scale(a2, p));
+    double w = e;
+    for (int j = 0; j < TR_SH_NFUN; j++, w *= y)
+        q[j] = rc_v3_sub(rc_v3_scale(w, v), rc_v3_scale(ap[j], p));
 }
 
 /* mean and standard error of k batch estimates */
@@ -98,26 +110,55 @@ static inline double tr_mean_se(const double *x, int k, double *se)
     return m;
 }
 
-/* b^T A^-1 b on one function (A_00) or two */
-static inline double tr_sh_galerkin(int nfun, const double A[2][2], const double b[2])
+/* b^T A^-1 b on the first nfun functions (Gaussian elimination with partial pivoting);
+ * x = A^-1 b */
+static inline double tr_sh_galerkin(int nfun, const double A[TR_SH_NFUN][TR_SH_NFUN],
+                                    const double b[TR_SH_NFUN], double x[TR_SH_NFUN])
 {
-    if (nfun == 1)
-        return b[0] * b[0] / A[0][0];
-    const double det = A[0][0] * A[1][1] - A[0][1] * A[1][0];
-    return (b[0] * (A[1][1] * b[0] - A[0][1] * b[1]) + b[1] * (-A[1][0] * b[0] + A[0][0] * b[1])) /
-           det;
+    double M[TR_SH_NFUN][TR_SH_NFUN + 1];
+    for (int i = 0; i < nfun; i++) {
+        for (int j = 0; j < nfun; j++)
+            M[i][j] = A[i][j];
+        M[i][nfun] = b[i];
+    }
+    for (int c = 0; c < nfun; c++) {
+        int piv = c;
+        for (int i = c + 1; i < nfun; i++)
+            if (fabs(M[i][c]) > fabs(M[piv][c]))
+                piv = i;
+        for (int j = 0; j <= nfun; j++) {
+            const double t = M[c][j];
+            M[c][j] = M[piv][j];
+            M[piv][j] = t;
+        }
+        for (int i = c + 1; i < nfun; i++) {
+            const double f = M[i][c] / M[c][c];
+            for (int j = c; j <= nfun; j++)
+                M[i][j] -= f * M[c][j];
+        }
+    }
+    double r = 0.0;
+    for (int i = nfun - 1; i >= 0; i--) {
+        double t = M[i][nfun];
+        for (int j = i + 1; j < nfun; j++)
+            t -= M[i][j] * x[j];
+        x[i] = t / M[i][i];
+        r += b[i] * x[i];
+    }
+    return r;
 }
 
 /* eta and lambda of the dilute gas of unit spheres (dim 3) or discs (dim 2) colliding by
  * the zmf law at the sphere frame's rate, at speed of light c (INFINITY: classical) and
  * temperature kT, from `samples` pairs in 10 batches (errors: the batches' standard
- * error). nfun = 1: first functions alone (the first approximation); 2: both. Returns 0,
+ * error). nfun = 1: first functions alone (the first approximation); 2, 3: the Galerkin
+ * solutions on more (relcol-eos uses 2; 3 measures how far 2 is from converged). Returns 0,
  * or -1 on bad arguments or a failed collision. Dense gas: times Enskog's factors. */
 static inline int tr_shear_heat_sphere(int dim, double c, double kT, int nfun, long samples,
                                        uint64_t seed, tr_shear_heat *out)
 {
     enum { NBATCH = 10, NPILOT = 20000 };
-    if ((dim != 2 && dim != 3) || nfun < 1 || nfun > 2 || samples < 10 * NBATCH ||
+    if ((dim != 2 && dim != 3) || nfun < 1 || nfun > TR_SH_NFUN || samples < 10 * NBATCH ||
         !(kT > 0.0) || !(c > 0.0))
         return -1;
     rc_rng r = {seed};
@@ -128,30 +169,39 @@ static inline int tr_shear_heat_sphere(int dim, double c, double kT, int nfun, l
     const double meanK = isinf(c) ? 0.5 * dim * kT
                                   : c * c * (jt_mean_gamma(dim, kT / (c * c)) - 1.0);
     const double h = meanK + kT;
-    /* the p part of (K - h)^2 v, <(K - h)^2 v.p> / <p.p>, from a pilot sample: any constant
-     * is exact (b and M do not see p), the right one only lowers the variance */
-    double num = 0.0, den = 0.0;
+    /* the p part of (K - h) y^j v, <(K - h) y^j v.p> / <p.p>, from a pilot sample: any
+     * constant is exact (b and M do not see p), the right one only lowers the variance;
+     * (K - h) v itself has none */
+    double num[TR_SH_NFUN] = {0}, den = 0.0, ap[TR_SH_NFUN] = {0};
     for (long i = 0; i < NPILOT; i++) {
         const rc_vec3 p = tr_draw_momentum_d(&r, dim, c, kT);
-        const double e = tr_kinetic(p, k) - h;
-        num += e * e * rc_v3_dot(rc_velocity(1.0, p, k), p);
+        const double e = tr_kinetic(p, k) - h, vp = rc_v3_dot(rc_velocity(1.0, p, k), p);
+        double w = e;
+        for (int j = 0; j < TR_SH_NFUN; j++, w *= e / kT)
+            num[j] += w * vp;
         den += rc_v3_dot(p, p);
     }
-    const double a2 = num / den, pp = den / (NPILOT * (double)dim); /* <p_x^2> */
+    for (int j = 1; j < TR_SH_NFUN; j++)
+        ap[j] = num[j] / den;
+    const double pp = den / (NPILOT * (double)dim); /* <p_x^2> */
     const double sig = dim == 3 ? M_PI : 2.0; /* sigma_T: pi sigma^2, or 2 sigma in 2-D */
     const double nt = dim == 3 ? 10.0 : 4.0, nv = dim;  /* isotropic contractions */
     const long per = samples / NBATCH;
-    double est_e[NBATCH], est_l[NBATCH], est_i[NBATCH];
+    double est_e[NBATCH], est_l[NBATCH], est_i[NBATCH], est_ae[NBATCH], est_al[NBATCH];
+    /* b n / n: the second virial coefficient of unit spheres or discs */
+    const double bvir = dim == 3 ? 2.0 * M_PI / 3.0 : M_PI / 2.0;
     for (int bt = 0; bt < NBATCH; bt++) {
-        double As[2][2] = {{0}}, Aq[2][2] = {{0}}, bs[2] = {0}, bq[2] = {0}, inv = 0.0;
+        double As[TR_SH_NFUN][TR_SH_NFUN] = {{0}}, Aq[TR_SH_NFUN][TR_SH_NFUN] = {{0}};
+        double bs[TR_SH_NFUN] = {0}, bq[TR_SH_NFUN] = {0}, inv = 0.0;
+        double ts_[TR_SH_NFUN] = {0}, tq_[TR_SH_NFUN] = {0}; /* collisional transfer */
         for (long i = 0; i < per; i++) {
             rc_particle a = {1.0, tr_draw_momentum_d(&r, dim, c, kT)};
             rc_particle b = {1.0, tr_draw_momentum_d(&r, dim, c, kT)};
-            double s0[2][9], s1[2][9], S[2][9], Sp[2][9];
-            rc_vec3 q0[2], q1[2], Q[2], Qp[2];
-            tr_sh_trial(dim, a.p, k, h, a2, s0, q0);
-            tr_sh_trial(dim, b.p, k, h, a2, s1, q1);
-            for (int f = 0; f < 2; f++) {
+            double s0[TR_SH_NFUN][9], s1[TR_SH_NFUN][9], S[TR_SH_NFUN][9], Sp[TR_SH_NFUN][9];
+            rc_vec3 q0[TR_SH_NFUN], q1[TR_SH_NFUN], Q[TR_SH_NFUN], Qp[TR_SH_NFUN];
+            tr_sh_trial(dim, a.p, k, kT, h, ap, s0, q0);
+            tr_sh_trial(dim, b.p, k, kT, h, ap, s1, q1);
+            for (int f = 0; f < nfun; f++) {
                 for (int t = 0; t < 9; t++) {
                     bs[f] += 0.5 * (s0[f][t] * s0[0][t] + s1[f][t] * s1[0][t]);
                     S[f][t] = s0[f][t] + s1[f][t];
@@ -180,17 +230,31 @@ static inline int tr_shear_heat_sphere(int dim, double c, double kT, int nfun, l
                 nrm = rc_v3_add(rc_v3_scale(bb, rc_v3(-e.y, e.x, 0.0)),
                                 rc_v3_scale(sqrt(fmax(0.0, 1.0 - bb * bb)), e));
             }
+            const rc_vec3 pb0 = b.p;
+            const double kb0 = tr_kinetic(b.p, k);
             if (rc_collide(&rc_law_zmf, &prm, &a, &b, nrm) != 0)
                 return -1;
-            tr_sh_trial(dim, a.p, k, h, a2, s0, q0);
-            tr_sh_trial(dim, b.p, k, h, a2, s1, q1);
-            for (int f = 0; f < 2; f++) {
+            /* what ball 1, a diameter along nrm from ball 0, gained */
+            const rc_vec3 dp = rc_v3_sub(b.p, pb0);
+            const double dE = tr_kinetic(b.p, k) - kb0;
+            const double na[3] = {nrm.x, nrm.y, nrm.z}, da[3] = {dp.x, dp.y, dp.z};
+            for (int j = 0; j < nfun; j++) {
+                double t = 0.0;
+                for (int a2 = 0; a2 < 3; a2++)
+                    for (int b2 = 0; b2 < 3; b2++)
+                        t += na[a2] * da[b2] * S[j][3 * a2 + b2];
+                ts_[j] += g * t;
+                tq_[j] += g * dE * rc_v3_dot(nrm, Q[j]);
+            }
+            tr_sh_trial(dim, a.p, k, kT, h, ap, s0, q0);
+            tr_sh_trial(dim, b.p, k, kT, h, ap, s1, q1);
+            for (int f = 0; f < nfun; f++) {
                 for (int t = 0; t < 9; t++)
                     Sp[f][t] = s0[f][t] + s1[f][t];
                 Qp[f] = rc_v3_add(q0[f], q1[f]);
             }
-            for (int i2 = 0; i2 < 2; i2++)
-                for (int j = 0; j < 2; j++) {
+            for (int i2 = 0; i2 < nfun; i2++)
+                for (int j = 0; j < nfun; j++) {
                     double ts = 0.0;
                     for (int t = 0; t < 9; t++)
                         ts += S[j][t] * (S[i2][t] - Sp[i2][t]);
@@ -199,22 +263,59 @@ static inline int tr_shear_heat_sphere(int dim, double c, double kT, int nfun, l
                 }
             inv += g * rc_v3_dot(P, rc_v3_sub(Q[0], Qp[0])); /* scaled below */
         }
-        for (int i2 = 0; i2 < 2; i2++) {
+        for (int i2 = 0; i2 < nfun; i2++) {
             bs[i2] /= nt * (double)per;
             bq[i2] /= nv * (double)per;
-            for (int j = 0; j < 2; j++) {
+            ts_[i2] *= sig / (nt * (double)per);
+            tq_[i2] *= sig / (nv * (double)per);
+            for (int j = 0; j < nfun; j++) {
                 As[i2][j] *= sig / (nt * (double)per);
                 Aq[i2][j] *= sig / (nv * (double)per);
             }
         }
-        est_e[bt] = 2.0 / kT * tr_sh_galerkin(nfun, (const double(*)[2])As, bs);
-        est_l[bt] = 2.0 / (kT * kT) * tr_sh_galerkin(nfun, (const double(*)[2])Aq, bq);
+        /* phi = (2/n) sum_j x_j psi_j: kinetic (2/kT^s) b.x, collisional n T.x / kT^s */
+        double xs[TR_SH_NFUN], xq[TR_SH_NFUN], cs = 0.0, cq = 0.0;
+        const double ks = tr_sh_galerkin(nfun, (const double(*)[TR_SH_NFUN])As, bs, xs);
+        const double kq = tr_sh_galerkin(nfun, (const double(*)[TR_SH_NFUN])Aq, bq, xq);
+        for (int j = 0; j < nfun; j++) {
+            cs += ts_[j] * xs[j];
+            cq += tq_[j] * xq[j];
+        }
+        est_e[bt] = 2.0 / kT * ks;
+        est_l[bt] = 2.0 / (kT * kT) * kq;
+        est_ae[bt] = cs / (2.0 * ks * bvir);
+        est_al[bt] = cq / (2.0 * kq * bvir);
         est_i[bt] = inv * sqrt(bq[0] / pp) * sig / (nv * (double)per) / Aq[0][0];
     }
     out->eta = tr_mean_se(est_e, NBATCH, &out->eta_se);
     out->lambda = tr_mean_se(est_l, NBATCH, &out->lambda_se);
     out->heat_inv = tr_mean_se(est_i, NBATCH, &out->heat_inv_se);
+    out->alpha_eta = tr_mean_se(est_ae, NBATCH, &out->alpha_eta_se);
+    out->alpha_lambda = tr_mean_se(est_al, NBATCH, &out->alpha_lambda_se);
     return 0;
+}
+
+/* The dilute values o carried to packing fraction eta (3-D spheres) as relcol-eos measures
+ * them: Enskog's factors with the kernel's own linear terms,
+ *     eta:    1/chi + 2 alpha_eta b n + 0.7614 (b n)^2 chi,
+ *     lambda: r^2/chi + 2 r alpha_lambda b n + 0.7574 (b n)^2 chi,
+ * r = h'/h: the measured heat moment subtracts the gas's enthalpy h' = <E> + Z kT (its
+ * measured pressure), the dilute theory h = <E> + kT, and modulo the (zero) total momentum
+ * the single-ball current (E - h') v = c^2 p - h' v is h'/h times (E - h) v -- at finite c
+ * v is no collision invariant, so the enthalpy's density correction scales the kinetic
+ * part (classically r = 1). The (b n)^2 terms are the classical ones (below 1 % at
+ * packing 0.02). papers/transport.md, section 4. */
+static inline void tr_shear_heat_enskog(const tr_shear_heat *o, double c, double kT,
+                                        double eta, double *eta_s, double *lambda)
+{
+    const double bn = 4.0 * eta, chi = eos_chi(3, eta), z = eos_z_kolafa(eta);
+    double r = 1.0;
+    if (!isinf(c)) {
+        const double e = c * c * jt_mean_gamma(3, kT / (c * c)); /* <E>, rest energy in */
+        r = (e + z * kT) / (e + kT);
+    }
+    *eta_s = o->eta * (1.0 / chi + 2.0 * o->alpha_eta * bn + 0.7614 * bn * bn * chi);
+    *lambda = o->lambda * (r * r / chi + 2.0 * r * o->alpha_lambda * bn + 0.7574 * bn * bn * chi);
 }
 
 #endif
