@@ -5,7 +5,7 @@
  * function psi its weak form is exact whatever the rate (f0 stationary is all it needs):
  *     <psi, L phi> = -(n^2/2) < R (Psi' - Psi) Phi >,   Psi = psi(p0) + psi(p1),
  * R = sigma_T |v0 - v1| (the sphere frame's non-invariant rate, sigma_T = pi sigma^2, or
- * sigma in 2-D) and ' the zmf law along the table-frame normal. On trial functions
+ * 2 sigma in 2-D) and ' the zmf law along the table-frame normal. On trial functions
  * psi_i (Galerkin): coefficient = (2 / kT^s) b^T M^-1 b, with
  *     M_ij = sigma_T < |v0 - v1| Psi_j . (Psi_i - Psi_i') >,   b_i = < psi_i . S >
  * per Cartesian component (isotropy), S the source:
@@ -14,12 +14,11 @@
  *                    energy (Eckart's force grad T - T grad P / (n h)), trial
  *                    (K - h) y^j v_x minus its p_x part,  y = (K - h) / kT,
  * j = 0 .. nfun - 1, K = E - m c^2. Relativistically {p v, K p v} spans {p_x p_y / E,
- * p_x p_y}, and E v = c^2 p
- * makes (K - h) v = c^2 p - (h + m c^2) v: heat is carried by v_x off the momentum, and
- * every heat trial function must be orthogonal to p_x (b is; M ignores it when the pair
- * measure is preserved, checked as `heat_inv`). Classically the first functions give
- * Chapman & Cowling's first approximations, both functions their second. Units: sigma =
- * m = 1; papers/transport.md, section 4. */
+ * p_x p_y}, and E v = c^2 p makes (K - h) v = c^2 p - (h + m c^2) v: heat is carried by
+ * v_x off the momentum, and every heat trial function must be orthogonal to p_x (b is; M
+ * ignores it when the pair measure is preserved, checked as `heat_inv`). Classically the
+ * first functions give Chapman & Cowling's first approximations, two functions their
+ * second. Units: sigma = m = 1; papers/transport.md, section 4. */
 #ifndef RELCOL_TR_SHEAR_HEAT_H
 #define RELCOL_TR_SHEAR_HEAT_H
 
@@ -153,7 +152,7 @@ static inline double tr_sh_galerkin(int nfun, const double A[TR_SH_NFUN][TR_SH_N
  * temperature kT, from `samples` pairs in 10 batches (errors: the batches' standard
  * error). nfun = 1: first functions alone (the first approximation); 2, 3: the Galerkin
  * solutions on more (relcol-eos uses 2; 3 measures how far 2 is from converged). Returns 0,
- * or -1 on bad arguments or a failed collision. Dense gas: times Enskog's factors. */
+ * or -1 on bad arguments or a failed collision. Dense gas: tr_shear_heat_enskog. */
 static inline int tr_shear_heat_sphere(int dim, double c, double kT, int nfun, long samples,
                                        uint64_t seed, tr_shear_heat *out)
 {
