@@ -218,7 +218,7 @@ static int write_script(const char *path, const options *o, char *err)
         app_gnuplot_head(f, "eos.png", "size 1500,520 enhanced font 'Sans,12' linewidth 1.4", 0);
         fprintf(f,
 "set multiplot layout 1,3 title \"Transport coefficients of %d-D hard balls (Einstein–Helfand), "
-"N = %zu, c = %s, frame %s; theory: Enskog (classical) at the same kT, and the kernel's Chapman–Enskog (tr_first_order.h, tr_shear_heat.h)\"\n"
+"N = %zu, c = %s, frame %s; theory: Enskog (classical) at the same kT, the sphere kernel's Chapman–Enskog\"\n"
 "set xlabel 'θ'\nset grid lc rgb '#dddddd'\nset key top left box opaque\nset logscale xy\n"
 "set xrange [%.4g:%.4g]\n"
 "set ylabel 'D'\n"
