@@ -15,6 +15,7 @@
 #include "eos_theory.h"
 #include "eos_run.h"
 #include "tr_first_order.h"
+#include "tr_shear_heat.h"
 
 static const char *prog = "relcol-eos";
 #define EXIT_BAD_INPUT 2
@@ -44,8 +45,9 @@ static void usage(FILE *f)
 "Theory columns: 3-D Kolafa and Carnahan–Starling, 2-D virial series (Clisby & McCoy)\n"
 "and Santos et al.; transport (3-D): Enskog, and Speedy's D (a fit to 500-sphere\n"
 "runs) moved to this box by Yeh & Hummer's finite-size law, and for uncontracted\n"
-"spheres at any c their own Chapman-Enskog D (D_chapman_enskog). Z, kT, P, D, eta,\n"
-"lambda each with a standard error from the blocks.\n");
+"spheres at any c their own Chapman-Enskog D, eta and lambda (D_chapman_enskog,\n"
+"eta_chapman_enskog, lambda_chapman_enskog: dilute values times Enskog-type factors).\n"
+"Z, kT, P, D, eta, lambda each with a standard error from the blocks.\n");
 }
 
 typedef struct options {
@@ -216,7 +218,7 @@ static int write_script(const char *path, const options *o, char *err)
         app_gnuplot_head(f, "eos.png", "size 1500,520 enhanced font 'Sans,12' linewidth 1.4", 0);
         fprintf(f,
 "set multiplot layout 1,3 title \"Transport coefficients of %d-D hard balls (Einstein–Helfand), "
-"N = %zu, c = %s, frame %s; theory: Enskog (classical) at the same kT; D also the kernel's Chapman–Enskog (tr_first_order.h)\"\n"
+"N = %zu, c = %s, frame %s; theory: Enskog (classical) at the same kT, the sphere kernel's Chapman–Enskog\"\n"
 "set xlabel 'θ'\nset grid lc rgb '#dddddd'\nset key top left box opaque\nset logscale xy\n"
 "set xrange [%.4g:%.4g]\n"
 "set ylabel 'D'\n"
@@ -226,10 +228,12 @@ static int write_script(const char *path, const options *o, char *err)
 "     '' skip 1 using 5:27 with linespoints dt 3 lc rgb '#9467bd' title 'Chapman–Enskog, sphere kernel'\n"
 "set ylabel 'η_s'\n"
 "plot 'eos.csv' skip 1 using 5:16:17 with yerrorbars pt 7 lc rgb '#1f77b4' title 'relcol', \\\n"
-"     '' skip 1 using 5:21 with linespoints lc rgb '#d62728' title 'Enskog'\n"
+"     '' skip 1 using 5:21 with linespoints lc rgb '#d62728' title 'Enskog', \\\n"
+"     '' skip 1 using 5:28 with linespoints dt 3 lc rgb '#9467bd' title 'Chapman–Enskog, sphere kernel'\n"
 "set ylabel 'λ'\n"
 "plot 'eos.csv' skip 1 using 5:18:19 with yerrorbars pt 7 lc rgb '#1f77b4' title 'relcol', \\\n"
-"     '' skip 1 using 5:22 with linespoints lc rgb '#d62728' title 'Enskog'\n"
+"     '' skip 1 using 5:22 with linespoints lc rgb '#d62728' title 'Enskog', \\\n"
+"     '' skip 1 using 5:29 with linespoints dt 3 lc rgb '#9467bd' title 'Chapman–Enskog, sphere kernel'\n"
 "unset multiplot\n",
                 in->dim, in->n, app_fmt(in->c, fc), in->frame ? in->frame->name : "sphere",
                 0.5 * tmin, 2.0 * tmax);
@@ -261,7 +265,8 @@ int main(int argc, char **argv)
     }
     fprintf(a.f, "dim,c,n,packing,theta,kT,kT_se,Z,Z_se,Z_theory,Z_theory2,P,P_se,D,D_se,"
                  "eta,eta_se,lambda,lambda_se,D_enskog,eta_enskog,lambda_enskog,D_speedy_box,"
-                 "collisions,overlaps,seconds,D_chapman_enskog\n");
+                 "collisions,overlaps,seconds,D_chapman_enskog,eta_chapman_enskog,"
+                 "lambda_chapman_enskog\n");
     printf("%s: %d-D, N = %zu, c = %s, frame %s, periodic box; Z against %s\n", prog,
            o.in.dim, o.in.n, app_fmt(o.in.c, fc), o.in.frame ? o.in.frame->name : "sphere",
            o.in.dim == 3 ? "Kolafa (Z_theory) and Carnahan–Starling"
@@ -297,21 +302,29 @@ int main(int argc, char **argv)
             if (in.dim == 3 && in.transport && !(in.frame && in.frame->contracted) &&
                 tr_nd_sphere(in.c, r.kT, 2, 200000, in.seed, &dce, &dce_se) == 0)
                 dce /= 6.0 * eta / M_PI * eos_chi(3, eta);
+            /* and its eta, lambda (tr_shear_heat.h): Galerkin on two functions each, the
+             * dilute values carried to this packing by Enskog's factors with the kernel's
+             * own collisional transfer and the measured heat moment's enthalpy */
+            double ece = NAN, lce = NAN;
+            tr_shear_heat sh;
+            if (in.dim == 3 && in.transport && !(in.frame && in.frame->contracted) &&
+                tr_shear_heat_sphere(3, in.c, r.kT, 2, 200000, in.seed, &sh) == 0)
+                tr_shear_heat_enskog(&sh, in.c, r.kT, eta, &ece, &lce);
             fprintf(a.f, "%d,%s,%zu,%.6g,%.6g,%.8g,%.3g,%.8g,%.3g,%.8g,%.8g,%.8g,%.3g,%.6g,%.3g,"
-                         "%.6g,%.3g,%.6g,%.3g,%.6g,%.6g,%.6g,%.6g,%llu,%llu,%.3f,%.6g\n",
+                         "%.6g,%.3g,%.6g,%.3g,%.6g,%.6g,%.6g,%.6g,%llu,%llu,%.3f,%.6g,%.6g,%.6g\n",
                     in.dim, app_fmt(in.c, fc), in.n, eta, in.theta, r.kT, r.kT_se, r.z, r.z_se,
                     zt, zt2, r.p, r.p_se, r.d, r.d_se, r.eta, r.eta_se, r.lambda, r.lambda_se,
                     de, ee, le, ds, (unsigned long long)r.collisions,
-                    (unsigned long long)r.overlaps, sec, dce);
+                    (unsigned long long)r.overlaps, sec, dce, ece, lce);
             printf("packing %.4g theta %.4g: kT = %.5f +- %.5f  Z = %.5f +- %.5f  (theory %.5f: "
                    "%+.3f %% +- %.3f %%)  %llu collisions, %.1f s\n",
                    eta, in.theta, r.kT, r.kT_se, r.z, r.z_se, zt, 100.0 * (r.z / zt - 1.0),
                    100.0 * r.z_se / zt, (unsigned long long)r.collisions, sec);
             if (in.transport)
                 printf("    D = %.5f +- %.5f (Enskog %.5f, Speedy in this box %.5f, Chapman-Enskog "
-                       "of this kernel %.5f)  eta = %.5f +- %.5f (Enskog %.5f)  lambda = %.5f +- "
-                       "%.5f (Enskog %.5f)\n", r.d, r.d_se, de, ds, dce, r.eta, r.eta_se, ee,
-                       r.lambda, r.lambda_se, le);
+                       "of this kernel %.5f)  eta = %.5f +- %.5f (Enskog %.5f, Chapman-Enskog %.5f)  "
+                       "lambda = %.5f +- %.5f (Enskog %.5f, Chapman-Enskog %.5f)\n", r.d, r.d_se,
+                       de, ds, dce, r.eta, r.eta_se, ee, ece, r.lambda, r.lambda_se, le, lce);
             fflush(stdout);
         }
     if (rc != 0) {

@@ -3,7 +3,8 @@
  * dilute relativistic limit P = n kT (and the classical equation of state it keeps for
  * uncontracted spheres), Kolafa's hard-sphere equation of state, and the self-diffusion of
  * a dilute gas against Chapman–Enskog (classical, and relativistic for the sphere kernel)
- * and of the dense gas (packing 0.2) against Speedy's fit. Tolerances: a few standard errors of the blocks
+ * and of the dense gas (packing 0.2) against Speedy's fit, and the shear viscosity and heat
+ * conductivity of the relativistic gas against the sphere kernel's Chapman–Enskog values. Tolerances: a few standard errors of the blocks
  * (measured in the run itself) plus the stated accuracy of the theory. */
 #include <math.h>
 #include <stdlib.h>
@@ -11,6 +12,7 @@
 #include "eos_run.h"
 #include "eos_theory.h"
 #include "tr_first_order.h"
+#include "tr_shear_heat.h"
 #include "rc_test.h"
 
 static eos_in base(void)
@@ -143,6 +145,71 @@ static void test_diffusion_relativistic(void)
     ENSURE(r.d > d1 + 4.0 * r.d_se);
 }
 
+/* The first Chapman–Enskog eta and lambda of the sphere kernel (tr_shear_heat.h), by Monte
+ * Carlo. Classically (first functions alone) they must be Chapman & Cowling's first
+ * approximations for spheres, 5/16 sqrt(kT/pi) and 75/64 sqrt(kT/pi), and for discs
+ * 1/2 sqrt(kT/pi) and 2 sqrt(kT/pi), and the spheres' collisional-transfer terms Enskog's
+ * 2/5 and 3/5 (the 0.8 b n and 1.2 b n of eos_theory.h) -- each within 4 of the Monte
+ * Carlo's standard errors; and the collision leaves the pair measure alone (heat_inv = 0
+ * within 4 standard errors, at c = 1 too). Relativistic (c = 1, theta = 1, packing 0.02,
+ * N = 500, sphere frame): the Einstein–Helfand eta and lambda against the two-function
+ * values carried to the packing (tr_shear_heat_enskog), within 4 combined standard errors
+ * (run and Monte Carlo) plus 2 %: the two-function values move by under 0.5 % with a third
+ * function, and the (b n)^2 terms taken from the classical gas are 0.5 % of the values.
+ * At theta = 1 both coefficients lie far from the classical ones at the same kT (eta twice
+ * Enskog's, lambda 15 % below), so the test tells the relativistic theory from the
+ * classical one. */
+static void test_shear_heat_relativistic(void)
+{
+    const double s = sqrt(1.0 / M_PI);
+    const double ref[2][2] = {{0.5 * s, 2.0 * s}, {5.0 / 16.0 * s, 75.0 / 64.0 * s}};
+    tr_shear_heat o;
+    for (int dim = 2; dim <= 3; dim++) {
+        ENSURE(tr_shear_heat_sphere(dim, INFINITY, 1.0, 1, 400000, 11 + dim, &o) == 0);
+        printf("  classical %d-D: eta_1 = %.5f +- %.5f (%.5f), lambda_1 = %.5f +- %.5f (%.5f), "
+               "momentum part %.4f +- %.4f, alpha %.4f +- %.4f and %.4f +- %.4f\n", dim, o.eta,
+               o.eta_se, ref[dim - 2][0], o.lambda, o.lambda_se, ref[dim - 2][1], o.heat_inv,
+               o.heat_inv_se, o.alpha_eta, o.alpha_eta_se, o.alpha_lambda, o.alpha_lambda_se);
+        ENSURE(o.eta_se > 0.0 && o.eta_se < 0.01 * o.eta);
+        ENSURE(o.lambda_se > 0.0 && o.lambda_se < 0.02 * o.lambda);
+        ENSURE_CLOSE(o.eta, ref[dim - 2][0], 4.0, o.eta_se);
+        ENSURE_CLOSE(o.lambda, ref[dim - 2][1], 4.0, o.lambda_se);
+        ENSURE_CLOSE(o.heat_inv, 0.0, 4.0, o.heat_inv_se);
+    }
+    ENSURE_CLOSE(o.alpha_eta, 0.4, 4.0, o.alpha_eta_se);
+    ENSURE_CLOSE(o.alpha_lambda, 0.6, 4.0, o.alpha_lambda_se);
+    /* the bad inputs are refused */
+    ENSURE(tr_shear_heat_sphere(4, 1.0, 1.0, 1, 400000, 1, &o) == -1);
+    ENSURE(tr_shear_heat_sphere(3, 1.0, 0.0, 1, 400000, 1, &o) == -1);
+    ENSURE(tr_shear_heat_sphere(3, 1.0, 1.0, 4, 400000, 1, &o) == -1);
+
+    eos_in in = base();
+    in.packing = 0.02;
+    in.c = 1.0;
+    in.theta = 1.0;
+    in.transport = 1;
+    in.t_run = 6000.0;
+    in.blocks = 30;
+    in.per_block = 200;
+    in.lag = 20.0;
+    eos_out r;
+    char err[256];
+    ENSURE_MSG(eos_measure(&in, &r, err) == 0, "%s", err);
+    ENSURE(tr_shear_heat_sphere(3, 1.0, r.kT, 2, 400000, 17, &o) == 0);
+    ENSURE_CLOSE(o.heat_inv, 0.0, 4.0, o.heat_inv_se);
+    double et, lt;
+    tr_shear_heat_enskog(&o, 1.0, r.kT, 0.02, &et, &lt);
+    const double et_se = o.eta_se * et / o.eta, lt_se = o.lambda_se * lt / o.lambda;
+    printf("  c = 1, theta = 1, packing 0.02: eta = %.4f +- %.4f (Chapman-Enskog %.4f +- %.4f, "
+           "Enskog %.4f); lambda = %.4f +- %.4f (Chapman-Enskog %.4f +- %.4f, Enskog %.4f)\n",
+           r.eta, r.eta_se, et, et_se, tr_eta_enskog(0.02, r.kT), r.lambda, r.lambda_se, lt,
+           lt_se, tr_lambda_enskog(0.02, r.kT));
+    ENSURE(r.eta_se > 0.0 && r.eta_se < 0.1 * et);
+    ENSURE(r.lambda_se > 0.0 && r.lambda_se < 0.1 * lt);
+    ENSURE_CLOSE(r.eta, et, 1.0, 4.0 * hypot(r.eta_se, et_se) + 0.02 * et);
+    ENSURE_CLOSE(r.lambda, lt, 1.0, 4.0 * hypot(r.lambda_se, lt_se) + 0.02 * lt);
+}
+
 /* A walled box: what the walls take per unit area and time equals the virial pressure of
  * the gas, (<sum p_d v_d> + collisional transfer rate) / ((L - 2 r) A): the virial
  * theorem with the walls' own moment, the centres reaching only L - 2 r. 3-D, packing
@@ -248,5 +315,6 @@ int main(void)
     RUN_TEST(test_diffusion);
     RUN_TEST(test_diffusion_dense);
     RUN_TEST(test_diffusion_relativistic);
+    RUN_TEST(test_shear_heat_relativistic);
     RC_TEST_MAIN_END();
 }
