@@ -35,6 +35,36 @@ static inline rc_vec3 rc_cross_exact(rc_vec3 p, rc_vec3 e)
                  rc_diff_prod(p.x, e.y, p.y, e.x));
 }
 
+/* M0 M1 - p0.p1/c^2 for two balls of rest masses m, momenta p and energies / c^2 M (k =
+ * 1/c^2, sqrt_k = 1/c): their four-momenta's product over c^2, = m0 m1 cosh of their
+ * relative rapidity >= m0 m1. When p0.p1/c^2 is near M0 M1 (both balls fast the same
+ * way) the plain difference keeps only the rounding of its terms, which are gamma^2
+ * times the result. Then it is written as (X^2 - Y^2)/(X + Y), X = M0 M1, Y = p0.p1/c^2,
+ * with Lagrange's identity (p0.p1)^2 + |p0 x p1|^2 = |p0|^2 |p1|^2 making the numerator
+ *   X^2 - Y^2 = m0^2 m1^2 + (m0^2 |p1|^2 + m1^2 |p0|^2)/c^2 + |p0 x p1|^2/c^4,
+ * a sum of positive terms; both sides are divided by X (each term a product of ratios
+ * m/M and |p|/(c M) <= 1, so that no fourth power overflows) and |p0 x p1| is formed
+ * from p0 and p1 scaled by powers of two (exact) with rc_cross_exact, accurate to its own
+ * size when the two are nearly parallel. Every rounding is then of a term of the result's
+ * own size. Below Y = X/2 the plain form loses a bit at most and is kept. */
+static inline double rc_pair_dot(double m0, rc_vec3 p0, double M0, double m1, rc_vec3 p1,
+                                 double M1, double k, double sqrt_k)
+{
+    const double X = M0 * M1, Y = rc_v3_dot(p0, p1) * k;
+    if (!(Y > 0.5 * X))
+        return X - Y;
+    /* Y > 0: both momenta nonzero, and sqrt_k |p| / M in (1/2, 1] for each ball */
+    const int e0 = ilogb(rc_v3_norm(p0)), e1 = ilogb(rc_v3_norm(p1));
+    const rc_vec3 q0 = rc_v3_scale(ldexp(1.0, -e0), p0), q1 = rc_v3_scale(ldexp(1.0, -e1), p1);
+    /* f = sqrt_k 2^e / M: q f = p / (c M), the ball's velocity over c */
+    const double f0 = ldexp(sqrt_k, e0) / M0, f1 = ldexp(sqrt_k, e1) / M1;
+    const double w0 = m0 / M0, w1 = m1 / M1;
+    const double b0 = rc_v3_norm(q0) * f0, b1 = rc_v3_norm(q1) * f1;
+    const double x = rc_v3_norm(rc_cross_exact(q0, q1)) * f0 * f1;
+    const double r = (w0 * w0 * (w1 * w1 + b1 * b1) + w1 * w1 * b0 * b0 + x * x) / (1.0 + Y / X);
+    return X * r;
+}
+
 /* The pair along e: energies (relativistic masses) M, momenta along e pe, and T^2. */
 typedef struct rc_axis {
     double M0, M1, pe0, pe1, T02, T12;
