@@ -430,7 +430,10 @@ static int joint(int pivot, double inv_c2, size_t nballs, rc_particle *balls, si
         } else {
             double pbn = rc_v3_dot(balls[c->b].p, c->n), Mt = M0[c->a] + M0[c->b];
             qt[j] = (pan + pbn) / Mt * inv_c2;
-            a0[j] = (M0[c->b] * pan - M0[c->a] * pbn) / Mt;
+            /* the zmf law's approach, without its cancellation for a pair moving fast
+             * together in this frame (pair_axis.h) */
+            a0[j] = rc_pair_a0(&balls[c->a], &balls[c->b], c->n, inv_c2, M0[c->a], M0[c->b],
+                               pan, pbn);
         }
         /* a contact that is not approaching takes no impulse to begin with */
         active[j] = a0[j] > 0.0;
