@@ -5,6 +5,7 @@
 #include "relcol/kinematics.h"
 #include "relcol/status.h"
 #include "kinematics_private.h"
+#include "pair_axis.h"
 
 double rc_inv_c2_of(double c) { return isinf(c) ? 0.0 : 1.0 / (c * c); }
 
@@ -119,6 +120,34 @@ rc_four rc_particle_four(const rc_particle *b, double inv_c2)
     return f;
 }
 
+/* M - |P|/c for n balls of total energy / c^2 M and momentum P, pc = |P|/c. When the
+ * balls' ZMF moves near c (|P|/c > 0.95 M, as pair_axis.h's RC_PAIR_FAST) the difference
+ * keeps only the rounding of M, gamma^2 times it; then it is the sum over the balls of
+ * M_i - p_i.uhat/c (uhat = P/|P|, the identity holds for the exact P and its rounding
+ * moves the terms by its square only), each positive: T_i^2/(M_i + p_i.uhat/c) for a ball
+ * moving along uhat, with T_i^2 = m_i^2 + |p_i x uhat|^2/c^2 (rc_cross_exact), else M_i +
+ * |p_i.uhat|/c. */
+static double zmf_minus(const rc_particle *b, size_t n, double inv_c2, double M, rc_vec3 P,
+                        double pc)
+{
+    if (!(pc * pc > RC_PAIR_FAST * M * M))
+        return M - pc;
+    const rc_vec3 uh = rc_v3_scale(1.0 / rc_v3_norm(P), P);
+    const double sqrt_k = sqrt(inv_c2);
+    double h = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        const double Mi = rc_mass_rel(b[i].m, b[i].p, inv_c2);
+        const double pl = rc_v3_dot(b[i].p, uh) * sqrt_k;
+        if (pl > 0.0) {
+            const double T2 = b[i].m * b[i].m + rc_v3_norm2(rc_cross_exact(b[i].p, uh)) * inv_c2;
+            h += T2 / (Mi + pl);
+        } else {
+            h += Mi - pl;
+        }
+    }
+    return h;
+}
+
 int rc_zmf(const rc_particle *b, size_t n, double inv_c2, rc_vec3 *u, double *minv)
 {
     if (n == 0)
@@ -139,7 +168,7 @@ int rc_zmf(const rc_particle *b, size_t n, double inv_c2, rc_vec3 *u, double *mi
             *minv = rc_pair_invariant_mass(&b[0], &b[1], inv_c2);
         } else {
             double pc = sqrt(rc_v3_norm2(P) * inv_c2);
-            *minv = sqrt((M - pc) * (M + pc));
+            *minv = sqrt(zmf_minus(b, n, inv_c2, M, P, pc) * (M + pc));
         }
     }
     return RC_OK;
@@ -151,6 +180,16 @@ double rc_pair_invariant_mass(const rc_particle *a, const rc_particle *b, double
      * through the kinetic parts K = M - m = p^2/c^2 / (M + m): the large m0 m1 terms
      * never meet in a subtraction. */
     double M0 = rc_mass_rel(a->m, a->p, inv_c2), M1 = rc_mass_rel(b->m, b->p, inv_c2);
+    /* Both balls fast the same way (pair_axis.h, RC_GAMMA_FAST): the kinetic parts are then
+     * gamma^2 times x, whose last term cancels them. minv^2 = m0^2 + m1^2 + 2 (M0 M1 -
+     * p0.p1/c^2) instead, the last term from rc_pair_dot as a sum of positive terms: every
+     * term positive, minv to a few roundings. Otherwise x loses a few bits at most (one
+     * ball's speed is below 0.95 c or the two move apart) and the form below is kept. */
+    if (M0 > RC_GAMMA_FAST * a->m && M1 > RC_GAMMA_FAST * b->m &&
+        rc_v3_dot(a->p, b->p) > 0.0) {
+        const double d = rc_pair_dot(a->m, a->p, M0, b->m, b->p, M1, inv_c2, sqrt(inv_c2));
+        return sqrt(a->m * a->m + b->m * b->m + 2.0 * d);
+    }
     double K0 = rc_v3_norm2(a->p) * inv_c2 / (M0 + a->m);
     double K1 = rc_v3_norm2(b->p) * inv_c2 / (M1 + b->m);
     double x = a->m * K1 + b->m * K0 + K0 * K1 - rc_v3_dot(a->p, b->p) * inv_c2;

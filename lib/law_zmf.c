@@ -21,14 +21,6 @@
 #include "relcol/status.h"
 #include "pair_axis.h"
 
-/* |p x n|^2: as |p|^2 - (p.n)^2 when p is at least 45 degrees off n (a bit lost at most),
- * else from the cross product formed to its own accuracy. */
-static double across2(rc_vec3 p, double pn, rc_vec3 n)
-{
-    const double p2 = rc_v3_norm2(p);
-    return pn * pn <= 0.5 * p2 ? p2 - pn * pn : rc_v3_norm2(rc_cross_exact(p, n));
-}
-
 /* a0 and s for a fast pair, kept out of line (and returned in registers) so that the
  * common path stays small. */
 typedef struct {
@@ -39,29 +31,9 @@ __attribute__((noinline)) static zmf_as zmf_fast(const rc_particle *a, const rc_
                                                  rc_vec3 n, double k, double M0, double M1,
                                                  double pn0, double pn1)
 {
-    const double Mt = M0 + M1;
     const double sqrt_k = sqrt(k);
-    const rc_axis ax = {M0, M1, pn0, pn1, a->m * a->m + across2(a->p, pn0, n) * k,
-                        b->m * b->m + across2(b->p, pn1, n) * k};
-    /* Two cancellation-free forms with different weak spots: along n (the rapidity
-     * difference along n), poor when the balls move fast across n, whose large
-     * transverse masses T then nearly cancel; and d.n with d split along the total
-     * momentum, whose rounding (of order |t0| + |dl|) 1/s amplifies when n lies
-     * nearly along the motion. Each form's rounding is bounded, in units of 2^-53,
-     * by the sizes of the terms it adds: along n, for pn0 pn1 > 0, (T1 |pn0| + T0
-     * |pn1|) r / Mt (rc_axis_approach), otherwise 0 (terms of one sign); the smaller
-     * bound wins, and d is formed only when the first is not already within a few
-     * units of a0 itself. */
-    double a0 = rc_axis_approach(&ax) / Mt;
-    const double tn = sqrt(ax.T12) * fabs(pn0) + sqrt(ax.T02) * fabs(pn1);
-    const double err_n = pn0 * pn1 > 0.0 ? tn * tn / (fabs(M1 * pn0 + M0 * pn1) * Mt) : 0.0;
-    if (err_n > 8.0 * fabs(a0) && rc_v3_norm2(rc_v3_add(a->p, b->p)) > 0.0) {
-        rc_pair_split z;
-        rc_pair_split_of(a, b, M0, M1, k, sqrt_k, &z);
-        if (rc_v3_norm(z.t0) + fabs(z.dl) < err_n)
-            a0 = rc_v3_dot(z.d, n);
-    }
-    return (zmf_as){a0, rc_axis_s(&ax, sqrt_k)};
+    const rc_axis ax = rc_axis_along(a, b, n, k, M0, M1, pn0, pn1);
+    return (zmf_as){rc_pair_a0_fast(a, b, n, k, sqrt_k, &ax), rc_axis_s(&ax, sqrt_k)};
 }
 
 static int zmf_collide(const rc_collision_params *prm, rc_particle *a, rc_particle *b,

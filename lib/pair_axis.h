@@ -35,6 +35,36 @@ static inline rc_vec3 rc_cross_exact(rc_vec3 p, rc_vec3 e)
                  rc_diff_prod(p.x, e.y, p.y, e.x));
 }
 
+/* M0 M1 - p0.p1/c^2 for two balls of rest masses m, momenta p and energies / c^2 M (k =
+ * 1/c^2, sqrt_k = 1/c): their four-momenta's product over c^2, = m0 m1 cosh of their
+ * relative rapidity >= m0 m1. When p0.p1/c^2 is near M0 M1 (both balls fast the same
+ * way) the plain difference keeps only the rounding of its terms, which are gamma^2
+ * times the result. Then it is written as (X^2 - Y^2)/(X + Y), X = M0 M1, Y = p0.p1/c^2,
+ * with Lagrange's identity (p0.p1)^2 + |p0 x p1|^2 = |p0|^2 |p1|^2 making the numerator
+ *   X^2 - Y^2 = m0^2 m1^2 + (m0^2 |p1|^2 + m1^2 |p0|^2)/c^2 + |p0 x p1|^2/c^4,
+ * a sum of positive terms; both sides are divided by X (each term a product of ratios
+ * m/M and |p|/(c M) <= 1, so that no fourth power overflows) and |p0 x p1| is formed
+ * from p0 and p1 scaled by powers of two (exact) with rc_cross_exact, accurate to its own
+ * size when the two are nearly parallel. Every rounding is then of a term of the result's
+ * own size. Below Y = X/2 the plain form loses a bit at most and is kept. */
+static inline double rc_pair_dot(double m0, rc_vec3 p0, double M0, double m1, rc_vec3 p1,
+                                 double M1, double k, double sqrt_k)
+{
+    const double X = M0 * M1, Y = rc_v3_dot(p0, p1) * k;
+    if (!(Y > 0.5 * X))
+        return X - Y;
+    /* Y > 0: both momenta nonzero, and sqrt_k |p| / M in (1/2, 1] for each ball */
+    const int e0 = ilogb(rc_v3_norm(p0)), e1 = ilogb(rc_v3_norm(p1));
+    const rc_vec3 q0 = rc_v3_scale(ldexp(1.0, -e0), p0), q1 = rc_v3_scale(ldexp(1.0, -e1), p1);
+    /* f = sqrt_k 2^e / M: q f = p / (c M), the ball's velocity over c */
+    const double f0 = ldexp(sqrt_k, e0) / M0, f1 = ldexp(sqrt_k, e1) / M1;
+    const double w0 = m0 / M0, w1 = m1 / M1;
+    const double b0 = rc_v3_norm(q0) * f0, b1 = rc_v3_norm(q1) * f1;
+    const double x = rc_v3_norm(rc_cross_exact(q0, q1)) * f0 * f1;
+    const double r = (w0 * w0 * (w1 * w1 + b1 * b1) + w1 * w1 * b0 * b0 + x * x) / (1.0 + Y / X);
+    return X * r;
+}
+
 /* The pair along e: energies (relativistic masses) M, momenta along e pe, and T^2. */
 typedef struct rc_axis {
     double M0, M1, pe0, pe1, T02, T12;
@@ -109,6 +139,62 @@ static inline void rc_pair_split_of(const rc_particle *a, const rc_particle *b, 
     z->t0 = rc_v3_cross(z->uhat, w);
     z->d = rc_v3_axpy(z->t0, z->dl, z->uhat);
     z->g = 1.0 / sqrt(rc_axis_s(&ax, sqrt_k));
+}
+
+/* |p x n|^2: as |p|^2 - (p.n)^2 when p is at least 45 degrees off n (a bit lost at most),
+ * else from the cross product formed to its own accuracy. */
+static inline double rc_across2(rc_vec3 p, double pn, rc_vec3 n)
+{
+    const double p2 = rc_v3_norm2(p);
+    return pn * pn <= 0.5 * p2 ? p2 - pn * pn : rc_v3_norm2(rc_cross_exact(p, n));
+}
+
+/* The pair along unit n, pn = p.n, M the balls' energies over c^2. */
+static inline rc_axis rc_axis_along(const rc_particle *a, const rc_particle *b, rc_vec3 n,
+                                    double k, double M0, double M1, double pn0, double pn1)
+{
+    return (rc_axis){M0, M1, pn0, pn1, a->m * a->m + rc_across2(a->p, pn0, n) * k,
+                     b->m * b->m + rc_across2(b->p, pn1, n) * k};
+}
+
+/* a0 = (M1 p0.n - M0 p1.n)/(M0 + M1), the zmf law's approach along n (> 0 approaching),
+ * for a fast pair (ax = rc_axis_along(...)): without the cancellation of the plain form.
+ * Two cancellation-free forms with different weak spots: along n (the rapidity
+ * difference along n), poor when the balls move fast across n, whose large transverse
+ * masses T then nearly cancel; and d.n with d split along the total momentum, whose
+ * rounding (of order |t0| + |dl|) 1/s amplifies when n lies nearly along the motion. Each
+ * form's rounding is bounded, in units of 2^-53, by the sizes of the terms it adds: along
+ * n, for pn0 pn1 > 0, (T1 |pn0| + T0 |pn1|) r / Mt (rc_axis_approach), otherwise 0 (terms
+ * of one sign); the smaller bound wins, and d is formed only when the first is not
+ * already within a few units of a0 itself. */
+static inline double rc_pair_a0_fast(const rc_particle *a, const rc_particle *b, rc_vec3 n,
+                                     double k, double sqrt_k, const rc_axis *ax)
+{
+    const double M0 = ax->M0, M1 = ax->M1, pn0 = ax->pe0, pn1 = ax->pe1;
+    const double Mt = M0 + M1;
+    double a0 = rc_axis_approach(ax) / Mt;
+    const double tn = sqrt(ax->T12) * fabs(pn0) + sqrt(ax->T02) * fabs(pn1);
+    const double err_n = pn0 * pn1 > 0.0 ? tn * tn / (fabs(M1 * pn0 + M0 * pn1) * Mt) : 0.0;
+    if (err_n > 8.0 * fabs(a0) && rc_v3_norm2(rc_v3_add(a->p, b->p)) > 0.0) {
+        rc_pair_split z;
+        rc_pair_split_of(a, b, M0, M1, k, sqrt_k, &z);
+        if (rc_v3_norm(z.t0) + fabs(z.dl) < err_n)
+            a0 = rc_v3_dot(z.d, n);
+    }
+    return a0;
+}
+
+/* a0 for any pair: the plain form unless both balls are fast and move the same way along
+ * n with a fast ZMF (the zmf law's test), where its terms cancel to order gamma^2. */
+static inline double rc_pair_a0(const rc_particle *a, const rc_particle *b, rc_vec3 n,
+                                double k, double M0, double M1, double pn0, double pn1)
+{
+    const double Mt = M0 + M1;
+    if (!(M0 > RC_GAMMA_FAST * a->m && M1 > RC_GAMMA_FAST * b->m && pn0 * pn1 > 0.0 &&
+          rc_v3_norm2(rc_v3_add(a->p, b->p)) * k > RC_PAIR_FAST * Mt * Mt))
+        return (M1 * pn0 - M0 * pn1) / Mt;
+    const rc_axis ax = rc_axis_along(a, b, n, k, M0, M1, pn0, pn1);
+    return rc_pair_a0_fast(a, b, n, k, sqrt(k), &ax);
 }
 
 #endif

@@ -13,6 +13,8 @@
 #include "relcol/kinematics.h"
 #include "relcol/sim.h"
 #include "relcol/status.h"
+#include "../kinematics_private.h"
+#include "../pair_axis.h"
 #include "contacts.h"
 
 /* Newton stops when every step is below this fraction of the largest impulse or ball
@@ -428,7 +430,10 @@ static int joint(int pivot, double inv_c2, size_t nballs, rc_particle *balls, si
         } else {
             double pbn = rc_v3_dot(balls[c->b].p, c->n), Mt = M0[c->a] + M0[c->b];
             qt[j] = (pan + pbn) / Mt * inv_c2;
-            a0[j] = (M0[c->b] * pan - M0[c->a] * pbn) / Mt;
+            /* the zmf law's approach, without its cancellation for a pair moving fast
+             * together in this frame (pair_axis.h) */
+            a0[j] = rc_pair_a0(&balls[c->a], &balls[c->b], c->n, inv_c2, M0[c->a], M0[c->b],
+                               pan, pbn);
         }
         /* a contact that is not approaching takes no impulse to begin with */
         active[j] = a0[j] > 0.0;
@@ -549,6 +554,66 @@ int rc_contacts_resolve(double inv_c2, size_t nballs, rc_particle *balls, size_t
     return st != RC_OK ? st : joint(0, inv_c2, nballs, balls, k, contacts, jout);
 }
 
+/* in_group_zmf for a group whose ZMF moves fast (pair_axis.h, RC_PAIR_FAST): its balls
+ * (only those in its contacts: a bystander keeps its bits) taken to the ZMF by
+ * eng_group_zmf_fast, the rule run there on them, the outcome boosted back. */
+static int in_fast_zmf(const rc_collision_params *prm, int seq, double inv_c2, size_t nballs,
+                       rc_particle *balls, size_t k, const rc_contact *contacts, double *jout)
+{
+    int st = RC_ENOMEM;
+    int *at = malloc(nballs * sizeof *at);     /* ball -> its place among the members */
+    size_t *who = malloc(nballs * sizeof *who); /* member -> ball */
+    rc_particle *S = malloc(nballs * sizeof *S), *B = malloc(nballs * sizeof *B);
+    rc_contact *C0 = malloc(k * sizeof *C0), *C = malloc(k * sizeof *C);
+    double *f = malloc(k * sizeof *f), *J = malloc(k * sizeof *J);
+    if (!at || !who || !S || !B || !C0 || !C || !f || !J)
+        goto done;
+    for (size_t i = 0; i < nballs; i++)
+        at[i] = -1;
+    for (size_t j = 0; j < k; j++)
+        at[contacts[j].a] = at[contacts[j].b] = 0;
+    size_t nm = 0;
+    for (size_t i = 0; i < nballs; i++)
+        if (at[i] == 0) {
+            at[i] = (int)nm;
+            who[nm] = i;
+            S[nm++] = balls[i];
+        }
+    for (size_t j = 0; j < k; j++) {
+        C0[j] = contacts[j];
+        C0[j].a = at[contacts[j].a];
+        C0[j].b = at[contacts[j].b];
+    }
+    rc_vec3 u;
+    double g;
+    st = eng_group_zmf_fast(inv_c2, nm, S, k, C0, B, C, f, &u, &g);
+    if (st != RC_OK)
+        goto done;
+    st = seq ? eng_contacts_sequential(prm, nm, B, k, C, J) : joint(1, inv_c2, nm, B, k, C, J);
+    if (st != RC_OK)
+        goto done;
+    const rc_vec3 back = rc_v3_scale(-1.0, u);
+    for (size_t i = 0; i < nm; i++) {
+        rc_four q = {sqrt(B[i].m * B[i].m + rc_v3_norm2(B[i].p) * inv_c2), B[i].p};
+        rc_boost_g(back, g, inv_c2, &q);
+        balls[who[i]].m = B[i].m;
+        balls[who[i]].p = q.x;
+    }
+    if (jout)
+        for (size_t j = 0; j < k; j++)
+            jout[j] = J[j] / f[j];
+done:
+    free(at);
+    free(who);
+    free(S);
+    free(B);
+    free(C0);
+    free(C);
+    free(f);
+    free(J);
+    return st;
+}
+
 /* A rule run in the group's zero-momentum frame (of the balls in its contacts), so that
  * its outcome does not depend on the frame the states are given in: states boosted there,
  * each normal as its four-vector q = (u.n/c^2, n) (orthogonal to its pair's momentum, so
@@ -566,15 +631,18 @@ static int in_group_zmf(const rc_collision_params *prm, double inv_c2, size_t nb
     if (inv_c2 == 0.0 || wall || k == 0)
         return seq ? eng_contacts_sequential(prm, nballs, balls, k, contacts, jout)
                    : joint(1, inv_c2, nballs, balls, k, contacts, jout);
+    rc_vec3 P;
+    double Mt;
+    eng_group_momentum(inv_c2, nballs, balls, k, contacts, &P, &Mt);
+    /* a ZMF moving near c: the plain boost below would cancel to order gamma^2 */
+    if (rc_v3_norm2(P) * inv_c2 > RC_PAIR_FAST * Mt * Mt)
+        return in_fast_zmf(prm, seq, inv_c2, nballs, balls, k, contacts, jout);
     int st = RC_ENOMEM;
     rc_particle *B = malloc(nballs * sizeof *B);
     rc_contact *C = malloc(k * sizeof *C);
     double *f = malloc(k * sizeof *f), *J = malloc(k * sizeof *J);
     if (!B || !C || !f || !J)
         goto done;
-    rc_vec3 P;
-    double Mt;
-    eng_group_momentum(inv_c2, nballs, balls, k, contacts, &P, &Mt);
     const rc_vec3 u = rc_v3_scale(1.0 / Mt, P);
     st = RC_ENOCONVERGE; /* (a boost of finite, timelike data does not fail) */
     for (size_t i = 0; i < nballs; i++) {

@@ -8,6 +8,7 @@
 #include "relcol/kinematics.h"
 #include "relcol/sim.h"
 #include "relcol/status.h"
+#include "../pair_axis.h"
 #include "contacts.h"
 
 /* Two events tie when their ZMF times differ by no more than this many roundings of the
@@ -30,7 +31,9 @@ static double approach(double inv_c2, const rc_particle *b, const rc_contact *c)
         return pan;
     const double Ma = sqrt(b[c->a].m * b[c->a].m + rc_v3_norm2(b[c->a].p) * inv_c2);
     const double Mb = sqrt(b[c->b].m * b[c->b].m + rc_v3_norm2(b[c->b].p) * inv_c2);
-    return (Mb * pan - Ma * rc_v3_dot(b[c->b].p, c->n)) / (Ma + Mb);
+    /* as the zmf law, which resolves the contact: no false "at rest" for a pair moving
+     * fast together (pair_axis.h) */
+    return rc_pair_a0(&b[c->a], &b[c->b], c->n, inv_c2, Ma, Mb, pan, rc_v3_dot(b[c->b].p, c->n));
 }
 
 int eng_contacts_sequential(const rc_collision_params *prm, size_t nballs, rc_particle *balls,

@@ -438,8 +438,131 @@ static void test_no_false_no_collision(void)
         }
 }
 
+/* Invariant mass against (M0 + M1)^2 - |p0 + p1|^2/c^2 in __float128 (113 bits leave
+ * ~1e-18 of m^2 at gamma 1e8 after the gamma^2 cancellation): random pairs with Lorentz
+ * factors up to 1e8, nearly co-moving pairs (as test_comoving, relative differences 1e-12
+ * .. 1e-1 along and across), and three co-moving balls through rc_zmf. The exact value of
+ * the given doubles is the reference, so 1e-12 relative leaves ~4000 roundings: the new
+ * forms are sums of positive terms, accurate to a few. The old forms fail it. */
+static q128 ref_minv(const rc_particle *b, int n, q128 k)
+{
+    q128 E = 0;
+    qv P = {0, 0, 0};
+    for (int i = 0; i < n; i++) {
+        const qv p = qv_of(b[i].p);
+        E += sqrtq((q128)b[i].m * b[i].m + qdot(p, p) * k);
+        P = qaxpy(P, 1, p);
+    }
+    return sqrtq(E * E - qdot(P, P) * k);
+}
+
+static void test_invariant_mass(void)
+{
+    rc_test_rng r = {31};
+    double worst2 = 0.0, worst3 = 0.0;
+    for (int i = 0; i < 20000; i++) {
+        const double c = draw_c(&r), k = rc_inv_c2_of(c);
+        const rc_vec3 d = lu_unit(&r, 3);
+        rc_particle b[3];
+        for (int j = 0; j < 3; j++) {
+            b[j].m = lu_logu(&r, 0.2, 5);
+            if (i % 4 == 0) { /* independent */
+                b[j].p = fast_p(&r, b[j].m, c, lu_unit(&r, 3));
+            } else if (j == 0) {
+                b[0].p = fast_p(&r, b[0].m, c, d);
+            } else { /* co-moving with ball 0 */
+                const double along = (rc_test_uniform(&r) < 0.5 ? -1 : 1) * lu_logu(&r, 1e-12, 0.1);
+                const double across = rc_test_uniform(&r) < 0.3 ? 0.0 : lu_logu(&r, 1e-12, 0.1);
+                b[j].p = rc_v3_scale(b[j].m / b[0].m,
+                                     rc_v3_axpy(rc_v3_scale(1.0 + along, b[0].p),
+                                                across * rc_v3_norm(b[0].p), perp(&r, d)));
+            }
+        }
+        const q128 r2 = ref_minv(b, 2, k), r3 = ref_minv(b, 3, k);
+        const double m2 = rc_pair_invariant_mass(&b[0], &b[1], k);
+        double m3 = 0.0;
+        ENSURE(rc_zmf(b, 3, k, NULL, &m3) == RC_OK);
+        const double e2 = fabs((double)((m2 - r2) / r2)), e3 = fabs((double)((m3 - r3) / r3));
+        worst2 = fmax(worst2, e2);
+        worst3 = fmax(worst3, e3);
+        ENSURE_MSG(e2 <= TOL && e3 <= TOL,
+                   "invariant mass: error %.3g (pair), %.3g (three) at c %g, m %.17g %.17g "
+                   "%.17g, p0 (%.17g %.17g %.17g) p1 (%.17g %.17g %.17g) p2 (%.17g %.17g %.17g)",
+                   e2, e3, c, b[0].m, b[1].m, b[2].m, b[0].p.x, b[0].p.y, b[0].p.z, b[1].p.x,
+                   b[1].p.y, b[1].p.z, b[2].p.x, b[2].p.y, b[2].p.z);
+    }
+    printf("  invariant mass, 20000 draws: max relative error %.1e (rc_pair_invariant_mass), "
+           "%.1e (rc_zmf, three balls)\n", worst2, worst3);
+}
+
+/* rc_pair_heat on co-moving pairs (as test_comoving) collided by the zmf law, against its
+ * definition in __float128: each ball's (|pbar|^2 - |pbar'|^2)/(m' + m), the ZMF momentum
+ * length from the pair's invariants, |pbar|^2/c^2 = (D^2 - m0^2 m1^2)/minv^2 with D = M0 M1
+ * - p0.p1/c^2 (the same for both balls, and for the after states in their own ZMF: the
+ * before states' ZMF seen from the rounded after states is uncertain by a rapidity of
+ * order gamma^2 2^-53). Within 1e-12 of the ZMF kinetic scale sum |pbar|^2/(m' + m) plus
+ * COND_TOL times the data's own uncertainty (below: a pair with little relative motion
+ * has a heat far below what one rounding of its momenta moves). The old boost gave NAN
+ * (rc_boost refusing the rounded |u| >= c) or lost every digit. */
+static q128 ref_pbar2(const rc_particle *b, q128 k)
+{
+    const qv p0 = qv_of(b[0].p), p1 = qv_of(b[1].p);
+    const q128 m0 = b[0].m, m1 = b[1].m;
+    const q128 M0 = sqrtq(m0 * m0 + qdot(p0, p0) * k), M1 = sqrtq(m1 * m1 + qdot(p1, p1) * k);
+    const q128 D = M0 * M1 - qdot(p0, p1) * k;
+    return (D * D - m0 * m0 * m1 * m1) / ((m0 * m0 + m1 * m1 + 2 * D) * k);
+}
+
+static void test_heat(void)
+{
+    rc_test_rng r = {41};
+    double worst = 0.0;
+    int n = 0;
+    for (int i = 0; i < 4000; i++) {
+        const double c = draw_c(&r), k = rc_inv_c2_of(c);
+        const rc_vec3 d = lu_unit(&r, 3);
+        rc_particle in[2] = {{lu_logu(&r, 0.2, 5), {0, 0, 0}}, {lu_logu(&r, 0.2, 5), {0, 0, 0}}};
+        in[0].p = fast_p(&r, in[0].m, c, d);
+        const double along = (rc_test_uniform(&r) < 0.5 ? -1 : 1) * lu_logu(&r, 1e-9, 0.1);
+        const double across = rc_test_uniform(&r) < 0.3 ? 0.0 : lu_logu(&r, 1e-9, 0.1);
+        in[1].p = rc_v3_scale(in[1].m / in[0].m,
+                              rc_v3_axpy(rc_v3_scale(1.0 + along, in[0].p),
+                                         across * rc_v3_norm(in[0].p), perp(&r, d)));
+        const rc_vec3 n0 = rc_test_uniform(&r) < 0.5 ? d : lu_unit(&r, 3);
+        rc_collision_params prm = rc_collision_params_default();
+        prm.c = c;
+        prm.eps = draw_eps(&r);
+        rc_particle out[2] = {in[0], in[1]};
+        if (rc_law_zmf.collide(&prm, &out[0], &out[1], n0) != RC_OK &&
+            rc_law_zmf.collide(&prm, &out[0], &out[1], rc_v3_scale(-1, n0)) != RC_OK)
+            continue;
+        n++;
+        const q128 b2 = ref_pbar2(in, k), a2 = ref_pbar2(out, k);
+        q128 ref = 0, scale = 0;
+        for (int j = 0; j < 2; j++) {
+            ref += (b2 - a2) / ((q128)out[j].m + in[j].m);
+            scale += b2 / ((q128)out[j].m + in[j].m);
+        }
+        /* the data's own part: a rounding of a table momentum across the motion is the
+         * same momentum in the ZMF, so |pbar|^2 is uncertain by 2 |pbar| 2^-53 sum |p| */
+        const double S = rc_v3_norm(in[0].p) + rc_v3_norm(in[1].p);
+        q128 cond = 0;
+        for (int j = 0; j < 2; j++)
+            cond += 2 * 0x1p-53 * S * (sqrtq(b2) + sqrtq(fabsq(a2))) / ((q128)out[j].m + in[j].m);
+        const double q = rc_pair_heat(in, out, k, NULL);
+        const double e = fabs((double)((q - ref) / (TOL * scale + COND_TOL * cond)));
+        worst = fmax(worst, isnan(e) ? INFINITY : e);
+        ENSURE_MSG(e <= 1.0, "heat %.17g, reference %.17g (scale %.3g, the data's %.3g) at c %g, gamma %.3g", q,
+                   (double)ref, (double)scale, (double)cond, c, rc_v3_norm(in[0].p) / (in[0].m * c));
+    }
+    printf("  rc_pair_heat, %d co-moving zmf collisions: max error %.2f of the tolerance\n", n,
+           worst);
+}
+
 int main(void)
 {
+    RUN_TEST(test_heat);
+    RUN_TEST(test_invariant_mass);
     RUN_TEST(test_zmf);
     RUN_TEST(test_cm_isotropic);
     RUN_TEST(test_no_false_no_collision);

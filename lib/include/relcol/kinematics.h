@@ -70,10 +70,13 @@ int rc_velocity_add(rc_vec3 w, rc_vec3 vprime, double inv_c2, rc_vec3 *out);
 rc_four rc_particle_four(const rc_particle *b, double inv_c2);
 
 /* Zero-momentum-frame velocity u = sum p / sum M and invariant mass
- * sqrt((sum M)^2 - (sum p)^2/c^2) of n particles (either output may be NULL). */
+ * sqrt((sum M)^2 - (sum p)^2/c^2) of n particles (either output may be NULL), the latter
+ * formed without that difference's cancellation when the ZMF moves near c. */
 int rc_zmf(const rc_particle *b, size_t n, double inv_c2, rc_vec3 *u, double *minv);
 /* Invariant mass of two particles, sqrt(m0^2 + m1^2 + 2 m0 m1 gamma_rel), with
- * gamma_rel - 1 accumulated without the large cancellation of (sum M)^2 - (sum p)^2/c^2. */
+ * gamma_rel - 1 accumulated without the large cancellation of (sum M)^2 - (sum p)^2/c^2,
+ * and m0 m1 gamma_rel as a sum of positive terms when both move fast the same way: a few
+ * roundings of the result up to any Lorentz factor (papers/zmf-law.md, section 10). */
 double rc_pair_invariant_mass(const rc_particle *a, const rc_particle *b, double inv_c2);
 
 /* Validate a particle: finite momentum, 0 < m < inf. */
