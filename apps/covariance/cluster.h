@@ -199,7 +199,8 @@ static int cov_draw(const cov_def *d, unsigned *seed, rc_sim_ball *b)
 
 /* Draw a cluster whose worldlines meet nowhere between the two frames' starts: the table
  * run with frame `check` has no collision before the latest t' = 0 event, and the moving
- * frame's start is accepted by the engine; else the next draw (the rand_r state goes on).
+ * frame's start is accepted by the engine (its shapes apart); else the next draw (the
+ * rand_r state goes on).
  * cl is the caller's, filled here (cov_cluster_free). */
 static int cov_cluster_make(const cov_def *d, const rc_toi_frame *check, cov_cluster *cl)
 {
@@ -259,7 +260,7 @@ static int cov_cluster_make(const cov_def *d, const rc_toi_frame *check, cov_clu
         cl->tmax = tmax;
         cov_run_out o = {0};
         if (cov_run(d, check, cl->b0, tmin, tmax, tmax, &o) == RC_OK && o.early == 0 &&
-            cov_run(d, check, cl->bp, 0.0, 0.0, 1.0, &o) == RC_OK) {
+            cov_run(d, check, cl->bp, 0.0, 0.0, 0.0, &o) == RC_OK) {
             res = COV_OK;
             break;
         }

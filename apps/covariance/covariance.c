@@ -28,6 +28,12 @@ enum { EXIT_BAD_INPUT = 2 };
 /* Densest shell offered: random placement COV_MIN_SEP_RADII apart jams near 0.55 (2-D)
  * and 0.38 (3-D) of the exclusion discs' or spheres' share, 4 and 8 times the balls'; the
  * draw is denser at the inner rim, so a margin below those. */
+/* The box holds the cluster's whole run from both frames, about 40 R |U| / v_rms wide:
+ * these keep it within a few digits of the ball radius (positions keep their round-off
+ * near 1e-12 of r), and v_rms where the engine's times and distances are of order r. */
+#define BOOST_RATIO_MAX 1e3
+#define V_RMS_MIN 1e-6
+#define V_RMS_MAX 1e6
 #define DENSITY_MAX_2D 0.08
 #define DENSITY_MAX_3D 0.025
 
@@ -63,8 +69,10 @@ static void usage(FILE *f)
 "                  0.001,0.002,0.005,0.01 in 3-D; at most %g in 2-D, %g in 3-D)\n"
 "  --c LIST        speeds of light, 'inf' for classical (default 1,1.5,3,inf); each\n"
 "                  above U and above every ball's speed\n"
-"  --boost U       the moving frame's speed along x (default 0.6; 0 < |U| < every c)\n"
-"  --v-rms V       rms table speed of the balls (default 0.5, that is 0.5c at c = 1)\n"
+"  --boost U       the moving frame's speed along x (default 0.6; 0 < |U| < every c,\n"
+"                  |U| <= 1000 V)\n"
+"  --v-rms V       rms table speed of the balls, in [1e-6, 1e6] (default 0.5, that is\n"
+"                  0.5c at c = 1)\n"
 "  --seed S        seed of the draw (default 16: with --n 64 --dim 2 the ring of the\n"
 "                  covariance_cluster benchmark's recipe)\n"
 "  --out DIR       output folder (default out/covariance)\n"
@@ -231,11 +239,17 @@ static int parse_options(int argc, char **argv, options *o)
             return fail("--density: %s outside (0, %s] in %ld-D (random placement %g radii "
                         "apart fills no more)", app_fmt(o->density[i], f1), app_fmt(dmax, f2),
                         o->dim, COV_MIN_SEP_RADII);
-    if (!(o->v_rms > 0.0) || !(o->v_rms <= APP_SCALE_MAX))
-        return fail("--v-rms: %s must be > 0", app_fmt(o->v_rms, f1));
-    if (o->boost == 0.0 || !(fabs(o->boost) <= APP_SCALE_MAX))
-        return fail("--boost: %s must be nonzero (the moving frame must move)",
-                    app_fmt(o->boost, f1));
+    /* (only the ratios U / v_rms and c / v_rms matter; the bounds keep the box, which
+     * holds the whole run from either frame, within digits of the ball radius) */
+    if (!(o->v_rms >= V_RMS_MIN && o->v_rms <= V_RMS_MAX))
+        return fail("--v-rms: %s outside [%g, %g] (table units: the ball radius is 0.5)",
+                    app_fmt(o->v_rms, f1), V_RMS_MIN, V_RMS_MAX);
+    if (o->boost == 0.0)
+        return fail("--boost: 0 must be nonzero (the moving frame must move)");
+    if (!(fabs(o->boost) <= BOOST_RATIO_MAX * o->v_rms))
+        return fail("--boost: |U| = %s is more than %g times --v-rms %s (the cluster would "
+                    "drift too far in the moving frame)", app_fmt(fabs(o->boost), f1),
+                    BOOST_RATIO_MAX, app_fmt(o->v_rms, f2));
     for (int k = 0; k < o->nc; k++) {
         if (!(fabs(o->boost) < o->c[k]))
             return fail("--boost: |U| = %s is not below c = %s", app_fmt(fabs(o->boost), f1),

@@ -17,7 +17,8 @@ expect_bad cslow '' '^relcol-covariance: --v-rms: 0.5 is not below c = 0.4' --c 
 expect_bad cempty '' '^relcol-covariance: --c: ' --c ','
 expect_bad boost0 '' '^relcol-covariance: --boost: 0 must be nonzero' --boost 0
 expect_bad boostc '' '^relcol-covariance: --boost: \|U\| = 2 is not below c = 1' --boost 2
-expect_bad vrms '' '^relcol-covariance: --v-rms: -1 must be > 0' --v-rms -1
+expect_bad vrms '' '^relcol-covariance: --v-rms: -1 outside \[1e-06, 1e\+06\]' --v-rms -1
+expect_bad boostfar '' '^relcol-covariance: --boost: \|U\| = 0.6 is more than 1000 times --v-rms 1e-05' --v-rms 1e-5
 expect_bad frame '' "^relcol-covariance: --frames: unknown frame 'bogus' \(known: " --frames table,bogus
 expect_bad frame2 '' "^relcol-covariance: --frames: 'table' given twice" --frames table,table
 expect_bad seed '' '^relcol-covariance: --seed: ' --seed 5000000000
