@@ -76,12 +76,14 @@ typedef struct cov_run_out {
     uint64_t early;      /* contacts resolved before t_quiet */
     uint64_t overlaps;   /* contacts decided by the overlap policy */
     int walls;           /* a ball reached a wall (the cluster is no longer open) */
+    int running;         /* on failure: 0 the engine refused the start, 1 it failed later */
 } cov_run_out;
 
 /* A frame's comparison. */
 typedef struct cov_result {
     int status;          /* rc_status of the first run that failed (RC_OK: all ran) */
     int which;           /* that run: 0 table, 1 moving, 2 round-off */
+    int running;         /* 0: the engine refused its start; 1: it failed while running */
     uint64_t coll[3], early[3], overlaps[3]; /* per run: table, moving, round-off */
     int walls;           /* a ball of some run reached a wall */
     double dp_frames, dp_roundoff; /* max_i |p_i - q_i| / rms |p| */
@@ -111,6 +113,7 @@ static inline int cov_run(const cov_def *d, const rc_toi_frame *fr, const rc_sim
         st = rc_sim_set_time(s, t0);
     if (st == RC_OK)
         st = rc_sim_set_balls(s, d->n, b, NULL);
+    o->running = st == RC_OK;
     if (st == RC_OK)
         st = rc_sim_advance(s, t_quiet, 0);
     rc_sim_diag g;
@@ -314,7 +317,7 @@ static int cov_compare(const cov_def *d, const rc_toi_frame *fr, const cov_clust
     cov_run_out o[3];
     for (int k = 0; k < 3; k++)
         o[k] = (cov_run_out){buf + (size_t)(2 * k) * n, buf + (size_t)(2 * k + 1) * n,
-                             m + (size_t)k * n, 0, 0, 0, 0};
+                             m + (size_t)k * n, 0, 0, 0, 0, 0};
     const rc_sim_ball *start[3] = {cl->b0, cl->bp, cl->bj};
     const double t0[3] = {cl->tmin, 0.0, cl->tmin}, tq[3] = {cl->tmax, 0.0, cl->tmax};
     for (int k = 0; k < 3; k++) {
@@ -322,6 +325,7 @@ static int cov_compare(const cov_def *d, const rc_toi_frame *fr, const cov_clust
         if (st != RC_OK) {
             res->status = st;
             res->which = k;
+            res->running = o[k].running;
             free(buf);
             free(m);
             return -1;

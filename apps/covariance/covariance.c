@@ -93,9 +93,9 @@ static void usage(FILE *f)
 "               end time, against the table run's position, over the rest radius (the\n"
 "               engine does not expose its contact events: these worldlines carry where\n"
 "               and when each ball last changed velocity)\n"
-"  note         empty, or why the row has no differences (the engine refused a start,\n"
-"               e.g. uncontracted shapes that overlap on a slice; a collision before\n"
-"               the moving frame's start; a wall reached)\n"
+"  note         empty, or why the row has no differences: which run the engine refused\n"
+"               or failed, and why (e.g. shapes that overlap on the moving frame's\n"
+"               slice); a collision before the moving frame's start; a wall reached\n"
 "and DIR/covariance.gp and, if gnuplot is installed, DIR/covariance.png: dp against\n"
 "density, one panel per c, one colour per frame (solid: frames, dashed: round-off).\n"
 "exit status: 0 ok; 2 bad input (one line naming the option); 1 I/O error.\n",
@@ -287,7 +287,7 @@ typedef struct row {
     int draws;
     cov_result r;
     int have;          /* r holds differences */
-    const char *note;
+    char note[160];
 } row;
 
 static const char *fmt_c(double c, char *buf)
@@ -321,7 +321,7 @@ static int write_csv(const char *path, const options *o, const row *rows, size_t
                     w->r.dx_frames, w->r.dx_roundoff);
         else
             fprintf(a.f, ",,,,,,,,,");
-        fprintf(a.f, "%s\n", w->note ? w->note : "");
+        fprintf(a.f, "%s\n", w->note);
     }
     return app_atomic_commit(&a, err);
 }
@@ -471,7 +471,7 @@ int main(int argc, char **argv)
                 w->radius = d.outer;
                 w->draws = e == COV_OK ? cl.draws : COV_MAX_DRAWS;
                 if (e != COV_OK) {
-                    w->note = "no draw starts collision-free in both frames";
+                    snprintf(w->note, sizeof w->note, "no draw starts collision-free in both frames");
                     continue;
                 }
                 if (cov_compare(&d, w->frame, &cl, &w->r) != 0) {
@@ -480,16 +480,23 @@ int main(int argc, char **argv)
                         fail("out of memory");
                         goto out;
                     }
-                    w->note = w->r.which == 1 ? "the engine refused the moving frame's start"
-                              : "the engine refused the table frame's start";
+                    static const char *const run_name[] = {"table", "moving", "round-off"};
+                    snprintf(w->note, sizeof w->note, "the %s run: %s: %s",
+                             run_name[w->r.which], w->r.running ? "the engine failed"
+                                                                : "the engine refused the start",
+                             rc_strerror(w->r.status));
+                    /* (a CSV field: the library's text keeps no comma here) */
+                    for (char *q = w->note; *q; q++)
+                        if (*q == ',')
+                            *q = ';';
                     continue;
                 }
                 if (w->r.early[0] != 0) {
-                    w->note = "a collision before the moving frame's start (table run)";
+                    snprintf(w->note, sizeof w->note, "a collision before the moving frame's start (table run)");
                     continue;
                 }
                 if (w->r.walls) {
-                    w->note = "a ball reached a wall";
+                    snprintf(w->note, sizeof w->note, "a ball reached a wall");
                     continue;
                 }
                 w->have = 1;
