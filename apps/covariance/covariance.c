@@ -97,7 +97,10 @@ static void usage(FILE *f)
 "               or failed, and why (e.g. shapes that overlap on the moving frame's\n"
 "               slice); a collision before the moving frame's start; a wall reached\n"
 "and DIR/covariance.gp and, if gnuplot is installed, DIR/covariance.png: dp against\n"
-"density, one panel per c, one colour per frame (solid: frames, dashed: round-off).\n"
+"density, one panel per c, one colour per frame (solid: frames, dashed: round-off);\n"
+"with two finite c or more also DIR/covariance-c.gp and covariance-c.png: dp against\n"
+"c / V, one panel per frame, one colour per density. Both lists are sorted (rows go\n"
+"density by density, then c, then frame); a value given twice is refused.\n"
 "exit status: 0 ok; 2 bad input (one line naming the option); 1 I/O error.\n",
             names, DENSITY_MAX_2D, DENSITY_MAX_3D);
 }
@@ -143,6 +146,24 @@ static int parse_frames(const char *val, options *o)
     if (rc == 0 && o->nframes == 0)
         rc = fail("--frames: no frame named in '%s'", val);
     return rc;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Sort a list in increasing order (the figures draw lines through it; inf last) and
+ * name a value given twice. */
+static int sort_list(const char *opt, double *v, int n)
+{
+    char f[APP_FMT_LEN];
+    qsort(v, (size_t)n, sizeof *v, cmp_double);
+    for (int i = 1; i < n; i++)
+        if (v[i] == v[i - 1])
+            return fail("%s: %s given twice", opt, isinf(v[i]) ? "inf" : app_fmt(v[i], f));
+    return 0;
 }
 
 static int parse_options(int argc, char **argv, options *o)
@@ -234,6 +255,9 @@ static int parse_options(int argc, char **argv, options *o)
         o->ndensity = o->dim == 2 ? 5 : 4;
         memcpy(o->density, o->dim == 2 ? d2 : d3, (size_t)o->ndensity * sizeof(double));
     }
+    if (sort_list("--density", o->density, o->ndensity) != 0 ||
+        sort_list("--c", o->c, o->nc) != 0)
+        return EXIT_BAD_INPUT;
     for (int i = 0; i < o->ndensity; i++)
         if (!(o->density[i] > 0.0 && o->density[i] <= dmax))
             return fail("--density: %s outside (0, %s] in %ld-D (random placement %g radii "
@@ -416,6 +440,84 @@ static int write_script(const char *path, const options *o, const row *rows, siz
     return app_atomic_commit(&a, err);
 }
 
+/* The second figure: dp against c / v_rms over the finite values of c (sorted first),
+ * one panel per frame, one colour per density. Written only with two finite c or more. */
+static int write_script_c(const char *path, const options *o, const row *rows,
+                          size_t nrows, int nfin, char *err)
+{
+    /* has_data[di nframes + j]: frame j has a row of differences at density di, finite c */
+    char has_data[MAXLIST * MAXFRAMES] = {0};
+    for (size_t i = 0; i < nrows; i++)
+        if (rows[i].have && rows[i].ci < nfin)
+            has_data[(size_t)rows[i].di * (size_t)o->nframes + i % (size_t)o->nframes] = 1;
+    app_atomic a;
+    if (app_atomic_open(&a, path, err) != 0)
+        return -1;
+    FILE *f = a.f;
+    const int cols = o->nframes < 3 ? o->nframes : (o->nframes == 4 ? 2 : 3);
+    const int lines = (o->nframes + cols - 1) / cols;
+    char term[128], fb[APP_FMT_LEN], fv[APP_FMT_LEN];
+    snprintf(term, sizeof term, "size %d,%d enhanced font 'Sans,12' linewidth 1.5",
+             560 * cols + 40, 440 * lines + 80);
+    fprintf(f,
+"# covariance-c.gp — written by relcol-covariance; run `gnuplot covariance-c.gp` in this\n"
+"# folder. The same differences as covariance.gp against c / v_rms (finite c only), one\n"
+"# panel per frame, one colour per density.\n");
+    app_gnuplot_head(f, "covariance-c.png", term, 1);
+    fprintf(f,
+"set xrange [%.6g:%.6g]\n"
+"set grid xtics ytics lc rgb '#dddddd' lw 0.8\n"
+"set xlabel 'c / v_{rms}'\n"
+"set ylabel 'max_i |Δp_i| / rms |p|'\n"
+"set key below horizontal font ',10' spacing 1.1\n"
+"set multiplot layout %d,%d title \"Many-body frame dependence against c: %ld-D cluster, "
+"N = %ld, moving frame U = %s, v_{rms} = %s\\n"
+"{/*0.8 solid: table run against the moving run boosted back;  dashed: against a start "
+"moved by 10^{-15} (round-off amplified)}\"\n",
+            o->c[0] / o->v_rms / 1.5, o->c[nfin - 1] / o->v_rms * 1.5, lines, cols, o->dim,
+            o->n, app_fmt(o->boost, fb), app_fmt(o->v_rms, fv));
+    fprintf(f, "set format x '%%g'\nset xtics (");
+    for (int k = 0; k < nfin; k++)
+        fprintf(f, "%s%.6g", k ? ", " : "", o->c[k] / o->v_rms);
+    fprintf(f, ")\n");
+    /* rows go density, c, frame: frame j at density di is every nframes-th row from
+     * di (nc nframes) + j, its finite c the first nfin of them */
+    const int stride = o->nc * o->nframes;
+    for (int j = 0; j < o->nframes; j++) {
+        fprintf(f, "set title '%s%s'\n", o->frames[j]->name,
+                o->frames[j]->covariant ? " (covariant)" : "");
+        int any = 0;
+        for (int di = 0; di < o->ndensity; di++)
+            any += has_data[di * o->nframes + j] != 0;
+        if (!any) {
+            fprintf(f, "set yrange [1e-16:10]\n"
+                       "set label 1 'no row with differences (see the note column)' at graph 0.5,0.5 center\n"
+                       "plot NaN notitle\n"
+                       "unset label 1\n"
+                       "set autoscale y\n");
+            continue;
+        }
+        fprintf(f, "plot \\\n");
+        for (int di = 0, done = 0; di < o->ndensity; di++) {
+            if (!has_data[di * o->nframes + j])
+                continue;
+            char fd[APP_FMT_LEN];
+            const char *col = colours[di % (int)(sizeof colours / sizeof *colours)];
+            const int first = di * stride + j, last = first + (nfin - 1) * o->nframes;
+            done++;
+            fprintf(f,
+"  'covariance.csv' skip 1 every %d::%d::%d using ($3/$10):17 with linespoints pt 7 ps 0.9 "
+"lw 2 lc rgb '%s' title 'density %s', \\\n"
+"  '' skip 1 every %d::%d::%d using ($3/$10):18 with linespoints dt 2 pt 6 ps 0.7 lw 1.2 "
+"lc rgb '%s' notitle%s\n",
+                    o->nframes, first, last, col, app_fmt(o->density[di], fd), o->nframes, first,
+                    last, col, done < any ? ", \\" : "");
+        }
+    }
+    fprintf(f, "unset multiplot\n");
+    return app_atomic_commit(&a, err);
+}
+
 int main(int argc, char **argv)
 {
     app_init(prog);
@@ -517,9 +619,20 @@ int main(int argc, char **argv)
         fprintf(stderr, "%s: %s\n", prog, err);
         goto out;
     }
-    int made = 0;
-    if (app_gnuplot_run(prog, o.out, "covariance.gp", "covariance.png", &made, err) != 0) {
+    int made = 0, made_c = 0, nfin = 0;
+    while (nfin < o.nc && isfinite(o.c[nfin]))
+        nfin++;
+    char *gpc = nfin >= 2 ? app_path_join(o.out, "covariance-c.gp") : NULL;
+    if (nfin >= 2 && (!gpc || write_script_c(gpc, &o, rows, nrows, nfin, err) != 0)) {
+        fprintf(stderr, "%s: %s\n", prog, gpc ? err : "out of memory");
+        free(gpc);
+        goto out;
+    }
+    if (app_gnuplot_run(prog, o.out, "covariance.gp", "covariance.png", &made, err) != 0 ||
+        (gpc && app_gnuplot_run(prog, o.out, "covariance-c.gp", "covariance-c.png", &made_c,
+                                err) != 0)) {
         fprintf(stderr, "%s: %s\n", prog, err);
+        free(gpc);
         goto out;
     }
 
@@ -547,6 +660,11 @@ int main(int argc, char **argv)
         printf("wrote %s, %s, %s/covariance.png\n", csv, gp, o.out);
     else
         printf("wrote %s, %s (no figure: gnuplot is not installed)\n", csv, gp);
+    if (gpc && made_c)
+        printf("wrote %s, %s/covariance-c.png (against c)\n", gpc, o.out);
+    else if (gpc)
+        printf("wrote %s (no figure: gnuplot is not installed)\n", gpc);
+    free(gpc);
     rc = fflush(stdout) == 0 ? 0 : 1;
 out:
     free(rows);

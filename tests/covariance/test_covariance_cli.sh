@@ -15,6 +15,8 @@ expect_bad densitynan '' "^relcol-covariance: --density: " --density 0.01,x
 expect_bad c '' '^relcol-covariance: --c: ' --c -1
 expect_bad cslow '' '^relcol-covariance: --v-rms: 0.5 is not below c = 0.4' --c 0.4 --boost 0.1
 expect_bad cempty '' '^relcol-covariance: --c: ' --c ','
+expect_bad ctwice '' '^relcol-covariance: --c: inf given twice' --c inf,2,inf
+expect_bad dtwice '' '^relcol-covariance: --density: 0.01 given twice' --density 0.01,0.004,0.01
 expect_bad boost0 '' '^relcol-covariance: --boost: 0 must be nonzero' --boost 0
 expect_bad boostc '' '^relcol-covariance: --boost: \|U\| = 2 is not below c = 1' --boost 2
 expect_bad vrms '' '^relcol-covariance: --v-rms: -1 outside \[1e-06, 1e\+06\]' --v-rms -1
@@ -65,6 +67,18 @@ fi
 # stdout: one line per row between the heading and the files
 lines=$(wc -l < "$T/out")
 [ "$lines" -eq $((rows + 3)) ] && ok || bad "stdout: $lines lines for $rows rows"
+
+[ ! -e "$T/c/covariance-c.gp" ] && ok || bad "covariance-c.gp with one finite c"
+
+# the lists come sorted, and with two finite c the figure against c is written too
+run '' --frames zmf --n 50 --density 0.004 --c 3,2 --out "$T/s"
+expect_ok sorted
+[ "$(awk -F, 'NR > 1 {printf "%s;", $3}' "$T/s/covariance.csv")" = "2;3;" ] && ok \
+    || bad "c column not sorted: $(cat "$T/s/covariance.csv")"
+[ -s "$T/s/covariance-c.gp" ] && ok || bad "no covariance-c.gp"
+if command -v gnuplot > /dev/null 2>&1; then
+    [ -s "$T/s/covariance-c.png" ] && ok || bad "no covariance-c.png"
+fi
 
 # one frame chosen by name, 3-D
 run '' --frames table --dim 3 --n 50 --density 0.004 --c inf --out "$T/d"
