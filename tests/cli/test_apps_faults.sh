@@ -1,12 +1,12 @@
 #!/bin/sh
-# test_apps_faults.sh SWEEP_C SWEEP FRAMES GAS — the figure apps under faults (suite
+# test_apps_faults.sh SWEEP_C SWEEP FRAMES GAS COVARIANCE — the figure apps under faults (suite
 # 'faults'): a disk that fills (RLIMIT_FSIZE with SIGXFSZ ignored, so writes fail with
 # EFBIG as on a full disk) at 1 KiB a file (the CSV fails) and at 64 KiB (the CSV and the
 # script fit, gnuplot's PNG does not) makes the app exit non-zero with a message, and
 # leaves every file of the previous run in its folder with its bytes; the next run leaves
 # no temporary; relcol-gas killed with SIGKILL at 10 random points leaves every file under
 # a final name whole (a PNG ends in its IEND chunk).
-sweep_c="$1"; sweep="$2"; frames="$3"; gas="$4"
+sweep_c="$1"; sweep="$2"; frames="$3"; gas="$4"; covariance="$5"
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 fails=0; n=0
 ok() { n=$((n + 1)); echo "ok: $1"; }
@@ -38,6 +38,7 @@ for kib in 1 64; do
     full_disk "sweep-$kib" $kib "$sweep" --points 5
     full_disk "frames-$kib" $kib "$frames" --points 5
     full_disk "gas-$kib" $kib "$gas" --n 100 --t-sample 20 --snapshots 20
+    full_disk "covariance-$kib" $kib "$covariance" --n 50 --density 0.004,0.01 --c 2,inf
 done
 
 # kill -9 at random points of relcol-gas runs into one folder

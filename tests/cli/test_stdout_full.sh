@@ -19,6 +19,7 @@ for app in "$@"; do
     relcol-collide) printf 'm,vx\n1,0.6\n1,-0.6\n' | "$app" --c 1 > /dev/full 2> "$T/err" ;;
     relcol-toi) printf 'r,x,vx\n1,0,0.5\n1,10,-0.5\n' | "$app" > /dev/full 2> "$T/err" ;;
     relcol-frames) "$app" --points 5 --out "$T/frames" > /dev/full 2> "$T/err" ;;
+    relcol-covariance) "$app" --n 50 --density 0.004 --c inf --out "$T/cov" > /dev/full 2> "$T/err" ;;
     *) continue ;;
     esac
     st=$?

@@ -1,0 +1,674 @@
+/* covariance.c — relcol-covariance: the many-body frame dependence of the engine (issue 16,
+ * item 3), swept over the cluster's density and c. For each (frame, density, c) an open
+ * cluster is run from the table frame and from a frame moving along x, and the final
+ * momenta and outgoing worldlines, transformed back, are compared; beside them the same
+ * comparison for a start moved by 1e-15 relative, the round-off the dynamics amplifies.
+ * The harness is cluster.h (shared with the covariance_cluster benchmark). */
+#include <limits.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "app.h"
+#include "cluster.h"
+
+static const char *const prog = "relcol-covariance";
+
+enum { EXIT_BAD_INPUT = 2 };
+#define MAXLIST 64
+#define MAXFRAMES 32
+
+/* The shell's inner radius as a fraction of its outer one (the benchmark's ring, 16..30,
+ * is about this), and the velocity recipe: inwards plus isotropic noise in the benchmark's
+ * proportion (0.35 and 0.15), then scaled to the rms speed. */
+#define SHELL_INNER 0.5
+#define V_IN 0.35
+#define V_NOISE 0.15
+/* Densest shell offered: random placement COV_MIN_SEP_RADII apart jams near 0.55 (2-D)
+ * and 0.38 (3-D) of the exclusion discs' or spheres' share, 4 and 8 times the balls'; the
+ * draw is denser at the inner rim, so a margin below those. */
+/* The box holds the cluster's whole run from both frames, about 40 R |U| / v_rms wide:
+ * these keep it within a few digits of the ball radius (positions keep their round-off
+ * near 1e-12 of r), and v_rms where the engine's times and distances are of order r. */
+#define BOOST_RATIO_MAX 1e3
+#define V_RMS_MIN 1e-6
+#define V_RMS_MAX 1e6
+#define DENSITY_MAX_2D 0.08
+#define DENSITY_MAX_3D 0.025
+
+static void usage(FILE *f)
+{
+    /* (the default frame list, as the library's table has it) */
+    char names[256] = "";
+    for (size_t i = 0; rc_toi_frames[i]; i++) {
+        const rc_toi_frame *fr = rc_toi_frames[i];
+        if (!(fr->contracted || fr->pointlike))
+            continue;
+        if (*names)
+            strncat(names, ",", sizeof names - strlen(names) - 1);
+        strncat(names, fr->name, sizeof names - strlen(names) - 1);
+    }
+    fprintf(f,
+"usage: relcol-covariance [--frames LIST] [--n N] [--dim 2|3] [--density LIST]\n"
+"                         [--c LIST] [--boost U] [--v-rms V] [--seed S] [--out DIR]\n"
+"How much the engine's many-body dynamics depends on the inertial frame it is run in.\n"
+"An open cluster of N balls (rest radius 0.5, rest mass 1, elastic) is drawn on a shell\n"
+"(2-D ring, 3-D spherical shell) between radii R/2 and R around the centre of a box they\n"
+"never reach, moving inwards plus isotropic noise, and run from the table frame and from\n"
+"a frame moving at U along x whose initial data are the same worldlines cut at its\n"
+"t' = 0 (a draw is taken only if both runs start before any collision). The moving\n"
+"run's final state is transformed back and compared ball by ball with the table run's.\n"
+"The same balls (table velocities) at every c, so that U/c and v/c are what changes.\n"
+"  --frames LIST   contact frames, comma-separated (default: every frame of the library\n"
+"                  that declares contracted or pointlike contact: %s)\n"
+"  --n N           balls, at least 50 (default 64)\n"
+"  --dim D         2 (discs; default) or 3 (spheres)\n"
+"  --density LIST  packing fractions of the shell: N ball volumes over the shell's\n"
+"                  volume, which fixes R (default 0.002,0.005,0.01,0.02,0.04 in 2-D,\n"
+"                  0.001,0.002,0.005,0.01 in 3-D; at most %g in 2-D, %g in 3-D)\n"
+"  --c LIST        speeds of light, 'inf' for classical (default 1,1.5,3,inf); each\n"
+"                  above U and above every ball's speed\n"
+"  --boost U       the moving frame's speed along x (default 0.6; 0 < |U| < every c,\n"
+"                  |U| <= 1000 V)\n"
+"  --v-rms V       rms table speed of the balls, in [1e-6, 1e6] (default 0.5, that is\n"
+"                  0.5c at c = 1)\n"
+"  --seed S        seed of the draw (default 16: with --n 64 --dim 2 the ring of the\n"
+"                  covariance_cluster benchmark's recipe)\n"
+"  --out DIR       output folder (default out/covariance)\n"
+"Each run ends at time 10 R / V of its own frame, long after the cluster has flown\n"
+"apart. Per (frame, density, c) one row of DIR/covariance.csv:\n"
+"  frame,covariant,c,c_index,density,radius,n,dim,boost,v_rms,draws\n"
+"      frame, its declared covariant property, the row's c (and its place in --c),\n"
+"      density, shell radius R, draws made to find a collision-free start\n"
+"  collisions_table,collisions_moving,collisions_roundoff  contacts in each run\n"
+"  overlaps_table,overlaps_moving  contacts decided by the overlap policy\n"
+"  dp_frames    max_i |p_i(table) - p_i(moving, boosted back)| / rms |p|\n"
+"  dp_roundoff  the same for the table run against itself with every position moved by\n"
+"               -1, 0 or +1 times 1e-15 relative: how much the dynamics amplifies\n"
+"               round-off. dp_frames far above it is a frame dependence of the model,\n"
+"               at or below it chaos amplifying round-off\n"
+"  dx_frames, dx_roundoff  the same for the outgoing worldlines: each ball's final event\n"
+"               of the moving run, transformed back and flown freely to the table run's\n"
+"               end time, against the table run's position, over the rest radius (the\n"
+"               engine does not expose its contact events: these worldlines carry where\n"
+"               and when each ball last changed velocity)\n"
+"  note         empty, or why the row has no differences: which run the engine refused\n"
+"               or failed, and why (e.g. shapes that overlap on the moving frame's\n"
+"               slice); a collision before the moving frame's start; a wall reached\n"
+"and DIR/covariance.gp and, if gnuplot is installed, DIR/covariance.png: dp against\n"
+"density, one panel per c, one colour per frame (solid: frames, dashed: round-off);\n"
+"with two finite c or more also DIR/covariance-c.gp and covariance-c.png: dp against\n"
+"c / V, one panel per frame, one colour per density. Both lists are sorted (rows go\n"
+"density by density, then c, then frame); a value given twice is refused.\n"
+"exit status: 0 ok; 2 bad input (one line naming the option); 1 I/O error.\n",
+            names, DENSITY_MAX_2D, DENSITY_MAX_3D);
+}
+
+#define fail(...) app_fail(prog, EXIT_BAD_INPUT, __VA_ARGS__)
+
+typedef struct options {
+    const rc_toi_frame *frames[MAXFRAMES];
+    int nframes;
+    long n, dim;
+    double density[MAXLIST], c[MAXLIST];
+    int ndensity, nc, density_given;
+    double boost, v_rms;
+    uint64_t seed;
+    const char *out;
+} options;
+
+static int parse_frames(const char *val, options *o)
+{
+    char *copy = strdup(val), *save = NULL, list[256];
+    if (!copy)
+        return fail("out of memory");
+    o->nframes = 0;
+    int rc = 0;
+    for (char *tok = strtok_r(copy, ",", &save); tok && rc == 0; tok = strtok_r(NULL, ",", &save)) {
+        while (*tok == ' ')
+            tok++;
+        const rc_toi_frame *fr = rc_toi_frame_find(tok);
+        if (!fr) {
+            rc = fail("--frames: unknown frame '%s' (known: %s)", tok,
+                      app_toi_frame_list(list, sizeof list));
+            break;
+        }
+        for (int j = 0; j < o->nframes && rc == 0; j++)
+            if (o->frames[j] == fr)
+                rc = fail("--frames: '%s' given twice", tok);
+        if (rc == 0 && o->nframes == MAXFRAMES)
+            rc = fail("--frames: more than %d frames", MAXFRAMES);
+        if (rc == 0)
+            o->frames[o->nframes++] = fr;
+    }
+    free(copy);
+    if (rc == 0 && o->nframes == 0)
+        rc = fail("--frames: no frame named in '%s'", val);
+    return rc;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Sort a list in increasing order (the figures draw lines through it; inf last) and
+ * name a value given twice. */
+static int sort_list(const char *opt, double *v, int n)
+{
+    char f[APP_FMT_LEN];
+    qsort(v, (size_t)n, sizeof *v, cmp_double);
+    for (int i = 1; i < n; i++)
+        if (v[i] == v[i - 1])
+            return fail("%s: %s given twice", opt, isinf(v[i]) ? "inf" : app_fmt(v[i], f));
+    return 0;
+}
+
+static int parse_options(int argc, char **argv, options *o)
+{
+    char err[APP_ERR_LEN], f1[APP_FMT_LEN], f2[APP_FMT_LEN];
+    memset(o, 0, sizeof *o);
+    o->n = 64;
+    o->dim = 2;
+    o->boost = 0.6;
+    o->v_rms = 0.5;
+    o->seed = 16;
+    o->out = "out/covariance";
+    const double cdef[] = {1.0, 1.5, 3.0, INFINITY};
+    o->nc = 4;
+    memcpy(o->c, cdef, sizeof cdef);
+    for (size_t i = 0; rc_toi_frames[i] && o->nframes < MAXFRAMES; i++)
+        if (rc_toi_frames[i]->contracted || rc_toi_frames[i]->pointlike)
+            o->frames[o->nframes++] = rc_toi_frames[i];
+    static const char *const known[] = {"--frames", "--n", "--dim", "--density", "--c",
+                                        "--boost", "--v-rms", "--seed", "--out", NULL};
+    app_opts it;
+    app_opts_init(&it, prog, argc, argv, known, NULL, "see --help");
+    const char *name, *val;
+    for (int kind; (kind = app_opts_next(&it, &name, &val)) != APP_OPT_END;) {
+        if (kind == APP_OPT_HELP)
+            return -1;
+        if (kind == APP_OPT_ERROR)
+            return EXIT_BAD_INPUT;
+        if (strcmp(name, "--frames") == 0) {
+            int rc = parse_frames(val, o);
+            if (rc != 0)
+                return rc;
+        } else if (strcmp(name, "--n") == 0) {
+            /* (the issue's cluster: at least 50 balls, so a few collisions per ball) */
+            if (app_parse_long(val, 50, 1000000, &o->n, err) != 0)
+                return fail("--n: %s", err);
+        } else if (strcmp(name, "--dim") == 0) {
+            if (app_parse_long(val, 2, 3, &o->dim, err) != 0)
+                return fail("--dim: %s", err);
+        } else if (strcmp(name, "--density") == 0) {
+            if (app_parse_list(val, o->density, MAXLIST, &o->ndensity, err) != 0)
+                return fail("--density: %s", err);
+            o->density_given = 1;
+        } else if (strcmp(name, "--c") == 0) {
+            /* (app_parse_list takes finite numbers only: the items one by one, inf too) */
+            char *copy = strdup(val), *save = NULL;
+            if (!copy)
+                return fail("out of memory");
+            o->nc = 0;
+            int rc = 0;
+            for (char *tok = strtok_r(copy, ",", &save); tok && rc == 0;
+                 tok = strtok_r(NULL, ",", &save)) {
+                double c;
+                if (o->nc == MAXLIST)
+                    rc = fail("--c: more than %d values", MAXLIST);
+                else if (app_parse_double(tok, 1, &c, err) != 0)
+                    rc = fail("--c: %s", err);
+                else if (app_check_c(c, err) != 0)
+                    rc = fail("--c: %s", err);
+                else
+                    o->c[o->nc++] = c;
+            }
+            free(copy);
+            if (rc != 0)
+                return rc;
+            if (o->nc == 0)
+                return fail("--c: no value in '%s'", val);
+        } else if (strcmp(name, "--boost") == 0) {
+            if (app_parse_double(val, 0, &o->boost, err) != 0)
+                return fail("--boost: %s", err);
+        } else if (strcmp(name, "--v-rms") == 0) {
+            if (app_parse_double(val, 0, &o->v_rms, err) != 0)
+                return fail("--v-rms: %s", err);
+        } else if (strcmp(name, "--seed") == 0) {
+            if (app_parse_u64(val, &o->seed, err) != 0)
+                return fail("--seed: %s", err);
+            if (o->seed > UINT_MAX)
+                return fail("--seed: %s is above %u (the draw's state is an unsigned int)",
+                            val, UINT_MAX);
+        } else if (strcmp(name, "--out") == 0) {
+            if (!*val)
+                return fail("--out: empty folder name");
+            o->out = val;
+        }
+    }
+    const double dmax = o->dim == 2 ? DENSITY_MAX_2D : DENSITY_MAX_3D;
+    if (!o->density_given) {
+        const double d2[] = {0.002, 0.005, 0.01, 0.02, 0.04}, d3[] = {0.001, 0.002, 0.005, 0.01};
+        o->ndensity = o->dim == 2 ? 5 : 4;
+        memcpy(o->density, o->dim == 2 ? d2 : d3, (size_t)o->ndensity * sizeof(double));
+    }
+    if (sort_list("--density", o->density, o->ndensity) != 0 ||
+        sort_list("--c", o->c, o->nc) != 0)
+        return EXIT_BAD_INPUT;
+    for (int i = 0; i < o->ndensity; i++)
+        if (!(o->density[i] > 0.0 && o->density[i] <= dmax))
+            return fail("--density: %s outside (0, %s] in %ld-D (random placement %g radii "
+                        "apart fills no more)", app_fmt(o->density[i], f1), app_fmt(dmax, f2),
+                        o->dim, COV_MIN_SEP_RADII);
+    /* (only the ratios U / v_rms and c / v_rms matter; the bounds keep the box, which
+     * holds the whole run from either frame, within digits of the ball radius) */
+    if (!(o->v_rms >= V_RMS_MIN && o->v_rms <= V_RMS_MAX))
+        return fail("--v-rms: %s outside [%g, %g] (table units: the ball radius is 0.5)",
+                    app_fmt(o->v_rms, f1), V_RMS_MIN, V_RMS_MAX);
+    if (o->boost == 0.0)
+        return fail("--boost: 0 must be nonzero (the moving frame must move)");
+    if (!(fabs(o->boost) <= BOOST_RATIO_MAX * o->v_rms))
+        return fail("--boost: |U| = %s is more than %g times --v-rms %s (the cluster would "
+                    "drift too far in the moving frame)", app_fmt(fabs(o->boost), f1),
+                    BOOST_RATIO_MAX, app_fmt(o->v_rms, f2));
+    for (int k = 0; k < o->nc; k++) {
+        if (!(fabs(o->boost) < o->c[k]))
+            return fail("--boost: |U| = %s is not below c = %s", app_fmt(fabs(o->boost), f1),
+                        app_fmt(o->c[k], f2));
+        if (!(o->v_rms < o->c[k]))
+            return fail("--v-rms: %s is not below c = %s", app_fmt(o->v_rms, f1),
+                        app_fmt(o->c[k], f2));
+    }
+    return 0;
+}
+
+/* The cluster of one density at one c. */
+static cov_def cluster_def(const options *o, double density, double c)
+{
+    const double r = 0.5;
+    /* N ball volumes = density x shell volume, the shell between R/2 and R */
+    const double R = o->dim == 2
+        ? r * sqrt((double)o->n / (density * (1.0 - SHELL_INNER * SHELL_INNER)))
+        : r * cbrt((double)o->n / (density * (1.0 - SHELL_INNER * SHELL_INNER * SHELL_INNER)));
+    cov_def d = {.dim = (int)o->dim, .n = (size_t)o->n, .r = r, .inner = SHELL_INNER * R,
+                 .outer = R, .v_in = V_IN, .v_noise = V_NOISE, .v_rms = o->v_rms, .c = c,
+                 .u = o->boost, .seed = (unsigned)o->seed};
+    d.t_end = 10.0 * R / o->v_rms;
+    /* no wall within reach: the fastest ball (the noise and the scaling to v_rms give at
+     * most about 1.7 v_rms) plus the moving frame's drift, with a factor 2 to spare, for
+     * the whole run (reached anyway: the row says so) */
+    d.box = 2.0 * (R + 2.0 * (2.0 * o->v_rms + fabs(o->boost)) * d.t_end);
+    return d;
+}
+
+typedef struct row {
+    const rc_toi_frame *frame;
+    int ci, di;
+    double radius;
+    int draws;
+    cov_result r;
+    int have;          /* r holds differences */
+    char note[160];
+} row;
+
+static const char *fmt_c(double c, char *buf)
+{
+    return isinf(c) ? "inf" : app_fmt(c, buf);
+}
+
+static int write_csv(const char *path, const options *o, const row *rows, size_t nrows,
+                     char *err)
+{
+    app_atomic a;
+    if (app_atomic_open(&a, path, err) != 0)
+        return -1;
+    fprintf(a.f, "frame,covariant,c,c_index,density,radius,n,dim,boost,v_rms,draws,"
+                 "collisions_table,collisions_moving,collisions_roundoff,overlaps_table,"
+                 "overlaps_moving,dp_frames,dp_roundoff,dx_frames,dx_roundoff,note\n");
+    for (size_t k = 0; k < nrows; k++) {
+        const row *w = &rows[k];
+        char fc[APP_FMT_LEN], fd[APP_FMT_LEN], fb[APP_FMT_LEN], fv[APP_FMT_LEN];
+        fprintf(a.f, "%s,%d,%s,%d,%s,%.17g,%ld,%ld,%s,%s,%d,", w->frame->name,
+                w->frame->covariant ? 1 : 0, fmt_c(o->c[w->ci], fc), w->ci,
+                app_fmt(o->density[w->di], fd), w->radius, o->n, o->dim,
+                app_fmt(o->boost, fb), app_fmt(o->v_rms, fv), w->draws);
+        /* (a row without differences has empty fields: missing to gnuplot, numpy and
+         * pandas alike) */
+        if (w->have)
+            fprintf(a.f, "%llu,%llu,%llu,%llu,%llu,%.17g,%.17g,%.17g,%.17g,",
+                    (unsigned long long)w->r.coll[0], (unsigned long long)w->r.coll[1],
+                    (unsigned long long)w->r.coll[2], (unsigned long long)w->r.overlaps[0],
+                    (unsigned long long)w->r.overlaps[1], w->r.dp_frames, w->r.dp_roundoff,
+                    w->r.dx_frames, w->r.dx_roundoff);
+        else
+            fprintf(a.f, ",,,,,,,,,");
+        fprintf(a.f, "%s\n", w->note);
+    }
+    return app_atomic_commit(&a, err);
+}
+
+static const char *const colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e",
+                                      "#8c564b", "#e377c2", "#17becf"};
+
+static int write_script(const char *path, const options *o, const row *rows, size_t nrows,
+                        char *err)
+{
+    /* has_data[k nframes + j]: frame j has a row of differences at the k-th c */
+    char has_data[MAXLIST * MAXFRAMES] = {0};
+    for (size_t i = 0; i < nrows; i++)
+        if (rows[i].have)
+            has_data[(size_t)rows[i].ci * (size_t)o->nframes + i % (size_t)o->nframes] = 1;
+    double dlo = o->density[0], dhi = o->density[0];
+    for (int i = 1; i < o->ndensity; i++) {
+        dlo = fmin(dlo, o->density[i]);
+        dhi = fmax(dhi, o->density[i]);
+    }
+    app_atomic a;
+    if (app_atomic_open(&a, path, err) != 0)
+        return -1;
+    FILE *f = a.f;
+    const int cols = o->nc < 3 ? o->nc : (o->nc == 4 ? 2 : 3);
+    const int lines = (o->nc + cols - 1) / cols;
+    char term[128], fb[APP_FMT_LEN], fv[APP_FMT_LEN];
+    snprintf(term, sizeof term, "size %d,%d enhanced font 'Sans,12' linewidth 1.5",
+             560 * cols + 40, 440 * lines + 80);
+    fprintf(f,
+"# covariance.gp — written by relcol-covariance; run `gnuplot covariance.gp` in this folder.\n"
+"# The engine's many-body frame dependence: final momenta of the run from a moving frame,\n"
+"# boosted back, against the table frame's run (solid), and the round-off the dynamics\n"
+"# amplifies (dashed: a start moved by 1e-15), against the cluster's density, per c.\n");
+    app_gnuplot_head(f, "covariance.png", term, 1);
+    /* (the x range given: gnuplot warns on one density's empty range) */
+    fprintf(f, "set xrange [%.6g:%.6g]\nset format x '%%g'\nset xtics (", dlo / 1.5, dhi * 1.5);
+    for (int i = 0; i < o->ndensity; i++) {
+        char fd[APP_FMT_LEN];
+        fprintf(f, "%s%s", i ? ", " : "", app_fmt(o->density[i], fd));
+    }
+    fprintf(f, ")\n");
+    fprintf(f,
+"set grid xtics ytics lc rgb '#dddddd' lw 0.8\n"
+"set xlabel 'density (packing fraction of the shell)'\n"
+"set ylabel 'max_i |Δp_i| / rms |p|'\n"
+"set key below horizontal maxrows 1 font ',10' spacing 1.1\n"
+"set multiplot layout %d,%d title \"Many-body frame dependence: %ld-D cluster, N = %ld, "
+"moving frame U = %s, v_{rms} = %s\\n"
+"{/*0.8 solid: table run against the moving run boosted back;  dashed: against a start "
+"moved by 10^{-15} (round-off amplified)}\"\n",
+            lines, cols, o->dim, o->n, app_fmt(o->boost, fb), app_fmt(o->v_rms, fv));
+    /* The rows go density by density, then c, then frame: the points of frame j at the
+     * k-th c are every (nc nframes)-th row from k nframes + j (`every`, which keeps the
+     * line through them; a row without differences has empty fields, which gnuplot skips
+     * and the line bridges). Columns: 5 density, 17 dp_frames, 18 dp_roundoff. */
+    const int stride = o->nc * o->nframes;
+    for (int k = 0; k < o->nc; k++) {
+        char fc[APP_FMT_LEN];
+        fprintf(f, "set title 'c = %s'\n", isinf(o->c[k]) ? "∞ (classical)" : app_fmt(o->c[k], fc));
+        /* only the frames with a row of differences at this c: gnuplot fails on a panel
+         * without a single point, and warns on a curve without one */
+        int any = 0;
+        for (int j = 0; j < o->nframes; j++)
+            any += has_data[k * o->nframes + j] != 0;
+        if (!any) {
+            fprintf(f, "set yrange [1e-16:10]\n"
+                       "set label 1 'no row with differences (see the note column)' at graph 0.5,0.5 center\n"
+                       "plot NaN notitle\n"
+                       "unset label 1\n"
+                       "set autoscale y\n");
+            continue;
+        }
+        fprintf(f, "plot \\\n");
+        for (int j = 0, done = 0; j < o->nframes; j++) {
+            if (!has_data[k * o->nframes + j])
+                continue;
+            const char *col = colours[j % (int)(sizeof colours / sizeof *colours)];
+            const char *nm = o->frames[j]->name;
+            const int first = k * o->nframes + j;
+            done++;
+            fprintf(f,
+"  'covariance.csv' skip 1 every %d::%d using 5:17 with linespoints pt 7 ps 0.9 lw 2 "
+"lc rgb '%s' title '%s%s', \\\n"
+"  '' skip 1 every %d::%d using 5:18 with linespoints dt 2 pt 6 ps 0.7 lw 1.2 "
+"lc rgb '%s' notitle%s\n",
+                    stride, first, col, nm, o->frames[j]->covariant ? " (covariant)" : "",
+                    stride, first, col, done < any ? ", \\" : "");
+        }
+    }
+    fprintf(f, "unset multiplot\n");
+    return app_atomic_commit(&a, err);
+}
+
+/* The second figure: dp against c / v_rms over the finite values of c (sorted first),
+ * one panel per frame, one colour per density. Written only with two finite c or more. */
+static int write_script_c(const char *path, const options *o, const row *rows,
+                          size_t nrows, int nfin, char *err)
+{
+    /* has_data[di nframes + j]: frame j has a row of differences at density di, finite c */
+    char has_data[MAXLIST * MAXFRAMES] = {0};
+    for (size_t i = 0; i < nrows; i++)
+        if (rows[i].have && rows[i].ci < nfin)
+            has_data[(size_t)rows[i].di * (size_t)o->nframes + i % (size_t)o->nframes] = 1;
+    app_atomic a;
+    if (app_atomic_open(&a, path, err) != 0)
+        return -1;
+    FILE *f = a.f;
+    const int cols = o->nframes < 3 ? o->nframes : (o->nframes == 4 ? 2 : 3);
+    const int lines = (o->nframes + cols - 1) / cols;
+    char term[128], fb[APP_FMT_LEN], fv[APP_FMT_LEN];
+    snprintf(term, sizeof term, "size %d,%d enhanced font 'Sans,12' linewidth 1.5",
+             560 * cols + 40, 440 * lines + 80);
+    fprintf(f,
+"# covariance-c.gp — written by relcol-covariance; run `gnuplot covariance-c.gp` in this\n"
+"# folder. The same differences as covariance.gp against c / v_rms (finite c only), one\n"
+"# panel per frame, one colour per density.\n");
+    app_gnuplot_head(f, "covariance-c.png", term, 1);
+    fprintf(f,
+"set xrange [%.6g:%.6g]\n"
+"set grid xtics ytics lc rgb '#dddddd' lw 0.8\n"
+"set xlabel 'c / v_{rms}'\n"
+"set ylabel 'max_i |Δp_i| / rms |p|'\n"
+"set key below horizontal font ',10' spacing 1.1\n"
+"set multiplot layout %d,%d title \"Many-body frame dependence against c: %ld-D cluster, "
+"N = %ld, moving frame U = %s, v_{rms} = %s\\n"
+"{/*0.8 solid: table run against the moving run boosted back;  dashed: against a start "
+"moved by 10^{-15} (round-off amplified)}\"\n",
+            o->c[0] / o->v_rms / 1.5, o->c[nfin - 1] / o->v_rms * 1.5, lines, cols, o->dim,
+            o->n, app_fmt(o->boost, fb), app_fmt(o->v_rms, fv));
+    fprintf(f, "set format x '%%g'\nset xtics (");
+    for (int k = 0; k < nfin; k++)
+        fprintf(f, "%s%.6g", k ? ", " : "", o->c[k] / o->v_rms);
+    fprintf(f, ")\n");
+    /* rows go density, c, frame: frame j at density di is every nframes-th row from
+     * di (nc nframes) + j, its finite c the first nfin of them */
+    const int stride = o->nc * o->nframes;
+    for (int j = 0; j < o->nframes; j++) {
+        fprintf(f, "set title '%s%s'\n", o->frames[j]->name,
+                o->frames[j]->covariant ? " (covariant)" : "");
+        int any = 0;
+        for (int di = 0; di < o->ndensity; di++)
+            any += has_data[di * o->nframes + j] != 0;
+        if (!any) {
+            fprintf(f, "set yrange [1e-16:10]\n"
+                       "set label 1 'no row with differences (see the note column)' at graph 0.5,0.5 center\n"
+                       "plot NaN notitle\n"
+                       "unset label 1\n"
+                       "set autoscale y\n");
+            continue;
+        }
+        fprintf(f, "plot \\\n");
+        for (int di = 0, done = 0; di < o->ndensity; di++) {
+            if (!has_data[di * o->nframes + j])
+                continue;
+            char fd[APP_FMT_LEN];
+            const char *col = colours[di % (int)(sizeof colours / sizeof *colours)];
+            const int first = di * stride + j, last = first + (nfin - 1) * o->nframes;
+            done++;
+            fprintf(f,
+"  'covariance.csv' skip 1 every %d::%d::%d using ($3/$10):17 with linespoints pt 7 ps 0.9 "
+"lw 2 lc rgb '%s' title 'density %s', \\\n"
+"  '' skip 1 every %d::%d::%d using ($3/$10):18 with linespoints dt 2 pt 6 ps 0.7 lw 1.2 "
+"lc rgb '%s' notitle%s\n",
+                    o->nframes, first, last, col, app_fmt(o->density[di], fd), o->nframes, first,
+                    last, col, done < any ? ", \\" : "");
+        }
+    }
+    fprintf(f, "unset multiplot\n");
+    return app_atomic_commit(&a, err);
+}
+
+int main(int argc, char **argv)
+{
+    app_init(prog);
+    options o;
+    int st = parse_options(argc, argv, &o);
+    if (st < 0)
+        return app_help(usage);
+    if (st != 0)
+        return st;
+
+    char err[APP_ERR_LEN];
+    const size_t nrows = (size_t)o.nframes * (size_t)o.ndensity * (size_t)o.nc;
+    row *rows = calloc(nrows, sizeof *rows);
+    char *csv = app_path_join(o.out, "covariance.csv"), *gp = app_path_join(o.out, "covariance.gp");
+    int rc = 1;
+    if (!rows || !csv || !gp) {
+        fail("out of memory");
+        goto out;
+    }
+    app_progress bar;
+    app_progress_init(&bar, prog, (size_t)o.ndensity * (size_t)o.nc);
+    size_t k = 0;
+    for (int di = 0; di < o.ndensity; di++) {
+        for (int ci = 0; ci < o.nc; ci++) {
+            const cov_def d = cluster_def(&o, o.density[di], o.c[ci]);
+            cov_cluster cl;
+            /* (the start is checked with the first frame asked for: every frame's own
+             * table run says if it collides before the moving frame's start) */
+            const int e = cov_cluster_make(&d, o.frames[0], &cl);
+            char f1[APP_FMT_LEN], f2[APP_FMT_LEN], f3[APP_FMT_LEN];
+            if (e == COV_EPLACE) {
+                rc = fail("--density: %s: %ld balls do not fit %g radii apart in the %ld-D "
+                          "shell (take a lower density)", app_fmt(o.density[di], f1), o.n,
+                          COV_MIN_SEP_RADII, o.dim);
+                goto out;
+            }
+            if (e == COV_ESPEED) {
+                rc = fail("--c: at c = %s a ball of the draw at density %s is not slower than "
+                          "c (--v-rms %s: its fastest balls move at about 1.5 times it)",
+                          app_fmt(o.c[ci], f1), app_fmt(o.density[di], f2),
+                          app_fmt(o.v_rms, f3));
+                goto out;
+            }
+            if (e == COV_ENOMEM) {
+                fail("out of memory");
+                goto out;
+            }
+            for (int j = 0; j < o.nframes; j++, k++) {
+                row *w = &rows[k];
+                w->frame = o.frames[j];
+                w->ci = ci;
+                w->di = di;
+                w->radius = d.outer;
+                w->draws = e == COV_OK ? cl.draws : COV_MAX_DRAWS;
+                if (e != COV_OK) {
+                    snprintf(w->note, sizeof w->note, "no draw starts collision-free in both frames");
+                    continue;
+                }
+                if (cov_compare(&d, w->frame, &cl, &w->r) != 0) {
+                    if (w->r.status == RC_ENOMEM) {
+                        cov_cluster_free(&cl);
+                        fail("out of memory");
+                        goto out;
+                    }
+                    static const char *const run_name[] = {"table", "moving", "round-off"};
+                    snprintf(w->note, sizeof w->note, "the %s run: %s: %s",
+                             run_name[w->r.which], w->r.running ? "the engine failed"
+                                                                : "the engine refused the start",
+                             rc_strerror(w->r.status));
+                    /* (a CSV field: the library's text keeps no comma here) */
+                    for (char *q = w->note; *q; q++)
+                        if (*q == ',')
+                            *q = ';';
+                    continue;
+                }
+                if (w->r.early[0] != 0) {
+                    snprintf(w->note, sizeof w->note, "a collision before the moving frame's start (table run)");
+                    continue;
+                }
+                if (w->r.walls) {
+                    snprintf(w->note, sizeof w->note, "a ball reached a wall");
+                    continue;
+                }
+                w->have = 1;
+            }
+            cov_cluster_free(&cl);
+            app_progress_update(&bar, (size_t)(di * o.nc + ci + 1));
+        }
+    }
+    app_progress_done(&bar);
+
+    if (app_mkdir_p(o.out, err) != 0) {
+        fail("--out: %s", err);
+        rc = 1;
+        goto out;
+    }
+    rc = 1;
+    if (write_csv(csv, &o, rows, nrows, err) != 0 || write_script(gp, &o, rows, nrows, err) != 0) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        goto out;
+    }
+    int made = 0, made_c = 0, nfin = 0;
+    while (nfin < o.nc && isfinite(o.c[nfin]))
+        nfin++;
+    char *gpc = nfin >= 2 ? app_path_join(o.out, "covariance-c.gp") : NULL;
+    if (nfin >= 2 && (!gpc || write_script_c(gpc, &o, rows, nrows, nfin, err) != 0)) {
+        fprintf(stderr, "%s: %s\n", prog, gpc ? err : "out of memory");
+        free(gpc);
+        goto out;
+    }
+    if (app_gnuplot_run(prog, o.out, "covariance.gp", "covariance.png", &made, err) != 0 ||
+        (gpc && app_gnuplot_run(prog, o.out, "covariance-c.gp", "covariance-c.png", &made_c,
+                                err) != 0)) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        free(gpc);
+        goto out;
+    }
+
+    char fb[APP_FMT_LEN], fv[APP_FMT_LEN];
+    printf("%s: %ld-D cluster of %ld balls, moving frame %s, v_rms %s, seed %llu; dp = max "
+           "|dp| / rms |p|, dx = max |dx| / r\n", prog, o.dim, o.n, app_fmt(o.boost, fb),
+           app_fmt(o.v_rms, fv), (unsigned long long)o.seed);
+    printf("%-10s %6s %9s %11s %16s %12s %12s %12s %12s\n", "frame", "c", "density",
+           "radius", "coll.tab/mov", "dp_frames", "dp_roundoff", "dx_frames", "dx_roundoff");
+    for (size_t i = 0; i < nrows; i++) {
+        const row *w = &rows[i];
+        char fc[APP_FMT_LEN], fd[APP_FMT_LEN], cc[48];
+        printf("%-10s %6s %9s %11.4g ", w->frame->name, fmt_c(o.c[w->ci], fc),
+               app_fmt(o.density[w->di], fd), w->radius);
+        if (w->have) {
+            snprintf(cc, sizeof cc, "%llu/%llu", (unsigned long long)w->r.coll[0],
+                     (unsigned long long)w->r.coll[1]);
+            printf("%16s %12.3e %12.3e %12.3e %12.3e\n", cc, w->r.dp_frames, w->r.dp_roundoff,
+                   w->r.dx_frames, w->r.dx_roundoff);
+        } else {
+            printf("%s\n", w->note);
+        }
+    }
+    if (made)
+        printf("wrote %s, %s, %s/covariance.png\n", csv, gp, o.out);
+    else
+        printf("wrote %s, %s (no figure: gnuplot is not installed)\n", csv, gp);
+    if (gpc && made_c)
+        printf("wrote %s, %s/covariance-c.png (against c)\n", gpc, o.out);
+    else if (gpc)
+        printf("wrote %s (no figure: gnuplot is not installed)\n", gpc);
+    free(gpc);
+    rc = fflush(stdout) == 0 ? 0 : 1;
+out:
+    free(rows);
+    free(csv);
+    free(gp);
+    return rc;
+}
