@@ -235,4 +235,47 @@ static inline int ex_coefficients(int d, double theta, int contracted, int ns, i
     return st;
 }
 
+/* Vex(p)/v_d = <V(p, p2)>_{p2 ~ J} / v_d for a ball of Lorentz factor gamma, the same
+ * pair rule as ex_coefficients (ns speed nodes, na angles, q): the one-ball law to first
+ * order is f(p) = J(p) [1 - eta (ex_vex(p) - <V>/v_d)] (eta the packing). NAN on bad
+ * arguments or a failed allocation. */
+static inline double ex_vex(int d, double theta, double gamma, int ns, int na, const ex_quad *q)
+{
+    if ((d != 2 && d != 3) || !(theta > 0.0) || !isfinite(theta) || !(gamma >= 1.0) ||
+        !isfinite(gamma) || ns < 2 || na < 2)
+        return NAN;
+    gsl_integration_fixed_workspace *gs =
+        gsl_integration_fixed_alloc(gsl_integration_fixed_laguerre, (size_t)ns, 0.0,
+                                    1.0 / theta, 0.5 * (d - 2), 0.0);
+    gsl_integration_glfixed_table *ga = gsl_integration_glfixed_table_alloc((size_t)na);
+    double v = NAN;
+    if (gs && ga) {
+        const double *xn = gsl_integration_fixed_nodes(gs), *xw = gsl_integration_fixed_weights(gs);
+        const double b1[3] = {sqrt((gamma - 1.0) * (gamma + 1.0)) / gamma, 0.0, 0.0};
+        double s = 0.0, sw = 0.0;
+        for (int j = 0; j < ns; j++) {
+            const double x = xn[j], g = 1.0 + x, bj = sqrt(x * (x + 2.0)) / g;
+            const double wj = xw[j] * g * pow(x + 2.0, 0.5 * (d - 2));
+            for (int k = 0; k < na; k++) {
+                double ck, sk, wk = 1.0;
+                if (d == 2) {
+                    ck = cos(2.0 * M_PI * k / na), sk = sin(2.0 * M_PI * k / na);
+                } else {
+                    gsl_integration_glfixed_point(-1.0, 1.0, (size_t)k, &ck, &wk, ga);
+                    sk = sqrt((1.0 - ck) * (1.0 + ck));
+                }
+                const double b2[3] = {bj * ck, bj * sk, 0.0};
+                s += wj * wk * ex_excluded(d, 1.0, b1, b2, q);
+                sw += wj * wk;
+            }
+        }
+        v = s / sw / (d == 2 ? M_PI : 4.0 * M_PI / 3.0);
+    }
+    if (gs)
+        gsl_integration_fixed_free(gs);
+    if (ga)
+        gsl_integration_glfixed_table_free(ga);
+    return v;
+}
+
 #endif
