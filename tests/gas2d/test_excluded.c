@@ -29,71 +29,6 @@ static void random_beta(int d, double gamma, double b[3])
         b[i] = s * u[i] / sqrt(n2);
 }
 
-/* The shape matrix P = r^2 (I - b b^T) of relcol/toi.h: the ball is x^T P^-1 x <= 1. */
-static void shape(double r, const double b[3], double P[3][3])
-{
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            P[i][j] = r * r * ((i == j) - b[i] * b[j]);
-}
-
-/* x^T M^-1 x for a symmetric positive-definite d x d M (Gaussian elimination). */
-static double quad_inv(int d, double M[3][3], const double x[3])
-{
-    double a[3][4];
-    for (int i = 0; i < d; i++) {
-        for (int j = 0; j < d; j++)
-            a[i][j] = M[i][j];
-        a[i][3] = x[i];
-    }
-    for (int k = 0; k < d; k++)
-        for (int i = k + 1; i < d; i++) {
-            const double f = a[i][k] / a[k][k];
-            for (int j = k; j < 4; j++)
-                a[i][j] -= f * a[k][j];
-        }
-    double y[3], s = 0.0;
-    for (int i = d - 1; i >= 0; i--) {
-        double t = a[i][3];
-        for (int j = i + 1; j < d; j++)
-            t -= a[i][j] * y[j];
-        y[i] = t / a[i][i];
-    }
-    for (int i = 0; i < d; i++)
-        s += x[i] * y[i];
-    return s;
-}
-
-/* Perram & Wertheim (1985): the shapes P1 (at 0) and P2 (at x) overlap iff
- * max over lambda in [0, 1] of F = lambda (1 - lambda) x^T [(1 - lambda) P1 + lambda P2]^-1 x
- * is below 1; F is concave in lambda, so golden section finds the maximum. */
-static int pw_overlap(int d, double P1[3][3], double P2[3][3], const double x[3])
-{
-    double lo = 0.0, hi = 1.0;
-    const double g = 0.5 * (sqrt(5.0) - 1.0);
-    double best = 0.0;
-    for (int it = 0; it < 60; it++) {
-        const double l1 = hi - g * (hi - lo), l2 = lo + g * (hi - lo);
-        double F[2];
-        const double l[2] = {l1, l2};
-        for (int k = 0; k < 2; k++) {
-            double M[3][3];
-            for (int i = 0; i < 3; i++)
-                for (int j = 0; j < 3; j++)
-                    M[i][j] = (1.0 - l[k]) * P1[i][j] + l[k] * P2[i][j];
-            F[k] = l[k] * (1.0 - l[k]) * quad_inv(d, M, x);
-        }
-        best = fmax(best, fmax(F[0], F[1]));
-        if (best >= 1.0)
-            return 0;
-        if (F[0] < F[1])
-            lo = l1;
-        else
-            hi = l2;
-    }
-    return 1;
-}
-
 /* Limits the quadrature must meet to round-off: two spheres (radii 0.5 and 0.8), one shape
  * and itself or its mirror (K + K = 2K: 2^d times the shape's area / volume, the area
  * pi r^2/gamma, the volume 4/3 pi r^3/gamma). The 2-D rule converges geometrically:
@@ -140,8 +75,8 @@ static void test_monte_carlo(void)
             double b1[3], b2[3], P1[3][3], P2[3][3];
             random_beta(d, g1[k], b1);
             random_beta(d, g2[k], b2);
-            shape(r1[k], b1, P1);
-            shape(r2[k], b2, P2);
+            ex_shape(r1[k], b1, P1);
+            ex_shape(r2[k], b2, P2);
             const double L = r1[k] + r2[k], cube = pow(2.0 * L, d);
             const long n = d == 2 ? 200000 : 100000;
             long hit = 0;
@@ -149,7 +84,7 @@ static void test_monte_carlo(void)
                 double x[3] = {0.0, 0.0, 0.0};
                 for (int i = 0; i < d; i++)
                     x[i] = rc_test_range(&rng, -L, L);
-                hit += pw_overlap(d, P1, P2, x);
+                hit += ex_pw_overlap(d, P1, P2, x);
             }
             const double p = (double)hit / n, se = sqrt(p * (1.0 - p) / n) * cube;
             const double vq = d == 2 ? ex_area_2d(r1[k], b1, r2[k], b2, q.nphi)

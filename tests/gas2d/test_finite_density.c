@@ -9,8 +9,9 @@
  *    overlap policy. When the contact-dynamics issue's overlap-free shapes land this is
  *    the check to revisit.
  * `test_finite_density --frame NAME` runs the contracted-frame check for another frame
- * (e.g. covariant, when it exists); `--paper` books the change of sum p.v to each event,
- * overlap-policy collisions apart (minutes, not a test). */
+ * (e.g. covariant, when it exists); `--paper` counts the pairs that overlap at one table
+ * time and books the change of sum p.v to each event, overlap-policy collisions apart
+ * (minutes, not a test); `--occupancy` only the first (at `--packing`, default 0.1). */
 #include <stdlib.h>
 #include <string.h>
 
@@ -24,26 +25,38 @@
 #define THETA 0.75
 enum { NBLK = 10 };
 
-/* A 2-D periodic gas of n discs of rest radius 1/2 at packing eta, every speed that of
- * Jüttner's <gamma> at THETA, in pairs of opposite momenta (zero total momentum). */
-static int make_gas(const char *frame, size_t n, double eta, uint64_t seed, rc_sim **out)
+/* A periodic gas of n discs (dim 2) or balls (dim 3) of rest radius 1/2 at packing eta,
+ * every speed that of Jüttner's <gamma> at THETA, in pairs of opposite momenta (zero total
+ * momentum); *box gets the box. */
+static int make_gas_d(int dim, const char *frame, size_t n, double eta, uint64_t seed,
+                      rc_sim **out, rc_vec3 *box_out)
 {
     rc_sim_ball *b = malloc(n * sizeof *b);
     if (!b)
         return RC_ENOMEM;
-    rc_sim_gas_def g = {2, n, 0.5, eta, 0.1, 1.0, 8.0, seed};
+    rc_sim_gas_def g = {dim, n, 0.5, eta, 0.1, 1.0, 8.0, seed};
     rc_vec3 box;
     int st = rc_sim_gas_init(&g, &box, b);
-    const double g0 = jt_mean_gamma(2, THETA), p0 = sqrt((g0 - 1.0) * (g0 + 1.0));
+    const double g0 = jt_mean_gamma(dim, THETA), p0 = sqrt((g0 - 1.0) * (g0 + 1.0));
     rc_test_rng rng = {seed ^ 0xf1dULL};
     for (size_t i = 0; i + 1 < n; i += 2) {
-        const double a = 2.0 * M_PI * rc_test_uniform(&rng);
-        b[i].p = rc_v3(p0 * cos(a), p0 * sin(a), 0.0);
+        double u[3] = {0.0, 0.0, 0.0}, n2;
+        do { /* a direction uniform on the circle / sphere, by rejection */
+            n2 = 0.0;
+            for (int k = 0; k < dim; k++) {
+                u[k] = rc_test_range(&rng, -1.0, 1.0);
+                n2 += u[k] * u[k];
+            }
+        } while (!(n2 > 1e-4 && n2 < 1.0));
+        const double f = p0 / sqrt(n2);
+        b[i].p = rc_v3(f * u[0], f * u[1], f * u[2]);
         b[i + 1].p = rc_v3_scale(-1.0, b[i].p);
         b[i].m = b[i + 1].m = 1.0;
     }
+    if (box_out)
+        *box_out = box;
     rc_sim_def d = rc_sim_def_default();
-    d.dim = 2;
+    d.dim = dim;
     d.box = box;
     d.c = 1.0;
     d.frame = rc_toi_frame_find(frame);
@@ -55,6 +68,11 @@ static int make_gas(const char *frame, size_t n, double eta, uint64_t seed, rc_s
         st = rc_sim_set_balls(*out, n, b, NULL);
     free(b);
     return st;
+}
+
+static int make_gas(const char *frame, size_t n, double eta, uint64_t seed, rc_sim **out)
+{
+    return make_gas_d(2, frame, n, eta, seed, out, NULL);
 }
 
 /* theta_pv - theta_gamma: mean of NBLK block means over n_snap snapshots spread over
@@ -101,6 +119,7 @@ static double predicted_slope(void)
 }
 
 static const char *contracted_frame = "zmf";
+static double occ_packing = 0.1; /* --packing: of the occupancy count */
 
 /* N = 500 at packing 0.25, ~150 collisions per ball sampled: block errors ~2e-4 against
  * a predicted split of 2.1e-3 (papers/finite-density.md measures 3.97e-3 +- 0.08e-3 at
@@ -131,12 +150,12 @@ static void test_split(void)
 /* --paper: step the engine one event at a time and book the change of sum p.v (in
  * theta_pv units, per unit time) to contact collisions and to overlap-policy ones
  * (rc_sim_diag.overlaps grew), with the standard error of each sum. */
-static void paper(void)
+static void paper(int dim, double t_s)
 {
     const size_t n = 500;
-    const double eta = 0.1, t_eq = 100.0, t_s = 60000.0;
+    const double eta = 0.1, t_eq = 100.0;
     rc_sim *s = NULL;
-    int st = make_gas(contracted_frame, n, eta, 1, &s);
+    int st = make_gas_d(dim, contracted_frame, n, eta, 1, &s, NULL);
     if (st == RC_OK)
         st = rc_sim_advance(s, t_eq, 0);
     rc_sim_diag dg;
@@ -174,11 +193,81 @@ static void paper(void)
         printf("engine error %d\n", st);
         return;
     }
-    const double u = 2.0 * (double)n * t_s;
-    printf("2-D %s, theta %g, packing %g, N %zu, t %g: %ld contact events, %ld overlap-policy "
+    const double u = (double)dim * (double)n * t_s;
+    printf("%d-D %s, theta %g, packing %g, N %zu, t %g: %ld contact events, %ld overlap-policy "
            "events\nd theta_pv/dt from contact events %+.4e +- %.2e, from overlap-policy "
-           "events %+.4e +- %.2e\n", contracted_frame, THETA, eta, n, t_s, cnt[0], cnt[1],
+           "events %+.4e +- %.2e\n", dim, contracted_frame, THETA, eta, n, t_s, cnt[0], cnt[1],
            sum[0] / u, sqrt(sum2[0]) / u, sum[1] / u, sqrt(sum2[1]) / u);
+}
+
+/* --paper, second part: how many pairs overlap at one table time, as a fraction of the
+ * neighbours an uncorrelated gas would put in the excluded regions, n <V>/2 per ball
+ * ((A) of papers/finite-density.md says none). Table-frame shapes, the Perram-Wertheim
+ * test of excluded.h, nearest images; 20 snapshots after t_eq, t_step apart. */
+static void occupancy(int dim, double eta)
+{
+    const size_t n = 500;
+    const double t_eq = 40.0 / eta, t_step = 2.0 / eta;
+    rc_sim *s = NULL;
+    rc_vec3 box;
+    int st = make_gas_d(dim, contracted_frame, n, eta, 3, &s, &box);
+    if (st == RC_OK)
+        st = rc_sim_advance(s, t_eq, 0);
+    rc_sim_ball *b = malloc(n * sizeof *b);
+    const double L[3] = {box.x, box.y, box.z};
+    long over = 0, snaps = 0;
+    for (int k = 0; st == RC_OK && b && k < 20; k++) {
+        st = rc_sim_advance(s, t_eq + t_step * (k + 1), 0);
+        for (size_t i = 0; i < n && st == RC_OK; i++)
+            st = rc_sim_get_ball(s, i, &b[i]);
+        for (size_t i = 0; i < n && st == RC_OK; i++) {
+            const double xi[3] = {b[i].x.x, b[i].x.y, b[i].x.z};
+            const double Ei = sqrt(1.0 + rc_v3_norm2(b[i].p));
+            const double bi[3] = {b[i].p.x / Ei, b[i].p.y / Ei, b[i].p.z / Ei};
+            double Pi[3][3];
+            ex_shape(0.5, bi, Pi);
+            for (size_t j = i + 1; j < n; j++) {
+                const double xj[3] = {b[j].x.x, b[j].x.y, b[j].x.z};
+                double x[3] = {0.0, 0.0, 0.0}, r2 = 0.0;
+                for (int a = 0; a < dim; a++) {
+                    x[a] = xj[a] - xi[a];
+                    x[a] -= L[a] * round(x[a] / L[a]);
+                    r2 += x[a] * x[a];
+                }
+                if (r2 >= 1.0) /* bounding spheres of radius 1/2 apart */
+                    continue;
+                const double Ej = sqrt(1.0 + rc_v3_norm2(b[j].p));
+                const double bj[3] = {b[j].p.x / Ej, b[j].p.y / Ej, b[j].p.z / Ej};
+                double Pj[3][3];
+                ex_shape(0.5, bj, Pj);
+                /* shallower than the engine's round-off scale is touching, not overlap:
+                 * shrink both shapes by 1e-9 */
+                for (int a = 0; a < 3; a++)
+                    for (int c = 0; c < 3; c++)
+                        Pi[a][c] *= 1.0 - 2e-9, Pj[a][c] *= 1.0 - 2e-9;
+                over += ex_pw_overlap(dim, Pi, Pj, x);
+                ex_shape(0.5, bi, Pi);
+            }
+        }
+        snaps++;
+    }
+    rc_sim_free(&s);
+    free(b);
+    if (st != RC_OK || !snaps) {
+        printf("engine error %d\n", st);
+        return;
+    }
+    gsl_integration_glfixed_table *glt = gsl_integration_glfixed_table_alloc(48);
+    const ex_quad q = {512, glt};
+    ex_coef c;
+    ex_coefficients(dim, THETA, 1, 12, dim == 2 ? 32 : 12, &q, &c);
+    gsl_integration_glfixed_table_free(glt);
+    /* n <V>/2 per ball: eta <V>/v_d / 2 */
+    const double expect = eta * c.mean_v / 2.0, per_ball = 2.0 * over / ((double)n * snaps);
+    printf("%d-D %s, theta %g, packing %g, N %zu, %ld snapshots: %.5f overlapping neighbours "
+           "per ball, %.4f of the n <V>/2 = %.4f an uncorrelated gas puts in the excluded "
+           "regions\n", dim, contracted_frame, THETA, eta, n, snaps, per_ball,
+           per_ball / expect, expect);
 }
 
 int main(int argc, char **argv)
@@ -188,11 +277,20 @@ int main(int argc, char **argv)
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--paper") == 0)
             do_paper = 1;
+        else if (strcmp(argv[i], "--occupancy") == 0)
+            do_paper = 2;
         else if (strcmp(argv[i], "--frame") == 0 && i + 1 < argc)
             contracted_frame = argv[++i];
+        else if (strcmp(argv[i], "--packing") == 0 && i + 1 < argc)
+            occ_packing = atof(argv[++i]);
     }
     if (do_paper) {
-        paper();
+        occupancy(2, occ_packing);
+        occupancy(3, occ_packing);
+        if (do_paper == 1) {
+            paper(2, 60000.0);
+            paper(3, 30000.0);
+        }
         return 0;
     }
     RUN_TEST(test_split);
