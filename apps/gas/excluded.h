@@ -116,16 +116,104 @@ static inline double ex_volume_3d(double r1, const double b1[3], double r2, cons
     return s * (2.0 * M_PI / naz) / 3.0;
 }
 
+/* 2-D: the area of relative table-time positions r (ball 2 minus ball 1, both at one
+ * table time) that a contact decided in the pair's ZMF forbids, for equal rest radii r0
+ * and velocities b1, b2 (|b| < 1). Seen from the ZMF (velocity u, Lorentz factor g), the
+ * two table-time events are not simultaneous: ball 2's is at ZMF time t2 = -g u.r. The
+ * pair has collided, or is colliding, if at some ZMF time between the two events its
+ * ZMF sections overlap, i.e. if the relative position at ZMF time s t2, A_s r with
+ * A_s = B + g ((1 - s) v2 + s v1) u^T (B = I + (g - 1) uh uh^T, v1, v2 the ZMF
+ * velocities), lies in K* (the Minkowski sum of the shapes contracted along v1, v2) for
+ * some s in [0, 1]. That set is star-shaped about 0: its area is 1/2 Int rho^2 dphi with
+ * rho(e) = 1 / min_s |A_s e|_K* (the gauge |x|_K = max_n n.x / h_K(n), scanned over
+ * nphi normals; the minimum over s of a convex function of s by golden section). With
+ * tab != NULL also *tab = the area of its intersection with the table-frame Minkowski
+ * sum (both star-shaped about 0: 1/2 Int min(rho, rho_table)^2 dphi). */
+static inline double ex_area_zmf_2d(double r0, const double b1[2], const double b2[2], int nphi,
+                                    double *tab)
+{
+    const double g1 = 1.0 / sqrt((1.0 - b1[0] * b1[0] - b1[1] * b1[1])),
+                 g2 = 1.0 / sqrt((1.0 - b2[0] * b2[0] - b2[1] * b2[1]));
+    const double p1[2] = {g1 * b1[0], g1 * b1[1]}, p2[2] = {g2 * b2[0], g2 * b2[1]};
+    const double u[2] = {(p1[0] + p2[0]) / (g1 + g2), (p1[1] + p2[1]) / (g1 + g2)};
+    const double uu = sqrt(u[0] * u[0] + u[1] * u[1]), gu = 1.0 / sqrt(1.0 - uu * uu);
+    const double uh[2] = {uu > 0.0 ? u[0] / uu : 1.0, uu > 0.0 ? u[1] / uu : 0.0};
+    double v[2][2]; /* ZMF velocities */
+    const double *pp[2] = {p1, p2}, ee[2] = {g1, g2};
+    for (int i = 0; i < 2; i++) {
+        const double up = uh[0] * pp[i][0] + uh[1] * pp[i][1];
+        const double E = gu * (ee[i] - (u[0] * pp[i][0] + u[1] * pp[i][1]));
+        const double f = (gu - 1.0) * up - gu * ee[i] * uu;
+        v[i][0] = (pp[i][0] + f * uh[0]) / E;
+        v[i][1] = (pp[i][1] + f * uh[1]) / E;
+    }
+    double *hz = malloc(2 * (size_t)nphi * sizeof *hz), *ht = hz ? hz + nphi : NULL;
+    if (!hz)
+        return NAN;
+    for (int k = 0; k < nphi; k++) {
+        const double c = cos(2.0 * M_PI * k / nphi), si = sin(2.0 * M_PI * k / nphi);
+        double hs = 0.0, hh = 0.0;
+        for (int i = 0; i < 2; i++) {
+            const double a = v[i][0] * c + v[i][1] * si;
+            hs += r0 * sqrt((1.0 - a) * (1.0 + a));
+        }
+        const double a1 = b1[0] * c + b1[1] * si, a2 = b2[0] * c + b2[1] * si;
+        hh = r0 * (sqrt((1.0 - a1) * (1.0 + a1)) + sqrt((1.0 - a2) * (1.0 + a2)));
+        hz[k] = hs;
+        ht[k] = hh;
+    }
+    double area = 0.0, inter = 0.0;
+    for (int j = 0; j < nphi; j++) {
+        const double e[2] = {cos(2.0 * M_PI * j / nphi), sin(2.0 * M_PI * j / nphi)};
+        /* A_s e = B e + g (v2 + s (v1 - v2)) (u.e) */
+        const double ue = u[0] * e[0] + u[1] * e[1], be = (gu - 1.0) * (uh[0] * e[0] + uh[1] * e[1]);
+        const double a0[2] = {e[0] + be * uh[0] + gu * v[1][0] * ue, e[1] + be * uh[1] + gu * v[1][1] * ue};
+        const double a1[2] = {gu * (v[0][0] - v[1][0]) * ue, gu * (v[0][1] - v[1][1]) * ue};
+        double lo = 0.0, hi = 1.0, best = INFINITY;
+        const double gr = 0.5 * (sqrt(5.0) - 1.0);
+        for (int it = 0; it < 40; it++) {
+            const double sa = hi - gr * (hi - lo), sb = lo + gr * (hi - lo);
+            double ga = 0.0, gb = 0.0;
+            for (int k = 0; k < nphi; k++) {
+                const double c = cos(2.0 * M_PI * k / nphi), si = sin(2.0 * M_PI * k / nphi);
+                const double xa = (a0[0] + sa * a1[0]) * c + (a0[1] + sa * a1[1]) * si;
+                const double xb = (a0[0] + sb * a1[0]) * c + (a0[1] + sb * a1[1]) * si;
+                ga = fmax(ga, xa / hz[k]);
+                gb = fmax(gb, xb / hz[k]);
+            }
+            best = fmin(best, fmin(ga, gb));
+            if (ga < gb)
+                hi = sb;
+            else
+                lo = sa;
+        }
+        double gt = 0.0; /* the table-frame sum's gauge of e */
+        for (int k = 0; k < nphi; k++)
+            gt = fmax(gt, (e[0] * cos(2.0 * M_PI * k / nphi) + e[1] * sin(2.0 * M_PI * k / nphi)) / ht[k]);
+        const double rz = 1.0 / best, rt = 1.0 / gt;
+        area += rz * rz;
+        inter += fmin(rz, rt) * fmin(rz, rt);
+    }
+    free(hz);
+    if (tab)
+        *tab = 0.5 * inter * (2.0 * M_PI / nphi);
+    return 0.5 * area * (2.0 * M_PI / nphi);
+}
+
 /* Excluded area (d = 2) or volume (d = 3) of two balls of rest radius r with velocities
- * b1, b2 (components beyond d ignored); nq: nphi in 2-D, glt in 3-D. */
+ * b1, b2 (components beyond d ignored); nq: nphi in 2-D, glt in 3-D; zmf != 0 (2-D only):
+ * the area ex_area_zmf_2d forbids instead of the table-frame Minkowski sum. */
 typedef struct ex_quad {
     int nphi;                                  /* 2-D trapezoid nodes */
     const gsl_integration_glfixed_table *glt;  /* 3-D Gauss-Legendre table */
+    int zmf;                                   /* 2-D: the zmf contact's forbidden area */
 } ex_quad;
 
 static inline double ex_excluded(int d, double r, const double b1[3], const double b2[3],
                                  const ex_quad *q)
 {
+    if (d == 2 && q->zmf)
+        return ex_area_zmf_2d(r, b1, b2, q->nphi, NULL);
     return d == 2 ? ex_area_2d(r, b1, r, b2, q->nphi) : ex_volume_3d(r, b1, r, b2, q->glt);
 }
 

@@ -111,7 +111,7 @@ static int split(const char *frame, size_t n, double eta, double t_eq, double t_
 static double predicted_slope(void)
 {
     gsl_integration_glfixed_table *glt = gsl_integration_glfixed_table_alloc(8);
-    const ex_quad q = {512, glt};
+    const ex_quad q = {512, glt, 0};
     ex_coef c;
     const int st = ex_coefficients(2, THETA, 1, 12, 32, &q, &c);
     gsl_integration_glfixed_table_free(glt);
@@ -258,7 +258,7 @@ static void occupancy(int dim, double eta)
         return;
     }
     gsl_integration_glfixed_table *glt = gsl_integration_glfixed_table_alloc(48);
-    const ex_quad q = {512, glt};
+    const ex_quad q = {512, glt, 0};
     ex_coef c;
     ex_coefficients(dim, THETA, 1, 12, dim == 2 ? 32 : 12, &q, &c);
     gsl_integration_glfixed_table_free(glt);
