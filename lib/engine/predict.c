@@ -39,6 +39,23 @@ __attribute__((always_inline)) static inline double pair_time(const rc_sim *s,
     return pair_time_dx(s, bi, bk, dx, rc_v3_norm2(dx), tref, best, s->narrow, n);
 }
 
+/* per_ball frames: is the contact event X, found t after tref, on the future side of
+ * both balls' last hyperplanes? y = X - (bi's centre at tref), dx = bk - bi at tref
+ * (nearest image). With x_k the kink on a ball's stored line and v its velocity, X -
+ * x_k = dX + v (t_X - t_k), dX = X - centre(t_X), so t_X - t_k >= kappa.(X - x_k) reads
+ * (t_X - t_k)(1 - kappa.v) >= kappa.dX (1 - kappa.v > 0: |kappa| < 1/c). No kink yet:
+ * t_k = -inf, always true. */
+static int glue_valid(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
+                      double tref, double t, rc_vec3 y)
+{
+    const double tx = tref + t;
+    const rc_vec3 dxi = rc_v3_axpy(y, -t, bi->v);
+    const rc_vec3 dxk = rc_v3_sub(y, rc_v3_axpy(dx, t, bk->v));
+    const eng_cov *ci = &s->cov[bi - s->b], *ck = &s->cov[bk - s->b];
+    return (tx - ci->t_k) * (1.0 - rc_v3_dot(ci->kappa, bi->v)) >= rc_v3_dot(ci->kappa, dxi) &&
+           (tx - ck->t_k) * (1.0 - rc_v3_dot(ck->kappa, bk->v)) >= rc_v3_dot(ck->kappa, dxk);
+}
+
 /* The same from the separation dx (and its square d2) at time tref. */
 __attribute__((always_inline)) static inline double pair_time_dx(
     const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx, double d2, double tref,
@@ -89,6 +106,18 @@ __attribute__((always_inline)) static inline double pair_time_dx(
         }
         if (flip)
             out.n = rc_v3_scale(-1.0, out.n);
+        if (st == RC_OK && s->glue &&
+            !glue_valid(s, bi, bk, dx, tref, out.t,
+                        rc_v3_add(out.x, flip ? dx : rc_v3(0.0, 0.0, 0.0)))) {
+            /* a contact with the incoming piece of a glued tube: not one the model's
+             * schedule can order; the overlap policy at its time (counted) */
+            ta = tref + out.t;
+            ta = ta < s->now ? s->now : ta;
+            if (!(ta < best))
+                return INFINITY;
+            *n = rc_v3(NAN, 1.0, 0.0);
+            return ta;
+        }
         if (st == RC_EOVERLAP) {
             if (parting)
                 return INFINITY; /* overlap policy: a pair whose bounding spheres part is
@@ -290,8 +319,9 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
             const int32_t kk = nb[j];
             if (chk && near && kk != chk->partner) {
                 double tref;
-                const rc_vec3 dx = pair_sep(s, bi, &s->b[kk], &tref);
-                if (narrow_conflict(s, bi, &s->b[kk], dx, rc_v3_norm2(dx), chk, NULL))
+                const eng_ball *bc = chk->at ? chk->at : bi; /* (at T, before the kink) */
+                const rc_vec3 dx = pair_sep(s, bc, &s->b[kk], &tref);
+                if (narrow_conflict(s, bc, &s->b[kk], dx, rc_v3_norm2(dx), chk, NULL))
                     return 1;
             }
             double tj = t[j];
@@ -514,7 +544,7 @@ void eng_settle(rc_sim *s, int32_t i)
  * (the heap is not updated) and 0. */
 int eng_predict_checked_narrow(rc_sim *s, int32_t i, const eng_check *chk)
 {
-    const eng_ball *bi = &s->b[i];
+    const eng_ball *bi = chk->at ? chk->at : &s->b[i]; /* (for the checks: at T) */
     int c[3];
     cell_coords(&s->g, s->a[i].cell, c);
     const unsigned walls = boundary_dims(s, c);
@@ -659,4 +689,24 @@ int eng_narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_ve
                            double d2, const eng_check *chk, rc_vec3 *normal)
 {
     return narrow_conflict(s, bi, bk, dx, d2, chk, normal);
+}
+
+int eng_contact_event(rc_sim *s, int32_t i, int32_t k, double *tx, rc_vec3 *dxi)
+{
+    /* pair_time_dx's frame call, in its orientation */
+    const eng_ball *bi = &s->b[i], *bk = &s->b[k];
+    double tref;
+    const rc_vec3 dx = pair_sep(s, bi, bk, &tref);
+    const int flip = dx.x < 0.0 || (dx.x == 0.0 && (dx.y < 0.0 || (dx.y == 0.0 && dx.z < 0.0)));
+    const eng_ball *b0 = flip ? bk : bi, *b1 = flip ? bi : bk;
+    const eng_aux *a0 = &s->a[b0 - s->b], *a1 = &s->a[b1 - s->b];
+    const rc_toi_ball A = {rc_v3(0, 0, 0), b0->r, a0->m, a0->p};
+    const rc_toi_ball B = {flip ? rc_v3_scale(-1.0, dx) : dx, b1->r, a1->m, a1->p};
+    rc_toi_contact out;
+    const int st = s->def.frame->toi(&s->toi, &A, &B, s->ws, &out);
+    if (st != RC_OK)
+        return st;
+    *tx = tref + out.t;
+    *dxi = rc_v3_axpy(rc_v3_add(out.x, flip ? dx : rc_v3(0.0, 0.0, 0.0)), -out.t, bi->v);
+    return RC_OK;
 }

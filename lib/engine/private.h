@@ -45,6 +45,18 @@ typedef struct eng_clock {
     double tau_last; /* proper time of the last collision (-inf: none yet) */
 } eng_clock;
 
+/* A per_ball frame's glued world tubes (papers/shape-change.md), cold, one 64-byte line
+ * per ball: the hyperplane H that began the ball's current segment, t - t_k = kappa.(y -
+ * x_k), through its last kink (t_k, x_k) -- x_k its centre at t_k on the stored line, so
+ * nothing here moves when the ball wraps or is advanced; t_k = -inf, kappa = 0 before its
+ * first collision. A contact of the model lies on the future side of both balls' H. */
+typedef struct eng_cov {
+    double t_k;
+    rc_vec3 kappa;
+    double pad[4];
+} eng_cov;
+_Static_assert(sizeof(eng_cov) == 64, "one cache line per record");
+
 /* The event queue (engine/queue.c): one entry per ball, popped in (time, ball) order.
  * (Functions shared between the engine files carry eng_: exported, not public.) */
 typedef struct eng_qent {
@@ -213,6 +225,11 @@ typedef struct eng_books {
     uint64_t max_group;
     uint64_t group_fallbacks;
     uint64_t group_sequential;
+    /* per_ball frames: predicted contacts on the incoming side of a ball's last hyperplane
+     * (the incoming piece of a glued tube: resolved by the overlap policy, counted in
+     * overlaps too), and kinks that would have come before the ball's previous one along
+     * its worldline (put at the previous one) */
+    uint64_t tube_conflicts, order_conflicts;
     /* progress: the time of the last event and how many events in a row came at it; when
      * that count passes eng_stall_limit the run stops (RC_ESTALL), naming the event's
      * balls (caller's index; a wall w as -1 - w; -2^62 none) */
@@ -220,7 +237,7 @@ typedef struct eng_books {
     uint64_t still_count;
     int64_t stall_ball, stall_partner;
 } eng_books;
-_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 24 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 4),
+_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 24 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 2 + 4),
                "no padding in the bookkeeping");
 
 struct rc_sim {
@@ -253,6 +270,11 @@ struct rc_sim {
      * frame found the shapes overlapping), so that resolving the event need not ask the
      * frame again */
     rc_vec3 *ev_n;
+    /* per_ball frames only (else NULL): per ball, its glued tube's last hyperplane */
+    eng_cov *cov;
+    /* the per-ball kinks are in force: cov != NULL and c finite (with 1/c^2 = 0 every kink
+     * is its contact event, kappa = 0, and the one-instant path is that model exactly) */
+    int glue;
     eng_queue q;
     eng_cells g;
     rc_collision_params prm;
@@ -391,6 +413,9 @@ typedef struct eng_check {
     rc_particle old;
     rc_vec3 vold;
     int32_t partner;
+    /* the ball's record at T before the collision when its stored one has moved to its
+     * own kink (per_ball frames), else NULL: the stored one is at T */
+    const eng_ball *at;
 } eng_check;
 
 /* Prediction for ball i just resolved at T (uncontracted frames / contracted ones), that
@@ -408,6 +433,11 @@ int eng_narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_ve
  * states, s->a) to after[]. */
 void eng_moments_add(rc_sim *s, size_t nm, const int32_t *mem, const rc_particle *before,
                      const rc_particle *after);
+/* per_ball frames: the contact event of balls i and k from their stored states, as the
+ * prediction found it (the same frame call, the same bits): *tx its table time (not
+ * clamped to now), *dxi = X - (i's centre at *tx on its stored line). RC_OK or the frame's
+ * code. */
+int eng_contact_event(rc_sim *s, int32_t i, int32_t k, double *tx, rc_vec3 *dxi);
 /* Support distance of ball i's shape along the wall normal e_d. */
 double eng_wall_support(const rc_sim *s, int32_t i, int d);
 
