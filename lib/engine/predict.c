@@ -56,6 +56,58 @@ static int glue_valid(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, r
            (tx - ck->t_k) * (1.0 - rc_v3_dot(ck->kappa, bk->v)) >= rc_v3_dot(ck->kappa, dxk);
 }
 
+/* per_ball frames: a ball whose kink lies ahead of now is stored at it, on its outgoing
+ * line; that line's cylinder is the ball's tube on the future side of its hyperplane,
+ * which can meet a neighbour before the kink's time. So the frame is asked from the
+ * earlier clock, not before now (a contact there is on the extension beyond the tube
+ * unless glue_valid says otherwise), rather than from the later one, from which a
+ * contact in between would look like an overlap. A function of the two stored states
+ * and now; the same bits whichever ball asks (dx, and the shift, change sign exactly). */
+static inline void glue_reference(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
+                                  rc_vec3 *dx, double *tref)
+{
+    if (!(*tref > s->now))
+        return;
+    double t0 = bi->t < bk->t ? bi->t : bk->t;
+    t0 = t0 > s->now ? t0 : s->now;
+    *dx = rc_v3_axpy(*dx, t0 - *tref, rc_v3_sub(bk->v, bi->v));
+    *tref = t0;
+}
+
+/* The frame's contact of bi and bk from separation dx at time tref, in pair_time_dx's
+ * orientation: out->n from bi to bk, out->x = X - (bi's centre at tref). */
+static int frame_call(const rc_sim *cs, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
+                      rc_toi_contact *out)
+{
+    rc_sim *s = (rc_sim *)cs; /* (the workspace is scratch) */
+    const int flip = dx.x < 0.0 || (dx.x == 0.0 && (dx.y < 0.0 || (dx.y == 0.0 && dx.z < 0.0)));
+    const eng_ball *b0 = flip ? bk : bi, *b1 = flip ? bi : bk;
+    const eng_aux *a0 = &s->a[b0 - s->b], *a1 = &s->a[b1 - s->b];
+    const rc_toi_ball A = {rc_v3(0, 0, 0), b0->r, a0->m, a0->p};
+    const rc_toi_ball B = {flip ? rc_v3_scale(-1.0, dx) : dx, b1->r, a1->m, a1->p};
+    const int st = s->def.frame->toi(&s->toi, &A, &B, s->ws, out);
+    if (st == RC_OK && flip) {
+        out->n = rc_v3_scale(-1.0, out->n);
+        out->x = rc_v3_add(out->x, dx);
+    }
+    return st;
+}
+
+/* per_ball frames: the pair's contact from its stored states (dx, *tref: pair_sep's),
+ * asked from glue_reference's time (returned in *tref, the time the answer is relative
+ * to); *valid: glue_valid's verdict. (Asked again from the later clock, where the stored
+ * states are the balls' own, a contact found on the incoming side of a hyperplane or an
+ * overlap gave in a dense gas no contact of the model either: the contact is then with
+ * the part of the ball that H has not reached yet.) */
+static int glue_contact(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
+                        double *tref, rc_toi_contact *out, int *valid)
+{
+    glue_reference(s, bi, bk, &dx, tref);
+    const int st = frame_call(s, bi, bk, dx, out);
+    *valid = st == RC_OK && glue_valid(s, bi, bk, dx, *tref, out->t, out->x);
+    return st;
+}
+
 /* The same from the separation dx (and its square d2) at time tref. */
 __attribute__((always_inline)) static inline double pair_time_dx(
     const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx, double d2, double tref,
@@ -80,7 +132,36 @@ __attribute__((always_inline)) static inline double pair_time_dx(
             return INFINITY;
         parting = 1;
     }
-    if (use_narrow) {
+    if (use_narrow && s->glue) {
+        /* per_ball frames: the contact event, checked against both balls' hyperplanes */
+        rc_toi_contact out;
+        int valid = 0;
+        const int st = glue_contact(s, bi, bk, dx, &tref, &out, &valid);
+        if (st == RC_OK && !valid) {
+            /* a contact with the incoming piece of a glued tube: not one the model's
+             * schedule can order; the overlap policy at its time (counted) */
+            ta = tref + out.t;
+            ta = ta < s->now ? s->now : ta;
+            if (!(ta < best))
+                return INFINITY;
+            *n = rc_v3(NAN, 1.0, 0.0);
+            return ta;
+        }
+        if (st == RC_EOVERLAP) {
+            if (parting)
+                return INFINITY;
+            *n = rc_v3(NAN, NAN, NAN);
+            return s->now;
+        }
+        if (st != RC_OK)
+            return INFINITY;
+        *n = out.n;
+        ta = tref + out.t;
+        if (ta < s->now)
+            ta = s->now;
+        if (!(ta < best))
+            return INFINITY;
+    } else if (use_narrow) {
         /* narrow phase: the contracted shapes inside the bounding spheres. The frames'
          * root finds are not symmetric in their two shapes (about half of all pairs get
          * other bits with the roles swapped), so the pair is put to the frame in one
@@ -106,18 +187,6 @@ __attribute__((always_inline)) static inline double pair_time_dx(
         }
         if (flip)
             out.n = rc_v3_scale(-1.0, out.n);
-        if (st == RC_OK && s->glue &&
-            !glue_valid(s, bi, bk, dx, tref, out.t,
-                        rc_v3_add(out.x, flip ? dx : rc_v3(0.0, 0.0, 0.0)))) {
-            /* a contact with the incoming piece of a glued tube: not one the model's
-             * schedule can order; the overlap policy at its time (counted) */
-            ta = tref + out.t;
-            ta = ta < s->now ? s->now : ta;
-            if (!(ta < best))
-                return INFINITY;
-            *n = rc_v3(NAN, 1.0, 0.0);
-            return ta;
-        }
         if (st == RC_EOVERLAP) {
             if (parting)
                 return INFINITY; /* overlap policy: a pair whose bounding spheres part is
@@ -693,20 +762,16 @@ int eng_narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_ve
 
 int eng_contact_event(rc_sim *s, int32_t i, int32_t k, double *tx, rc_vec3 *dxi)
 {
-    /* pair_time_dx's frame call, in its orientation */
+    /* pair_time_dx's call, with the same bits */
     const eng_ball *bi = &s->b[i], *bk = &s->b[k];
     double tref;
     const rc_vec3 dx = pair_sep(s, bi, bk, &tref);
-    const int flip = dx.x < 0.0 || (dx.x == 0.0 && (dx.y < 0.0 || (dx.y == 0.0 && dx.z < 0.0)));
-    const eng_ball *b0 = flip ? bk : bi, *b1 = flip ? bi : bk;
-    const eng_aux *a0 = &s->a[b0 - s->b], *a1 = &s->a[b1 - s->b];
-    const rc_toi_ball A = {rc_v3(0, 0, 0), b0->r, a0->m, a0->p};
-    const rc_toi_ball B = {flip ? rc_v3_scale(-1.0, dx) : dx, b1->r, a1->m, a1->p};
     rc_toi_contact out;
-    const int st = s->def.frame->toi(&s->toi, &A, &B, s->ws, &out);
+    int valid;
+    const int st = glue_contact(s, bi, bk, dx, &tref, &out, &valid);
     if (st != RC_OK)
         return st;
     *tx = tref + out.t;
-    *dxi = rc_v3_axpy(rc_v3_add(out.x, flip ? dx : rc_v3(0.0, 0.0, 0.0)), -out.t, bi->v);
+    *dxi = rc_v3_axpy(out.x, -out.t, bi->v);
     return RC_OK;
 }
