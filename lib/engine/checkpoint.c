@@ -163,8 +163,10 @@ static void write_all(const rc_sim *s, ck_cursor *c, const int32_t *next)
         put(c, s->ev_n, n * sizeof *s->ev_n);
     if (s->img) /* (periodic boxes: the wrap counters) */
         put(c, s->img, 3 * n * sizeof *s->img);
-    if (s->cov) /* (per_ball frames: the glued tubes' hyperplanes) */
+    if (s->cov) { /* (per_ball frames: the glued tubes' hyperplanes and tubes) */
         put(c, s->cov, n * sizeof *s->cov);
+        put(c, s->glu, n * sizeof *s->glu);
+    }
     if (n) {
         put(c, s->g.slot, s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot);
         put(c, next, n * sizeof *next);
@@ -215,6 +217,11 @@ static int check_ball(const rc_sim *s, size_t k)
     if (s->cov && (isnan(s->cov[k].t_k) || s->cov[k].t_k == INFINITY ||
                    !rc_v3_isfinite(s->cov[k].kappa) ||
                    !(rc_v3_norm2(s->cov[k].kappa) * s->def.c * s->def.c < 1.0 || isinf(s->def.c))))
+        return RC_ECORRUPT;
+    if (s->glu && s->glu[k].r != 0.0 &&
+        (s->glu[k].r != b->r || !isfinite(s->glu[k].t_c) || !isfinite(s->glu[k].t_first) ||
+         !isfinite(s->glu[k].t_last) || !rc_v3_isfinite(s->glu[k].x_c) ||
+         !rc_v3_isfinite(s->glu[k].kappa) || !(s->glu[k].inv_c2 == s->inv_c2)))
         return RC_ECORRUPT;
     /* v is derived from p and m, the same way every time the engine sets it */
     const rc_vec3 v = rc_v3_scale(1.0 / eng_mass_rel(a->m, a->p, s->inv_c2), a->p);
@@ -341,7 +348,7 @@ static int read_all(rc_sim *s, ck_cursor *c)
         get(c, s->cnt, n * sizeof *s->cnt) ||
         (s->ev_n && get(c, s->ev_n, n * sizeof *s->ev_n)) ||
         (s->img && get(c, s->img, 3 * n * sizeof *s->img)) ||
-        (s->cov && get(c, s->cov, n * sizeof *s->cov)))
+        (s->cov && (get(c, s->cov, n * sizeof *s->cov) || get(c, s->glu, n * sizeof *s->glu))))
         return RC_ECORRUPT;
     if (n && (get(c, s->g.slot, s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot) ||
               get(c, s->g.next, n * sizeof *s->g.next)))

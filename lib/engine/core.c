@@ -48,9 +48,14 @@ static void glue_kink(rc_sim *s, int32_t b, const rc_particle *in, const rc_part
     const rc_vec3 Wv = rc_v3_add(rc_v3_scale(1.0 / in->m, in->p), rc_v3_scale(1.0 / out->m, out->p));
     const rc_vec3 kappa = rc_v3_scale(ic2 / W0, Wv);
     double te = tx - rc_v3_dot(kappa, dx) / (1.0 - rc_v3_dot(kappa, s->b[b].v));
+    /* the tube, for a neighbour met while the ball is in its window (X at the origin) */
+    if (rc_glue_make(ic2, s->b[b].r, in, out, tx, rc_v3_scale(-1.0, dx), rc_v3(0.0, 0.0, 0.0),
+                     &s->glu[b]) != RC_OK)
+        s->glu[b].r = 0.0;
     if (!(te >= cv->t_k)) {
         te = cv->t_k;
         s->bk.order_conflicts++;
+        s->glu[b].r = 0.0; /* (the stored line is no longer the tube's outgoing one) */
     }
     advance_ball(s, b, te);
     cv->t_k = te;
@@ -283,6 +288,7 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T, const double *
     eng_ball bat[2];
     eng_clock cat[2];
     eng_cov gat[2];
+    rc_glue uat[2];
     const uint64_t oc_before = s->bk.order_conflicts;
     double k0 = 0.0;
     rc_vec3 p0 = rc_v3(0, 0, 0);
@@ -309,6 +315,7 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T, const double *
             bat[j] = s->b[b];
             cat[j] = s->clk[b];
             gat[j] = s->cov[b];
+            uat[j] = s->glu[b];
             glue_kink(s, b, &P[j], &Q[j], tx[j], dX[j]);
         }
         s->a[b].m = Q[j].m;
@@ -338,6 +345,7 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T, const double *
                 s->b[b] = bat[j];
                 s->clk[b] = cat[j];
                 s->cov[b] = gat[j];
+                s->glu[b] = uat[j];
             }
         }
         s->bk.events[RC_SIM_EV_TC] = tc_before;
@@ -679,8 +687,11 @@ static void reorder(rc_sim *s)
         const rc_vec3 zero = rc_v3(0, 0, 0);
         rc_vec3 cn = s->ev_n ? s->ev_n[i] : zero;
         eng_cov cg;
-        if (s->cov)
+        rc_glue cu;
+        if (s->cov) {
             cg = s->cov[i];
+            cu = s->glu[i];
+        }
         eng_ball cb = s->b[i];
         eng_aux ca = s->a[i];
         eng_clock cc = s->clk[i];
@@ -709,6 +720,9 @@ static void reorder(rc_sim *s)
                 const eng_cov tg = s->cov[to];
                 s->cov[to] = cg;
                 cg = tg;
+                const rc_glue tu = s->glu[to];
+                s->glu[to] = cu;
+                cu = tu;
             }
             s->b[to] = cb;
             s->a[to] = ca;

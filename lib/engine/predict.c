@@ -93,6 +93,56 @@ static int frame_call(const rc_sim *cs, const eng_ball *bi, const eng_ball *bk, 
     return st;
 }
 
+/* X on the future side of one ball's last hyperplane (glue_valid for one ball; dxb = X -
+ * its centre at tx on its stored line). */
+static inline int glue_side(const eng_cov *c, rc_vec3 v, double tx, rc_vec3 dxb)
+{
+    return (tx - c->t_k) * (1.0 - rc_v3_dot(c->kappa, v)) >= rc_v3_dot(c->kappa, dxb);
+}
+
+/* per_ball frames: the contact of bi and bk (separation dx at t1) when exactly one of
+ * them is inside its glue window at t1 (H has not swept all of it): the first contact of
+ * the other, a rigid ball, with that one's glued tube (rc_glue_toi: the tube's incoming
+ * piece before H, the outgoing one after it), where the straight cylinder of the stored
+ * (outgoing) line overlapped or met the other on the incoming side of H. Its time is the
+ * first table time of contact, the table frame's criterion for the pieces (a ZMF version
+ * is not built). RC_OK (out as frame_call's, *valid: on the outgoing piece or on H, and
+ * on the future side of the other ball's H), RC_MISS (the tube is not met), RC_EOVERLAP,
+ * or -1: neither or both balls in a window. */
+static int window_contact(const rc_sim *cs, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
+                          double t1, rc_toi_contact *out, int *valid)
+{
+    rc_sim *s = (rc_sim *)cs; /* (the workspace is scratch) */
+    const size_t i = (size_t)(bi - s->b), k = (size_t)(bk - s->b);
+    const rc_glue *gi = &s->glu[i], *gk = &s->glu[k];
+    const int wi = gi->r > 0.0 && t1 < gi->t_last, wk = gk->r > 0.0 && t1 < gk->t_last;
+    if (wi == wk)
+        return -1;
+    const rc_glue *g = wi ? gi : gk;
+    const eng_ball *bg = wi ? bi : bk, *bo = wi ? bk : bi;
+    const eng_aux *ao = &s->a[bo - s->b];
+    /* the glued ball's centre at t1 on its outgoing line, in the tube's coordinates */
+    const rc_vec3 cg = rc_v3_axpy(g->x_c, t1 - g->t_c, bg->v);
+    const rc_vec3 ci = wi ? cg : rc_v3_sub(cg, dx); /* bi's, there */
+    const rc_toi_ball K = {wi ? rc_v3_add(cg, dx) : ci, bo->r, ao->m, ao->p};
+    double t;
+    rc_vec3 y, n;
+    int piece;
+    const int st = rc_glue_toi(g, &s->toi, s->ws, t1, &K, &t, &y, &n, &piece);
+    if (st != RC_OK)
+        return st;
+    out->t = t - t1;
+    out->x = rc_v3_sub(y, ci);
+    out->n = wi ? n : rc_v3_scale(-1.0, n);
+    /* the other ball's side: X - its centre at t */
+    const eng_cov *co = &s->cov[bo - s->b];
+    const rc_vec3 dxo = rc_v3_sub(rc_v3_axpy(out->x, -out->t, bi->v),
+                                  wi ? rc_v3_axpy(dx, out->t, rc_v3_sub(bk->v, bi->v))
+                                     : rc_v3(0.0, 0.0, 0.0));
+    *valid = piece != 0 && glue_side(co, bo->v, t, dxo);
+    return RC_OK;
+}
+
 /* per_ball frames: the pair's contact from its stored states (dx, *tref: pair_sep's),
  * asked from glue_reference's time (returned in *tref, the time the answer is relative
  * to); *valid: glue_valid's verdict. (Asked again from the later clock, where the stored
@@ -105,6 +155,18 @@ static int glue_contact(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
     glue_reference(s, bi, bk, &dx, tref);
     const int st = frame_call(s, bi, bk, dx, out);
     *valid = st == RC_OK && glue_valid(s, bi, bk, dx, *tref, out->t, out->x);
+    if (st == RC_EOVERLAP || (st == RC_OK && !*valid)) {
+        /* the straight cylinder is not the tube inside a window: ask the tube */
+        rc_toi_contact o2;
+        int v2 = 0;
+        const int w = window_contact(s, bi, bk, dx, *tref, &o2, &v2);
+        if (w == RC_OK) {
+            *out = o2;
+            *valid = v2;
+        }
+        if (w == RC_OK || w == RC_MISS || w == RC_EOVERLAP)
+            return w;
+    }
     return st;
 }
 

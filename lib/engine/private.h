@@ -272,6 +272,11 @@ struct rc_sim {
     rc_vec3 *ev_n;
     /* per_ball frames only (else NULL): per ball, its glued tube's last hyperplane */
     eng_cov *cov;
+    /* per_ball frames only (else NULL): per ball, the glued tube of its last kink in
+     * coordinates with the contact event at the origin (rc_glue_make), for a neighbour's
+     * contact while the ball is in its window; r = 0: none (no kink yet, or one put at
+     * the previous kink by the order rule) */
+    rc_glue *glu;
     /* the per-ball kinks are in force: cov != NULL and c finite (with 1/c^2 = 0 every kink
      * is its contact event, kappa = 0, and the one-instant path is that model exactly) */
     int glue;

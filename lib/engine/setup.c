@@ -182,6 +182,8 @@ static void release_balls(rc_sim *s)
     s->ev_n = NULL;
     free(s->cov);
     s->cov = NULL;
+    free(s->glu);
+    s->glu = NULL;
     free(s->img);
     s->img = NULL;
     s->b = NULL;
@@ -383,7 +385,8 @@ int eng_alloc_state(rc_sim *s, size_t n, double rmax)
     }
     if (s->narrow && s->def.frame->per_ball) {
         /* no kink yet: every contact is on the future side of a ball's (absent) plane */
-        if (!(s->cov = eng_alloc(n * sizeof *s->cov))) {
+        if (!(s->cov = eng_alloc(n * sizeof *s->cov)) ||
+            !(s->glu = calloc(n ? n : 1, sizeof *s->glu))) {
             st = RC_ENOMEM;
             goto fail;
         }
