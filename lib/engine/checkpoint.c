@@ -215,6 +215,7 @@ static int check_ball(const rc_sim *s, size_t k)
     if (dim == 2 && (b->x.z != 0.0 || a->p.z != 0.0))
         return RC_ECORRUPT;
     if (s->cov && (isnan(s->cov[k].t_k) || s->cov[k].t_k == INFINITY ||
+                   !isfinite(s->cov[k].ev_tx) || !rc_v3_isfinite(s->cov[k].ev_dx) ||
                    !rc_v3_isfinite(s->cov[k].kappa) ||
                    !(rc_v3_norm2(s->cov[k].kappa) * s->def.c * s->def.c < 1.0 || isinf(s->def.c))))
         return RC_ECORRUPT;

@@ -394,8 +394,11 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
     if (s->glue) {
         if (bp >= 0) {
             const rc_vec3 n = s->ev_n[i];
-            if (!isnan(n.x))
-                have_x = eng_contact_event(s, i, bp, &tx[0], &dX[0]) == RC_OK;
+            if (!isnan(n.x)) { /* (as the prediction found it) */
+                tx[0] = s->cov[i].ev_tx;
+                dX[0] = s->cov[i].ev_dx;
+                have_x = 1;
+            }
             else if (n.y == 1.0)
                 s->bk.tube_conflicts++;
         } else {

@@ -223,6 +223,9 @@ __attribute__((always_inline)) static inline double pair_time_dx(
             ta = s->now;
         if (!(ta < best))
             return INFINITY;
+        rc_sim *w = (rc_sim *)s; /* (scratch: the event's X, kept if it becomes the best) */
+        w->sc_tx = tref + out.t;
+        w->sc_dx = rc_v3_axpy(out.x, -out.t, bi->v);
     } else if (use_narrow) {
         /* narrow phase: the contracted shapes inside the bounding spheres. The frames'
          * root finds are not symmetric in their two shapes (about half of all pairs get
@@ -477,6 +480,8 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
                         *best = tn;
                         *bp = kk;
                         *bn = n;
+                        s->bx_tx = s->sc_tx;
+                        s->bx_dx = s->sc_dx;
                         if (df)
                             df->on = 0;
                     }
@@ -567,6 +572,8 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
             *best = t;
             *bp = k;
             *bn = n;
+            s->bx_tx = s->sc_tx;
+            s->bx_dx = s->sc_dx;
         }
     }
     return 0;
@@ -601,6 +608,10 @@ static inline void store_event(rc_sim *s, int32_t i, double best, int32_t bp, rc
         s->ev_n[i] = df && df->on && bp >= 0 ? ev_deferred_mark(df->lb2)
                      : ev_is_deferred(bn)    ? rc_v3(0.0, 0.0, 0.0)
                                              : bn;
+    if (s->cov && bp >= 0 && !isnan(bn.x)) { /* (per_ball frames: the event's X) */
+        s->cov[i].ev_tx = s->bx_tx;
+        s->cov[i].ev_dx = s->bx_dx;
+    }
 }
 
 /* Walls (dims) for a deferred event too: a wall before its bound is the event, one
@@ -797,6 +808,10 @@ void eng_cross(rc_sim *s, int32_t i)
     double best = a->ev_t;
     int32_t bp = a->ev_partner;
     rc_vec3 bn = s->ev_n ? s->ev_n[i] : rc_v3(0, 0, 0);
+    if (s->cov) { /* (the kept event's X, unless a scan finds a better one) */
+        s->bx_tx = s->cov[i].ev_tx;
+        s->bx_dx = s->cov[i].ev_dx;
+    }
     eng_defer df = {s->defer && bp >= 0 && ev_is_deferred(bn), bn.x};
     int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
     lo[d] = hi[d] = dir;
@@ -820,20 +835,4 @@ int eng_narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_ve
                            double d2, const eng_check *chk, rc_vec3 *normal)
 {
     return narrow_conflict(s, bi, bk, dx, d2, chk, normal);
-}
-
-int eng_contact_event(rc_sim *s, int32_t i, int32_t k, double *tx, rc_vec3 *dxi)
-{
-    /* pair_time_dx's call, with the same bits */
-    const eng_ball *bi = &s->b[i], *bk = &s->b[k];
-    double tref;
-    const rc_vec3 dx = pair_sep(s, bi, bk, &tref);
-    rc_toi_contact out;
-    int valid;
-    const int st = glue_contact(s, bi, bk, dx, &tref, &out, &valid);
-    if (st != RC_OK)
-        return st;
-    *tx = tref + out.t;
-    *dxi = rc_v3_axpy(out.x, -out.t, bi->v);
-    return RC_OK;
 }

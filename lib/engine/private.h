@@ -53,7 +53,11 @@ typedef struct eng_clock {
 typedef struct eng_cov {
     double t_k;
     rc_vec3 kappa;
-    double pad[4];
+    /* the contact event X of the ball's scheduled ball event, as its prediction found it
+     * (a collision reads it rather than asking the frame again, whose reference time
+     * depends on now): its table time and X - (the ball's centre then on its stored line) */
+    double ev_tx;
+    rc_vec3 ev_dx;
 } eng_cov;
 _Static_assert(sizeof(eng_cov) == 64, "one cache line per record");
 
@@ -277,6 +281,11 @@ struct rc_sim {
      * contact while the ball is in its window; r = 0: none (no kink yet, or one put at
      * the previous kink by the order rule) */
     rc_glue *glu;
+    /* per_ball frames: scratch of the prediction -- the contact event of the pair last
+     * put to the frame (pair_time_dx) and of the best event so far (scan_block_narrow),
+     * as eng_cov.ev_tx / ev_dx */
+    double sc_tx, bx_tx;
+    rc_vec3 sc_dx, bx_dx;
     /* the per-ball kinks are in force: cov != NULL and c finite (with 1/c^2 = 0 every kink
      * is its contact event, kappa = 0, and the one-instant path is that model exactly) */
     int glue;
@@ -438,11 +447,6 @@ int eng_narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_ve
  * states, s->a) to after[]. */
 void eng_moments_add(rc_sim *s, size_t nm, const int32_t *mem, const rc_particle *before,
                      const rc_particle *after);
-/* per_ball frames: the contact event of balls i and k from their stored states, as the
- * prediction found it (the same frame call, the same bits): *tx its table time (not
- * clamped to now), *dxi = X - (i's centre at *tx on its stored line). RC_OK or the frame's
- * code. */
-int eng_contact_event(rc_sim *s, int32_t i, int32_t k, double *tx, rc_vec3 *dxi);
 /* Support distance of ball i's shape along the wall normal e_d. */
 double eng_wall_support(const rc_sim *s, int32_t i, int d);
 

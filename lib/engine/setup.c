@@ -391,7 +391,7 @@ int eng_alloc_state(rc_sim *s, size_t n, double rmax)
             goto fail;
         }
         for (size_t k = 0; k < n; k++)
-            s->cov[k] = (eng_cov){-INFINITY, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0, 0.0}};
+            s->cov[k] = (eng_cov){-INFINITY, {0.0, 0.0, 0.0}, 0.0, {0.0, 0.0, 0.0}};
     }
     if (s->periodic && !(s->img = eng_alloc(3 * n * sizeof *s->img))) {
         st = RC_ENOMEM;
