@@ -316,7 +316,10 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T, const double *
             cat[j] = s->clk[b];
             gat[j] = s->cov[b];
             uat[j] = s->glu[b];
-            glue_kink(s, b, &P[j], &Q[j], tx[j], dX[j]);
+            /* (no change, no kink: a contact the law found nothing to resolve keeps the
+             * ball's line and its hyperplane) */
+            if (Q[j].m != P[j].m || memcmp(&Q[j].p, &P[j].p, sizeof Q[j].p) != 0)
+                glue_kink(s, b, &P[j], &Q[j], tx[j], dX[j]);
         }
         s->a[b].m = Q[j].m;
         s->a[b].p = Q[j].p;

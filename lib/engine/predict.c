@@ -198,10 +198,16 @@ __attribute__((always_inline)) static inline double pair_time_dx(
         /* per_ball frames: the contact event, checked against both balls' hyperplanes */
         rc_toi_contact out;
         int valid = 0;
+        const double pref = tref; /* (dx is at pref; glue_contact may move tref) */
         const int st = glue_contact(s, bi, bk, dx, &tref, &out, &valid);
         if (st == RC_OK && !valid) {
             /* a contact with the incoming piece of a glued tube: not one the model's
-             * schedule can order; the overlap policy at its time (counted) */
+             * schedule can order; the overlap policy at its time (counted), if the
+             * centres approach there (else, as for an overlap, left to separate: the
+             * policy's centre-line law would find nothing to resolve) */
+            const rc_vec3 dv = rc_v3_sub(bk->v, bi->v);
+            if (!(rc_v3_dot(rc_v3_axpy(dx, tref + out.t - pref, dv), dv) < 0.0))
+                return INFINITY;
             ta = tref + out.t;
             ta = ta < s->now ? s->now : ta;
             if (!(ta < best))
