@@ -230,7 +230,10 @@ typedef struct rc_sim_diag {
      * the engine's; events are still popped in table-time order, keyed max(t_X, now).
      * tube_conflicts: predicted contacts on the incoming side of a ball's last H (with
      * the incoming piece of its glued tube, which the table-time schedule cannot order):
-     * resolved by the overlap policy, counted in overlaps too (a wall's as kind [1]).
+     * resolved by the overlap policy, counted in overlaps too (a wall's as kind [1]);
+     * one whose centres part there is left to separate. Where the straight cylinder of
+     * a ball's stored line overlaps or meets a neighbour inside the ball's window, its
+     * glued tube is asked instead (rc_glue_toi: first table time of contact).
      * order_conflicts: a model rule -- a kink that would come before the ball's previous
      * kink along its worldline (successive hyperplanes cross inside the tube: collisions
      * less than a glue window apart, where the glued tube of the two is not defined) is
