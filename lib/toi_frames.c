@@ -87,6 +87,7 @@ const rc_toi_frame *const rc_toi_frames[] = {
     &rc_toi_frame_zmf,
     &rc_toi_frame_sphere,
     &rc_toi_frame_transport,
+    &rc_toi_frame_covariant,
     NULL,
 };
 

@@ -7,6 +7,11 @@
 #include "relcol/toi.h"
 #include "shape_math.h"
 
+/* The zmf frame's kernel (lib/toi_zmf.c), shared with the covariant frame, whose pair
+ * contact is the same event. */
+int rc_toi_zmf_(const rc_toi_params *prm, const rc_toi_ball *a, const rc_toi_ball *b,
+                rc_toi_workspace *ws, rc_toi_contact *out);
+
 /* Shape of a ball state whose relativistic mass M = sqrt(m^2 + p^2/c^2) is known, given
  * 1/c (sqrt(inv_c2)) as well (for callers that make many shapes). */
 static inline rc_toi_shape rc_toi_shape_Mc_(double r, double m, rc_vec3 p, double inv_c,

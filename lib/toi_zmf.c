@@ -23,8 +23,8 @@ static rc_vec3 boost_velocity_correction(rc_vec3 v, rc_vec3 u, double gu, double
     return rc_v3_scale(1.0 / (1.0 - uv * k), num);
 }
 
-static int zmf_toi(const rc_toi_params *prm, const rc_toi_ball *a, const rc_toi_ball *b,
-                   rc_toi_workspace *ws, rc_toi_contact *out)
+int rc_toi_zmf_(const rc_toi_params *prm, const rc_toi_ball *a, const rc_toi_ball *b,
+                rc_toi_workspace *ws, rc_toi_contact *out)
 {
     const double k = rc_inv_c2_of(prm->c);
     const double M0 = rc_mass_rel(a->m, a->p, k), M1 = rc_mass_rel(b->m, b->p, k);
@@ -85,7 +85,7 @@ static int zmf_toi(const rc_toi_params *prm, const rc_toi_ball *a, const rc_toi_
 const rc_toi_frame rc_toi_frame_zmf = {
     .name = "zmf",
     .summary = "contact found in the pair's zero-momentum frame, event and normal boosted back",
-    .toi = zmf_toi,
+    .toi = rc_toi_zmf_,
     .wall_contracted = 1,
     .contracted = 1,
     .covariant = 1,

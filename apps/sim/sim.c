@@ -29,7 +29,7 @@ static void usage(FILE *f)
 {
     fprintf(f,
 "usage: relcol-sim SCENARIO.json | --builtin rack|gas  [--out DIR] [--t-end T]\n"
-"                  [--no-plots] [--dump]\n"
+"                  [--frame NAME] [--no-plots] [--dump]\n"
 "\n"
 "Run an event-driven simulation of hard balls at any c (see apps/sim/SCENARIO.md for the\n"
 "scenario format; data/scenarios/ has examples, --builtin NAME runs one of them).\n"
@@ -38,6 +38,7 @@ static void usage(FILE *f)
 "                  gas: 400 discs at packing 0.2, rms speed 0.5 c, c = 1\n"
 "  --out DIR       output folder (overrides outputs.dir)\n"
 "  --t-end T       run until T (overrides t_end)\n"
+"  --frame NAME    contact frame (overrides contact_frame; listed below)\n"
 "  --no-plots      write data only, no gnuplot figures\n"
 "  --dump          print the scenario as relcol reads it (JSON) and exit\n"
 "\n"
@@ -60,6 +61,9 @@ static void usage(FILE *f)
     fprintf(f, "\nSimultaneous contacts (scenario key \"groups\"; found in the table frame):\n");
     for (int r = 0; rc_group_rule_name(r); r++)
         fprintf(f, "  %-13s %s\n", rc_group_rule_name(r), rc_group_rule_summary(r));
+    fprintf(f, "\nContact frames (scenario key \"contact_frame\", option --frame):\n");
+    for (size_t i = 0; rc_toi_frames[i]; i++)
+        fprintf(f, "  %-13s %s\n", rc_toi_frames[i]->name, rc_toi_frames[i]->summary);
 }
 
 /* "relcol-sim: message" on stderr, returning the exit status code */
@@ -155,7 +159,7 @@ static double now(void)
 int main(int argc, char **argv)
 {
     app_init(prog);
-    const char *file = NULL, *builtin = NULL, *out_dir = NULL;
+    const char *file = NULL, *builtin = NULL, *out_dir = NULL, *frame = NULL;
     double t_end = NAN;
     int no_plots = 0, dump = 0;
     char err[APP_ERR_LEN];
@@ -165,11 +169,14 @@ int main(int argc, char **argv)
             return app_help(usage);
         } else if (!strcmp(a, "--version")) {
             return app_version();
-        } else if (!strcmp(a, "--builtin") || !strcmp(a, "--out") || !strcmp(a, "--t-end")) {
+        } else if (!strcmp(a, "--builtin") || !strcmp(a, "--out") || !strcmp(a, "--t-end") ||
+                   !strcmp(a, "--frame")) {
             if (i + 1 >= argc)
                 return fail(2, "option %s: needs a value", a);
             const char *v = argv[++i];
-            if (!strcmp(a, "--builtin"))
+            if (!strcmp(a, "--frame"))
+                frame = v;
+            else if (!strcmp(a, "--builtin"))
                 builtin = v;
             else if (!strcmp(a, "--out"))
                 out_dir = v;
@@ -199,6 +206,14 @@ int main(int argc, char **argv)
             return fail(2, "option --t-end: must be later than the start time %g", s.time);
         }
         s.t_end = t_end;
+    }
+    if (frame) {
+        const rc_toi_frame *fr = rc_toi_frame_find(frame);
+        if (!fr) {
+            scn_free(&s);
+            return fail(2, "option --frame: unknown contact frame '%s' (see --help)", frame);
+        }
+        s.frame = fr;
     }
     if (out_dir) {
         free(s.out.dir);

@@ -19,7 +19,8 @@
 #include "relcol/status.h"
 
 #define CK_MAGIC "relcolck"
-#define CK_VERSION 3u /* 2: the bookkeeping as one record (eng_books); 3: with pinned and the transfer moments */
+#define CK_VERSION 4u /* 2: the bookkeeping as one record (eng_books); 3: with pinned and the
+                         transfer moments; 4: with the per_ball counters and hyperplanes */
 #define CK_ORDER 0x01020304u
 
 typedef struct ck_header {
@@ -162,6 +163,10 @@ static void write_all(const rc_sim *s, ck_cursor *c, const int32_t *next)
         put(c, s->ev_n, n * sizeof *s->ev_n);
     if (s->img) /* (periodic boxes: the wrap counters) */
         put(c, s->img, 3 * n * sizeof *s->img);
+    if (s->cov) { /* (per_ball frames: the glued tubes' hyperplanes and tubes) */
+        put(c, s->cov, n * sizeof *s->cov);
+        put(c, s->glu, n * sizeof *s->glu);
+    }
     if (n) {
         put(c, s->g.slot, s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot);
         put(c, next, n * sizeof *next);
@@ -201,11 +206,23 @@ static int check_ball(const rc_sim *s, size_t k)
     const eng_aux *a = &s->a[k];
     const eng_clock *t = &s->clk[k];
     const int dim = s->def.dim;
-    if (!rc_v3_isfinite(b->x) || !rc_v3_isfinite(b->v) || !isfinite(b->t) || !(b->t <= s->now) ||
+    /* (a per_ball ball's clock may be at its last kink, after now) */
+    if (!rc_v3_isfinite(b->x) || !rc_v3_isfinite(b->v) || !isfinite(b->t) ||
+        !(b->t <= s->now || s->cov) ||
         !isfinite(b->r) || !(b->r > 0.0) || !rc_v3_isfinite(a->p) || !isfinite(a->m) ||
         !(a->m > 0.0) || !isfinite(t->tau) || isnan(t->tau_last) || t->tau_last == INFINITY)
         return RC_ECORRUPT;
     if (dim == 2 && (b->x.z != 0.0 || a->p.z != 0.0))
+        return RC_ECORRUPT;
+    if (s->cov && (isnan(s->cov[k].t_k) || s->cov[k].t_k == INFINITY ||
+                   !isfinite(s->cov[k].ev_tx) || !rc_v3_isfinite(s->cov[k].ev_dx) ||
+                   !rc_v3_isfinite(s->cov[k].kappa) ||
+                   !(rc_v3_norm2(s->cov[k].kappa) * s->def.c * s->def.c < 1.0 || isinf(s->def.c))))
+        return RC_ECORRUPT;
+    if (s->glu && s->glu[k].r != 0.0 &&
+        (s->glu[k].r != b->r || !isfinite(s->glu[k].t_c) || !isfinite(s->glu[k].t_first) ||
+         !isfinite(s->glu[k].t_last) || !rc_v3_isfinite(s->glu[k].x_c) ||
+         !rc_v3_isfinite(s->glu[k].kappa) || !(s->glu[k].inv_c2 == s->inv_c2)))
         return RC_ECORRUPT;
     /* v is derived from p and m, the same way every time the engine sets it */
     const rc_vec3 v = rc_v3_scale(1.0 / eng_mass_rel(a->m, a->p, s->inv_c2), a->p);
@@ -331,7 +348,8 @@ static int read_all(rc_sim *s, ck_cursor *c)
         get(c, s->clk, n * sizeof *s->clk) || get(c, s->id, n * sizeof *s->id) ||
         get(c, s->cnt, n * sizeof *s->cnt) ||
         (s->ev_n && get(c, s->ev_n, n * sizeof *s->ev_n)) ||
-        (s->img && get(c, s->img, 3 * n * sizeof *s->img)))
+        (s->img && get(c, s->img, 3 * n * sizeof *s->img)) ||
+        (s->cov && (get(c, s->cov, n * sizeof *s->cov) || get(c, s->glu, n * sizeof *s->glu))))
         return RC_ECORRUPT;
     if (n && (get(c, s->g.slot, s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot) ||
               get(c, s->g.next, n * sizeof *s->g.next)))

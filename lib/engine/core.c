@@ -28,6 +28,40 @@ static void advance_ball(rc_sim *s, int32_t i, double T)
     b->t = T;
 }
 
+/* per_ball frames: ball b's velocity changes from `in` to `out` through the contact event
+ * X at table time tx, dx = X - (its centre at tx on its stored line), which is still the
+ * incoming one (papers/shape-change.md, section 2): its kink is where the hyperplane H
+ * through X with normal u_in + u_out, t - tx = kappa.(y - X), meets that line, at
+ * t_E = tx - kappa.dx / (1 - kappa.v_in). The stored state is moved there (backwards or
+ * forwards along the incoming line; the caller then writes the outgoing momentum) and H
+ * is kept as the start of the new segment. A kink before the ball's previous one along
+ * its worldline (successive hyperplanes crossing inside the tube: collisions less than a
+ * glue window apart, where the glued tube of the two is not defined) is a model rule:
+ * the change is put at the previous kink, and counted. */
+static void glue_kink(rc_sim *s, int32_t b, const rc_particle *in, const rc_particle *out,
+                      double tx, rc_vec3 dx)
+{
+    eng_cov *cv = &s->cov[b];
+    const double ic2 = s->inv_c2;
+    /* kappa = (g0 v0 + g1 v1) / (c^2 (g0 + g1)), g v = p / m, g = M / m (as rc_glue_make) */
+    const double W0 = eng_mass_rel(in->m, in->p, ic2) / in->m + eng_mass_rel(out->m, out->p, ic2) / out->m;
+    const rc_vec3 Wv = rc_v3_add(rc_v3_scale(1.0 / in->m, in->p), rc_v3_scale(1.0 / out->m, out->p));
+    const rc_vec3 kappa = rc_v3_scale(ic2 / W0, Wv);
+    double te = tx - rc_v3_dot(kappa, dx) / (1.0 - rc_v3_dot(kappa, s->b[b].v));
+    /* the tube, for a neighbour met while the ball is in its window (X at the origin) */
+    if (rc_glue_make(ic2, s->b[b].r, in, out, tx, rc_v3_scale(-1.0, dx), rc_v3(0.0, 0.0, 0.0),
+                     &s->glu[b]) != RC_OK)
+        s->glu[b].r = 0.0;
+    if (!(te >= cv->t_k)) {
+        te = cv->t_k;
+        s->bk.order_conflicts++;
+        s->glu[b].r = 0.0; /* (the stored line is no longer the tube's outgoing one) */
+    }
+    advance_ball(s, b, te);
+    cv->t_k = te;
+    cv->kappa = kappa;
+}
+
 static int grow(void **p, size_t *cap, size_t need, size_t elem)
 {
     if (need <= *cap)
@@ -150,7 +184,7 @@ static int grow_group(rc_sim *s, size_t *nm, size_t *nc, double T)
                         if (s->narrow) {
                             /* contracted shapes: the same contact test as the
                              * single-contact path's, on the states as they are */
-                            const eng_check now = {{s->a[i].m, s->a[i].p}, bi->v, ENG_NONE};
+                            const eng_check now = {{s->a[i].m, s->a[i].p}, bi->v, ENG_NONE, NULL};
                             if (!eng_narrow_conflict(s, bi, bk, dx, d2, &now, &n))
                                 continue;
                         }
@@ -245,10 +279,17 @@ static int resolve_contact(rc_sim *s, rc_particle *P, const rc_contact *c)
  * while checking that no other contact was simultaneous with it; if one was, undo
  * (return 0) so the caller resolves the whole group. 1 when done; the law's failure
  * (negative, nothing written back). */
-static int try_single(rc_sim *s, size_t nm, int32_t bp, double T)
+static int try_single(rc_sim *s, size_t nm, int32_t bp, double T, const double *tx,
+                      const rc_vec3 *dX)
 {
     rc_particle *P = s->grp_part;
     rc_vec3 vold[2];
+    /* per_ball frames: the records at T before the kinks, to undo and to check from */
+    eng_ball bat[2];
+    eng_clock cat[2];
+    eng_cov gat[2];
+    rc_glue uat[2];
+    const uint64_t oc_before = s->bk.order_conflicts;
     double k0 = 0.0;
     rc_vec3 p0 = rc_v3(0, 0, 0);
     for (size_t j = 0; j < nm; j++) {
@@ -270,6 +311,16 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T)
     }
     for (size_t j = 0; j < nm; j++) {
         int32_t b = s->grp_ball[j];
+        if (s->glue) {
+            bat[j] = s->b[b];
+            cat[j] = s->clk[b];
+            gat[j] = s->cov[b];
+            uat[j] = s->glu[b];
+            /* (no change, no kink: a contact the law found nothing to resolve keeps the
+             * ball's line and its hyperplane) */
+            if (Q[j].m != P[j].m || memcmp(&Q[j].p, &P[j].p, sizeof Q[j].p) != 0)
+                glue_kink(s, b, &P[j], &Q[j], tx[j], dX[j]);
+        }
         s->a[b].m = Q[j].m;
         s->a[b].p = Q[j].p;
         s->b[b].v = rc_v3_scale(1.0 / eng_mass_rel(Q[j].m, Q[j].p, s->inv_c2), Q[j].p);
@@ -280,7 +331,7 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T)
         int32_t b = s->grp_ball[j];
         int32_t partner = nm > 1 ? s->grp_ball[1 - j] : bp;
         if (s->narrow) {
-            const eng_check chk = {P[j], vold[j], partner};
+            const eng_check chk = {P[j], vold[j], partner, s->glue ? &bat[j] : NULL};
             conflict = eng_predict_checked_narrow(s, b, &chk);
         } else {
             conflict = eng_predict_checked(s, b, vold[j], partner, T);
@@ -293,8 +344,15 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T)
             s->a[b].p = P[j].p;
             s->b[b].v = vold[j];
             s->cnt[b]--;
+            if (s->glue) {
+                s->b[b] = bat[j];
+                s->clk[b] = cat[j];
+                s->cov[b] = gat[j];
+                s->glu[b] = uat[j];
+            }
         }
         s->bk.events[RC_SIM_EV_TC] = tc_before;
+        s->bk.order_conflicts = oc_before;
         return 0;
     }
     eng_moments_add(s, nm, s->grp_ball, P, Q);
@@ -306,11 +364,56 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T)
 
 /* Resolve the collision of ball i with partner bp (ball or wall) at time T, with every
  * simultaneous contact. */
+/* per_ball frames: ball i's wall contact w from its stored state, *tx its time (not
+ * clamped to now), *dx = X - (centre at *tx): the support point of its shape along the
+ * wall normal n, P n / h(n) with P = r^2 (I - beta beta^T). 1 if X is on the future side
+ * of the ball's last hyperplane (a contact of the model), else 0. */
+static int wall_event_point(rc_sim *s, int32_t i, int w, double *tx, rc_vec3 *dx)
+{
+    const eng_ball *b = &s->b[i];
+    const int d = w / 2, up = w & 1;
+    const double h = eng_wall_support(s, i, d), x = rc_v3_get(b->x, d), v = rc_v3_get(b->v, d);
+    *tx = b->t + (up ? s->L[d] - h - x : x - h) / (up ? v : -v);
+    const rc_vec3 beta = rc_v3_scale(s->inv_c, b->v);
+    rc_vec3 e = rc_v3(0, 0, 0);
+    rc_v3_set(&e, d, up ? 1.0 : -1.0);
+    const double bn = rc_v3_get(beta, d) * (up ? 1.0 : -1.0);
+    *dx = rc_v3_scale(b->r * b->r / h, rc_v3_axpy(e, -bn, beta));
+    const eng_cov *cv = &s->cov[i];
+    return (*tx - cv->t_k) * (1.0 - rc_v3_dot(cv->kappa, b->v)) >= rc_v3_dot(cv->kappa, *dx);
+}
+
 static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
 {
     size_t nm = 0, nc = 0;
     rc_vec3 n0;
     int frame_normal = 0;
+    /* per_ball frames: each ball's contact event (time, offset from its centre), read
+     * before the balls are advanced (the stored states the prediction saw); the overlap
+     * policy's kinks are at T, through the centre */
+    double tx[2] = {T, T};
+    rc_vec3 dX[2] = {rc_v3(0, 0, 0), rc_v3(0, 0, 0)};
+    int have_x = 0, wall_tube = 0;
+    if (s->glue) {
+        if (bp >= 0) {
+            const rc_vec3 n = s->ev_n[i];
+            if (!isnan(n.x)) { /* (as the prediction found it) */
+                tx[0] = s->cov[i].ev_tx;
+                dX[0] = s->cov[i].ev_dx;
+                have_x = 1;
+            }
+            else if (n.y == 1.0)
+                s->bk.tube_conflicts++;
+        } else {
+            have_x = wall_event_point(s, i, ENG_WALL_INDEX(bp), &tx[0], &dX[0]);
+            wall_tube = !have_x;
+            if (wall_tube) {
+                s->bk.tube_conflicts++;
+                tx[0] = T;
+                dX[0] = rc_v3(0, 0, 0);
+            }
+        }
+    }
     if (bp >= 0 && s->narrow) {
         /* The frame's normal at contact: the one its call that predicted this event
          * returned with the time (both stored states are unchanged since, the counters
@@ -333,6 +436,10 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
             return RC_ENOMEM;
         rc_vec3 dx = eng_image(s, rc_v3_sub(s->b[bp].x, s->b[i].x));
         double len = rc_v3_norm(dx);
+        if (have_x) { /* X from bp's centre at tx: both are at T now */
+            tx[1] = tx[0];
+            dX[1] = rc_v3_sub(dX[0], rc_v3_axpy(dx, tx[0] - T, rc_v3_sub(s->b[bp].v, s->b[i].v)));
+        }
         if (!frame_normal)
             n0 = len > 0.0 ? rc_v3_scale(1.0 / len, dx) : rc_v3(1.0, 0.0, 0.0);
         if (!s->narrow && len < (s->b[i].r + s->b[bp].r) * (1.0 - s->def.overlap_tol)) {
@@ -347,9 +454,14 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
         rc_v3_set(&n0, d, (w & 1) ? 1.0 : -1.0);
         if (add_contact(s, &nc, 0, bp, n0) != RC_OK)
             return RC_ENOMEM;
+        const uint64_t ov = s->bk.overlaps;
         count_overlaps(s, 0, 1); /* (before the collision changes the shape) */
+        if (wall_tube && s->bk.overlaps == ov) { /* (the overlap policy decides it) */
+            s->bk.overlaps++;
+            s->bk.overlap_kind[1]++;
+        }
     }
-    const int single = try_single(s, nm, bp, T);
+    const int single = try_single(s, nm, bp, T, tx, dX);
     if (single != 0)
         return single > 0 ? RC_OK : single;
     if (s->def.sim_tol > 0.0) {
@@ -450,10 +562,12 @@ static double contact_eps(rc_sim *s, const rc_contact *c)
         s->bk.pinned += rc_v3_dot(s->a[s->grp_ball[c->a]].p, c->n) > 0.0;
         return 0.0;
     }
-    int tc = aa->tau - aa->tau_last < s->def.t_c;
+    /* (t_c > 0: a per_ball ball may be at a time before its last kink, its proper time
+     * since it negative) */
+    int tc = s->def.t_c > 0.0 && aa->tau - aa->tau_last < s->def.t_c;
     if (!wall) {
         const eng_clock *ab = &s->clk[s->grp_ball[c->b]];
-        tc = tc || ab->tau - ab->tau_last < s->def.t_c;
+        tc = tc || (s->def.t_c > 0.0 && ab->tau - ab->tau_last < s->def.t_c);
     }
     const double eps = wall ? s->def.eps_wall : s->def.eps_ball;
     s->bk.events[RC_SIM_EV_TC] += (uint64_t)(tc && eps != 1.0);
@@ -513,6 +627,11 @@ static void finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int k
         eng_aux *a = &s->a[b];
         k1 += kinetic(&P[j], s->inv_c2);
         p1 = rc_v3_add(p1, P[j].p);
+        if (!single && s->glue) { /* a group: every kink at the group's time (members are
+                                     there), through the centre */
+            const rc_particle in = {a->m, a->p};
+            glue_kink(s, b, &in, &P[j], s->b[b].t, rc_v3(0, 0, 0));
+        }
         s->clk[b].tau_last = s->clk[b].tau;
         if (!single) {
             a->m = P[j].m;
@@ -573,6 +692,12 @@ static void reorder(rc_sim *s)
             continue;
         const rc_vec3 zero = rc_v3(0, 0, 0);
         rc_vec3 cn = s->ev_n ? s->ev_n[i] : zero;
+        eng_cov cg;
+        rc_glue cu;
+        if (s->cov) {
+            cg = s->cov[i];
+            cu = s->glu[i];
+        }
         eng_ball cb = s->b[i];
         eng_aux ca = s->a[i];
         eng_clock cc = s->clk[i];
@@ -597,6 +722,14 @@ static void reorder(rc_sim *s)
             if (s->ev_n)
                 s->ev_n[to] = cn;
             cn = tn;
+            if (s->cov) {
+                const eng_cov tg = s->cov[to];
+                s->cov[to] = cg;
+                cg = tg;
+                const rc_glue tu = s->glu[to];
+                s->glu[to] = cu;
+                cu = tu;
+            }
             s->b[to] = cb;
             s->a[to] = ca;
             s->clk[to] = cc;

@@ -129,6 +129,8 @@ int rc_sim_diagnostics(const rc_sim *s, rc_sim_diag *d)
     d->max_group = s->bk.max_group;
     d->group_fallbacks = s->bk.group_fallbacks;
     d->group_sequential = s->bk.group_sequential;
+    d->tube_conflicts = s->bk.tube_conflicts;
+    d->order_conflicts = s->bk.order_conflicts;
     d->stall_ball = s->bk.stall_ball;
     d->stall_partner = s->bk.stall_partner;
     return RC_OK;
@@ -173,7 +175,8 @@ size_t rc_sim_bytes(const rc_sim *s)
     return sizeof *s + s->n * (sizeof *s->b + sizeof *s->a + sizeof *s->clk + sizeof *s->g.next +
                                sizeof *s->id + sizeof *s->slot +
                                sizeof *s->cnt + (s->ev_n ? sizeof *s->ev_n : 0) +
-                               (s->img ? 3 * sizeof *s->img : 0)) +
+                               (s->img ? 3 * sizeof *s->img : 0) +
+                               (s->cov ? sizeof *s->cov + sizeof *s->glu : 0)) +
            eng_queue_bytes(&s->q) +
            s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot +
            s->grp_ball_cap * (sizeof *s->grp_ball + sizeof *s->grp_part) +

@@ -39,6 +39,137 @@ __attribute__((always_inline)) static inline double pair_time(const rc_sim *s,
     return pair_time_dx(s, bi, bk, dx, rc_v3_norm2(dx), tref, best, s->narrow, n);
 }
 
+/* per_ball frames: is the contact event X, found t after tref, on the future side of
+ * both balls' last hyperplanes? y = X - (bi's centre at tref), dx = bk - bi at tref
+ * (nearest image). With x_k the kink on a ball's stored line and v its velocity, X -
+ * x_k = dX + v (t_X - t_k), dX = X - centre(t_X), so t_X - t_k >= kappa.(X - x_k) reads
+ * (t_X - t_k)(1 - kappa.v) >= kappa.dX (1 - kappa.v > 0: |kappa| < 1/c). No kink yet:
+ * t_k = -inf, always true. */
+static int glue_valid(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
+                      double tref, double t, rc_vec3 y)
+{
+    const double tx = tref + t;
+    const rc_vec3 dxi = rc_v3_axpy(y, -t, bi->v);
+    const rc_vec3 dxk = rc_v3_sub(y, rc_v3_axpy(dx, t, bk->v));
+    const eng_cov *ci = &s->cov[bi - s->b], *ck = &s->cov[bk - s->b];
+    return (tx - ci->t_k) * (1.0 - rc_v3_dot(ci->kappa, bi->v)) >= rc_v3_dot(ci->kappa, dxi) &&
+           (tx - ck->t_k) * (1.0 - rc_v3_dot(ck->kappa, bk->v)) >= rc_v3_dot(ck->kappa, dxk);
+}
+
+/* per_ball frames: a ball whose kink lies ahead of now is stored at it, on its outgoing
+ * line; that line's cylinder is the ball's tube on the future side of its hyperplane,
+ * which can meet a neighbour before the kink's time. So the frame is asked from the
+ * earlier clock, not before now (a contact there is on the extension beyond the tube
+ * unless glue_valid says otherwise), rather than from the later one, from which a
+ * contact in between would look like an overlap. A function of the two stored states
+ * and now; the same bits whichever ball asks (dx, and the shift, change sign exactly). */
+static inline void glue_reference(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
+                                  rc_vec3 *dx, double *tref)
+{
+    if (!(*tref > s->now))
+        return;
+    double t0 = bi->t < bk->t ? bi->t : bk->t;
+    t0 = t0 > s->now ? t0 : s->now;
+    *dx = rc_v3_axpy(*dx, t0 - *tref, rc_v3_sub(bk->v, bi->v));
+    *tref = t0;
+}
+
+/* The frame's contact of bi and bk from separation dx at time tref, in pair_time_dx's
+ * orientation: out->n from bi to bk, out->x = X - (bi's centre at tref). */
+static int frame_call(const rc_sim *cs, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
+                      rc_toi_contact *out)
+{
+    rc_sim *s = (rc_sim *)cs; /* (the workspace is scratch) */
+    const int flip = dx.x < 0.0 || (dx.x == 0.0 && (dx.y < 0.0 || (dx.y == 0.0 && dx.z < 0.0)));
+    const eng_ball *b0 = flip ? bk : bi, *b1 = flip ? bi : bk;
+    const eng_aux *a0 = &s->a[b0 - s->b], *a1 = &s->a[b1 - s->b];
+    const rc_toi_ball A = {rc_v3(0, 0, 0), b0->r, a0->m, a0->p};
+    const rc_toi_ball B = {flip ? rc_v3_scale(-1.0, dx) : dx, b1->r, a1->m, a1->p};
+    const int st = s->def.frame->toi(&s->toi, &A, &B, s->ws, out);
+    if (st == RC_OK && flip) {
+        out->n = rc_v3_scale(-1.0, out->n);
+        out->x = rc_v3_add(out->x, dx);
+    }
+    return st;
+}
+
+/* X on the future side of one ball's last hyperplane (glue_valid for one ball; dxb = X -
+ * its centre at tx on its stored line). */
+static inline int glue_side(const eng_cov *c, rc_vec3 v, double tx, rc_vec3 dxb)
+{
+    return (tx - c->t_k) * (1.0 - rc_v3_dot(c->kappa, v)) >= rc_v3_dot(c->kappa, dxb);
+}
+
+/* per_ball frames: the contact of bi and bk (separation dx at t1) when exactly one of
+ * them is inside its glue window at t1 (H has not swept all of it): the first contact of
+ * the other, a rigid ball, with that one's glued tube (rc_glue_toi: the tube's incoming
+ * piece before H, the outgoing one after it), where the straight cylinder of the stored
+ * (outgoing) line overlapped or met the other on the incoming side of H. Its time is the
+ * first table time of contact, the table frame's criterion for the pieces (a ZMF version
+ * is not built). RC_OK (out as frame_call's, *valid: on the outgoing piece or on H, and
+ * on the future side of the other ball's H), RC_MISS (the tube is not met), RC_EOVERLAP,
+ * or -1: neither or both balls in a window. */
+static int window_contact(const rc_sim *cs, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
+                          double t1, rc_toi_contact *out, int *valid)
+{
+    rc_sim *s = (rc_sim *)cs; /* (the workspace is scratch) */
+    const size_t i = (size_t)(bi - s->b), k = (size_t)(bk - s->b);
+    const rc_glue *gi = &s->glu[i], *gk = &s->glu[k];
+    const int wi = gi->r > 0.0 && t1 < gi->t_last, wk = gk->r > 0.0 && t1 < gk->t_last;
+    if (wi == wk)
+        return -1;
+    const rc_glue *g = wi ? gi : gk;
+    const eng_ball *bg = wi ? bi : bk, *bo = wi ? bk : bi;
+    const eng_aux *ao = &s->a[bo - s->b];
+    /* the glued ball's centre at t1 on its outgoing line, in the tube's coordinates */
+    const rc_vec3 cg = rc_v3_axpy(g->x_c, t1 - g->t_c, bg->v);
+    const rc_vec3 ci = wi ? cg : rc_v3_sub(cg, dx); /* bi's, there */
+    const rc_toi_ball K = {wi ? rc_v3_add(cg, dx) : ci, bo->r, ao->m, ao->p};
+    double t;
+    rc_vec3 y, n;
+    int piece;
+    const int st = rc_glue_toi(g, &s->toi, s->ws, t1, &K, &t, &y, &n, &piece);
+    if (st != RC_OK)
+        return st;
+    out->t = t - t1;
+    out->x = rc_v3_sub(y, ci);
+    out->n = wi ? n : rc_v3_scale(-1.0, n);
+    /* the other ball's side: X - its centre at t */
+    const eng_cov *co = &s->cov[bo - s->b];
+    const rc_vec3 dxo = rc_v3_sub(rc_v3_axpy(out->x, -out->t, bi->v),
+                                  wi ? rc_v3_axpy(dx, out->t, rc_v3_sub(bk->v, bi->v))
+                                     : rc_v3(0.0, 0.0, 0.0));
+    *valid = piece != 0 && glue_side(co, bo->v, t, dxo);
+    return RC_OK;
+}
+
+/* per_ball frames: the pair's contact from its stored states (dx, *tref: pair_sep's),
+ * asked from glue_reference's time (returned in *tref, the time the answer is relative
+ * to); *valid: glue_valid's verdict. (Asked again from the later clock, where the stored
+ * states are the balls' own, a contact found on the incoming side of a hyperplane or an
+ * overlap gave in a dense gas no contact of the model either: the contact is then with
+ * the part of the ball that H has not reached yet.) */
+static int glue_contact(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
+                        double *tref, rc_toi_contact *out, int *valid)
+{
+    glue_reference(s, bi, bk, &dx, tref);
+    const int st = frame_call(s, bi, bk, dx, out);
+    *valid = st == RC_OK && glue_valid(s, bi, bk, dx, *tref, out->t, out->x);
+    if (st == RC_EOVERLAP || (st == RC_OK && !*valid)) {
+        /* the straight cylinder is not the tube inside a window: ask the tube */
+        rc_toi_contact o2;
+        int v2 = 0;
+        const int w = window_contact(s, bi, bk, dx, *tref, &o2, &v2);
+        if (w == RC_OK) {
+            *out = o2;
+            *valid = v2;
+        }
+        if (w == RC_OK || w == RC_MISS || w == RC_EOVERLAP)
+            return w;
+    }
+    return st;
+}
+
 /* The same from the separation dx (and its square d2) at time tref. */
 __attribute__((always_inline)) static inline double pair_time_dx(
     const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx, double d2, double tref,
@@ -63,7 +194,45 @@ __attribute__((always_inline)) static inline double pair_time_dx(
             return INFINITY;
         parting = 1;
     }
-    if (use_narrow) {
+    if (use_narrow && s->glue) {
+        /* per_ball frames: the contact event, checked against both balls' hyperplanes */
+        rc_toi_contact out;
+        int valid = 0;
+        const double pref = tref; /* (dx is at pref; glue_contact may move tref) */
+        const int st = glue_contact(s, bi, bk, dx, &tref, &out, &valid);
+        if (st == RC_OK && !valid) {
+            /* a contact with the incoming piece of a glued tube: not one the model's
+             * schedule can order; the overlap policy at its time (counted), if the
+             * centres approach there (else, as for an overlap, left to separate: the
+             * policy's centre-line law would find nothing to resolve) */
+            const rc_vec3 dv = rc_v3_sub(bk->v, bi->v);
+            if (!(rc_v3_dot(rc_v3_axpy(dx, tref + out.t - pref, dv), dv) < 0.0))
+                return INFINITY;
+            ta = tref + out.t;
+            ta = ta < s->now ? s->now : ta;
+            if (!(ta < best))
+                return INFINITY;
+            *n = rc_v3(NAN, 1.0, 0.0);
+            return ta;
+        }
+        if (st == RC_EOVERLAP) {
+            if (parting)
+                return INFINITY;
+            *n = rc_v3(NAN, NAN, NAN);
+            return s->now;
+        }
+        if (st != RC_OK)
+            return INFINITY;
+        *n = out.n;
+        ta = tref + out.t;
+        if (ta < s->now)
+            ta = s->now;
+        if (!(ta < best))
+            return INFINITY;
+        rc_sim *w = (rc_sim *)s; /* (scratch: the event's X, kept if it becomes the best) */
+        w->sc_tx = tref + out.t;
+        w->sc_dx = rc_v3_axpy(out.x, -out.t, bi->v);
+    } else if (use_narrow) {
         /* narrow phase: the contracted shapes inside the bounding spheres. The frames'
          * root finds are not symmetric in their two shapes (about half of all pairs get
          * other bits with the roles swapped), so the pair is put to the frame in one
@@ -290,8 +459,9 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
             const int32_t kk = nb[j];
             if (chk && near && kk != chk->partner) {
                 double tref;
-                const rc_vec3 dx = pair_sep(s, bi, &s->b[kk], &tref);
-                if (narrow_conflict(s, bi, &s->b[kk], dx, rc_v3_norm2(dx), chk, NULL))
+                const eng_ball *bc = chk->at ? chk->at : bi; /* (at T, before the kink) */
+                const rc_vec3 dx = pair_sep(s, bc, &s->b[kk], &tref);
+                if (narrow_conflict(s, bc, &s->b[kk], dx, rc_v3_norm2(dx), chk, NULL))
                     return 1;
             }
             double tj = t[j];
@@ -316,6 +486,8 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
                         *best = tn;
                         *bp = kk;
                         *bn = n;
+                        s->bx_tx = s->sc_tx;
+                        s->bx_dx = s->sc_dx;
                         if (df)
                             df->on = 0;
                     }
@@ -406,6 +578,8 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
             *best = t;
             *bp = k;
             *bn = n;
+            s->bx_tx = s->sc_tx;
+            s->bx_dx = s->sc_dx;
         }
     }
     return 0;
@@ -440,6 +614,10 @@ static inline void store_event(rc_sim *s, int32_t i, double best, int32_t bp, rc
         s->ev_n[i] = df && df->on && bp >= 0 ? ev_deferred_mark(df->lb2)
                      : ev_is_deferred(bn)    ? rc_v3(0.0, 0.0, 0.0)
                                              : bn;
+    if (s->cov && bp >= 0 && !isnan(bn.x)) { /* (per_ball frames: the event's X) */
+        s->cov[i].ev_tx = s->bx_tx;
+        s->cov[i].ev_dx = s->bx_dx;
+    }
 }
 
 /* Walls (dims) for a deferred event too: a wall before its bound is the event, one
@@ -514,7 +692,7 @@ void eng_settle(rc_sim *s, int32_t i)
  * (the heap is not updated) and 0. */
 int eng_predict_checked_narrow(rc_sim *s, int32_t i, const eng_check *chk)
 {
-    const eng_ball *bi = &s->b[i];
+    const eng_ball *bi = chk->at ? chk->at : &s->b[i]; /* (for the checks: at T) */
     int c[3];
     cell_coords(&s->g, s->a[i].cell, c);
     const unsigned walls = boundary_dims(s, c);
@@ -636,6 +814,10 @@ void eng_cross(rc_sim *s, int32_t i)
     double best = a->ev_t;
     int32_t bp = a->ev_partner;
     rc_vec3 bn = s->ev_n ? s->ev_n[i] : rc_v3(0, 0, 0);
+    if (s->cov) { /* (the kept event's X, unless a scan finds a better one) */
+        s->bx_tx = s->cov[i].ev_tx;
+        s->bx_dx = s->cov[i].ev_dx;
+    }
     eng_defer df = {s->defer && bp >= 0 && ev_is_deferred(bn), bn.x};
     int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
     lo[d] = hi[d] = dir;

@@ -45,6 +45,22 @@ typedef struct eng_clock {
     double tau_last; /* proper time of the last collision (-inf: none yet) */
 } eng_clock;
 
+/* A per_ball frame's glued world tubes (papers/shape-change.md), cold, one 64-byte line
+ * per ball: the hyperplane H that began the ball's current segment, t - t_k = kappa.(y -
+ * x_k), through its last kink (t_k, x_k) -- x_k its centre at t_k on the stored line, so
+ * nothing here moves when the ball wraps or is advanced; t_k = -inf, kappa = 0 before its
+ * first collision. A contact of the model lies on the future side of both balls' H. */
+typedef struct eng_cov {
+    double t_k;
+    rc_vec3 kappa;
+    /* the contact event X of the ball's scheduled ball event, as its prediction found it
+     * (a collision reads it rather than asking the frame again, whose reference time
+     * depends on now): its table time and X - (the ball's centre then on its stored line) */
+    double ev_tx;
+    rc_vec3 ev_dx;
+} eng_cov;
+_Static_assert(sizeof(eng_cov) == 64, "one cache line per record");
+
 /* The event queue (engine/queue.c): one entry per ball, popped in (time, ball) order.
  * (Functions shared between the engine files carry eng_: exported, not public.) */
 typedef struct eng_qent {
@@ -213,6 +229,11 @@ typedef struct eng_books {
     uint64_t max_group;
     uint64_t group_fallbacks;
     uint64_t group_sequential;
+    /* per_ball frames: predicted contacts on the incoming side of a ball's last hyperplane
+     * (the incoming piece of a glued tube: resolved by the overlap policy, counted in
+     * overlaps too), and kinks that would have come before the ball's previous one along
+     * its worldline (put at the previous one) */
+    uint64_t tube_conflicts, order_conflicts;
     /* progress: the time of the last event and how many events in a row came at it; when
      * that count passes eng_stall_limit the run stops (RC_ESTALL), naming the event's
      * balls (caller's index; a wall w as -1 - w; -2^62 none) */
@@ -220,7 +241,7 @@ typedef struct eng_books {
     uint64_t still_count;
     int64_t stall_ball, stall_partner;
 } eng_books;
-_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 24 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 4),
+_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 24 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 2 + 4),
                "no padding in the bookkeeping");
 
 struct rc_sim {
@@ -253,6 +274,21 @@ struct rc_sim {
      * frame found the shapes overlapping), so that resolving the event need not ask the
      * frame again */
     rc_vec3 *ev_n;
+    /* per_ball frames only (else NULL): per ball, its glued tube's last hyperplane */
+    eng_cov *cov;
+    /* per_ball frames only (else NULL): per ball, the glued tube of its last kink in
+     * coordinates with the contact event at the origin (rc_glue_make), for a neighbour's
+     * contact while the ball is in its window; r = 0: none (no kink yet, or one put at
+     * the previous kink by the order rule) */
+    rc_glue *glu;
+    /* per_ball frames: scratch of the prediction -- the contact event of the pair last
+     * put to the frame (pair_time_dx) and of the best event so far (scan_block_narrow),
+     * as eng_cov.ev_tx / ev_dx */
+    double sc_tx, bx_tx;
+    rc_vec3 sc_dx, bx_dx;
+    /* the per-ball kinks are in force: cov != NULL and c finite (with 1/c^2 = 0 every kink
+     * is its contact event, kappa = 0, and the one-instant path is that model exactly) */
+    int glue;
     eng_queue q;
     eng_cells g;
     rc_collision_params prm;
@@ -391,6 +427,9 @@ typedef struct eng_check {
     rc_particle old;
     rc_vec3 vold;
     int32_t partner;
+    /* the ball's record at T before the collision when its stored one has moved to its
+     * own kink (per_ball frames), else NULL: the stored one is at T */
+    const eng_ball *at;
 } eng_check;
 
 /* Prediction for ball i just resolved at T (uncontracted frames / contracted ones), that

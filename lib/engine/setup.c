@@ -157,6 +157,7 @@ int rc_sim_create(const rc_sim_def *def, rc_sim **out)
         return RC_EINVAL;
     }
     s->wall_contracted = def->frame && def->frame->wall_contracted && s->inv_c2 > 0.0;
+    s->glue = s->narrow && def->frame->per_ball && s->inv_c2 > 0.0;
     if (s->narrow) {
         if (!def->frame->toi || rc_toi_workspace_create(&s->ws) != RC_OK) {
             free(s);
@@ -179,6 +180,10 @@ static void release_balls(rc_sim *s)
     s->cnt = NULL;
     free(s->ev_n);
     s->ev_n = NULL;
+    free(s->cov);
+    s->cov = NULL;
+    free(s->glu);
+    s->glu = NULL;
     free(s->img);
     s->img = NULL;
     s->b = NULL;
@@ -308,6 +313,7 @@ int rc_sim_set_c(rc_sim *s, double c)
     s->prm.c = c;
     s->toi.c = c;
     s->wall_contracted = s->def.frame && s->def.frame->wall_contracted && k > 0.0;
+    s->glue = s->narrow && s->def.frame->per_ball && k > 0.0;
     /* planned afresh, unchecked: the shapes the new c gives may overlap a neighbour or a
      * wall, which the overlap policy resolves (and counts) as for any shape change */
     st = load_balls(s, n, b, NULL, 0);
@@ -318,6 +324,7 @@ int rc_sim_set_c(rc_sim *s, double c)
         s->prm.c = def0.c;
         s->toi.c = def0.c;
         s->wall_contracted = wc0;
+        s->glue = s->narrow && s->def.frame->per_ball && k0 > 0.0;
         if (load_balls(s, n, b, NULL, 0) == RC_OK)
             s->bk = kept;
         free(b);
@@ -375,6 +382,16 @@ int eng_alloc_state(rc_sim *s, size_t n, double rmax)
     if (s->narrow && !(s->ev_n = eng_alloc(n * sizeof *s->ev_n))) {
         st = RC_ENOMEM;
         goto fail;
+    }
+    if (s->narrow && s->def.frame->per_ball) {
+        /* no kink yet: every contact is on the future side of a ball's (absent) plane */
+        if (!(s->cov = eng_alloc(n * sizeof *s->cov)) ||
+            !(s->glu = calloc(n ? n : 1, sizeof *s->glu))) {
+            st = RC_ENOMEM;
+            goto fail;
+        }
+        for (size_t k = 0; k < n; k++)
+            s->cov[k] = (eng_cov){-INFINITY, {0.0, 0.0, 0.0}, 0.0, {0.0, 0.0, 0.0}};
     }
     if (s->periodic && !(s->img = eng_alloc(3 * n * sizeof *s->img))) {
         st = RC_ENOMEM;

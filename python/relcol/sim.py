@@ -344,7 +344,8 @@ class Sim:
         momentum_error (|change of ball momentum + wall impulse| / sum |p|), collisions
         (contacts resolved) and events by kind, overlaps (contacts the overlap policy
         decided) by kind, heat, rest_mass_total, energy, kinetic_energy, momentum,
-        wall_impulse, max_group, group_fallbacks, group_sequential, time."""
+        wall_impulse, max_group, group_fallbacks, group_sequential, time, and for the
+        covariant frame tube_conflicts and order_conflicts (relcol/sim.h)."""
         d, d0 = self._diag(), self._d0
         de = d.energy - d0.energy
         dp = np.array([d.momentum.x + d.wall_impulse.x - d0.momentum.x - d0.wall_impulse.x,
@@ -372,6 +373,8 @@ class Sim:
             "max_group": int(d.max_group),
             "group_fallbacks": int(d.group_fallbacks - d0.group_fallbacks),
             "group_sequential": int(d.group_sequential - d0.group_sequential),
+            "tube_conflicts": int(d.tube_conflicts - d0.tube_conflicts),
+            "order_conflicts": int(d.order_conflicts - d0.order_conflicts),
         }
 
     def hash(self):

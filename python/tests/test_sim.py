@@ -102,3 +102,19 @@ def test_ball_numbers_out_of_range_are_refused_as_relcol_sim_refuses_them():
         relcol.Sim(dim=2, box=[4, 4], balls={"x": [[1, 1]], "r": 1e-160, "m": 1.0})
     # zero positions and momenta are in range
     relcol.Sim(dim=2, box=[4, 4], balls={"x": [[1, 1]], "p": [[0.0, 0.0]], "r": 0.5})
+
+
+def test_covariant_frame_counts_its_conflicts():
+    box, balls = relcol.gas_init(2, 100, 1.0, 0.3, 0.5, c=1.0, seed=3)
+    sim = relcol.Sim(dim=2, box=box, c=1.0, balls=balls, contact_frame="covariant",
+                     boundary="periodic")
+    sim.advance(20.0)
+    d = sim.diagnostics()
+    assert d["collisions"] > 100
+    assert abs(d["energy_error"]) < 1e-12 and d["momentum_error"] < 1e-12
+    # the per-ball conflicts are counted, and a tube conflict is an overlap-policy contact
+    assert 0 <= d["tube_conflicts"] <= d["overlaps"] and d["order_conflicts"] >= 0
+    zmf = relcol.Sim(dim=2, box=box, c=1.0, balls=balls, contact_frame="zmf",
+                     boundary="periodic")
+    zmf.advance(20.0)
+    assert zmf.diagnostics()["tube_conflicts"] == 0 == zmf.diagnostics()["order_conflicts"]

@@ -6,7 +6,8 @@
  * full adds N = 1e6; N, 2d:N, rel:N run one case, timing 20 (rel: 5) collisions a ball or
  * as many as asked; per:N and per2d:N are N and 2d:N in a periodic box (every axis: the
  * box EDMD and most event-driven codes use, so every collision is a pair collision); ratio
- * only the interleaved contracted/classical cost ratio.
+ * only the interleaved contracted/classical cost ratio, and the zmf and covariant frames'
+ * cost per collision against the table frame's.
  * Figures are CPU time of this process (the wall clock on a shared machine is noisier).
  * RELCOL_SIMD (avx512, avx2, scalar) and RELCOL_DEFER=0 force a path (env_choices.h). */
 #include <math.h>
@@ -153,6 +154,18 @@ int main(int argc, char **argv)
         if (ca && ct)
             printf("relativistic 0.5c, contracted (table frame): %.2f x classical "
                    "(interleaved; target <= 3)\n", interleaved_ratio(ca, ct, 30000, 8000, 20));
+        /* the covariant frame (and zmf, whose contact it shares) against the table frame,
+         * per collision, same gas */
+        rc_sim *cz = make(3, 10000, 0.45, 2.0, "zmf");
+        rc_sim *cv = make(3, 10000, 0.45, 2.0, "covariant");
+        if (ct && cz && cv) {
+            printf("relativistic 0.5c, zmf frame: %.2f x table frame (interleaved)\n",
+                   interleaved_ratio(ct, cz, 8000, 8000, 10));
+            printf("relativistic 0.5c, covariant frame: %.2f x table frame (interleaved)\n",
+                   interleaved_ratio(ct, cv, 8000, 8000, 10));
+        }
+        rc_sim_free(&cz);
+        rc_sim_free(&cv);
         rc_sim_free(&ca);
         rc_sim_free(&ct);
         return 0;

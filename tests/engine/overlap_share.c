@@ -1,30 +1,35 @@
 /* overlap_share — the share of contacts decided by the overlap policy (rc_sim_diag.overlaps
  * over collisions) in every contracted frame of the library's table, over the range issue
  * 16 names: 2-D to packing 0.7 and 3-D to 0.45, rms 0.5c and 0.9c, eps 1 and eps 0.5 with
- * the TC model. A measurement, not a test: the engine still changes a ball's shape at one
- * table instant (papers/shape-change.md), and the target of 0.1 % needs the glued tube in
- * the engine. Prints one line per run and the largest share; exit status 0 unless a run
- * fails. (A benchmark target: meson test --benchmark --suite relcol overlap-share.) */
+ * the TC model, with the covariant frame's tube and order conflicts. A measurement, not a
+ * test: the table and zmf frames change a ball's shape at one table instant, and the
+ * covariant frame's glued tubes leave the contacts within a glue window to its rules
+ * (papers/shape-change.md, section 6). Prints one line per run and the largest share;
+ * argv[1] names one frame. Exit status 0 unless a run fails. (A benchmark target: meson
+ * test --benchmark --suite relcol overlap-share.) */
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "engine_util.h"
 
 /* contacts per run: enough that a share of 0.1 % is a count of a few */
 #define CONTACTS 4000
 
-int main(void)
+int main(int argc, char **argv)
 {
+    /* argv[1] (optional): only the frame of that name */
+    const char *only = argc > 1 ? argv[1] : NULL;
     const int dims[2] = {2, 3};
     const double packs[2][2] = {{0.3, 0.7}, {0.2, 0.45}};
     const size_t ns[2] = {400, 216};
     const double vs[2] = {0.5, 0.9};
     double worst = 0.0;
-    printf("%-6s %3s %7s %5s %5s %9s %9s %8s\n", "frame", "dim", "packing", "v_rms", "eps",
-           "contacts", "overlaps", "share");
+    printf("%-9s %3s %7s %5s %5s %9s %9s %8s %6s %6s\n", "frame", "dim", "packing", "v_rms",
+           "eps", "contacts", "overlaps", "share", "tube", "order");
     for (size_t f = 0; rc_toi_frames[f]; f++) {
         const rc_toi_frame *fr = rc_toi_frames[f];
-        if (!fr->contracted)
+        if (!fr->contracted || (only && strcmp(only, fr->name) != 0))
             continue;
         for (int di = 0; di < 2; di++)
             for (int pi = 0; pi < 2; pi++)
@@ -46,10 +51,13 @@ int main(void)
                         rc_sim_diagnostics(s, &g);
                         const double share = (double)g.overlaps / (double)g.collisions;
                         worst = share > worst ? share : worst;
-                        printf("%-6s %3d %7.2f %5.2f %5.2f %9llu %9llu %7.3f%%\n", fr->name,
-                               d.dim, packs[di][pi], vs[vi], d.eps_ball,
+                        printf("%-9s %3d %7.2f %5.2f %5.2f %9llu %9llu %7.3f%% %6llu %6llu\n",
+                               fr->name, d.dim, packs[di][pi], vs[vi], d.eps_ball,
                                (unsigned long long)g.collisions,
-                               (unsigned long long)g.overlaps, 100.0 * share);
+                               (unsigned long long)g.overlaps, 100.0 * share,
+                               (unsigned long long)g.tube_conflicts,
+                               (unsigned long long)g.order_conflicts);
+                        fflush(stdout);
                         rc_sim_free(&s);
                     }
     }

@@ -150,6 +150,7 @@ static void test_identity(void)
         {2, INFINITY, NULL, 0.8, 0.05},     {3, 1.0, "sphere", 1.0, 0.0},
         {2, 1.0, "table", 1.0, 0.0},        {3, 1.0, "table", 0.9, 0.05},
         {2, 1.0, "zmf", 0.9, 0.05},         {3, 1.0, "zmf", 1.0, 0.0},
+        {2, 1.0, "covariant", 0.9, 0.05},   {3, 1.0, "covariant", 1.0, 0.0},
     };
     for (size_t j = 0; j < sizeof cs / sizeof *cs; j++)
         check_config(&cs[j]);
@@ -204,11 +205,12 @@ static void test_refusals(void)
      * that is not p / M, a count of balls larger than the bytes hold */
     const size_t header = 8 + 4 * 6 + 8 * 3 + 4 * 2;
     /* now, the renumbering clock, the bookkeeping: 20 sums, 24 transfer moments,
-     * 10 + RC_SIM_EV_NKINDS counts and the 4 words of the progress check */
-    const size_t scalars = 8 * (2 + 20 + 24 + 10 + RC_SIM_EV_NKINDS + 4);
+     * 12 + RC_SIM_EV_NKINDS counts and the 4 words of the progress check */
+    const size_t scalars = 8 * (2 + 20 + 24 + 12 + RC_SIM_EV_NKINDS + 4);
     const size_t n = rc_sim_count(s), ball0 = header + scalars, aux0 = ball0 + 64 * n;
     struct { size_t at; size_t len; unsigned char val[8]; int want; } cases[] = {
         {8 + 4 * 5, 4, {3, 0, 0, 0}, RC_EMISMATCH},             /* dim 3 */
+        {8, 4, {3, 0, 0, 0}, RC_EMISMATCH}, /* format 3 (before the per_ball counters) */
         {aux0 + 48, 4, {0xff, 0xff, 0xff, 0x7f}, RC_ECORRUPT},  /* ev_partner INT32_MAX */
         {ball0 + 24, 1, {0x01}, RC_ECORRUPT},                   /* v.x's last bit */
         {aux0 + 56, 4, {0xff, 0xff, 0, 0}, RC_ECORRUPT},        /* cell 65535 */

@@ -209,6 +209,24 @@ coll=$(sed -n 's/^collisions *\([0-9]*\).*/\1/p' "$tmp/full/summary.txt")
 grep -q "\"contacts\":[[:space:]]*$coll," "$j" && ok "summary.json: $coll contacts, as summary.txt" \
     || ko "summary.json's contacts differ from summary.txt's $coll"
 
+# --frame: the covariant frame runs, counts its conflicts, continues bit-identically;
+# an unknown name is refused
+"$sim" --builtin gas --frame covariant --t-end 3 --no-plots --out "$tmp/cov" > /dev/null 2> "$tmp/err" \
+    && grep -q '"contact_frame":"covariant"' "$tmp/cov/final.json" \
+    && grep -q '"tube_conflicts":' "$tmp/cov/summary.json" \
+    && grep -q '"order_conflicts":' "$tmp/cov/summary.json" \
+    && ok "--frame covariant runs, summary.json has its conflicts" \
+    || ko "--frame covariant: $(cat "$tmp/err")"
+"$sim" "$tmp/cov/final.json" --t-end 5 --no-plots > /dev/null 2> "$tmp/err" \
+    && "$sim" --builtin gas --frame covariant --t-end 5 --no-plots --out "$tmp/cov5" > /dev/null 2>&1 \
+    && sed -n '/"balls"/,$p' "$tmp/cov.1/final.json" | sed 1d > "$tmp/a" \
+    && sed -n '/"balls"/,$p' "$tmp/cov5/final.json" | sed 1d > "$tmp/b" && cmp -s "$tmp/a" "$tmp/b" \
+    && ok "covariant: continued to t = 5 bit-identical to one run" \
+    || ko "covariant continued run differs: $(cat "$tmp/err")"
+"$sim" --builtin gas --frame nope > /dev/null 2> "$tmp/err"; st=$?
+[ $st -eq 2 ] && grep -q "unknown contact frame 'nope'" "$tmp/err" \
+    && ok "--frame nope -> exit 2" || ko "--frame nope: exit $st: $(cat "$tmp/err")"
+
 # Ctrl-C: a long run interrupted writes a restart state that reads back, and exits 130
 sed 's/"t_end": 40/"t_end": 1e9/; s/"snapshots": \[10, 20\], /"snapshots": {"every": 1e8}, /; s/"xyz_every": 5/"xyz_every": 1e7/; s/"ball": 0.9/"ball": 1/' "$tmp/run.json" > "$tmp/long.json"
 "$sim" "$tmp/long.json" --out "$tmp/long" > /dev/null 2> "$tmp/err" &

@@ -223,6 +223,26 @@ typedef struct rc_sim_diag {
      * (a ball between two others ends differently if either contact goes first), which
      * is not physical; each group counted here is one where that happened. */
     uint64_t group_sequential;
+    /* Frames whose balls change velocity at their own events (rc_toi_frame.per_ball: the
+     * covariant frame; papers/shape-change.md). Each ball's worldline kinks where the
+     * hyperplane H through the contact event X with normal u_in + u_out meets it, so its
+     * world tube is the glued one and its stored state may be at a time after or before
+     * the engine's; events are still popped in table-time order, keyed max(t_X, now).
+     * tube_conflicts: predicted contacts on the incoming side of a ball's last H (with
+     * the incoming piece of its glued tube, which the table-time schedule cannot order):
+     * resolved by the overlap policy, counted in overlaps too (a wall's as kind [1]);
+     * one whose centres part there is left to separate. Where the straight cylinder of
+     * a ball's stored line overlaps or meets a neighbour inside the ball's window, its
+     * glued tube is asked instead (rc_glue_toi: first table time of contact).
+     * order_conflicts: a model rule -- a kink that would come before the ball's previous
+     * kink along its worldline (successive hyperplanes cross inside the tube: collisions
+     * less than a glue window apart, where the glued tube of the two is not defined) is
+     * put at the previous kink instead. Groups of simultaneous contacts are resolved at
+     * one table time as in the other frames, each member's kink through its centre then.
+     * rc_sim_get_ball gives a ball's latest segment (its outgoing line taken to the
+     * engine's time, also when its kink lies later); rc_sim_sync and rc_sim_set_c re-plan
+     * from those and forget the hyperplanes (a checkpoint keeps them). */
+    uint64_t tube_conflicts, order_conflicts;
     /* After rc_sim_advance returned RC_ESTALL: the ball whose event was next (caller's
      * index) and its partner (a ball's index, -1 - w for wall w = 2 d + side, or a large
      * negative number for a cell crossing). */

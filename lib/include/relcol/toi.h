@@ -13,7 +13,8 @@
  * zero-momentum frame and transforms the event and the normal back, "sphere" ignores
  * the contraction, "transport" takes the balls as points with the transport codes'
  * criterion (closest approach in the pair's CM frame, impact parameter below r0 + r1;
- * never RC_EOVERLAP). A frame is one table entry with declared properties (below); the
+ * never RC_EOVERLAP), "covariant" finds zmf's contact event and has the engine change each
+ * ball's velocity at its own event of its glued world tube (per_ball). A frame is one table entry with declared properties (below); the
  * engine and the apps read the properties and never name a frame. A frame need not live
  * in the library: any `const rc_toi_frame` can be given to rc_toi() and rc_sim_def.frame
  * (README "Adding a contact frame"); to make it built-in, define it in a new lib/toi_*.c,
@@ -164,10 +165,22 @@ typedef struct rc_toi_frame {
      * contracts nothing). The engine then asks toi about every pair whose bounding
      * spheres of radius r can meet, as it does for a contracted frame. */
     int pointlike;
+    /* Whether each ball of a pair changes velocity at its own event rather than both at
+     * one table time (covariant says 1): the event E where the hyperplane H through the
+     * contact event X with normal u_in + u_out of that ball meets its incoming worldline
+     * (rc_glue's t_c, x_c; papers/shape-change.md), so that its world tube is the glued
+     * one. The engine then keeps per ball the hyperplane that began its current segment,
+     * refuses as a contact of the model a predicted contact on the incoming side of
+     * either ball's hyperplane, and keeps every ball's kinks ordered along its worldline
+     * (relcol/sim.h, rc_sim_diag). Needs toi to return the contact event's point. */
+    int per_ball;
 } rc_toi_frame;
 
 extern const rc_toi_frame rc_toi_frame_table;  /* contact of the table-frame shapes */
 extern const rc_toi_frame rc_toi_frame_zmf;    /* contact found in the pair's ZMF */
+/* the zmf frame's contact, each ball's velocity changed at its own event on its glued
+ * world tube (per_ball) */
+extern const rc_toi_frame rc_toi_frame_covariant;
 extern const rc_toi_frame rc_toi_frame_sphere; /* contraction ignored (naive model) */
 /* transport codes' criterion: points, closest approach in the pair's CM frame with
  * transverse distance d_T < r0 + r1 (papers/time-of-impact.md) */
