@@ -223,6 +223,14 @@ __attribute__((always_inline)) static inline double pair_time_dx(
         }
         if (st != RC_OK)
             return INFINITY;
+        /* The frame decides approach in the pair's ZMF from the stored lines, one of
+         * which may be an outgoing line taken back before its kink; the law decides it
+         * from the balls' velocities along the normal (a0 = mu (v_i - v_k).n). Where the
+         * two disagree the law would find nothing to resolve, the balls would keep their
+         * lines, and the same contact would come up again at the same instant for ever
+         * (RC_ESTALL): such a pair is parting as the law sees it, and gets no event. */
+        if (!(rc_v3_dot(rc_v3_sub(bi->v, bk->v), out.n) > 0.0))
+            return INFINITY;
         *n = out.n;
         ta = tref + out.t;
         if (ta < s->now)
