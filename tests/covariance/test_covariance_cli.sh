@@ -57,6 +57,20 @@ awk -F, 'NR > 1 && $3 == "inf" {
             n++ }
          END {if (n == 0) {print "no classical row"; b = 1}; exit b}' "$csv" > "$T/bad" && ok \
     || bad "classical rows: $(cat "$T/bad")"
+# the default cluster (64 balls, every default density and frame) classically, 2-D and
+# 3-D: the same check at full size, and the same contacts in both runs (each run ends
+# after its last contact, so none counts in one run only)
+for dim in 2 3; do
+    run '' --dim $dim --c inf --out "$T/g$dim"
+    expect_ok "galilean$dim"
+    awk -F, 'NR > 1 {
+                if ($17 == "") {print "no differences: " $0; b = 1; next}
+                if ($12 != $13) {print "contacts " $12 " / " $13 ": " $0; b = 1}
+                if (!($17 <= 1e3 * $18 || $17 <= 1e-9)) {print "dp_frames " $17 " vs round-off " $18 ": " $0; b = 1}
+                n++ }
+             END {if (n < 8) {print n " rows"; b = 1}; exit b}' "$T/g$dim/covariance.csv" > "$T/bad" \
+        && ok || bad "default classical rows, $dim-D: $(cat "$T/bad")"
+done
 # and the relativistic rows are numbers (the frame dependence itself is reported, not tested)
 awk -F, 'NR > 1 && $3 == 2 && $17 != "" {n++} END {exit n == 0}' "$csv" && ok \
     || bad "no c = 2 row with differences"
