@@ -106,6 +106,8 @@ static void usage(FILE *f)
 "               end time, against the table run's position, over the rest radius (the\n"
 "               engine does not expose its contact events: these worldlines carry where\n"
 "               and when each ball last changed velocity)\n"
+"  conflicts_table,conflicts_moving  contacts the per-ball (covariant) frame's rules\n"
+"               decided, tube and order conflicts (0 in the other frames)\n"
 "  note         empty, or why the row has no differences: which run the engine refused\n"
 "               or failed, and why (e.g. shapes that overlap on the moving frame's\n"
 "               slice); a collision before the moving frame's start; a wall reached;\n"
@@ -342,7 +344,8 @@ static int write_csv(const char *path, const options *o, const row *rows, size_t
         return -1;
     fprintf(a.f, "frame,covariant,c,c_index,density,radius,n,dim,boost,v_rms,draws,"
                  "collisions_table,collisions_moving,collisions_roundoff,overlaps_table,"
-                 "overlaps_moving,dp_frames,dp_roundoff,dx_frames,dx_roundoff,note\n");
+                 "overlaps_moving,dp_frames,dp_roundoff,dx_frames,dx_roundoff,conflicts_table,"
+                 "conflicts_moving,note\n");
     for (size_t k = 0; k < nrows; k++) {
         const row *w = &rows[k];
         char fc[APP_FMT_LEN], fd[APP_FMT_LEN], fb[APP_FMT_LEN], fv[APP_FMT_LEN];
@@ -353,13 +356,15 @@ static int write_csv(const char *path, const options *o, const row *rows, size_t
         /* (a row without differences has empty fields: missing to gnuplot, numpy and
          * pandas alike) */
         if (w->have)
-            fprintf(a.f, "%llu,%llu,%llu,%llu,%llu,%.17g,%.17g,%.17g,%.17g,",
+            fprintf(a.f, "%llu,%llu,%llu,%llu,%llu,%.17g,%.17g,%.17g,%.17g,%llu,%llu,",
                     (unsigned long long)w->r.coll[0], (unsigned long long)w->r.coll[1],
                     (unsigned long long)w->r.coll[2], (unsigned long long)w->r.overlaps[0],
                     (unsigned long long)w->r.overlaps[1], w->r.dp_frames, w->r.dp_roundoff,
-                    w->r.dx_frames, w->r.dx_roundoff);
+                    w->r.dx_frames, w->r.dx_roundoff,
+                    (unsigned long long)(w->r.tube[0] + w->r.order[0]),
+                    (unsigned long long)(w->r.tube[1] + w->r.order[1]));
         else
-            fprintf(a.f, ",,,,,,,,,");
+            fprintf(a.f, ",,,,,,,,,,,");
         fprintf(a.f, "%s\n", w->note);
     }
     return app_atomic_commit(&a, err);

@@ -37,15 +37,15 @@ run '' --help
 run '' --n 50 --density 0.004,0.01 --c 2,inf --out "$T/c"
 expect_ok tiny
 csv=$T/c/covariance.csv
-head='frame,covariant,c,c_index,density,radius,n,dim,boost,v_rms,draws,collisions_table,collisions_moving,collisions_roundoff,overlaps_table,overlaps_moving,dp_frames,dp_roundoff,dx_frames,dx_roundoff,note'
+head='frame,covariant,c,c_index,density,radius,n,dim,boost,v_rms,draws,collisions_table,collisions_moving,collisions_roundoff,overlaps_table,overlaps_moving,dp_frames,dp_roundoff,dx_frames,dx_roundoff,conflicts_table,conflicts_moving,note'
 [ "$(head -1 "$csv")" = "$head" ] && ok || bad "header: $(head -1 "$csv")"
 nf=$(awk -F, 'NR > 1 {print $1}' "$csv" | sort -u | wc -l)
 rows=$(awk 'END {print NR - 1}' "$csv")
 [ "$nf" -ge 2 ] && [ "$rows" -eq $((nf * 4)) ] && ok || bad "$rows rows for $nf frames, want 4 each"
-# every row has 21 fields, covariant is 0 or 1, n = 50, and a row either has all its
+# every row has 23 fields, covariant is 0 or 1, n = 50, and a row either has all its
 # differences or a note saying why not
-awk -F, 'NR > 1 && (NF != 21 || ($2 != 0 && $2 != 1) || $7 != 50 ||
-                    (($17 == "") != ($21 != ""))) {print "row " NR - 1 ": " $0; b = 1}
+awk -F, 'NR > 1 && (NF != 23 || ($2 != 0 && $2 != 1) || $7 != 50 ||
+                    (($17 == "") != ($23 != ""))) {print "row " NR - 1 ": " $0; b = 1}
          END {exit b}' "$csv" > "$T/bad" && ok || bad "rows: $(cat "$T/bad")"
 # the classical rows (c = inf): the change of frame is Galilean and the engine Galilean
 # invariant, so the frames may differ only by round-off as the dynamics amplifies it: the
