@@ -29,8 +29,10 @@ typedef struct cov_def {
     double v_rms;        /* > 0: all velocities scaled so that the rms table speed is this */
     double c;            /* speed of light (INFINITY: classical, the boost Galilean) */
     double u;            /* velocity of the moving frame along x, |u| < c */
-    double box;          /* box edge (the box is never reached: see cov_box_for) */
-    double t_end;        /* each run ends at time t_end of its own frame */
+    double box;          /* box edge (never reached by t_check: the cluster stays open) */
+    double t_end;        /* each run ends at time t_end of its own frame; the two runs'
+                            ends are different hyperplanes, so t_end must come after every
+                            contact of both (checked: cov_result.open) */
     unsigned seed;       /* rand_r state of the draw */
 } cov_def;
 
@@ -75,6 +77,8 @@ typedef struct cov_run_out {
     uint64_t collisions; /* contacts resolved by t_end */
     uint64_t early;      /* contacts resolved before t_quiet */
     uint64_t overlaps;   /* contacts decided by the overlap policy */
+    uint64_t tube_conflicts, order_conflicts; /* the per-ball frames' (rc_sim_diag) */
+    uint64_t open;       /* pairs whose lines may still meet after t_end (cov_may_meet) */
     int walls;           /* a ball reached a wall (the cluster is no longer open) */
     int running;         /* on failure: 0 the engine refused the start, 1 it failed later */
 } cov_run_out;
@@ -85,6 +89,8 @@ typedef struct cov_result {
     int which;           /* that run: 0 table, 1 moving, 2 round-off */
     int running;         /* 0: the engine refused its start; 1: it failed while running */
     uint64_t coll[3], early[3], overlaps[3]; /* per run: table, moving, round-off */
+    uint64_t tube[3], order[3]; /* per run: tube and order conflicts (per-ball frames) */
+    uint64_t open[3];    /* per run: pairs that may still meet after t_end (0: finished) */
     int walls;           /* a ball of some run reached a wall */
     double dp_frames, dp_roundoff; /* max_i |p_i - q_i| / rms |p| */
     double dx_frames, dx_roundoff; /* max_i |x_i - y_i| / r at table time t_end */
@@ -97,8 +103,41 @@ static inline rc_vec3 cov_centre(const cov_def *d)
     return rc_v3(0.5 * d->box, 0.5 * d->box, d->dim == 3 ? 0.5 * d->box : 0.0);
 }
 
-/* Run balls b (at time t0) of frame fr to t_end; collisions before t_quiet counted apart.
- * Returns an rc_status. */
+/* Whether balls a and b, on the straight lines through (t, xa) and (t, xb) with momenta
+ * pa, pb (rest masses ma, mb), may still come within dmin of each other: in the run's
+ * frame after t, or in the pair's ZMF after the earlier of the two events. A contact of
+ * any frame is a touch of shapes that lie within the bounding spheres, found at equal
+ * times of the run's frame (table, sphere) or of the pair's ZMF (zmf, covariant,
+ * transport: its closest approach there), so a pair apart by more than dmin = 2 r in
+ * both for ever can no longer collide. Classically the ZMF's times are the run's. */
+static inline int cov_may_meet(double ic2, double dmin, rc_vec3 xa, rc_vec3 pa, double ma,
+                               rc_vec3 xb, rc_vec3 pb, double mb, double t)
+{
+    const double Ma = sqrt(ma * ma + rc_v3_norm2(pa) * ic2);
+    const double Mb = sqrt(mb * mb + rc_v3_norm2(pb) * ic2);
+    for (int zmf = 0; zmf < 1 + (ic2 > 0.0); zmf++) {
+        rc_four ea = {t, xa}, eb = {t, xb}, fa = {Ma, pa}, fb = {Mb, pb};
+        if (zmf) {
+            const rc_vec3 u = rc_v3_scale(1.0 / (Ma + Mb), rc_v3_add(pa, pb));
+            if (rc_boost(u, ic2, &ea) != RC_OK || rc_boost(u, ic2, &eb) != RC_OK ||
+                rc_boost(u, ic2, &fa) != RC_OK || rc_boost(u, ic2, &fb) != RC_OK)
+                return 1;
+        }
+        const rc_vec3 va = rc_v3_scale(1.0 / fa.t, fa.x), vb = rc_v3_scale(1.0 / fb.t, fb.x);
+        const double t0 = fmin(ea.t, eb.t);
+        const rc_vec3 dx = rc_v3_sub(rc_v3_axpy(eb.x, t0 - eb.t, vb),
+                                     rc_v3_axpy(ea.x, t0 - ea.t, va));
+        const rc_vec3 dv = rc_v3_sub(vb, va);
+        const double dv2 = rc_v3_norm2(dv);
+        const double s = dv2 > 0.0 ? fmax(0.0, -rc_v3_dot(dx, dv) / dv2) : 0.0;
+        if (!(rc_v3_norm(rc_v3_axpy(dx, s, dv)) > dmin))
+            return 1;
+    }
+    return 0;
+}
+
+/* Run balls b (at time t0) of frame fr to t_end; collisions before t_quiet counted
+ * apart; with o->p, the outcome and the pairs that may still meet. Returns an rc_status. */
 static inline int cov_run(const cov_def *d, const rc_toi_frame *fr, const rc_sim_ball *b,
                           double t0, double t_quiet, double t_end, cov_run_out *o)
 {
@@ -126,10 +165,8 @@ static inline int cov_run(const cov_def *d, const rc_toi_frame *fr, const rc_sim
         rc_sim_diagnostics(s, &g);
         o->collisions = g.collisions;
         o->overlaps = g.overlaps;
-        /* (a wall in a group of contacts shows only in the impulse, which otherwise holds
-         * the round-off of the engine's bookkeeping) */
-        o->walls = g.events[RC_SIM_EV_WALL] > 0 ||
-                   rc_v3_norm(g.wall_impulse) > 1e-9 * g.momentum_scale;
+        o->tube_conflicts = g.tube_conflicts;
+        o->order_conflicts = g.order_conflicts;
         for (size_t i = 0; i < d->n && o->p; i++) {
             rc_sim_ball q;
             rc_sim_get_ball(s, i, &q);
@@ -137,6 +174,16 @@ static inline int cov_run(const cov_def *d, const rc_toi_frame *fr, const rc_sim
             o->x[i] = q.x;
             o->m[i] = q.m;
         }
+        o->open = 0;
+        const double ic2 = rc_inv_c2_of(d->c);
+        for (size_t i = 0; i < d->n && o->p; i++)
+            for (size_t j = i + 1; j < d->n; j++)
+                o->open += (uint64_t)cov_may_meet(ic2, 2.0 * d->r, o->x[i], o->p[i], o->m[i],
+                                                  o->x[j], o->p[j], o->m[j], t_end);
+        /* (a wall in a group of contacts shows only in the impulse, which otherwise holds
+         * the round-off of the engine's bookkeeping) */
+        o->walls = g.events[RC_SIM_EV_WALL] > 0 ||
+                   rc_v3_norm(g.wall_impulse) > 1e-9 * g.momentum_scale;
     }
     rc_sim_free(&s);
     return st;
@@ -316,8 +363,8 @@ static int cov_compare(const cov_def *d, const rc_toi_frame *fr, const cov_clust
     }
     cov_run_out o[3];
     for (int k = 0; k < 3; k++)
-        o[k] = (cov_run_out){buf + (size_t)(2 * k) * n, buf + (size_t)(2 * k + 1) * n,
-                             m + (size_t)k * n, 0, 0, 0, 0, 0};
+        o[k] = (cov_run_out){.p = buf + (size_t)(2 * k) * n,
+                             .x = buf + (size_t)(2 * k + 1) * n, .m = m + (size_t)k * n};
     const rc_sim_ball *start[3] = {cl->b0, cl->bp, cl->bj};
     const double t0[3] = {cl->tmin, 0.0, cl->tmin}, tq[3] = {cl->tmax, 0.0, cl->tmax};
     for (int k = 0; k < 3; k++) {
@@ -333,6 +380,9 @@ static int cov_compare(const cov_def *d, const rc_toi_frame *fr, const cov_clust
         res->coll[k] = o[k].collisions;
         res->early[k] = o[k].early;
         res->overlaps[k] = o[k].overlaps;
+        res->tube[k] = o[k].tube_conflicts;
+        res->order[k] = o[k].order_conflicts;
+        res->open[k] = o[k].open;
         res->walls |= o[k].walls;
     }
     /* the moving run back to the table frame */

@@ -37,15 +37,15 @@ run '' --help
 run '' --n 50 --density 0.004,0.01 --c 2,inf --out "$T/c"
 expect_ok tiny
 csv=$T/c/covariance.csv
-head='frame,covariant,c,c_index,density,radius,n,dim,boost,v_rms,draws,collisions_table,collisions_moving,collisions_roundoff,overlaps_table,overlaps_moving,dp_frames,dp_roundoff,dx_frames,dx_roundoff,note'
+head='frame,covariant,c,c_index,density,radius,n,dim,boost,v_rms,draws,collisions_table,collisions_moving,collisions_roundoff,overlaps_table,overlaps_moving,dp_frames,dp_roundoff,dx_frames,dx_roundoff,conflicts_table,conflicts_moving,note'
 [ "$(head -1 "$csv")" = "$head" ] && ok || bad "header: $(head -1 "$csv")"
 nf=$(awk -F, 'NR > 1 {print $1}' "$csv" | sort -u | wc -l)
 rows=$(awk 'END {print NR - 1}' "$csv")
 [ "$nf" -ge 2 ] && [ "$rows" -eq $((nf * 4)) ] && ok || bad "$rows rows for $nf frames, want 4 each"
-# every row has 21 fields, covariant is 0 or 1, n = 50, and a row either has all its
+# every row has 23 fields, covariant is 0 or 1, n = 50, and a row either has all its
 # differences or a note saying why not
-awk -F, 'NR > 1 && (NF != 21 || ($2 != 0 && $2 != 1) || $7 != 50 ||
-                    (($17 == "") != ($21 != ""))) {print "row " NR - 1 ": " $0; b = 1}
+awk -F, 'NR > 1 && (NF != 23 || ($2 != 0 && $2 != 1) || $7 != 50 ||
+                    (($17 == "") != ($23 != ""))) {print "row " NR - 1 ": " $0; b = 1}
          END {exit b}' "$csv" > "$T/bad" && ok || bad "rows: $(cat "$T/bad")"
 # the classical rows (c = inf): the change of frame is Galilean and the engine Galilean
 # invariant, so the frames may differ only by round-off as the dynamics amplifies it: the
@@ -57,6 +57,20 @@ awk -F, 'NR > 1 && $3 == "inf" {
             n++ }
          END {if (n == 0) {print "no classical row"; b = 1}; exit b}' "$csv" > "$T/bad" && ok \
     || bad "classical rows: $(cat "$T/bad")"
+# the default cluster (64 balls, every default density and frame) classically, 2-D and
+# 3-D: the same check at full size, and the same contacts in both runs (each run ends
+# after its last contact, so none counts in one run only)
+for dim in 2 3; do
+    run '' --dim $dim --c inf --out "$T/g$dim"
+    expect_ok "galilean$dim"
+    awk -F, 'NR > 1 {
+                if ($17 == "") {print "no differences: " $0; b = 1; next}
+                if ($12 != $13) {print "contacts " $12 " / " $13 ": " $0; b = 1}
+                if (!($17 <= 1e3 * $18 || $17 <= 1e-9)) {print "dp_frames " $17 " vs round-off " $18 ": " $0; b = 1}
+                n++ }
+             END {if (n < 8) {print n " rows"; b = 1}; exit b}' "$T/g$dim/covariance.csv" > "$T/bad" \
+        && ok || bad "default classical rows, $dim-D: $(cat "$T/bad")"
+done
 # and the relativistic rows are numbers (the frame dependence itself is reported, not tested)
 awk -F, 'NR > 1 && $3 == 2 && $17 != "" {n++} END {exit n == 0}' "$csv" && ok \
     || bad "no c = 2 row with differences"

@@ -10,7 +10,7 @@
 #include <string.h>
 
 #include "engine_util.h"
-#include "cluster_util.h"
+#include "cluster.h"
 
 /* (a) a gas run for >= target contacts: energy (kinetic + heat) and momentum (+ wall
  * impulse) to 1e-12 relative; elastic: every rest mass kept to 1e-13. */
@@ -263,48 +263,46 @@ static void test_two_balls(void)
     }
 }
 
-/* (d) the open cluster of covariance_cluster (64 discs, rms ~0.5c) run from the table
- * frame and from a frame moving at 0.6c: the same contacts, and the final four-momenta,
- * boosted back, agree. Where the cluster is sparse (ring 16..400: 8 contacts, round-off
- * amplified to 3e-9 by the dynamics, measured by moving the positions by 1e-15) to 1e-9
- * relative to the rms momentum; in the denser ring 16..120 (45 contacts) the dynamics
- * itself amplifies 1e-15 to ~5e-6, so no run can agree to 1e-9 there: the frames must
- * agree within that amplification (the zmf frame, which puts both changes at one table
- * time, differs by O(1) in both rings: papers/shape-change.md). */
+/* (d) the open cluster of covariance_cluster (64 discs, rms ~0.5c; the harness is
+ * relcol-covariance's, apps/covariance/cluster.h) run from the table frame and from a
+ * frame moving at 0.6c: the same contacts, and the final four-momenta, boosted back,
+ * agree. Where the cluster is sparse (ring 16..400: 8 contacts, round-off amplified to
+ * 3e-9 by the dynamics, measured by moving the positions by 1e-15) to 1e-9 relative to
+ * the rms momentum; in the denser ring 16..120 (45 contacts) the dynamics itself
+ * amplifies 1e-15 to ~5e-6, so no run can agree to 1e-9 there: the frames must agree
+ * within that amplification (the zmf frame, which puts both changes at one table time,
+ * differs by O(1) in both rings: papers/shape-change.md). Both runs must have ended
+ * after their last contacts (their ends are different hyperplanes; no pair may still
+ * meet), or a contact could count in one run only. */
 static void cluster(double outer, double tol, int vs_jitter)
 {
-    enum { NC = 64 };
-    const cl_def K = {NC, 20000.0, 0.6, 1.0, 1.0};
-    rc_sim_ball b0[NC], bp[NC], bj[NC];
-    double tmin = 0.0, tmax = 0.0;
-    if (cl_draw(&K, outer, 16, b0, bp, &tmin, &tmax) != 0) {
+    const cov_def d = {.dim = 2, .n = 64, .r = 0.5, .inner = 16.0, .outer = outer,
+                       .v_in = 0.35, .v_noise = 0.15, .c = 1.0, .u = 0.6, .box = 20000.0,
+                       .t_end = 6000.0, .seed = 16}; /* (covariance_cluster's) */
+    cov_cluster cl;
+    if (cov_cluster_make(&d, rc_toi_frames[0], &cl) != COV_OK) {
         ENSURE_MSG(0, "ring 16..%g: no draw", outer);
         return;
     }
-    rc_vec3 pa[NC], pb[NC], pj[NC];
-    double ma[NC], mb[NC], mj[NC];
-    uint64_t na, nb, nj, ea, eb, ej;
-    const double t_end = 6000.0; /* (covariance_cluster's: after every contact in both) */
-    const rc_toi_frame *fr = &rc_toi_frame_covariant;
-    if (cl_run(&K, fr, b0, tmin, tmax, t_end, pa, ma, &na, &ea, NULL, 0) != RC_OK ||
-        cl_run(&K, fr, bp, 0.0, 0.0, t_end, pb, mb, &nb, &eb, NULL, 0) != RC_OK) {
-        ENSURE_MSG(0, "ring 16..%g: a run failed", outer);
+    cov_result r;
+    const int st = cov_compare(&d, &rc_toi_frame_covariant, &cl, &r);
+    cov_cluster_free(&cl);
+    if (st != 0) {
+        ENSURE_MSG(0, "ring 16..%g: the run %d failed: %s", outer, r.which,
+                   rc_strerror(r.status));
         return;
     }
-    ENSURE(ea == 0 && cl_back(&K, pb, mb) == 0);
-    ENSURE_MSG(na == nb && na > 0, "ring 16..%g: %llu contacts from the table, %llu moving",
-               outer, (unsigned long long)na, (unsigned long long)nb);
-    double lim = tol;
-    if (vs_jitter) {
-        for (int i = 0; i < NC; i++) {
-            bj[i] = b0[i];
-            bj[i].x.x *= 1.0 + 1e-15 * (double)(i % 3 - 1);
-        }
-        ENSURE(cl_run(&K, fr, bj, tmin, tmax, t_end, pj, mj, &nj, &ej, NULL, 0) == RC_OK);
-        lim = tol * cl_pdiff(NC, pa, pj);
-    }
-    const double dp = cl_pdiff(NC, pa, pb);
-    ENSURE_MSG(dp <= lim, "ring 16..%g: frames differ by %g (limit %g)", outer, dp, lim);
+    ENSURE(r.early[0] == 0 && !r.walls);
+    ENSURE_MSG(r.open[0] == 0 && r.open[1] == 0 && r.open[2] == 0,
+               "ring 16..%g: pairs may still meet after t_end (%llu, %llu, %llu)", outer,
+               (unsigned long long)r.open[0], (unsigned long long)r.open[1],
+               (unsigned long long)r.open[2]);
+    ENSURE_MSG(r.coll[0] == r.coll[1] && r.coll[0] > 0,
+               "ring 16..%g: %llu contacts from the table, %llu moving", outer,
+               (unsigned long long)r.coll[0], (unsigned long long)r.coll[1]);
+    const double lim = vs_jitter ? tol * r.dp_roundoff : tol;
+    ENSURE_MSG(r.dp_frames <= lim, "ring 16..%g: frames differ by %g (limit %g)", outer,
+               r.dp_frames, lim);
 }
 
 static void test_cluster(void)
