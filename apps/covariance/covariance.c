@@ -373,6 +373,17 @@ static int write_csv(const char *path, const options *o, const row *rows, size_t
 static const char *const colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e",
                                       "#8c564b", "#e377c2", "#17becf"};
 
+/* A panel with no row of differences: gnuplot fails on a panel without a single point
+ * (and warns on a curve without one), so it gets an empty plot with a note instead. */
+static void empty_panel(FILE *f)
+{
+    fprintf(f, "set yrange [1e-16:10]\n"
+               "set label 1 'no row with differences (see the note column)' at graph 0.5,0.5 center\n"
+               "plot NaN notitle\n"
+               "unset label 1\n"
+               "set autoscale y\n");
+}
+
 static int write_script(const char *path, const options *o, const row *rows, size_t nrows,
                         char *err)
 {
@@ -432,11 +443,7 @@ static int write_script(const char *path, const options *o, const row *rows, siz
         for (int j = 0; j < o->nframes; j++)
             any += has_data[k * o->nframes + j] != 0;
         if (!any) {
-            fprintf(f, "set yrange [1e-16:10]\n"
-                       "set label 1 'no row with differences (see the note column)' at graph 0.5,0.5 center\n"
-                       "plot NaN notitle\n"
-                       "unset label 1\n"
-                       "set autoscale y\n");
+            empty_panel(f);
             continue;
         }
         fprintf(f, "plot \\\n");
@@ -510,11 +517,7 @@ static int write_script_c(const char *path, const options *o, const row *rows,
         for (int di = 0; di < o->ndensity; di++)
             any += has_data[di * o->nframes + j] != 0;
         if (!any) {
-            fprintf(f, "set yrange [1e-16:10]\n"
-                       "set label 1 'no row with differences (see the note column)' at graph 0.5,0.5 center\n"
-                       "plot NaN notitle\n"
-                       "unset label 1\n"
-                       "set autoscale y\n");
+            empty_panel(f);
             continue;
         }
         fprintf(f, "plot \\\n");
