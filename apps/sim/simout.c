@@ -366,9 +366,12 @@ static int write_summary_json(const sim_output *o, const rc_sim *sim, const rc_s
         add(x, okind[k], (double)(d->overlaps_by_kind[k] - d0->overlaps_by_kind[k]));
     add(x, "total", (double)(d->overlaps - d0->overlaps));
     /* per_ball frames (covariant): contacts with the incoming piece of a glued tube (in
-     * overlaps_resolved too) and kinks put at the ball's previous one (relcol/sim.h) */
+     * overlaps_resolved too), kinks put at the ball's previous one, and tube conflicts
+     * resolved by undoing a collision and solving the two contacts together -- not by
+     * the policy, so not in its total (relcol/sim.h) */
     add(x, "tube_conflicts", (double)(d->tube_conflicts - d0->tube_conflicts));
     add(x, "order_conflicts", (double)(d->order_conflicts - d0->order_conflicts));
+    add(x, "rollbacks", (double)(d->rollbacks - d0->rollbacks));
     /* (relative; null without energy at the start, whose change is then absolute) */
     add(j, "energy_error", d0->energy > 0.0 ? dE : NAN);
     add(j, "energy_change", d->energy - d0->energy);

@@ -19,8 +19,9 @@
 #include "relcol/status.h"
 
 #define CK_MAGIC "relcolck"
-#define CK_VERSION 4u /* 2: the bookkeeping as one record (eng_books); 3: with pinned and the
-                         transfer moments; 4: with the per_ball counters and hyperplanes */
+#define CK_VERSION 5u /* 2: the bookkeeping as one record (eng_books); 3: with pinned and the
+                         transfer moments; 4: with the per_ball counters and hyperplanes;
+                         5: with the per_ball undo records and rollbacks */
 #define CK_ORDER 0x01020304u
 
 typedef struct ck_header {
@@ -166,6 +167,7 @@ static void write_all(const rc_sim *s, ck_cursor *c, const int32_t *next)
     if (s->cov) { /* (per_ball frames: the glued tubes' hyperplanes and tubes) */
         put(c, s->cov, n * sizeof *s->cov);
         put(c, s->glu, n * sizeof *s->glu);
+        put(c, s->und, n * sizeof *s->und);
     }
     if (n) {
         put(c, s->g.slot, s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot);
@@ -224,6 +226,28 @@ static int check_ball(const rc_sim *s, size_t k)
          !isfinite(s->glu[k].t_last) || !rc_v3_isfinite(s->glu[k].x_c) ||
          !rc_v3_isfinite(s->glu[k].kappa) || !(s->glu[k].inv_c2 == s->inv_c2)))
         return RC_ECORRUPT;
+    /* an undo record names a ball other than this one or a wall of the box, from a state
+     * the law could have left (the rollback trusts it: it is the ball's state again) */
+    if (s->und) {
+        const eng_undo *u = &s->und[k];
+        const int32_t q = u->partner;
+        if (!(q == ENG_NONE ||
+              (q >= 0 && (size_t)q < s->n && (uint32_t)q != s->id[k]) ||
+              (q < 0 && ENG_WALL_INDEX(q) < 2 * dim && (s->walled >> ENG_WALL_INDEX(q) / 2 & 1u))))
+            return RC_ECORRUPT;
+        if (q != ENG_NONE &&
+            (!(u->in.m > 0.0) || !isfinite(u->in.m) || !rc_v3_isfinite(u->in.p) ||
+             !rc_v3_isfinite(u->n) || !isfinite(u->dt) || !rc_v3_isfinite(u->dx) ||
+             isnan(u->tau_last) || u->tau_last == INFINITY || isnan(u->cov.t_k) ||
+             u->cov.t_k == INFINITY || !rc_v3_isfinite(u->cov.kappa) ||
+             !(rc_v3_norm2(u->cov.kappa) * s->def.c * s->def.c < 1.0 || isinf(s->def.c)) ||
+             (u->glu.r != 0.0 &&
+              (u->glu.r != b->r || !isfinite(u->glu.t_c) || !isfinite(u->glu.t_first) ||
+               !isfinite(u->glu.t_last) || !rc_v3_isfinite(u->glu.x_c) ||
+               !rc_v3_isfinite(u->glu.kappa) || !(u->glu.inv_c2 == s->inv_c2))) ||
+             (dim == 2 && u->in.p.z != 0.0)))
+            return RC_ECORRUPT;
+    }
     /* v is derived from p and m, the same way every time the engine sets it */
     const rc_vec3 v = rc_v3_scale(1.0 / eng_mass_rel(a->m, a->p, s->inv_c2), a->p);
     if (memcmp(&v, &b->v, sizeof v) != 0)
@@ -349,7 +373,8 @@ static int read_all(rc_sim *s, ck_cursor *c)
         get(c, s->cnt, n * sizeof *s->cnt) ||
         (s->ev_n && get(c, s->ev_n, n * sizeof *s->ev_n)) ||
         (s->img && get(c, s->img, 3 * n * sizeof *s->img)) ||
-        (s->cov && (get(c, s->cov, n * sizeof *s->cov) || get(c, s->glu, n * sizeof *s->glu))))
+        (s->cov && (get(c, s->cov, n * sizeof *s->cov) || get(c, s->glu, n * sizeof *s->glu) ||
+                     get(c, s->und, n * sizeof *s->und))))
         return RC_ECORRUPT;
     if (n && (get(c, s->g.slot, s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot) ||
               get(c, s->g.next, n * sizeof *s->g.next)))

@@ -131,6 +131,7 @@ int rc_sim_diagnostics(const rc_sim *s, rc_sim_diag *d)
     d->group_sequential = s->bk.group_sequential;
     d->tube_conflicts = s->bk.tube_conflicts;
     d->order_conflicts = s->bk.order_conflicts;
+    d->rollbacks = s->bk.rollbacks;
     d->stall_ball = s->bk.stall_ball;
     d->stall_partner = s->bk.stall_partner;
     return RC_OK;

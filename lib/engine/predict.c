@@ -213,6 +213,9 @@ __attribute__((always_inline)) static inline double pair_time_dx(
             if (!(ta < best))
                 return INFINITY;
             *n = rc_v3(NAN, 1.0, 0.0);
+            rc_sim *w = (rc_sim *)s; /* (its X: the collision decides whose tube it is) */
+            w->sc_tx = tref + out.t;
+            w->sc_dx = rc_v3_axpy(out.x, -out.t, bi->v);
             return ta;
         }
         if (st == RC_EOVERLAP) {
@@ -622,7 +625,9 @@ static inline void store_event(rc_sim *s, int32_t i, double best, int32_t bp, rc
         s->ev_n[i] = df && df->on && bp >= 0 ? ev_deferred_mark(df->lb2)
                      : ev_is_deferred(bn)    ? rc_v3(0.0, 0.0, 0.0)
                                              : bn;
-    if (s->cov && bp >= 0 && !isnan(bn.x)) { /* (per_ball frames: the event's X) */
+    if (s->cov && bp >= 0 && (!isnan(bn.x) || bn.y == 1.0)) { /* (per_ball frames: the
+                                                                event's X, a tube
+                                                                conflict's too) */
         s->cov[i].ev_tx = s->bx_tx;
         s->cov[i].ev_dx = s->bx_dx;
     }
@@ -849,4 +854,28 @@ int eng_narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_ve
                            double d2, const eng_check *chk, rc_vec3 *normal)
 {
     return narrow_conflict(s, bi, bk, dx, d2, chk, normal);
+}
+
+/* per_ball frames: the frame's contact of balls a and b from their stored lines taken to
+ * time t0 (not clamped to now, so a contact already behind the schedule is found): RC_OK
+ * with the event (*tx; *dx = X - a's centre at *tx on its stored line) and the normal *n
+ * from a to b, when X lies on the future side of both balls' hyperplanes and the law sees
+ * the pair approach along n; RC_MISS when it does not; the frame's code otherwise. */
+int eng_pair_contact(rc_sim *s, int32_t a, int32_t b, double t0, double *tx, rc_vec3 *dx,
+                     rc_vec3 *n)
+{
+    const eng_ball *ba = &s->b[a], *bb = &s->b[b];
+    const rc_vec3 d = eng_image(s, rc_v3_sub(rc_v3_axpy(bb->x, t0 - bb->t, bb->v),
+                                             rc_v3_axpy(ba->x, t0 - ba->t, ba->v)));
+    rc_toi_contact out;
+    const int st = frame_call(s, ba, bb, d, &out);
+    if (st != RC_OK)
+        return st;
+    if (!glue_valid(s, ba, bb, d, t0, out.t, out.x) ||
+        !(rc_v3_dot(rc_v3_sub(ba->v, bb->v), out.n) > 0.0))
+        return RC_MISS;
+    *tx = t0 + out.t;
+    *dx = rc_v3_axpy(out.x, -out.t, ba->v);
+    *n = out.n;
+    return RC_OK;
 }

@@ -61,6 +61,24 @@ typedef struct eng_cov {
 } eng_cov;
 _Static_assert(sizeof(eng_cov) == 64, "one cache line per record");
 
+/* per_ball frames: what undoing a ball's last collision needs, written when the collision
+ * was a single contact of the model (papers/shape-change.md, section 7): a third ball
+ * that meets the ball's incoming piece, before its kink along its tube, undoes it and the
+ * contacts are solved together. Valid while neither ball has collided since (the
+ * counters); the partner by its caller's index, which renumbering does not change. */
+typedef struct eng_undo {
+    rc_particle in;     /* the ball's state before */
+    eng_cov cov;        /* its hyperplane before (and its scheduled event's X, unused) */
+    rc_glue glu;        /* its glued tube before */
+    double tau_last;    /* its clock's last collision before */
+    rc_vec3 n;          /* the contact normal, from the ball to its partner */
+    double dt;          /* the contact event X - the ball's kink E: time ... */
+    rc_vec3 dx;         /* ... and position (E on both the incoming and the outgoing line) */
+    int32_t partner;    /* caller's index of the partner ball, ENG_WALL(w), or ENG_NONE */
+    uint32_t cnt, pcnt; /* the ball's and the partner's counters after the collision */
+    uint32_t tc;        /* the collision counted a TC contact (rc_sim_diag) */
+} eng_undo;
+
 /* The event queue (engine/queue.c): one entry per ball, popped in (time, ball) order.
  * (Functions shared between the engine files carry eng_: exported, not public.) */
 typedef struct eng_qent {
@@ -234,6 +252,9 @@ typedef struct eng_books {
      * overlaps too), and kinks that would have come before the ball's previous one along
      * its worldline (put at the previous one) */
     uint64_t tube_conflicts, order_conflicts;
+    /* tube conflicts resolved by undoing a ball's last collision and solving the two
+     * contacts together (eng_undo), not by the overlap policy (not in tube_conflicts) */
+    uint64_t rollbacks;
     /* progress: the time of the last event and how many events in a row came at it; when
      * that count passes eng_stall_limit the run stops (RC_ESTALL), naming the event's
      * balls (caller's index; a wall w as -1 - w; -2^62 none) */
@@ -241,7 +262,7 @@ typedef struct eng_books {
     uint64_t still_count;
     int64_t stall_ball, stall_partner;
 } eng_books;
-_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 24 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 2 + 4),
+_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 24 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 2 + 1 + 4),
                "no padding in the bookkeeping");
 
 struct rc_sim {
@@ -281,6 +302,8 @@ struct rc_sim {
      * contact while the ball is in its window; r = 0: none (no kink yet, or one put at
      * the previous kink by the order rule) */
     rc_glue *glu;
+    /* per_ball frames only (else NULL): per ball, how to undo its last collision */
+    eng_undo *und;
     /* per_ball frames: scratch of the prediction -- the contact event of the pair last
      * put to the frame (pair_time_dx) and of the best event so far (scan_block_narrow),
      * as eng_cov.ev_tx / ev_dx */
@@ -439,6 +462,10 @@ int eng_predict_checked(rc_sim *s, int32_t i, rc_vec3 vold, int32_t partner, dou
 int eng_predict_checked_narrow(rc_sim *s, int32_t i, const eng_check *chk);
 /* Ball i crosses into its next cell (events updated, queue too). */
 void eng_cross(rc_sim *s, int32_t i);
+/* per_ball frames: the frame's contact of a and b from their stored lines at t0, if one
+ * of the model (engine/predict.c). */
+int eng_pair_contact(rc_sim *s, int32_t a, int32_t b, double t0, double *tx, rc_vec3 *dx,
+                     rc_vec3 *n);
 /* The contracted contact test of a simultaneity check (engine/predict.c). */
 int eng_narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
                            double d2, const eng_check *chk, rc_vec3 *normal);

@@ -184,6 +184,8 @@ static void release_balls(rc_sim *s)
     s->cov = NULL;
     free(s->glu);
     s->glu = NULL;
+    free(s->und);
+    s->und = NULL;
     free(s->img);
     s->img = NULL;
     s->b = NULL;
@@ -386,12 +388,15 @@ int eng_alloc_state(rc_sim *s, size_t n, double rmax)
     if (s->narrow && s->def.frame->per_ball) {
         /* no kink yet: every contact is on the future side of a ball's (absent) plane */
         if (!(s->cov = eng_alloc(n * sizeof *s->cov)) ||
-            !(s->glu = calloc(n ? n : 1, sizeof *s->glu))) {
+            !(s->glu = calloc(n ? n : 1, sizeof *s->glu)) ||
+            !(s->und = calloc(n ? n : 1, sizeof *s->und))) {
             st = RC_ENOMEM;
             goto fail;
         }
-        for (size_t k = 0; k < n; k++)
+        for (size_t k = 0; k < n; k++) {
             s->cov[k] = (eng_cov){-INFINITY, {0.0, 0.0, 0.0}, 0.0, {0.0, 0.0, 0.0}};
+            s->und[k].partner = ENG_NONE; /* (nothing to undo) */
+        }
     }
     if (s->periodic && !(s->img = eng_alloc(3 * n * sizeof *s->img))) {
         st = RC_ENOMEM;

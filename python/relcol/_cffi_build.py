@@ -97,7 +97,7 @@ typedef struct rc_sim_diag {
     double wall_impulse_by_wall[6]; double momentum_scale; double max_overlap;
     uint64_t overlaps; uint64_t overlaps_by_kind[3]; uint64_t collisions; uint64_t events[6];
     size_t max_group; uint64_t group_fallbacks; uint64_t group_sequential;
-    uint64_t tube_conflicts; uint64_t order_conflicts;
+    uint64_t tube_conflicts; uint64_t order_conflicts; uint64_t rollbacks;
     int64_t stall_ball; int64_t stall_partner; ...;
 } rc_sim_diag;
 enum { RC_SIM_WALLS = 0, RC_SIM_PERIODIC = 1 };

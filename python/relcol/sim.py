@@ -345,7 +345,7 @@ class Sim:
         (contacts resolved) and events by kind, overlaps (contacts the overlap policy
         decided) by kind, heat, rest_mass_total, energy, kinetic_energy, momentum,
         wall_impulse, max_group, group_fallbacks, group_sequential, time, and for the
-        covariant frame tube_conflicts and order_conflicts (relcol/sim.h)."""
+        covariant frame tube_conflicts, order_conflicts and rollbacks (relcol/sim.h)."""
         d, d0 = self._diag(), self._d0
         de = d.energy - d0.energy
         dp = np.array([d.momentum.x + d.wall_impulse.x - d0.momentum.x - d0.wall_impulse.x,
@@ -375,6 +375,7 @@ class Sim:
             "group_sequential": int(d.group_sequential - d0.group_sequential),
             "tube_conflicts": int(d.tube_conflicts - d0.tube_conflicts),
             "order_conflicts": int(d.order_conflicts - d0.order_conflicts),
+            "rollbacks": int(d.rollbacks - d0.rollbacks),
         }
 
     def hash(self):

@@ -25,8 +25,8 @@ int main(int argc, char **argv)
     const size_t ns[2] = {400, 216};
     const double vs[2] = {0.5, 0.9};
     double worst = 0.0;
-    printf("%-9s %3s %7s %5s %5s %9s %9s %8s %6s %6s\n", "frame", "dim", "packing", "v_rms",
-           "eps", "contacts", "overlaps", "share", "tube", "order");
+    printf("%-9s %3s %7s %5s %5s %9s %9s %8s %6s %6s %6s\n", "frame", "dim", "packing", "v_rms",
+           "eps", "contacts", "overlaps", "share", "tube", "order", "undone");
     for (size_t f = 0; rc_toi_frames[f]; f++) {
         const rc_toi_frame *fr = rc_toi_frames[f];
         if (!fr->contracted || (only && strcmp(only, fr->name) != 0))
@@ -51,12 +51,13 @@ int main(int argc, char **argv)
                         rc_sim_diagnostics(s, &g);
                         const double share = (double)g.overlaps / (double)g.collisions;
                         worst = share > worst ? share : worst;
-                        printf("%-9s %3d %7.2f %5.2f %5.2f %9llu %9llu %7.3f%% %6llu %6llu\n",
+                        printf("%-9s %3d %7.2f %5.2f %5.2f %9llu %9llu %7.3f%% %6llu %6llu %6llu\n",
                                fr->name, d.dim, packs[di][pi], vs[vi], d.eps_ball,
                                (unsigned long long)g.collisions,
                                (unsigned long long)g.overlaps, 100.0 * share,
                                (unsigned long long)g.tube_conflicts,
-                               (unsigned long long)g.order_conflicts);
+                               (unsigned long long)g.order_conflicts,
+                               (unsigned long long)g.rollbacks);
                         fflush(stdout);
                         rc_sim_free(&s);
                     }

@@ -79,6 +79,8 @@ static void same_diag(const rc_sim *a, const rc_sim *b, const char *what)
                    memcmp(x.overlaps_by_kind, y.overlaps_by_kind, sizeof x.overlaps_by_kind) == 0 &&
                    x.group_sequential == y.group_sequential && x.wall_shared == y.wall_shared && x.pinned == y.pinned &&
                    x.group_fallbacks == y.group_fallbacks && x.max_group == y.max_group &&
+                   x.tube_conflicts == y.tube_conflicts &&
+                   x.order_conflicts == y.order_conflicts && x.rollbacks == y.rollbacks &&
                    memcmp(x.virial, y.virial, sizeof x.virial) == 0 &&
                    memcmp(x.virial_energy, y.virial_energy, sizeof x.virial_energy) == 0 &&
                    memcmp(x.helfand_wrap, y.helfand_wrap, sizeof x.helfand_wrap) == 0 &&
@@ -104,6 +106,10 @@ static void check_config(const config *k)
     rc_sim_diagnostics(ref, &dr);
     ENSURE_MSG(dr.collisions > 2000, "%s: only %llu collisions", what,
                (unsigned long long)dr.collisions);
+    /* (the per_ball undo records are part of the state: a run that undoes collisions) */
+    if (k->frame && strcmp(k->frame, "covariant") == 0)
+        ENSURE_MSG(dr.rollbacks > 10, "%s: only %llu rollbacks", what,
+                   (unsigned long long)dr.rollbacks);
 
     /* 1. outputs read at irregular times */
     rc_sim *s = start(k, &box);
@@ -205,12 +211,12 @@ static void test_refusals(void)
      * that is not p / M, a count of balls larger than the bytes hold */
     const size_t header = 8 + 4 * 6 + 8 * 3 + 4 * 2;
     /* now, the renumbering clock, the bookkeeping: 20 sums, 24 transfer moments,
-     * 12 + RC_SIM_EV_NKINDS counts and the 4 words of the progress check */
-    const size_t scalars = 8 * (2 + 20 + 24 + 12 + RC_SIM_EV_NKINDS + 4);
+     * 13 + RC_SIM_EV_NKINDS counts and the 4 words of the progress check */
+    const size_t scalars = 8 * (2 + 20 + 24 + 13 + RC_SIM_EV_NKINDS + 4);
     const size_t n = rc_sim_count(s), ball0 = header + scalars, aux0 = ball0 + 64 * n;
     struct { size_t at; size_t len; unsigned char val[8]; int want; } cases[] = {
         {8 + 4 * 5, 4, {3, 0, 0, 0}, RC_EMISMATCH},             /* dim 3 */
-        {8, 4, {3, 0, 0, 0}, RC_EMISMATCH}, /* format 3 (before the per_ball counters) */
+        {8, 4, {4, 0, 0, 0}, RC_EMISMATCH}, /* format 4 (before the undo records) */
         {aux0 + 48, 4, {0xff, 0xff, 0xff, 0x7f}, RC_ECORRUPT},  /* ev_partner INT32_MAX */
         {ball0 + 24, 1, {0x01}, RC_ECORRUPT},                   /* v.x's last bit */
         {aux0 + 56, 4, {0xff, 0xff, 0, 0}, RC_ECORRUPT},        /* cell 65535 */

@@ -230,8 +230,11 @@ typedef struct rc_sim_diag {
      * the engine's; events are still popped in table-time order, keyed max(t_X, now).
      * tube_conflicts: predicted contacts on the incoming side of a ball's last H (with
      * the incoming piece of its glued tube, which the table-time schedule cannot order):
-     * resolved by the overlap policy, counted in overlaps too (a wall's as kind [1]);
-     * one whose centres part there is left to separate. Where the straight cylinder of
+     * where the ball's last collision was a single contact of the model and neither ball
+     * has collided since, that collision is undone and the two contacts are solved
+     * together by the group rule, each ball's kink on its own worldline (rollbacks);
+     * else resolved by the overlap policy, counted in overlaps too (a wall's as kind
+     * [1]); one whose centres part there is left to separate. Where the straight cylinder of
      * a ball's stored line overlaps or meets a neighbour inside the ball's window, its
      * glued tube is asked instead (rc_glue_toi: first table time of contact).
      * order_conflicts: a model rule -- a kink that would come before the ball's previous
@@ -242,7 +245,7 @@ typedef struct rc_sim_diag {
      * rc_sim_get_ball gives a ball's latest segment (its outgoing line taken to the
      * engine's time, also when its kink lies later); rc_sim_sync and rc_sim_set_c re-plan
      * from those and forget the hyperplanes (a checkpoint keeps them). */
-    uint64_t tube_conflicts, order_conflicts;
+    uint64_t tube_conflicts, order_conflicts, rollbacks;
     /* After rc_sim_advance returned RC_ESTALL: the ball whose event was next (caller's
      * index) and its partner (a ball's index, -1 - w for wall w = 2 d + side, or a large
      * negative number for a cell crossing). */
