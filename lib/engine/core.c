@@ -38,16 +38,25 @@ static void advance_ball(rc_sim *s, int32_t i, double T)
  * its worldline (successive hyperplanes crossing inside the tube: collisions less than a
  * glue window apart, where the glued tube of the two is not defined) is a model rule:
  * the change is put at the previous kink, and counted. */
+/* H's normal and the kink's time (glue_kink; the stored line is the incoming one) */
+static double kink_time(const rc_sim *s, int32_t b, const rc_particle *in,
+                        const rc_particle *out, double tx, rc_vec3 dx, rc_vec3 *kappa)
+{
+    const double ic2 = s->inv_c2;
+    /* kappa = (g0 v0 + g1 v1) / (c^2 (g0 + g1)), g v = p / m, g = M / m (as rc_glue_make) */
+    const double W0 = eng_mass_rel(in->m, in->p, ic2) / in->m + eng_mass_rel(out->m, out->p, ic2) / out->m;
+    const rc_vec3 Wv = rc_v3_add(rc_v3_scale(1.0 / in->m, in->p), rc_v3_scale(1.0 / out->m, out->p));
+    *kappa = rc_v3_scale(ic2 / W0, Wv);
+    return tx - rc_v3_dot(*kappa, dx) / (1.0 - rc_v3_dot(*kappa, s->b[b].v));
+}
+
 static void glue_kink(rc_sim *s, int32_t b, const rc_particle *in, const rc_particle *out,
                       double tx, rc_vec3 dx)
 {
     eng_cov *cv = &s->cov[b];
     const double ic2 = s->inv_c2;
-    /* kappa = (g0 v0 + g1 v1) / (c^2 (g0 + g1)), g v = p / m, g = M / m (as rc_glue_make) */
-    const double W0 = eng_mass_rel(in->m, in->p, ic2) / in->m + eng_mass_rel(out->m, out->p, ic2) / out->m;
-    const rc_vec3 Wv = rc_v3_add(rc_v3_scale(1.0 / in->m, in->p), rc_v3_scale(1.0 / out->m, out->p));
-    const rc_vec3 kappa = rc_v3_scale(ic2 / W0, Wv);
-    double te = tx - rc_v3_dot(kappa, dx) / (1.0 - rc_v3_dot(kappa, s->b[b].v));
+    rc_vec3 kappa;
+    double te = kink_time(s, b, in, out, tx, dx, &kappa);
     /* the tube, for a neighbour met while the ball is in its window (X at the origin) */
     if (rc_glue_make(ic2, s->b[b].r, in, out, tx, rc_v3_scale(-1.0, dx), rc_v3(0.0, 0.0, 0.0),
                      &s->glu[b]) != RC_OK)
@@ -311,8 +320,10 @@ static void write_undo(rc_sim *s, size_t nm, int32_t bp, int model, const rc_par
     }
 }
 
+static int undoable(const rc_sim *s, int32_t w, int32_t k);
+
 static int try_single(rc_sim *s, size_t nm, int32_t bp, double T, const double *tx,
-                      const rc_vec3 *dX, int model)
+                      const rc_vec3 *dX, int model, int undo_order)
 {
     rc_particle *P = s->grp_part;
     rc_vec3 vold[2];
@@ -341,6 +352,19 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T, const double *
     if (st != RC_OK) {
         s->bk.events[RC_SIM_EV_TC] = tc_before;
         return st;
+    }
+    /* per_ball frames: a ball whose new kink would come before its last one along its
+     * worldline met its new partner before that kink: the last collision is undone if it
+     * can be (2 + the member: the caller's rollback), else the order rule (glue_kink) */
+    for (size_t j = 0; j < nm && s->glue && model && undo_order && nm > 1; j++) {
+        const int32_t b = s->grp_ball[j];
+        rc_vec3 kap;
+        if ((Q[j].m != P[j].m || memcmp(&Q[j].p, &P[j].p, sizeof Q[j].p) != 0) &&
+            !(kink_time(s, b, &P[j], &Q[j], tx[j], dX[j], &kap) >= s->cov[b].t_k) &&
+            undoable(s, b, s->grp_ball[1 - j])) {
+            s->bk.events[RC_SIM_EV_TC] = tc_before;
+            return 2 + (int)j;
+        }
     }
     for (size_t j = 0; j < nm; j++) {
         int32_t b = s->grp_ball[j];
@@ -424,6 +448,7 @@ static int wall_event_point(rc_sim *s, int32_t i, int w, double *tx, rc_vec3 *dx
 }
 
 static int undo_conflict(rc_sim *s, int32_t i, int32_t bp, double T, int tube);
+static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx);
 
 static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
 {
@@ -508,7 +533,13 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
             s->bk.overlap_kind[1]++;
         }
     }
-    const int single = try_single(s, nm, bp, T, tx, dX, have_x);
+    int single = try_single(s, nm, bp, T, tx, dX, have_x, 1);
+    if (single >= 2) { /* (an order conflict that undoing w's last collision resolves) */
+        const int st = rollback(s, s->grp_ball[single - 2], s->grp_ball[3 - single], T, tx[0]);
+        if (st != 0)
+            return st > 0 ? RC_OK : st;
+        single = try_single(s, nm, bp, T, tx, dX, have_x, 0);
+    }
     if (single != 0)
         return single > 0 ? RC_OK : single;
     if (s->def.sim_tol > 0.0) {
@@ -727,6 +758,20 @@ static void to_incoming(rc_sim *s, int32_t b, rc_vec3 *xe)
     s->clk[b].tau_last = u->tau_last;
 }
 
+/* Can ball w's last collision be undone for a contact with ball k: a single contact of
+ * the model, neither w nor its partner (not k) has collided since. */
+static int undoable(const rc_sim *s, int32_t w, int32_t k)
+{
+    const eng_undo *u = &s->und[w];
+    if (u->partner == ENG_NONE || u->cnt != s->cnt[w])
+        return 0;
+    if (u->partner < 0)
+        return 1;
+    const int32_t j = (int32_t)s->slot[u->partner];
+    return j != k && s->cnt[j] == u->pcnt && s->und[j].partner == (int32_t)s->id[w] &&
+           s->und[j].cnt == s->cnt[j];
+}
+
 /* Ball w met ball k before its last kink along its tube (a tube conflict at the
  * prediction's X, table time tx; an overlap the frame reported: tx = inf). If that kink
  * was a single contact of the model (with ball j or a wall) and neither w nor j has
@@ -740,14 +785,11 @@ static void to_incoming(rc_sim *s, int32_t b, rc_vec3 *xe)
  * apply (nothing changed); the law's failure (negative). */
 static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx)
 {
-    const eng_undo uw = s->und[w];
-    if (uw.partner == ENG_NONE || uw.cnt != s->cnt[w])
+    if (!undoable(s, w, k))
         return 0;
+    const eng_undo uw = s->und[w];
     const int ball = uw.partner >= 0;
     const int32_t j = ball ? (int32_t)s->slot[uw.partner] : ENG_NONE;
-    if (ball && (j == k || s->cnt[j] != uw.pcnt || s->und[j].partner != (int32_t)s->id[w] ||
-                 s->und[j].cnt != s->cnt[j]))
-        return 0;
     /* w on its incoming line (its records kept, to put back if there is no contact of the
      * model); the frame is asked from a pair's light-crossing time before both the
      * conflict's X and w's kink: from t0 = min(t_X, t_E) itself the pair's ZMF, whose
@@ -878,13 +920,9 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx)
         for (size_t q = 0; q < 2; q++)
             d[q] = eng_image(s, rc_v3_sub(xw[q], rc_v3_axpy(bb->x, tw[q] - bb->t, bb->v)));
         if (b == w) {
-            const double ic2 = s->inv_c2;
-            const double W0 = eng_mass_rel(B[m].m, B[m].p, ic2) / B[m].m +
-                              eng_mass_rel(P[m].m, P[m].p, ic2) / P[m].m;
-            const rc_vec3 kap = rc_v3_scale(ic2 / W0, rc_v3_add(rc_v3_scale(1.0 / B[m].m, B[m].p),
-                                                               rc_v3_scale(1.0 / P[m].m, P[m].p)));
-            const double den = 1.0 - rc_v3_dot(kap, bb->v);
-            c = tw[1] - rc_v3_dot(kap, d[1]) / den > tw[0] - rc_v3_dot(kap, d[0]) / den;
+            rc_vec3 kap;
+            c = kink_time(s, b, &B[m], &P[m], tw[1], d[1], &kap) >
+                kink_time(s, b, &B[m], &P[m], tw[0], d[0], &kap);
         }
         glue_kink(s, b, &B[m], &P[m], tw[c], d[c]);
     }
