@@ -77,7 +77,7 @@ typedef struct cov_run_out {
     uint64_t collisions; /* contacts resolved by t_end */
     uint64_t early;      /* contacts resolved before t_quiet */
     uint64_t overlaps;   /* contacts decided by the overlap policy */
-    uint64_t tube_conflicts, order_conflicts; /* the per-ball frames' (rc_sim_diag) */
+    uint64_t tube_conflicts, order_conflicts, rollbacks; /* the per-ball frames' (rc_sim_diag) */
     uint64_t open;       /* pairs whose lines may still meet after t_end (cov_may_meet) */
     int walls;           /* a ball reached a wall (the cluster is no longer open) */
     int running;         /* on failure: 0 the engine refused the start, 1 it failed later */
@@ -89,7 +89,8 @@ typedef struct cov_result {
     int which;           /* that run: 0 table, 1 moving, 2 round-off */
     int running;         /* 0: the engine refused its start; 1: it failed while running */
     uint64_t coll[3], early[3], overlaps[3]; /* per run: table, moving, round-off */
-    uint64_t tube[3], order[3]; /* per run: tube and order conflicts (per-ball frames) */
+    uint64_t tube[3], order[3], undone[3]; /* per run: tube and order conflicts, and
+                                              collisions undone (per-ball frames) */
     uint64_t open[3];    /* per run: pairs that may still meet after t_end (0: finished) */
     int walls;           /* a ball of some run reached a wall */
     double dp_frames, dp_roundoff; /* max_i |p_i - q_i| / rms |p| */
@@ -167,6 +168,7 @@ static inline int cov_run(const cov_def *d, const rc_toi_frame *fr, const rc_sim
         o->overlaps = g.overlaps;
         o->tube_conflicts = g.tube_conflicts;
         o->order_conflicts = g.order_conflicts;
+        o->rollbacks = g.rollbacks;
         for (size_t i = 0; i < d->n && o->p; i++) {
             rc_sim_ball q;
             rc_sim_get_ball(s, i, &q);
@@ -382,6 +384,7 @@ static int cov_compare(const cov_def *d, const rc_toi_frame *fr, const cov_clust
         res->overlaps[k] = o[k].overlaps;
         res->tube[k] = o[k].tube_conflicts;
         res->order[k] = o[k].order_conflicts;
+        res->undone[k] = o[k].rollbacks;
         res->open[k] = o[k].open;
         res->walls |= o[k].walls;
     }

@@ -107,7 +107,8 @@ static void usage(FILE *f)
 "               engine does not expose its contact events: these worldlines carry where\n"
 "               and when each ball last changed velocity)\n"
 "  conflicts_table,conflicts_moving  contacts the per-ball (covariant) frame's rules\n"
-"               decided, tube and order conflicts (0 in the other frames)\n"
+"               decided: tube and order conflicts and collisions undone (0 in the\n"
+"               other frames)\n"
 "  note         empty, or why the row has no differences: which run the engine refused\n"
 "               or failed, and why (e.g. shapes that overlap on the moving frame's\n"
 "               slice); a collision before the moving frame's start; a wall reached;\n"
@@ -361,8 +362,8 @@ static int write_csv(const char *path, const options *o, const row *rows, size_t
                     (unsigned long long)w->r.coll[2], (unsigned long long)w->r.overlaps[0],
                     (unsigned long long)w->r.overlaps[1], w->r.dp_frames, w->r.dp_roundoff,
                     w->r.dx_frames, w->r.dx_roundoff,
-                    (unsigned long long)(w->r.tube[0] + w->r.order[0]),
-                    (unsigned long long)(w->r.tube[1] + w->r.order[1]));
+                    (unsigned long long)(w->r.tube[0] + w->r.order[0] + w->r.undone[0]),
+                    (unsigned long long)(w->r.tube[1] + w->r.order[1] + w->r.undone[1]));
         else
             fprintf(a.f, ",,,,,,,,,,,");
         fprintf(a.f, "%s\n", w->note);

@@ -37,8 +37,8 @@ static int measure(const cov_def *d)
     printf("open cluster: %zu discs on a ring of radii %g..%g, c = %g, moving frame %g; t' = 0 "
            "spans table times [%.2f, %.2f]\n", d->n, d->inner, d->outer, d->c, d->u, cl.tmin,
            cl.tmax);
-    printf("%-9s %10s %10s %12s %12s %9s %6s %6s %5s\n", "frame", "coll.table", "coll.moving",
-           "dp(frames)", "dp(1e-15)", "overlaps", "tube", "order", "open");
+    printf("%-9s %10s %10s %12s %12s %9s %6s %6s %6s %5s\n", "frame", "coll.table", "coll.moving",
+           "dp(frames)", "dp(1e-15)", "overlaps", "tube", "order", "undone", "open");
     for (size_t f = 0; rc_toi_frames[f]; f++) {
         const rc_toi_frame *fr = rc_toi_frames[f];
         cov_result r;
@@ -58,11 +58,12 @@ static int measure(const cov_def *d)
             printf("%-9s a collision before the moving frame's t' = 0 (table run)\n", fr->name);
             continue;
         }
-        printf("%-9s %10llu %10llu %12.3e %12.3e %4llu/%-4llu %6llu %6llu %5llu%s\n", fr->name,
+        printf("%-9s %10llu %10llu %12.3e %12.3e %4llu/%-4llu %6llu %6llu %6llu %5llu%s\n", fr->name,
                (unsigned long long)r.coll[0], (unsigned long long)r.coll[1], r.dp_frames,
                r.dp_roundoff, (unsigned long long)r.overlaps[0],
                (unsigned long long)r.overlaps[1], (unsigned long long)(r.tube[0] + r.tube[1]),
                (unsigned long long)(r.order[0] + r.order[1]),
+               (unsigned long long)(r.undone[0] + r.undone[1]),
                (unsigned long long)(r.open[0] + r.open[1] + r.open[2]),
                r.walls ? " (a wall reached)" : "");
     }

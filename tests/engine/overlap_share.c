@@ -1,7 +1,8 @@
 /* overlap_share — the share of contacts decided by the overlap policy (rc_sim_diag.overlaps
  * over collisions) in every contracted frame of the library's table, over the range issue
  * 16 names: 2-D to packing 0.7 and 3-D to 0.45, rms 0.5c and 0.9c, eps 1 and eps 0.5 with
- * the TC model, with the covariant frame's tube and order conflicts. A measurement, not a
+ * the TC model, with the covariant frame's tube and order conflicts and collisions undone.
+ * A measurement, not a
  * test: the table and zmf frames change a ball's shape at one table instant, and the
  * covariant frame's glued tubes leave the contacts within a glue window to its rules
  * (papers/shape-change.md, section 6). Prints one line per run and the largest share;
