@@ -228,13 +228,16 @@ typedef struct rc_sim_diag {
      * hyperplane H through the contact event X with normal u_in + u_out meets it, so its
      * world tube is the glued one and its stored state may be at a time after or before
      * the engine's; events are still popped in table-time order, keyed max(t_X, now).
+     * rollbacks: contacts before a ball's last kink along its tube -- predicted on the
+     * incoming side of its last H, an overlap the frame reports, or a new kink that would
+     * come before the last -- where that kink's collision was a single contact of the
+     * model and neither of its balls has collided since: the collision is undone (its
+     * books too) and the two contacts are solved together by the group rule, each
+     * ball's kink on its own worldline (papers/shape-change.md, section 7). Otherwise:
      * tube_conflicts: predicted contacts on the incoming side of a ball's last H (with
-     * the incoming piece of its glued tube, which the table-time schedule cannot order):
-     * where the ball's last collision was a single contact of the model and neither ball
-     * has collided since, that collision is undone and the two contacts are solved
-     * together by the group rule, each ball's kink on its own worldline (rollbacks);
-     * else resolved by the overlap policy, counted in overlaps too (a wall's as kind
-     * [1]); one whose centres part there is left to separate. Where the straight cylinder of
+     * the incoming piece of its glued tube, which the table-time schedule cannot order),
+     * resolved by the overlap policy, counted in overlaps too (a wall's as kind [1]);
+     * one whose centres part there is left to separate. Where the straight cylinder of
      * a ball's stored line overlaps or meets a neighbour inside the ball's window, its
      * glued tube is asked instead (rc_glue_toi: first table time of contact).
      * order_conflicts: a model rule -- a kink that would come before the ball's previous
