@@ -5,12 +5,42 @@
 #include <math.h>
 
 #include "relcol/toi.h"
+#include "pair_axis.h"
 #include "shape_math.h"
 
 /* The zmf frame's kernel (lib/toi_zmf.c), shared with the covariant frame, whose pair
  * contact is the same event. */
 int rc_toi_zmf_(const rc_toi_params *prm, const rc_toi_ball *a, const rc_toi_ball *b,
                 rc_toi_workspace *ws, rc_toi_contact *out);
+
+/* 1 when the pair's ZMF moves so fast that the plain boost into it cancels (pair_axis.h,
+ * RC_PAIR_FAST: |P|^2/c^2 > 0.9 Mt^2); slower pairs keep the plain forms and their bits. */
+static inline int rc_toi_zmf_is_fast_(const rc_toi_ball *a, const rc_toi_ball *b, double k,
+                                      double M0, double M1)
+{
+    const double Mt = M0 + M1;
+    return rc_v3_norm2(rc_v3_add(a->p, b->p)) * k > RC_PAIR_FAST * Mt * Mt;
+}
+
+/* A fast pair in its ZMF without the gamma^2 cancellation of the plain boost
+ * p + [(g - 1) p.uhat - g M |u|] uhat (papers/time-of-impact.md, "Accuracy near c"): ball
+ * 0's ZMF momentum t0 + g dl uhat from the pair's split along its total momentum
+ * (pair_axis.h, rc_pair_split_of: the transverse part from p0 x p1, the longitudinal one
+ * a rapidity difference, g from a sum of positive terms), ball 1's its negative; the ZMF
+ * energies M0z, M1z from those. For rc_toi_zmf_is_fast_ pairs (|P| > 0). */
+static inline void rc_toi_zmf_fast_(const rc_toi_ball *a, const rc_toi_ball *b, double k,
+                                    double M0, double M1, double *g, rc_vec3 *p0z,
+                                    double *M0z, double *M1z)
+{
+    const rc_particle pa = {a->m, a->p}, pb = {b->m, b->p};
+    rc_pair_split z;
+    rc_pair_split_of(&pa, &pb, M0, M1, k, sqrt(k), &z);
+    *g = z.g;
+    *p0z = rc_v3_axpy(z.t0, z.g * z.dl, z.uhat);
+    const double q2 = rc_v3_norm2(*p0z) * k;
+    *M0z = sqrt(a->m * a->m + q2);
+    *M1z = sqrt(b->m * b->m + q2);
+}
 
 /* Shape of a ball state whose relativistic mass M = sqrt(m^2 + p^2/c^2) is known, given
  * 1/c (sqrt(inv_c2)) as well (for callers that make many shapes). */

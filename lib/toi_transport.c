@@ -13,6 +13,7 @@
 
 #include "relcol/status.h"
 #include "relcol/toi.h"
+#include "kinematics_private.h"
 #include "toi_private.h"
 
 /* The pair in its CM frame: velocity u of that frame (gamma gu), the centres at CM time
@@ -21,6 +22,9 @@
 typedef struct cm_pair {
     double k, gu, tau0;
     rc_vec3 u, x0, x1, v0, v1;
+    int fast;      /* a CM moving near c (rc_toi_zmf_is_fast_): ... */
+    double t0, t1; /* ... the given states' CM times, and the ratios of their balls' table */
+    double r0, r1; /* and CM energies M/Mz: table time elapsed per CM time on a worldline */
 } cm_pair;
 
 static int cm_of(const rc_toi_params *prm, const rc_toi_ball *a, const rc_toi_ball *b,
@@ -30,6 +34,26 @@ static int cm_of(const rc_toi_params *prm, const rc_toi_ball *a, const rc_toi_ba
     const double M0 = rc_mass_rel(a->m, a->p, k), M1 = rc_mass_rel(b->m, b->p, k);
     c->k = k;
     c->u = rc_v3_scale(1.0 / (M0 + M1), rc_v3_add(a->p, b->p));
+    c->fast = rc_toi_zmf_is_fast_(a, b, k, M0, M1);
+    if (c->fast) {
+        /* the plain boost cancels to order gamma^2 (toi_private.h, rc_toi_zmf_fast_) */
+        double M0z, M1z;
+        rc_vec3 p0z;
+        rc_toi_zmf_fast_(a, b, k, M0, M1, &c->gu, &p0z, &M0z, &M1z);
+        c->v0 = rc_v3_scale(1.0 / M0z, p0z);
+        c->v1 = rc_v3_scale(-1.0 / M1z, p0z);
+        c->r0 = M0 / M0z;
+        c->r1 = M1 / M1z;
+        rc_four e0 = {0.0, a->x}, e1 = {0.0, b->x};
+        rc_boost_g(c->u, c->gu, k, &e0);
+        rc_boost_g(c->u, c->gu, k, &e1);
+        c->t0 = e0.t;
+        c->t1 = e1.t;
+        c->tau0 = e0.t > e1.t ? e0.t : e1.t;
+        c->x0 = rc_v3_axpy(e0.x, c->tau0 - e0.t, c->v0);
+        c->x1 = rc_v3_axpy(e1.x, c->tau0 - e1.t, c->v1);
+        return RC_OK;
+    }
     int st = rc_gamma_from_velocity(c->u, k, &c->gu);
     if (st != RC_OK)
         return st;
@@ -107,8 +131,24 @@ static int transport_toi(const rc_toi_params *prm, const rc_toi_ball *a, const r
     rc_vec3 nz = rc_v3_axpy(ds, -s / sqrt(w2), w);
     nz = rc_v3_scale(1.0 / sqrt(rc_v3_norm2(nz)), nz);
 
-    /* the event: midpoint of the two closest-approach events, boosted back */
     const double T = c.tau0 + ts;
+    const double un = rc_v3_dot(c.u, nz);
+    const double nf = 1.0 / sqrt(1.0 + c.gu * c.gu * c.k * un * un);
+    if (c.fast) {
+        /* each centre's closest-approach event on its table worldline at the table time
+         * its proper time gives ((CM time elapsed) M/Mz): boosting the midpoint back would
+         * subtract terms gamma^2 times the result */
+        const double s0 = ((c.tau0 - c.t0) + ts) * c.r0, s1 = ((c.tau0 - c.t1) + ts) * c.r1;
+        const rc_vec3 v0 = rc_v3_scale(1.0 / rc_mass_rel(a->m, a->p, c.k), a->p);
+        const rc_vec3 v1 = rc_v3_scale(1.0 / rc_mass_rel(b->m, b->p, c.k), b->p);
+        rc_four qn = {0.0, nz};
+        rc_boost_g(rc_v3_scale(-1.0, c.u), c.gu, c.k, &qn);
+        out->t = 0.5 * (s0 + s1);
+        out->x = rc_v3_scale(0.5, rc_v3_add(rc_v3_axpy(a->x, s0, v0), rc_v3_axpy(b->x, s1, v1)));
+        out->n = rc_v3_scale(nf, qn.x);
+        return RC_OK;
+    }
+    /* the event: midpoint of the two closest-approach events, boosted back */
     const rc_vec3 X0 = rc_v3_axpy(c.x0, ts, c.v0), X1 = rc_v3_axpy(c.x1, ts, c.v1);
     rc_four em = {T, rc_v3_scale(0.5, rc_v3_add(X0, X1))};
     rc_four qn = {0.0, nz};
@@ -121,8 +161,7 @@ static int transport_toi(const rc_toi_params *prm, const rc_toi_ball *a, const r
     out->x = em.x;
     /* (0, nz) boosted has spatial norm^2 1 + gamma_u^2 (u.nz)^2 / c^2: normalised, the
      * four-vector is (u.n/c^2, n), the zmf law's q (as the zmf frame hands it over) */
-    const double un = rc_v3_dot(c.u, nz);
-    out->n = rc_v3_scale(1.0 / sqrt(1.0 + c.gu * c.gu * c.k * un * un), qn.x);
+    out->n = rc_v3_scale(nf, qn.x);
     return RC_OK;
 }
 

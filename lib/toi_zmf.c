@@ -9,6 +9,7 @@
 
 #include "relcol/status.h"
 #include "relcol/toi.h"
+#include "kinematics_private.h"
 #include "toi_private.h"
 
 /* v' - (v - u), with v' the velocity seen from the frame moving at u; every term has a
@@ -23,11 +24,54 @@ static rc_vec3 boost_velocity_correction(rc_vec3 v, rc_vec3 u, double gu, double
     return rc_v3_scale(1.0 / (1.0 - uv * k), num);
 }
 
+/* The zmf kernel for a pair whose ZMF moves near c (rc_toi_zmf_is_fast_): the ZMF momenta
+ * from rc_toi_zmf_fast_, the relative ZMF velocity as the difference of two opposite
+ * velocities, and ball 0's table time at contact from its proper time, (ZMF time elapsed)
+ * M0/M0z, where boosting its centre event back would subtract terms gamma^2 times the
+ * result. The events of the given states and the offsets boost without cancellation. */
+static int zmf_fast(const rc_toi_params *prm, const rc_toi_ball *a, const rc_toi_ball *b,
+                    rc_toi_workspace *ws, rc_toi_contact *out, double k, double M0, double M1)
+{
+    const rc_vec3 v0 = rc_v3_scale(1.0 / M0, a->p);
+    const rc_vec3 u = rc_v3_scale(1.0 / (M0 + M1), rc_v3_add(a->p, b->p));
+    double gu, M0z, M1z;
+    rc_vec3 p0z;
+    rc_toi_zmf_fast_(a, b, k, M0, M1, &gu, &p0z, &M0z, &M1z);
+    const rc_vec3 p1z = rc_v3_scale(-1.0, p0z);
+    const rc_toi_shape s0 = rc_toi_shape_of(a->r, a->m, p0z, k);
+    const rc_toi_shape s1 = rc_toi_shape_of(b->r, b->m, p1z, k);
+    const rc_vec3 v0z = rc_v3_scale(1.0 / M0z, p0z), v1z = rc_v3_scale(1.0 / M1z, p1z);
+    rc_four e0 = {0.0, a->x}, e1 = {0.0, b->x};
+    rc_boost_g(u, gu, k, &e0);
+    rc_boost_g(u, gu, k, &e1);
+    const double tau0 = e0.t > e1.t ? e0.t : e1.t;
+    const rc_vec3 x0z = rc_v3_axpy(e0.x, tau0 - e0.t, v0z);
+    const rc_vec3 x1z = rc_v3_axpy(e1.x, tau0 - e1.t, v1z);
+    double tz;
+    rc_vec3 y0z, nz;
+    int st = rc_toi_shapes_rel(&s0, &s1, rc_v3_sub(x1z, x0z), rc_v3_sub(v1z, v0z), prm, ws,
+                               &tz, &y0z, &nz);
+    if (st != RC_OK)
+        return st;
+    const rc_vec3 mu = rc_v3_scale(-1.0, u);
+    const double tc0 = ((tau0 - e0.t) + tz) * (M0 / M0z);
+    rc_four dy = {0.0, y0z}, qn = {0.0, nz};
+    rc_boost_g(mu, gu, k, &dy);
+    rc_boost_g(mu, gu, k, &qn);
+    out->t = tc0 + dy.t;
+    out->x = rc_toi_point_(a->x, v0, tc0, dy.x);
+    const double un = rc_v3_dot(u, nz);
+    out->n = rc_v3_scale(1.0 / sqrt(1.0 + gu * gu * k * un * un), qn.x);
+    return RC_OK;
+}
+
 int rc_toi_zmf_(const rc_toi_params *prm, const rc_toi_ball *a, const rc_toi_ball *b,
                 rc_toi_workspace *ws, rc_toi_contact *out)
 {
     const double k = rc_inv_c2_of(prm->c);
     const double M0 = rc_mass_rel(a->m, a->p, k), M1 = rc_mass_rel(b->m, b->p, k);
+    if (rc_toi_zmf_is_fast_(a, b, k, M0, M1))
+        return zmf_fast(prm, a, b, ws, out, k, M0, M1);
     const rc_vec3 v0 = rc_velocity(a->m, a->p, k), v1 = rc_velocity(b->m, b->p, k);
     const rc_vec3 u = rc_v3_scale(1.0 / (M0 + M1), rc_v3_add(a->p, b->p));
     double gu;

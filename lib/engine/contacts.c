@@ -16,6 +16,7 @@
 #include "../kinematics_private.h"
 #include "../pair_axis.h"
 #include "contacts.h"
+#include "ddouble.h"
 
 /* Newton stops when every step is below this fraction of the largest impulse or ball
  * momentum (relative, a few ulps above the round-off floor of the residuals, which are
@@ -47,6 +48,13 @@ typedef struct cwork {
                               (a receding contact may at most stop receding) */
     double *Mp;            /* post states for the current J */
     rc_vec3 *pp;
+    /* A group with a pair moving fast together (fast_pairs): the conditions' terms cancel
+     * to order gamma^2, so the energies, q_t, post states, residuals and Jacobian are also
+     * kept in double-double (NULL otherwise) */
+    const eng_dd *M0d;
+    const eng_dd *qtd;
+    eng_dd *Mpd;
+    eng_ddv *ppd;
 } cwork;
 
 /* Post states of every ball for impulses J (inactive contacts carry none). */
@@ -67,6 +75,28 @@ static void post_states(const cwork *w, size_t nb, const double *J)
             w->Mp[c->b] += J[j] * w->qt[j];
         }
     }
+    if (!w->Mpd)
+        return;
+    for (size_t i = 0; i < nb; i++) {
+        w->ppd[i] = eng_ddv_of(w->b0[i].p);
+        w->Mpd[i] = w->M0d[i];
+    }
+    for (size_t j = 0; j < w->k; j++) {
+        if (!w->active[j])
+            continue;
+        const rc_contact *c = &w->c[j];
+        const eng_dd dM = eng_dd_mul_d(w->qtd[j], J[j]);
+        w->ppd[c->a] = eng_ddv_axpy(w->ppd[c->a], -J[j], c->n);
+        w->Mpd[c->a] = eng_dd_sub(w->Mpd[c->a], dM);
+        if (c->b >= 0) {
+            w->ppd[c->b] = eng_ddv_axpy(w->ppd[c->b], J[j], c->n);
+            w->Mpd[c->b] = eng_dd_add(w->Mpd[c->b], dM);
+        }
+    }
+    for (size_t i = 0; i < nb; i++) {
+        w->pp[i] = rc_v3(w->ppd[i].x.hi, w->ppd[i].y.hi, w->ppd[i].z.hi);
+        w->Mp[i] = w->Mpd[i].hi;
+    }
 }
 
 /* Residual of contact j: M_b' p_a'.n - M_a' p_b'.n + eps a0 (M_a' + M_b') for two balls
@@ -75,6 +105,13 @@ static void post_states(const cwork *w, size_t nb, const double *J)
 static double residual(const cwork *w, size_t j)
 {
     const rc_contact *c = &w->c[j];
+    if (w->Mpd && c->b >= 0) {
+        const eng_dd pan = eng_ddv_dot_d(w->ppd[c->a], c->n);
+        const eng_dd pbn = eng_ddv_dot_d(w->ppd[c->b], c->n);
+        const eng_dd Ma = w->Mpd[c->a], Mb = w->Mpd[c->b];
+        const eng_dd r = eng_dd_sub(eng_dd_mul(Mb, pan), eng_dd_mul(Ma, pbn));
+        return eng_dd_add(r, eng_dd_mul_d(eng_dd_add(Ma, Mb), c->eps * w->a0[j])).hi;
+    }
     double pan = rc_v3_dot(w->pp[c->a], c->n);
     if (c->b < 0)
         return pan + c->eps * w->a0[j];
@@ -93,6 +130,19 @@ static double jacobian(const cwork *w, size_t j, size_t l)
     if (c->b < 0)
         return sa * nn;
     double sb = (cl->a == c->b ? -1.0 : 0.0) + (cl->b == c->b ? 1.0 : 0.0);
+    if (w->Mpd) {
+        /* (the diagonal is -M_t s: n.n and q_t to double-double too) */
+        const eng_dd nnd = eng_dd_dot(c->n, cl->n);
+        const eng_dd pan = eng_ddv_dot_d(w->ppd[c->a], c->n);
+        const eng_dd pbn = eng_ddv_dot_d(w->ppd[c->b], c->n);
+        const eng_dd Ma = w->Mpd[c->a], Mb = w->Mpd[c->b];
+        /* dMb pan - dMa pbn + (Mb sa - Ma sb) nn + eps a0 (dMa + dMb), dM = s q_t */
+        const eng_dd t1 = eng_dd_mul(w->qtd[l], eng_dd_sub(eng_dd_mul_d(pan, sb),
+                                                           eng_dd_mul_d(pbn, sa)));
+        const eng_dd t2 = eng_dd_mul(nnd, eng_dd_sub(eng_dd_mul_d(Mb, sa), eng_dd_mul_d(Ma, sb)));
+        const eng_dd t3 = eng_dd_mul_d(w->qtd[l], c->eps * w->a0[j] * (sa + sb));
+        return eng_dd_add(eng_dd_add(t1, t2), t3).hi;
+    }
     double dpan = sa * nn, dpbn = sb * nn;
     double dMa = sa * w->qt[l], dMb = sb * w->qt[l];
     double pan = rc_v3_dot(w->pp[c->a], c->n), pbn = rc_v3_dot(w->pp[c->b], c->n);
@@ -232,6 +282,7 @@ static int newton(cwork *w, size_t nb, double *J, double *A, double *rhs, size_t
 
 static int keep_rest_masses(double inv_c2, size_t nb, const rc_particle *b0, size_t k,
                             const rc_contact *c, const int *active, double *Mp, rc_vec3 *pp,
+                            const eng_dd *Mpd, const eng_ddv *ppd, const double *m2d,
                             double *mstar)
 {
     /* mstar[i]: 0 untouched, -1 touched elastically only, -2 touched inelastically */
@@ -255,7 +306,8 @@ static int keep_rest_masses(double inv_c2, size_t nb, const rc_particle *b0, siz
         one = i;
         Mt += Mp[i];
         Pt = rc_v3_add(Pt, pp[i]);
-        const double m2 = Mp[i] * Mp[i] - rc_v3_norm2(pp[i]) * inv_c2;
+        /* (m2d: the post rest masses squared without the cancellation, fast_pairs) */
+        const double m2 = m2d ? m2d[i] : Mp[i] * Mp[i] - rc_v3_norm2(pp[i]) * inv_c2;
         const double mnew = m2 > 0.0 && Mp[i] > 0.0 ? sqrt(m2) : 0.0; /* not timelike: m */
         mstar[i] = mstar[i] == -1.0 ? b0[i].m : fmax(b0[i].m, mnew);
     }
@@ -269,10 +321,56 @@ static int keep_rest_masses(double inv_c2, size_t nb, const rc_particle *b0, siz
         Mp[one] = sqrt(mstar[one] * mstar[one] + rc_v3_norm2(pp[one]) * inv_c2);
         return RC_OK;
     }
-    const rc_vec3 u = rc_v3_scale(1.0 / Mt, Pt);
+    rc_vec3 u = rc_v3_scale(1.0 / Mt, Pt);
     /* ZMF states of the touched balls (kept in Mp, pp); W their total energy there */
-    double W = 0.0, W0 = 0.0;
-    for (size_t i = 0; i < nb; i++) {
+    double W = 0.0, W0 = 0.0, g = 0.0, ul = 0.0;
+    rc_vec3 uh = rc_v3(0, 0, 0);
+    /* A group with a fast pair whose touched balls' ZMF moves near c: the boost there
+     * subtracts terms gamma^2 times the result, so it is done on the double-double post
+     * states (Mpd, ppd; an impulse-only state may be spacelike, so no rest mass is
+     * assumed): with P, M_t their sums, uhat = P/|P|, |u| = |P|/M_t and g = M_t/minv,
+     * minv^2 = M_t^2 - |P|^2/c^2, a ball's ZMF momentum is its part across uhat plus
+     * g (p.uhat - M |u|) uhat and its energy g (M - |u| p.uhat/c^2). */
+    const int fastz = Mpd && rc_v3_norm2(Pt) * inv_c2 > RC_PAIR_FAST * Mt * Mt;
+    if (fastz) {
+        eng_dd Md = eng_dd_of(0.0);
+        eng_ddv Pd = eng_ddv_of(rc_v3(0, 0, 0));
+        for (size_t i = 0; i < nb; i++) {
+            if (mstar[i] == 0.0)
+                continue;
+            Md = eng_dd_add(Md, Mpd[i]);
+            Pd = (eng_ddv){eng_dd_add(Pd.x, ppd[i].x), eng_dd_add(Pd.y, ppd[i].y),
+                           eng_dd_add(Pd.z, ppd[i].z)};
+        }
+        const eng_dd P2 = eng_ddv_norm2(Pd), Pl = eng_dd_sqrt(P2);
+        const eng_dd mi2 = eng_dd_sub(eng_dd_mul(Md, Md), eng_dd_mul_d(P2, inv_c2));
+        if (!(mi2.hi > 0.0))
+            return RC_ENOCONVERGE;
+        g = eng_dd_div(Md, eng_dd_sqrt(mi2)).hi;
+        const eng_dd uld = eng_dd_div(Pl, Md); /* |u| */
+        ul = uld.hi;
+        uh = rc_v3_scale(1.0 / Pl.hi, rc_v3(Pd.x.hi, Pd.y.hi, Pd.z.hi));
+        u = rc_v3_scale(ul, uh);
+        /* uhat to double-double (a double one is off unit length by 2^-53, which the
+         * parts along it would carry into the ZMF times gamma) */
+        const eng_ddv uhd = {eng_dd_div(Pd.x, Pl), eng_dd_div(Pd.y, Pl), eng_dd_div(Pd.z, Pl)};
+        for (size_t i = 0; i < nb; i++) {
+            if (mstar[i] == 0.0)
+                continue;
+            const eng_dd pl = eng_ddv_dot(ppd[i], uhd);
+            const eng_ddv pt = {eng_dd_sub(ppd[i].x, eng_dd_mul(pl, uhd.x)),
+                                eng_dd_sub(ppd[i].y, eng_dd_mul(pl, uhd.y)),
+                                eng_dd_sub(ppd[i].z, eng_dd_mul(pl, uhd.z))};
+            const eng_dd zl = eng_dd_mul_d(eng_dd_sub(pl, eng_dd_mul(Mpd[i], uld)), g);
+            const eng_dd Mz = eng_dd_mul_d(
+                eng_dd_sub(Mpd[i], eng_dd_mul_d(eng_dd_mul(uld, pl), inv_c2)), g);
+            pp[i] = rc_v3_axpy(rc_v3(pt.x.hi, pt.y.hi, pt.z.hi), zl.hi, uh);
+            Mp[i] = Mz.hi;
+            W += Mp[i];
+            W0 += mstar[i];
+        }
+    }
+    for (size_t i = 0; i < nb && !fastz; i++) {
         if (mstar[i] == 0.0)
             continue;
         rc_four f = {Mp[i], pp[i]};
@@ -318,8 +416,16 @@ static int keep_rest_masses(double inv_c2, size_t nb, const rc_particle *b0, siz
             continue;
         const rc_vec3 p = rc_v3_scale(lam, pp[i]);
         rc_four f = {sqrt(mstar[i] * mstar[i] + rc_v3_norm2(p) * inv_c2), p};
-        if (rc_boost(back, inv_c2, &f) != RC_OK)
+        if (fastz) {
+            /* back without g^2 |u|^2/c^2 = g^2 - 1, which g and |u| rounded apart break */
+            const double pl = rc_v3_dot(f.x, uh);
+            const rc_vec3 pt = rc_v3_axpy(f.x, -pl, uh);
+            const double E = g * (f.t + ul * pl * inv_c2);
+            f.x = rc_v3_axpy(pt, g * (pl + f.t * ul), uh);
+            f.t = E;
+        } else if (rc_boost(back, inv_c2, &f) != RC_OK) {
             return RC_ENOCONVERGE;
+        }
         Mp[i] = f.t;
         pp[i] = f.x;
     }
@@ -393,6 +499,29 @@ static size_t first_violation(const cwork *w, size_t nb, const double *J)
     return w->k;
 }
 
+/* 1 when a contact's two balls move fast the same way with a fast ZMF (pair_axis.h's
+ * RC_GAMMA_FAST and RC_PAIR_FAST): there the restitution conditions M_b' p_a'.n - M_a'
+ * p_b'.n subtract terms gamma^2 times their value, and so does the Jacobian's -M_t s; the
+ * joint solve then keeps them in double-double. Other groups keep the plain forms and
+ * their bits. */
+static int fast_pairs(double inv_c2, const rc_particle *b, size_t k, const rc_contact *c,
+                      const double *M)
+{
+    if (inv_c2 == 0.0)
+        return 0;
+    for (size_t j = 0; j < k; j++) {
+        const int x = c[j].a, y = c[j].b;
+        if (y < 0)
+            continue;
+        const double Mt = M[x] + M[y];
+        if (M[x] > RC_GAMMA_FAST * b[x].m && M[y] > RC_GAMMA_FAST * b[y].m &&
+            rc_v3_dot(b[x].p, b[y].p) > 0.0 &&
+            rc_v3_norm2(rc_v3_add(b[x].p, b[y].p)) * inv_c2 > RC_PAIR_FAST * Mt * Mt)
+            return 1;
+    }
+    return 0;
+}
+
 /* The joint solve: pivot = 1 the simultaneous rule (principal pivoting until the impulses
  * are complementary), 0 the drop rule. Input validated. */
 static int joint(int pivot, double inv_c2, size_t nballs, rc_particle *balls, size_t k,
@@ -415,6 +544,10 @@ static int joint(int pivot, double inv_c2, size_t nballs, rc_particle *balls, si
     /* the simultaneous rule's second start: zero energy parts, its root, the Newton run */
     double *qz = pivot ? calloc(k, sizeof *qz) : NULL;
     double *Jg = pivot ? malloc(k * sizeof *Jg) : NULL, *Jt = pivot ? malloc(k * sizeof *Jt) : NULL;
+    /* double-double states for a group with a fast pair (fast_pairs) */
+    eng_dd *M0d = NULL, *Mpd = NULL, *qtd = NULL;
+    eng_ddv *ppd = NULL;
+    double *m2d = NULL; /* their post rest masses squared */
     if (!M0 || !Mp || !pp || !qt || !a0 || !J || !A || !rhs || !idx || !active || !piv ||
         (pivot && (!qz || !Jg || !Jt)))
         goto done;
@@ -440,7 +573,34 @@ static int joint(int pivot, double inv_c2, size_t nballs, rc_particle *balls, si
         if (!active[j])
             a0[j] = 0.0;
     }
-    cwork w = {k, contacts, active, balls, M0, qt, a0, Mp, pp};
+    cwork w = {k, contacts, active, balls, M0, qt, a0, Mp, pp, NULL, NULL, NULL, NULL};
+    if (fast_pairs(inv_c2, balls, k, contacts, M0)) {
+        M0d = malloc(nballs * sizeof *M0d);
+        Mpd = malloc(nballs * sizeof *Mpd);
+        ppd = malloc(nballs * sizeof *ppd);
+        qtd = malloc(k * sizeof *qtd);
+        st = RC_ENOMEM;
+        if (!M0d || !Mpd || !ppd || !qtd)
+            goto done;
+        for (size_t i = 0; i < nballs; i++)
+            M0d[i] = eng_dd_sqrt(eng_dd_add(eng_two_prod(balls[i].m, balls[i].m),
+                                            eng_dd_mul_d(eng_dd_dot(balls[i].p, balls[i].p),
+                                                         inv_c2)));
+        for (size_t j = 0; j < k; j++) {
+            const rc_contact *c = &contacts[j];
+            if (c->b < 0) {
+                qtd[j] = eng_dd_of(0.0);
+                continue;
+            }
+            const eng_dd Pn = eng_dd_add(eng_dd_dot(balls[c->a].p, c->n),
+                                         eng_dd_dot(balls[c->b].p, c->n));
+            qtd[j] = eng_dd_div(eng_dd_mul_d(Pn, inv_c2), eng_dd_add(M0d[c->a], M0d[c->b]));
+        }
+        w.M0d = M0d;
+        w.qtd = qtd;
+        w.Mpd = Mpd;
+        w.ppd = ppd;
+    }
     if (pivot) {
         /* Murty's least-index principal pivoting: solve on the active set, then flip the
          * first contact that violates complementarity (a pulling one leaves, one that
@@ -491,6 +651,15 @@ static int joint(int pivot, double inv_c2, size_t nballs, rc_particle *balls, si
         }
     }
     post_states(&w, nballs, J);
+    /* a fast pair's post rest masses: M'^2 - |p'|^2/c^2 cancels to order gamma^2 */
+    m2d = w.Mpd ? malloc(nballs * sizeof *m2d) : NULL;
+    if (w.Mpd && !m2d) {
+        st = RC_ENOMEM;
+        goto done;
+    }
+    for (size_t i = 0; m2d && i < nballs; i++)
+        m2d[i] = eng_dd_sub(eng_dd_mul(Mpd[i], Mpd[i]),
+                            eng_dd_mul_d(eng_ddv_norm2(ppd[i]), inv_c2)).hi;
     size_t nactive = 0;
     for (size_t j = 0; j < k; j++)
         nactive += active[j] != 0;
@@ -502,7 +671,8 @@ static int joint(int pivot, double inv_c2, size_t nballs, rc_particle *balls, si
             st = RC_ENOMEM;
             goto done;
         }
-        st = keep_rest_masses(inv_c2, nballs, balls, k, contacts, active, Mp, pp, mstar);
+        st = keep_rest_masses(inv_c2, nballs, balls, k, contacts, active, Mp, pp, w.Mpd, w.ppd,
+                              m2d, mstar);
         for (size_t i = 0; i < nballs && st == RC_OK; i++)
             if (mstar[i] != 0.0) {
                 balls[i].m = mstar[i];
@@ -513,7 +683,7 @@ static int joint(int pivot, double inv_c2, size_t nballs, rc_particle *balls, si
             goto done;
     } else {
         for (size_t i = 0; i < nballs; i++) {
-            double m2 = Mp[i] * Mp[i] - rc_v3_norm2(pp[i]) * inv_c2;
+            double m2 = m2d ? m2d[i] : Mp[i] * Mp[i] - rc_v3_norm2(pp[i]) * inv_c2;
             if (!(m2 > 0.0) || !(Mp[i] > 0.0)) {
                 st = RC_EMASS;
                 goto done;
@@ -521,7 +691,7 @@ static int joint(int pivot, double inv_c2, size_t nballs, rc_particle *balls, si
         }
         for (size_t i = 0; i < nballs; i++) {
             if (inv_c2 != 0.0)
-                balls[i].m = sqrt(Mp[i] * Mp[i] - rc_v3_norm2(pp[i]) * inv_c2);
+                balls[i].m = sqrt(m2d ? m2d[i] : Mp[i] * Mp[i] - rc_v3_norm2(pp[i]) * inv_c2);
             balls[i].p = pp[i];
         }
     }
@@ -544,6 +714,11 @@ done:
     free(qz);
     free(Jg);
     free(Jt);
+    free(M0d);
+    free(Mpd);
+    free(qtd);
+    free(ppd);
+    free(m2d);
     return st;
 }
 

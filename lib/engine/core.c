@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "approach.h"
 #include "pairs.h"
 #include "private.h"
 #include "relcol/status.h"
@@ -178,9 +179,13 @@ static int grow_group(rc_sim *s, size_t *nm, size_t *nc, double T)
                         double d2 = rc_v3_norm2(dx);
                         if (!(d2 <= lim * lim))
                             continue;
-                        rc_vec3 dv = rc_v3_sub(bk->v, bi->v);
-                        double bb = rc_v3_dot(dx, dv);
-                        if (!(bb < 0.0 && bb * bb > atol * atol * sig * sig * rc_v3_norm2(dv)))
+                        /* approaching (engine/approach.h: from the momenta for a pair
+                         * moving together near c, whose stored velocities differ below
+                         * their rounding along the motion) */
+                        const rc_particle pi = {s->a[i].m, s->a[i].p};
+                        const rc_particle pk = {s->a[k].m, s->a[k].p};
+                        if (!eng_approaching(s->inv_c2, &pi, bi->v, &pk, bk->v, dx, sig, atol,
+                                             NULL))
                             continue;
                         /* a contact the group already has (the event's own pair is met
                          * from both its balls): skip it before any costly test */

@@ -8,6 +8,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "approach.h"
 #include "lanes.h"
 #include "pairs.h"
 #include "shapes.h"
@@ -378,9 +379,11 @@ static int narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc
     const double sig = bi->r + bk->r, lim = sig * (1.0 + stol);
     if (!(d2 <= lim * lim))
         return 0;
-    const rc_vec3 dv = rc_v3_sub(bk->v, chk->vold);
-    const double bb = rc_v3_dot(dx, dv);
-    if (!(bb < 0.0 && bb * bb > atol * atol * sig * sig * rc_v3_norm2(dv)))
+    /* approaching: grow_group's test (engine/approach.h), ball i with its old state */
+    const eng_aux *ak = &s->a[bk - s->b];
+    const rc_particle pk = {ak->m, ak->p};
+    double dv2;
+    if (!eng_approaching(s->inv_c2, &chk->old, chk->vold, &pk, bk->v, dx, sig, atol, &dv2))
         return 0;
     const rc_vec3 n = rc_v3_scale(1.0 / sqrt(d2), dx);
     /* supports along n: ball i's old shape (its state before the collision), k's as is */
@@ -389,7 +392,6 @@ static int narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc
     const double hsum = rc_toi_support_(&ho, n) + rc_toi_support_(&hk, n);
     if (d2 > hsum * hsum * (1.0 + stol) * (1.0 + stol) * (1.0 + 1e-12))
         return 0;
-    const eng_aux *ak = &s->a[bk - s->b];
     rc_toi_contact out;
     int st;
     if (s->table) { /* (as in pair_time_dx; chk->vold is the old p / M, as stored) */
@@ -400,7 +402,7 @@ static int narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc
         rc_toi_ball B = {dx, bk->r, ak->m, ak->p};
         st = s->def.frame->toi(&s->toi, &A, &B, s->ws, &out);
     }
-    if (!(st == RC_OK && out.t * out.t * rc_v3_norm2(dv) <= stol * stol * sig * sig))
+    if (!(st == RC_OK && out.t * out.t * dv2 <= stol * stol * sig * sig))
         return 0;
     if (normal)
         *normal = out.n;

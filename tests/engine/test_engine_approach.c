@@ -1,0 +1,186 @@
+/* test_engine_approach.c — the engine's approach test (lib/engine/approach.h: group
+ * forming in core.c's grow_group, the contracted simultaneity check narrow_conflict) on
+ * pairs of balls moving together near c, Lorentz factors 10 .. 1e8 (issue 16, item 6).
+ * The plain form dx.(vk - vi) takes the difference of two table velocities, whose part
+ * along the motion is 1/gamma^2 of either: its sign is lost to rounding. Checked against
+ * the same test in __float128 on the same double data: the verdict the same, except where
+ * one rounding of the data flips the exact verdict; |vk - vi|^2 to 1e-12 of itself, or to
+ * 16 times its move under one rounding of the data. */
+#include <math.h>
+#include <quadmath.h>
+
+#include "rc_test.h"
+#include "relcol/relcol.h"
+#include "../../lib/engine/approach.h"
+
+__extension__ typedef __float128 q128;
+
+typedef struct {
+    q128 x, y, z;
+} qv;
+
+static qv qv_of(rc_vec3 v) { return (qv){v.x, v.y, v.z}; }
+static rc_vec3 dv_of(qv v) { return rc_v3((double)v.x, (double)v.y, (double)v.z); }
+static q128 qdot(qv a, qv b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static qv qaxpy(qv a, q128 s, qv b) { return (qv){a.x + s * b.x, a.y + s * b.y, a.z + s * b.z}; }
+static qv qscale(q128 s, qv a) { return (qv){s * a.x, s * a.y, s * a.z}; }
+static q128 qnorm(qv a) { return sqrtq(qdot(a, a)); }
+static q128 qenergy(double m, qv p, q128 k) { return sqrtq((q128)m * m + qdot(p, p) * k); }
+
+/* Into the frame moving at u (Lorentz factor g): the textbook boost of (t, x). */
+static void qboost(qv u, q128 g, q128 k, q128 *t, qv *x)
+{
+    const q128 xu = qdot(*x, u);
+    const q128 f = g * g * k / (g + 1) * xu - g * *t;
+    *t = g * (*t - xu * k);
+    *x = qaxpy(*x, f, u);
+}
+
+static double logu(rc_test_rng *r, double lo, double hi)
+{
+    return lo * exp(log(hi / lo) * rc_test_uniform(r));
+}
+
+/* The exact verdict on the double data (velocities p/M in __float128), and |vk - vi|^2. */
+static int exact(q128 k, const rc_particle *a, const rc_particle *b, rc_vec3 dx, double sig,
+                 double atol, q128 *w2)
+{
+    const qv va = qscale(1 / qenergy(a->m, qv_of(a->p), k), qv_of(a->p));
+    const qv vb = qscale(1 / qenergy(b->m, qv_of(b->p), k), qv_of(b->p));
+    const qv dv = qaxpy(vb, -1, va);
+    const q128 bb = qdot(qv_of(dx), dv);
+    *w2 = qdot(dv, dv);
+    return bb < 0 && bb * bb > (q128)atol * atol * sig * sig * *w2;
+}
+
+/* One rounding of the data (each momentum and separation component times 1 +- 2^-53,
+ * signs from a fixed generator, 8 draws): whether the exact verdict flips, and the largest
+ * relative move of |vk - vi|^2. */
+static void conditioning(q128 k, const rc_particle *a, const rc_particle *b, rc_vec3 dx,
+                         double sig, double atol, int verdict, q128 w2, int *flips, double *kw)
+{
+    rc_test_rng g = {4242};
+    *flips = 0;
+    *kw = 0.0;
+    for (int t = 0; t < 8; t++) {
+        rc_particle A = *a, B = *b;
+        rc_vec3 d = dx;
+        double *c[9] = {&A.p.x, &A.p.y, &A.p.z, &B.p.x, &B.p.y, &B.p.z, &d.x, &d.y, &d.z};
+        for (int i = 0; i < 9; i++)
+            *c[i] *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
+        q128 w;
+        *flips |= exact(k, &A, &B, d, sig, atol, &w) != verdict;
+        *kw = fmax(*kw, (double)(fabsq(w - w2) / w2));
+    }
+}
+
+/* |vk - vi|^2 to 1e-12 of itself: the verdict's threshold is relative (approach_tol), the
+ * contracted check's distance per unit time too; the data's rounding moves it by a few
+ * 2^-53 when well conditioned ... */
+#define REF_TOL 1e-12
+/* ... else within this many times the move of the exact value under one rounding. */
+#define COND_TOL 16.0
+
+static void test_comoving_pairs(void)
+{
+    rc_test_rng r = {2028};
+    const double atol = 1e-10; /* the engine's default approach_tol */
+    int n = 0, napp = 0, wrong = 0, nill = 0, nflip = 0;
+    double ww = 0.0, ratio = 0.0, aw = 0.0;
+    for (int it = 0; it < 20000; it++) {
+        const double c = rc_test_uniform(&r) < 0.5 ? 1.0 : logu(&r, 0.1, 10);
+        const q128 k = rc_inv_c2_of(c);
+        /* In a frame R where the pair is slow: ball 0 at the origin, ball 1 touching it
+         * along a random n, relative speed up to 0.9 c in a random direction; R moves at
+         * Lorentz factor 10 .. 1e8 in the table, each state its worldline's event at table
+         * time 0. */
+        double m[2], rad[2];
+        for (int i = 0; i < 2; i++) {
+            m[i] = logu(&r, 0.2, 5);
+            rad[i] = rc_test_range(&r, 0.2, 1.0);
+        }
+        const double sig = rad[0] + rad[1];
+        qv vR[2], xR[2] = {{0, 0, 0}, {0, 0, 0}};
+        /* R's motion in the table: along a coordinate axis in two draws of three (the
+         * momenta across it are then small numbers, exact to their own size, and the
+         * rounding of the data no longer hides the approach along the motion), else
+         * random; the contact normal near that axis in half of the draws (the approach
+         * then lies along the motion, where the table velocities differ by 1/gamma^2) */
+        const int axis = it % 3 != 0, ax = (int)(3 * rc_test_uniform(&r));
+        qv d = qv_of(rc_v3(rc_test_range(&r, -1, 1), rc_test_range(&r, -1, 1),
+                           rc_test_range(&r, -1, 1)));
+        if (axis)
+            d = (qv){ax == 0, ax == 1, ax == 2};
+        qv e = qv_of(rc_v3(rc_test_range(&r, -1, 1), rc_test_range(&r, -1, 1),
+                           rc_test_range(&r, -1, 1)));
+        if (it % 2)
+            e = qaxpy(qscale(rc_test_uniform(&r) < 0.5 ? -1 : 1, qscale(1 / qnorm(d), d)),
+                      rc_test_range(&r, 0.0, 0.3) / qnorm(e), e);
+        xR[1] = qscale(sig / qnorm(e), e);
+        /* in a quarter of the draws along the axis, or off it by a log-uniform angle
+         * 1e-20 .. 1e-2 (a row of balls, a cradle) */
+        const int line = axis && it % 4 == 1;
+        const double tilt = rc_test_uniform(&r) < 0.5 ? 0.0 : logu(&r, 1e-20, 1e-2);
+        if (line)
+            xR[1] = qscale(sig * (rc_test_uniform(&r) < 0.5 ? -1 : 1), d);
+        for (int i = 0; i < 2; i++) {
+            qv w = qv_of(rc_v3(rc_test_range(&r, -1, 1), rc_test_range(&r, -1, 1),
+                               rc_test_range(&r, -1, 1)));
+            if (line)
+                w = qaxpy(qscale(rc_test_range(&r, -1, 1), d), tilt / qnorm(w), w);
+            vR[i] = qscale(c * rc_test_range(&r, 0.0, 0.45) / qnorm(w), w);
+        }
+        const q128 G = logu(&r, 10, 1e8), V = sqrtq((1 - 1 / (G * G)) / k);
+        const qv back = qscale(-V / qnorm(d), d);
+        rc_particle P[2];
+        qv X[2];
+        for (int i = 0; i < 2; i++) {
+            const q128 g = 1 / sqrtq(1 - qdot(vR[i], vR[i]) * k);
+            q128 E = m[i] * g;
+            qv p = qscale(m[i] * g, vR[i]);
+            qboost(back, G, k, &E, &p);
+            const q128 tR = qdot(xR[i], back) * k / (1 - qdot(vR[i], back) * k);
+            q128 t = tR;
+            X[i] = qaxpy(xR[i], tR, vR[i]);
+            qboost(back, G, k, &t, &X[i]);
+            P[i] = (rc_particle){m[i], dv_of(p)};
+        }
+        const rc_vec3 dx = dv_of(qaxpy(X[1], -1, X[0]));
+        const rc_vec3 v0 = rc_v3_scale(1.0 / rc_mass_rel(P[0].m, P[0].p, (double)k), P[0].p);
+        const rc_vec3 v1 = rc_v3_scale(1.0 / rc_mass_rel(P[1].m, P[1].p, (double)k), P[1].p);
+        q128 w2;
+        const int want = exact(k, &P[0], &P[1], dx, sig, atol, &w2);
+        double dv2;
+        const int got = eng_approaching((double)k, &P[0], v0, &P[1], v1, dx, sig, atol, &dv2);
+        n++;
+        napp += want;
+        const double ew = (double)(fabsq(dv2 - w2) / w2);
+        aw = fmax(aw, ew);
+        int ok = got == want && ew <= REF_TOL;
+        if (ok) {
+            ww = fmax(ww, ew);
+        } else {
+            int flips;
+            double kw;
+            conditioning(k, &P[0], &P[1], dx, sig, atol, want, w2, &flips, &kw);
+            ok = (got == want || flips) && ew <= COND_TOL * fmax(kw, REF_TOL);
+            nflip += ok && got != want;
+            nill += ok;
+            if (ok)
+                ratio = fmax(ratio, ew / fmax(kw, REF_TOL));
+        }
+        wrong += got != want;
+        ENSURE_MSG(ok, "gamma %.3g, c %g: verdict %d (exact %d), |dv|^2 %.3g off", (double)G, c,
+                   got, want, ew);
+    }
+    printf("  %d pairs (%d approaching), gamma 10 .. 1e8: %d verdicts differ from the exact "
+           "one (%d where one rounding of the data flips it); |dv|^2 within %.1e, or (%d "
+           "pairs) %.2f x its conditioning; largest |dv|^2 error %.2g\n",
+           n, napp, wrong, nflip, ww, nill, ratio, aw);
+}
+
+int main(void)
+{
+    RUN_TEST(test_comoving_pairs);
+    RC_TEST_MAIN_END();
+}
