@@ -182,6 +182,165 @@ static double lin_min2(const rc_sym3 *A1, rc_vec3 m1, const rc_sym3 *A2, rc_vec3
     return best;
 }
 
+/* ---- deciding lin_min2's comparison without converging it ------------------------ */
+
+/* The two ellipsoids of lin_min2, with the terms dual_at wants. */
+typedef struct dual_pb {
+    const rc_sym3 *A1, *A2;
+    rc_vec3 m1, m2, b1, b2, k;
+    double c1, c2;
+} dual_pb;
+
+static dual_pb dual_pb_make(const rc_sym3 *A1, rc_vec3 m1, const rc_sym3 *A2, rc_vec3 m2,
+                            rc_vec3 k)
+{
+    dual_pb p = {A1, A2, m1, m2, rc_sym3_mul_(A1, m1, 0), rc_sym3_mul_(A2, m2, 0), k, 0.0, 0.0};
+    p.c1 = rc_v3_dot(m1, p.b1);
+    p.c2 = rc_v3_dot(m2, p.b2);
+    return p;
+}
+
+static double pb_dual(const dual_pb *p, double lam, rc_vec3 *z)
+{
+    return dual_at(p->A1, p->b1, p->c1, p->A2, p->b2, p->c2, p->k, lam, z);
+}
+
+/* (z - m)^T A (z - m): at most 1 inside the ellipsoid */
+static double form_at(const rc_sym3 *A, rc_vec3 m, rc_vec3 z)
+{
+    const rc_vec3 d = rc_v3_sub(z, m);
+    return rc_v3_dot(d, rc_sym3_mul_(A, d, 0));
+}
+
+/* A point strictly inside both ellipsoids on the segment between their centres, where
+ * the forms are s^2 a1 and (1 - s)^2 a2: the middle of the part inside both. 0 if the
+ * segment misses the intersection (then no such point is offered). *q1, *q2 its forms. */
+static int inner_point(const dual_pb *p, rc_vec3 *w, double *q1, double *q2)
+{
+    const rc_vec3 d = rc_v3_sub(p->m2, p->m1);
+    const double a1 = rc_v3_dot(d, rc_sym3_mul_(p->A1, d, 0));
+    const double a2 = rc_v3_dot(d, rc_sym3_mul_(p->A2, d, 0));
+    if (!(a1 > 0.0) || !(a2 > 0.0))
+        return 0;
+    const double s1 = fmin(1.0, 1.0 / sqrt(a1)), s2 = fmax(0.0, 1.0 - 1.0 / sqrt(a2));
+    if (!(s2 < s1))
+        return 0;
+    *w = rc_v3_axpy(p->m1, 0.5 * (s1 + s2), d);
+    *q1 = form_at(p->A1, p->m1, *w);
+    *q2 = form_at(p->A2, p->m2, *w);
+    return *q1 < 1.0 && *q2 < 1.0;
+}
+
+/* A point of both ellipsoids near z: z moved towards the inner point w just far enough
+ * that both forms, convex along the segment, are at most 1; checked on the point itself
+ * (its computed forms), so rounding cannot admit a point outside. 0 if none. */
+static int repaired(const dual_pb *p, rc_vec3 z, double q1, double q2, rc_vec3 w, double w1,
+                    double w2, rc_vec3 *y)
+{
+    double s = 0.0;
+    if (q1 > 1.0)
+        s = fmax(s, (q1 - 1.0) / (q1 - w1));
+    if (q2 > 1.0)
+        s = fmax(s, (q2 - 1.0) / (q2 - w2));
+    /* a little further in than convexity asks, for the rounding of the forms */
+    s = fmin(1.0, s * (1.0 + 1e-6) + 1e-12);
+    *y = rc_v3_axpy(z, s, rc_v3_sub(w, z));
+    return form_at(p->A1, p->m1, *y) <= 1.0 && form_at(p->A2, p->m2, *y) <= 1.0;
+}
+
+/* Cap on the evaluations of lin_below's search: it converges superlinearly; a case it
+ * does not settle by then goes to lin_min2. */
+#define BELOW_STEPS 40
+
+/* Whether lin_min2's minimum of k.z over the intersection is below theta, from
+ * certificates rather than a converged minimum: 0 (not below) when a dual value, a lower
+ * bound of the minimum, is >= theta + margin, or a blend is empty (so is the
+ * intersection: lin_min2 says INFINITY); 1 (below) when a point of both ellipsoids has
+ * k.z < theta - margin (only looked for if want_below); -1 when neither is found, then
+ * lin_min2 itself decides. lin_min2's answer lies within its round-off of the true
+ * minimum (its last brackets are below the resolution of lam), so a margin of many
+ * round-offs makes the certified verdict lin_min2's. The search: the dual's slope in lam
+ * has the sign of q2(z) - q1(z) at the blend's minimiser z (its multiplier times the
+ * forms' difference: envelope theorem), one change of sign since the dual is unimodal;
+ * regula falsi (Illinois) with bisection as a safeguard finds it. */
+static int lin_below(const dual_pb *p, double theta, double margin, int want_below)
+{
+    const double hi_cut = theta + margin, lo_cut = theta - margin;
+    rc_vec3 w = p->m1;
+    double w1 = 0.0, w2 = 0.0;
+    const int have_w = want_below && inner_point(p, &w, &w1, &w2);
+    if (have_w && rc_v3_dot(p->k, w) < lo_cut)
+        return 1;
+    double a = 0.0, b = 1.0, ha = 0.0, hb = 0.0;
+    int side = 0;
+    for (int it = 0; it < BELOW_STEPS; it++) {
+        double lam;
+        if (it < 2) {
+            lam = (double)it;
+        } else {
+            lam = a - ha * (b - a) / (hb - ha);
+            /* bisect when false position leaves the bracket or crawls */
+            if (!(lam > a && lam < b) || (it % 4 == 3))
+                lam = 0.5 * (a + b);
+            if (!(lam > a && lam < b))
+                return -1;
+        }
+        rc_vec3 z;
+        const double f = pb_dual(p, lam, &z);
+        if (f == INFINITY)
+            return 0;
+        if (isnan(f))
+            return -1;
+        if (f >= hi_cut)
+            return 0;
+        const double q1 = form_at(p->A1, p->m1, z), q2 = form_at(p->A2, p->m2, z);
+        if (q1 <= 1.0 && q2 <= 1.0) {
+            /* a point of both: the minimum is within round-off of f */
+            if (want_below && rc_v3_dot(p->k, z) < lo_cut)
+                return 1;
+            return -1;
+        }
+        if (have_w && f < lo_cut) {
+            rc_vec3 y;
+            if (repaired(p, z, q1, q2, w, w1, w2, &y) && rc_v3_dot(p->k, y) < lo_cut)
+                return 1;
+        }
+        const double h = q2 - q1;
+        if (it == 0) {
+            ha = h;
+            if (!(h > 0.0))
+                return -1;
+        } else if (it == 1) {
+            hb = h;
+            if (!(h < 0.0))
+                return -1;
+        } else if (h > 0.0) {
+            a = lam;
+            ha = h;
+            if (side == 1)
+                hb *= 0.5; /* Illinois: the stale end's value halved */
+            side = 1;
+        } else if (h < 0.0) {
+            b = lam;
+            hb = h;
+            if (side == -1)
+                ha *= 0.5;
+            side = -1;
+        } else {
+            return -1; /* at the maximum: f is the minimum, within the margin of theta */
+        }
+    }
+    return -1;
+}
+
+/* The margin for lin_below's verdicts on theta: well above the round-off of k.z over
+ * points at m1 and m2 and of the times theta is made of (terms of size |t|). */
+static double below_margin(const dual_pb *p, double theta, double tscale)
+{
+    const double zs = rc_v3_norm(p->k) * (rc_v3_norm(p->m1) + rc_v3_norm(p->m2));
+    return 1e-10 * (zs + fabs(theta)) + 1e-13 * tscale;
+}
+
 /* The section of ball a's world cylinder (shape s, velocity v, centre ca at time ta) by
  * H, in z = y - X: the ellipsoid (z - m)^T A (z - m) <= 1. On H, y's table time is
  * t_x + kappa.z, so the offset from the centre is L z + e with L = I - v kappa^T and
@@ -236,13 +395,21 @@ int rc_glue_toi(const rc_glue *g, const rc_toi_params *prm, rc_toi_workspace *ws
             const rc_sym3 Ga = shape_metric(sa);
             rc_vec3 z;
             const rc_vec3 dir = rc_v3_scale(pc ? 1.0 : -1.0, g->kappa);
-            const double lo = lin_min2(&Ga, rc_v3_sub(ca, g->x), &Gk, rc_v3_sub(k->x, g->x), dir, &z);
-            const double side = pc ? lo - (t_from - g->t_x) : -lo - (t_from - g->t_x);
+            const rc_vec3 m1 = rc_v3_sub(ca, g->x), m2 = rc_v3_sub(k->x, g->x);
             /* (pc 0: the largest ell over the common part, > 0 reaches the incoming side;
              * pc 1: the least, < 0 reaches the outgoing side; a tolerance of touch_tol
              * radii of H's travel, as rc_toi's own overlap verdict) */
             const double tol = prm->touch_tol * g->r * rc_v3_norm(g->kappa);
-            if (lo != INFINITY && (pc ? side < -tol : side > tol))
+            /* side < -tol (pc 1) or > tol (pc 0): lo below theta */
+            const double dt = t_from - g->t_x, theta = (pc ? dt : -dt) - tol;
+            const dual_pb pb = dual_pb_make(&Ga, m1, &Gk, m2, dir);
+            int below = lin_below(&pb, theta, below_margin(&pb, theta, fabs(t_from) + fabs(g->t_x)), 1);
+            if (below < 0) {
+                const double lo = lin_min2(&Ga, m1, &Gk, m2, dir, &z);
+                const double side = pc ? lo - dt : -lo - dt;
+                below = lo != INFINITY && (pc ? side < -tol : side > tol);
+            }
+            if (below)
                 return RC_EOVERLAP;
             need_h = 1;
             continue;
@@ -270,7 +437,15 @@ int rc_glue_toi(const rc_glue *g, const rc_toi_params *prm, rc_toi_workspace *ws
         rc_vec3 ma, mk, z;
         section_on_h(g, &g->in, g->v_in, g->x_c, g->t_c, &Aa, &ma);
         section_on_h(g, &sk, vk, k->x, t_from, &Ak, &mk);
-        const double lo = lin_min2(&Aa, ma, &Ak, mk, g->kappa, &z);
+        /* only a contact on H before bt is taken: certified not to be one, the minimum
+         * is not needed (lin_min2 finds it when it is) */
+        int later = 0;
+        if (bt < INFINITY) {
+            const dual_pb pb = dual_pb_make(&Aa, ma, &Ak, mk, g->kappa);
+            const double theta = bt - g->t_x;
+            later = lin_below(&pb, theta, below_margin(&pb, theta, fabs(bt) + fabs(g->t_x)), 0) == 0;
+        }
+        const double lo = later ? INFINITY : lin_min2(&Aa, ma, &Ak, mk, g->kappa, &z);
         if (isnan(lo))
             return RC_EINVAL;
         const double th = g->t_x + lo;
