@@ -355,6 +355,24 @@ static void section_on_h(const rc_glue *g, const rc_toi_shape *s, rc_vec3 v, rc_
     *m = rc_v3_scale(-1.0, rc_v3_axpy(e, ke, v));
 }
 
+/* A lower bound of the time from now at which shape a and shape k (centre separation d,
+ * relative velocity w) can first meet: the time to close their gap across a plane normal
+ * to u (their supports along u), INFINITY if that gap opens, 0 if u separates nothing
+ * beyond round-off (a gap below 1e-9 of the supports). */
+static double plane_bound(const rc_toi_shape *a, const rc_toi_shape *k, rc_vec3 d, rc_vec3 w,
+                          rc_vec3 u)
+{
+    const double u2 = rc_v3_norm2(u);
+    if (!(u2 > 0.0))
+        return 0.0;
+    const double h = rc_toi_support_scaled_(a, u, u2) + rc_toi_support_scaled_(k, u, u2);
+    const double gap = rc_v3_dot(u, d) - h;
+    if (!(gap > 1e-9 * h))
+        return 0.0;
+    const double uw = rc_v3_dot(u, w);
+    return uw < 0.0 ? gap / -uw : INFINITY;
+}
+
 int rc_glue_toi(const rc_glue *g, const rc_toi_params *prm, rc_toi_workspace *ws,
                 double t_from, const rc_toi_ball *k, double *t, rc_vec3 *y, rc_vec3 *n,
                 int *piece)
@@ -379,14 +397,27 @@ int rc_glue_toi(const rc_glue *g, const rc_toi_params *prm, rc_toi_workspace *ws
     double bt = INFINITY;
     rc_vec3 by = rc_v3(0, 0, 0), bn = by;
     int bp = -1, need_h = 0;
+    double ta_max = 0.0; /* the latest first contact of a straight cylinder, from t_from */
     for (int pc = 0; pc < 2; pc++) {
         const rc_toi_shape *sa = pc ? &g->out : &g->in;
         const rc_vec3 va = pc ? g->v_out : g->v_in;
         const rc_vec3 ca = rc_v3_axpy(g->x_c, t_from - g->t_c, va);
+        const rc_vec3 dk = rc_v3_sub(k->x, ca), wk = rc_v3_sub(vk, va);
+        if (pc == 1 && bp == 0) {
+            /* the incoming piece is met at bt: the outgoing cylinder matters only if it
+             * overlaps k now or meets it before bt, and a contact on H would be one of
+             * this cylinder too (H's section lies in both), so at or after its contact.
+             * A plane separating the two now (along the first contact's normal or the
+             * centre line) that k cannot cross before bt rules out all three; the margin
+             * (1e-9 of the bound, 1e-13 of the times) keeps round-off ties with the
+             * search's answers. */
+            const double lb = fmax(plane_bound(sa, &sk, dk, wk, bn), plane_bound(sa, &sk, dk, wk, dk));
+            if (t_from + lb * (1.0 - 1e-9) - 1e-13 * (fabs(t_from) + fabs(bt)) >= bt)
+                continue;
+        }
         double ta;
         rc_vec3 ya, na;
-        st = rc_toi_shapes_rel(sa, &sk, rc_v3_sub(k->x, ca), rc_v3_sub(vk, va), prm, ws, &ta,
-                               &ya, &na);
+        st = rc_toi_shapes_rel(sa, &sk, dk, wk, prm, ws, &ta, &ya, &na);
         if (st == RC_MISS)
             continue; /* the whole cylinders never meet: neither does the piece */
         if (st == RC_EOVERLAP) {
@@ -417,6 +448,7 @@ int rc_glue_toi(const rc_glue *g, const rc_toi_params *prm, rc_toi_workspace *ws
         if (st != RC_OK)
             return st;
         const double tc = t_from + ta;
+        ta_max = fmax(ta_max, ta);
         const rc_vec3 Y = rc_v3_add(rc_v3_axpy(ca, ta, va), ya);
         const double ell = ELL(Y, tc);
         if (pc ? ell <= 0.0 : ell >= 0.0) {
@@ -440,7 +472,12 @@ int rc_glue_toi(const rc_glue *g, const rc_toi_params *prm, rc_toi_workspace *ws
         /* only a contact on H before bt is taken: certified not to be one, the minimum
          * is not needed (lin_min2 finds it when it is) */
         int later = 0;
-        if (bt < INFINITY) {
+        /* a contact on H is one of each cylinder too (their sections on H coincide), so
+         * not before either's first contact: one at bt or later (by the margin of
+         * plane_bound's) leaves nothing to search */
+        if (bt < INFINITY && t_from + ta_max * (1.0 - 1e-9) - 1e-13 * (fabs(t_from) + fabs(bt)) >= bt)
+            later = 1;
+        else if (bt < INFINITY) {
             const dual_pb pb = dual_pb_make(&Aa, ma, &Ak, mk, g->kappa);
             const double theta = bt - g->t_x;
             later = lin_below(&pb, theta, below_margin(&pb, theta, fabs(bt) + fabs(g->t_x)), 0) == 0;
