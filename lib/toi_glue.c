@@ -212,9 +212,16 @@ static double form_at(const rc_sym3 *A, rc_vec3 m, rc_vec3 z)
     return rc_v3_dot(d, rc_sym3_mul_(A, d, 0));
 }
 
-/* A point strictly inside both ellipsoids on the segment between their centres, where
- * the forms are s^2 a1 and (1 - s)^2 a2: the middle of the part inside both. 0 if the
- * segment misses the intersection (then no such point is offered). *q1, *q2 its forms. */
+/* Bisection steps on lam for inner_point's minimax search: each halves the distance to the
+ * deepest point's lam; a point inside both is usually found in a few. */
+#define INNER_STEPS 12
+
+/* A point strictly inside both ellipsoids: the middle of the part of the centres'
+ * segment inside both (the forms there are s^2 a1 and (1 - s)^2 a2), or else the centre
+ * of a blend (1 - lam) q1 + lam q2, walked towards the deepest point of the intersection,
+ * min over z of max(q1, q2): the blend's least value e(lam) is concave with slope
+ * q2 - q1 at its centre, and at its largest q1 = q2 there. 0 if neither finds one. *q1,
+ * *q2 the point's forms. */
 static int inner_point(const dual_pb *p, rc_vec3 *w, double *q1, double *q2)
 {
     const rc_vec3 d = rc_v3_sub(p->m2, p->m1);
@@ -223,12 +230,33 @@ static int inner_point(const dual_pb *p, rc_vec3 *w, double *q1, double *q2)
     if (!(a1 > 0.0) || !(a2 > 0.0))
         return 0;
     const double s1 = fmin(1.0, 1.0 / sqrt(a1)), s2 = fmax(0.0, 1.0 - 1.0 / sqrt(a2));
-    if (!(s2 < s1))
-        return 0;
-    *w = rc_v3_axpy(p->m1, 0.5 * (s1 + s2), d);
-    *q1 = form_at(p->A1, p->m1, *w);
-    *q2 = form_at(p->A2, p->m2, *w);
-    return *q1 < 1.0 && *q2 < 1.0;
+    if (s2 < s1) {
+        *w = rc_v3_axpy(p->m1, 0.5 * (s1 + s2), d);
+        *q1 = form_at(p->A1, p->m1, *w);
+        *q2 = form_at(p->A2, p->m2, *w);
+        if (*q1 < 1.0 && *q2 < 1.0)
+            return 1;
+    }
+    double lo = 0.0, hi = 1.0;
+    for (int it = 0; it < INNER_STEPS; it++) {
+        const double lam = 0.5 * (lo + hi);
+        const rc_sym3 A = rc_sym3_blend_(p->A1, p->A2, lam, 0);
+        rc_sym3 adj;
+        const double det = rc_sym3_adj_(&A, &adj, 0);
+        if (!(det > 0.0))
+            return 0;
+        const rc_vec3 b = rc_v3_add(rc_v3_scale(1.0 - lam, p->b1), rc_v3_scale(lam, p->b2));
+        *w = rc_v3_scale(1.0 / det, rc_sym3_mul_(&adj, b, 0));
+        *q1 = form_at(p->A1, p->m1, *w);
+        *q2 = form_at(p->A2, p->m2, *w);
+        if (*q1 < 1.0 && *q2 < 1.0)
+            return 1;
+        if (*q2 > *q1)
+            lo = lam;
+        else
+            hi = lam;
+    }
+    return 0;
 }
 
 /* A point of both ellipsoids near z: z moved towards the inner point w just far enough
