@@ -361,12 +361,27 @@ static int lin_below(const dual_pb *p, double theta, double margin, int want_bel
     return -1;
 }
 
-/* The margin for lin_below's verdicts on theta: well above the round-off of k.z over
- * points at m1 and m2 and of the times theta is made of (terms of size |t|). */
+/* Margins of the certified verdicts (dimensionless, relative): far above the round-off
+ * of the terms compared (~1e-16) and of the old search's answers, far below any
+ * difference that is not a tie; a verdict inside them goes to the old search. Of the dual
+ * problem's terms; of a lower bound of a time, measured from t_from; of absolute times
+ * (their differences lose digits of this size). */
+#define CERT_REL 1e-10
+#define BOUND_REL 1e-9
+#define TIME_REL 1e-13
+
+/* The margin for lin_below's verdicts on theta: of k.z over points at m1 and m2 and of
+ * the times theta is made of (tscale: their size). */
 static double below_margin(const dual_pb *p, double theta, double tscale)
 {
     const double zs = rc_v3_norm(p->k) * (rc_v3_norm(p->m1) + rc_v3_norm(p->m2));
-    return 1e-10 * (zs + fabs(theta)) + 1e-13 * tscale;
+    return CERT_REL * (zs + fabs(theta)) + TIME_REL * tscale;
+}
+
+/* Whether a contact no earlier than lb after t_from is certainly not before bt. */
+static int not_before(double t_from, double lb, double bt)
+{
+    return t_from + lb * (1.0 - BOUND_REL) - TIME_REL * (fabs(t_from) + fabs(bt)) >= bt;
 }
 
 /* The section of ball a's world cylinder (shape s, velocity v, centre ca at time ta) by
@@ -386,7 +401,7 @@ static void section_on_h(const rc_glue *g, const rc_toi_shape *s, rc_vec3 v, rc_
 /* A lower bound of the time from now at which shape a and shape k (centre separation d,
  * relative velocity w) can first meet: the time to close their gap across a plane normal
  * to u (their supports along u), INFINITY if that gap opens, 0 if u separates nothing
- * beyond round-off (a gap below 1e-9 of the supports). */
+ * beyond round-off (a gap below BOUND_REL of the supports). */
 static double plane_bound(const rc_toi_shape *a, const rc_toi_shape *k, rc_vec3 d, rc_vec3 w,
                           rc_vec3 u)
 {
@@ -395,7 +410,7 @@ static double plane_bound(const rc_toi_shape *a, const rc_toi_shape *k, rc_vec3 
         return 0.0;
     const double h = rc_toi_support_scaled_(a, u, u2) + rc_toi_support_scaled_(k, u, u2);
     const double gap = rc_v3_dot(u, d) - h;
-    if (!(gap > 1e-9 * h))
+    if (!(gap > BOUND_REL * h))
         return 0.0;
     const double uw = rc_v3_dot(u, w);
     return uw < 0.0 ? gap / -uw : INFINITY;
@@ -436,11 +451,10 @@ int rc_glue_toi(const rc_glue *g, const rc_toi_params *prm, rc_toi_workspace *ws
              * overlaps k now or meets it before bt, and a contact on H would be one of
              * this cylinder too (H's section lies in both), so at or after its contact.
              * A plane separating the two now (along the first contact's normal or the
-             * centre line) that k cannot cross before bt rules out all three; the margin
-             * (1e-9 of the bound, 1e-13 of the times) keeps round-off ties with the
-             * search's answers. */
-            const double lb = fmax(plane_bound(sa, &sk, dk, wk, bn), plane_bound(sa, &sk, dk, wk, dk));
-            if (t_from + lb * (1.0 - 1e-9) - 1e-13 * (fabs(t_from) + fabs(bt)) >= bt)
+             * centre line) that k cannot cross before bt rules out all three. */
+            const double lb =
+                fmax(plane_bound(sa, &sk, dk, wk, bn), plane_bound(sa, &sk, dk, wk, dk));
+            if (not_before(t_from, lb, bt))
                 continue;
         }
         double ta;
@@ -462,7 +476,8 @@ int rc_glue_toi(const rc_glue *g, const rc_toi_params *prm, rc_toi_workspace *ws
             /* side < -tol (pc 1) or > tol (pc 0): lo below theta */
             const double dt = t_from - g->t_x, theta = (pc ? dt : -dt) - tol;
             const dual_pb pb = dual_pb_make(&Ga, m1, &Gk, m2, dir);
-            int below = lin_below(&pb, theta, below_margin(&pb, theta, fabs(t_from) + fabs(g->t_x)), 1);
+            const double margin = below_margin(&pb, theta, fabs(t_from) + fabs(g->t_x));
+            int below = lin_below(&pb, theta, margin, 1);
             if (below < 0) {
                 const double lo = lin_min2(&Ga, m1, &Gk, m2, dir, &z);
                 const double side = pc ? lo - dt : -lo - dt;
@@ -497,18 +512,20 @@ int rc_glue_toi(const rc_glue *g, const rc_toi_params *prm, rc_toi_workspace *ws
         rc_vec3 ma, mk, z;
         section_on_h(g, &g->in, g->v_in, g->x_c, g->t_c, &Aa, &ma);
         section_on_h(g, &sk, vk, k->x, t_from, &Ak, &mk);
-        /* only a contact on H before bt is taken: certified not to be one, the minimum
-         * is not needed (lin_min2 finds it when it is) */
+        /* Only a contact on H before bt would be taken. It is a contact of each cylinder
+         * too (their sections on H coincide), so not before either's first contact: none
+         * if that is at bt or later; else lin_below may certify the minimum not below bt.
+         * lin_min2 finds the minimum where it is needed. */
         int later = 0;
-        /* a contact on H is one of each cylinder too (their sections on H coincide), so
-         * not before either's first contact: one at bt or later (by the margin of
-         * plane_bound's) leaves nothing to search */
-        if (bt < INFINITY && t_from + ta_max * (1.0 - 1e-9) - 1e-13 * (fabs(t_from) + fabs(bt)) >= bt)
-            later = 1;
-        else if (bt < INFINITY) {
-            const dual_pb pb = dual_pb_make(&Aa, ma, &Ak, mk, g->kappa);
-            const double theta = bt - g->t_x;
-            later = lin_below(&pb, theta, below_margin(&pb, theta, fabs(bt) + fabs(g->t_x)), 0) == 0;
+        if (bt < INFINITY) {
+            if (not_before(t_from, ta_max, bt)) {
+                later = 1;
+            } else {
+                const dual_pb pb = dual_pb_make(&Aa, ma, &Ak, mk, g->kappa);
+                const double theta = bt - g->t_x;
+                const double margin = below_margin(&pb, theta, fabs(bt) + fabs(g->t_x));
+                later = lin_below(&pb, theta, margin, 0) == 0;
+            }
         }
         const double lo = later ? INFINITY : lin_min2(&Aa, ma, &Ak, mk, g->kappa, &z);
         if (isnan(lo))

@@ -252,7 +252,8 @@ static double urand(unsigned *s) { return (double)rand_r(s) / ((double)RAND_MAX 
 
 static rc_vec3 rvec(unsigned *s, double a, int dim)
 {
-    return rc_v3(a * (2 * urand(s) - 1), a * (2 * urand(s) - 1), dim == 3 ? a * (2 * urand(s) - 1) : 0.0);
+    const double x = a * (2 * urand(s) - 1), y = a * (2 * urand(s) - 1);
+    return rc_v3(x, y, dim == 3 ? a * (2 * urand(s) - 1) : 0.0);
 }
 
 /* A random momentum (m = 1, c = 1) of speed below vmax. */
@@ -339,7 +340,8 @@ static void compare(int dim, int trials, double vmax, int crease)
         const rc_vec3 X = rc_v3_axpy(xc, r / sqrt(1.0 + bu * bu / g0.in.g2), u);
         const double tx = 3.0 * urand(&seed);
         rc_glue g;
-        ENSURE(rc_glue_make(1.0, r, &in, &out, tx, rc_v3_axpy(xc, tx, rc_v3_scale(1.0 / sqrt(1.0 + rc_v3_norm2(in.p)), in.p)), X, &g) == RC_OK);
+        const rc_vec3 vin = rc_v3_scale(1.0 / sqrt(1.0 + rc_v3_norm2(in.p)), in.p);
+        ENSURE(rc_glue_make(1.0, r, &in, &out, tx, rc_v3_axpy(xc, tx, vin), X, &g) == RC_OK);
         const double t_from = g.t_first + (g.t_last - g.t_first) * (1.2 * urand(&seed) - 0.2);
         rc_vec3 dk;
         do
@@ -347,7 +349,8 @@ static void compare(int dim, int trials, double vmax, int crease)
         while (!(rc_v3_norm2(dk) > 0.01 && rc_v3_norm2(dk) <= 1.0));
         dk = rc_v3_scale(1.0 / rc_v3_norm(dk), dk);
         const double rk = 0.5 + urand(&seed);
-        const rc_vec3 vk0 = rc_v3_add(rc_v3_scale(-0.7 * vmax * urand(&seed), dk), rvec(&seed, 0.3 * vmax, dim));
+        const rc_vec3 vk0 =
+            rc_v3_add(rc_v3_scale(-0.7 * vmax * urand(&seed), dk), rvec(&seed, 0.3 * vmax, dim));
         const double vk2 = rc_v3_norm2(vk0) < 0.97 * 0.97 ? rc_v3_norm2(vk0) : 0.0;
         const rc_vec3 vk = vk2 > 0.0 ? vk0 : rc_v3(0, 0, 0);
         const double dist = (r + rk) * (0.3 + 1.0 * urand(&seed));
@@ -375,7 +378,8 @@ static void compare(int dim, int trials, double vmax, int crease)
     }
     printf("  %d-D, speeds < %.2fc%s: contacts %ld (incoming %ld, outgoing %ld, on H %ld), "
            "misses %ld, overlaps %ld; old verdicts: overlap reaching %ld / not %ld, on H "
-           "taken %ld / later %ld; differing %ld\n", dim, vmax, crease ? ", at the crease" : "", outcome[0], pieces[0], pieces[1],
+           "taken %ld / later %ld; differing %ld\n",
+           dim, vmax, crease ? ", at the crease" : "", outcome[0], pieces[0], pieces[1],
            pieces[2], outcome[1], outcome[2], n_ovl_below - ob0, n_ovl_not - on0,
            n_h_taken - ht0, n_h_later - hl0, diff);
     ENSURE(outcome[3] == 0);
