@@ -182,6 +182,208 @@ static double lin_min2(const rc_sym3 *A1, rc_vec3 m1, const rc_sym3 *A2, rc_vec3
     return best;
 }
 
+/* ---- deciding lin_min2's comparison without converging it ------------------------ */
+
+/* The two ellipsoids of lin_min2, with the terms dual_at wants. */
+typedef struct dual_pb {
+    const rc_sym3 *A1, *A2;
+    rc_vec3 m1, m2, b1, b2, k;
+    double c1, c2;
+} dual_pb;
+
+static dual_pb dual_pb_make(const rc_sym3 *A1, rc_vec3 m1, const rc_sym3 *A2, rc_vec3 m2,
+                            rc_vec3 k)
+{
+    dual_pb p = {A1, A2, m1, m2, rc_sym3_mul_(A1, m1, 0), rc_sym3_mul_(A2, m2, 0), k, 0.0, 0.0};
+    p.c1 = rc_v3_dot(m1, p.b1);
+    p.c2 = rc_v3_dot(m2, p.b2);
+    return p;
+}
+
+static double pb_dual(const dual_pb *p, double lam, rc_vec3 *z)
+{
+    return dual_at(p->A1, p->b1, p->c1, p->A2, p->b2, p->c2, p->k, lam, z);
+}
+
+/* (z - m)^T A (z - m): at most 1 inside the ellipsoid */
+static double form_at(const rc_sym3 *A, rc_vec3 m, rc_vec3 z)
+{
+    const rc_vec3 d = rc_v3_sub(z, m);
+    return rc_v3_dot(d, rc_sym3_mul_(A, d, 0));
+}
+
+/* Bisection steps on lam for inner_point's minimax search: each halves the distance to the
+ * deepest point's lam; a point inside both is usually found in a few. */
+#define INNER_STEPS 12
+
+/* A point strictly inside both ellipsoids: the middle of the part of the centres'
+ * segment inside both (the forms there are s^2 a1 and (1 - s)^2 a2), or else the centre
+ * of a blend (1 - lam) q1 + lam q2, walked towards the deepest point of the intersection,
+ * min over z of max(q1, q2): the blend's least value e(lam) is concave with slope
+ * q2 - q1 at its centre, and at its largest q1 = q2 there. 0 if neither finds one. *q1,
+ * *q2 the point's forms. */
+static int inner_point(const dual_pb *p, rc_vec3 *w, double *q1, double *q2)
+{
+    const rc_vec3 d = rc_v3_sub(p->m2, p->m1);
+    const double a1 = rc_v3_dot(d, rc_sym3_mul_(p->A1, d, 0));
+    const double a2 = rc_v3_dot(d, rc_sym3_mul_(p->A2, d, 0));
+    if (!(a1 > 0.0) || !(a2 > 0.0))
+        return 0;
+    const double s1 = fmin(1.0, 1.0 / sqrt(a1)), s2 = fmax(0.0, 1.0 - 1.0 / sqrt(a2));
+    if (s2 < s1) {
+        *w = rc_v3_axpy(p->m1, 0.5 * (s1 + s2), d);
+        *q1 = form_at(p->A1, p->m1, *w);
+        *q2 = form_at(p->A2, p->m2, *w);
+        if (*q1 < 1.0 && *q2 < 1.0)
+            return 1;
+    }
+    double lo = 0.0, hi = 1.0;
+    for (int it = 0; it < INNER_STEPS; it++) {
+        const double lam = 0.5 * (lo + hi);
+        const rc_sym3 A = rc_sym3_blend_(p->A1, p->A2, lam, 0);
+        rc_sym3 adj;
+        const double det = rc_sym3_adj_(&A, &adj, 0);
+        if (!(det > 0.0))
+            return 0;
+        const rc_vec3 b = rc_v3_add(rc_v3_scale(1.0 - lam, p->b1), rc_v3_scale(lam, p->b2));
+        *w = rc_v3_scale(1.0 / det, rc_sym3_mul_(&adj, b, 0));
+        *q1 = form_at(p->A1, p->m1, *w);
+        *q2 = form_at(p->A2, p->m2, *w);
+        if (*q1 < 1.0 && *q2 < 1.0)
+            return 1;
+        if (*q2 > *q1)
+            lo = lam;
+        else
+            hi = lam;
+    }
+    return 0;
+}
+
+/* A point of both ellipsoids near z: z moved towards the inner point w just far enough
+ * that both forms, convex along the segment, are at most 1; checked on the point itself
+ * (its computed forms), so rounding cannot admit a point outside. 0 if none. */
+static int repaired(const dual_pb *p, rc_vec3 z, double q1, double q2, rc_vec3 w, double w1,
+                    double w2, rc_vec3 *y)
+{
+    double s = 0.0;
+    if (q1 > 1.0)
+        s = fmax(s, (q1 - 1.0) / (q1 - w1));
+    if (q2 > 1.0)
+        s = fmax(s, (q2 - 1.0) / (q2 - w2));
+    /* a little further in than convexity asks, for the rounding of the forms */
+    s = fmin(1.0, s * (1.0 + 1e-6) + 1e-12);
+    *y = rc_v3_axpy(z, s, rc_v3_sub(w, z));
+    return form_at(p->A1, p->m1, *y) <= 1.0 && form_at(p->A2, p->m2, *y) <= 1.0;
+}
+
+/* Cap on the evaluations of lin_below's search: it converges superlinearly; a case it
+ * does not settle by then goes to lin_min2. */
+#define BELOW_STEPS 40
+
+/* Whether lin_min2's minimum of k.z over the intersection is below theta, from
+ * certificates rather than a converged minimum: 0 (not below) when a dual value, a lower
+ * bound of the minimum, is >= theta + margin, or a blend is empty (so is the
+ * intersection: lin_min2 says INFINITY); 1 (below) when a point of both ellipsoids has
+ * k.z < theta - margin (only looked for if want_below); -1 when neither is found, then
+ * lin_min2 itself decides. lin_min2's answer lies within its round-off of the true
+ * minimum (its last brackets are below the resolution of lam), so a margin of many
+ * round-offs makes the certified verdict lin_min2's. The search: the dual's slope in lam
+ * has the sign of q2(z) - q1(z) at the blend's minimiser z (its multiplier times the
+ * forms' difference: envelope theorem), one change of sign since the dual is unimodal;
+ * regula falsi (Illinois) with bisection as a safeguard finds it. */
+static int lin_below(const dual_pb *p, double theta, double margin, int want_below)
+{
+    const double hi_cut = theta + margin, lo_cut = theta - margin;
+    rc_vec3 w = p->m1;
+    double w1 = 0.0, w2 = 0.0;
+    const int have_w = want_below && inner_point(p, &w, &w1, &w2);
+    if (have_w && rc_v3_dot(p->k, w) < lo_cut)
+        return 1;
+    double a = 0.0, b = 1.0, ha = 0.0, hb = 0.0;
+    int side = 0;
+    for (int it = 0; it < BELOW_STEPS; it++) {
+        double lam;
+        if (it < 2) {
+            lam = (double)it;
+        } else {
+            lam = a - ha * (b - a) / (hb - ha);
+            /* bisect when false position leaves the bracket or crawls */
+            if (!(lam > a && lam < b) || (it % 4 == 3))
+                lam = 0.5 * (a + b);
+            if (!(lam > a && lam < b))
+                return -1;
+        }
+        rc_vec3 z;
+        const double f = pb_dual(p, lam, &z);
+        if (f == INFINITY)
+            return 0;
+        if (isnan(f))
+            return -1;
+        if (f >= hi_cut)
+            return 0;
+        const double q1 = form_at(p->A1, p->m1, z), q2 = form_at(p->A2, p->m2, z);
+        if (q1 <= 1.0 && q2 <= 1.0) {
+            /* a point of both: the minimum is within round-off of f */
+            if (want_below && rc_v3_dot(p->k, z) < lo_cut)
+                return 1;
+            return -1;
+        }
+        if (have_w && f < lo_cut) {
+            rc_vec3 y;
+            if (repaired(p, z, q1, q2, w, w1, w2, &y) && rc_v3_dot(p->k, y) < lo_cut)
+                return 1;
+        }
+        const double h = q2 - q1;
+        if (it == 0) {
+            ha = h;
+            if (!(h > 0.0))
+                return -1;
+        } else if (it == 1) {
+            hb = h;
+            if (!(h < 0.0))
+                return -1;
+        } else if (h > 0.0) {
+            a = lam;
+            ha = h;
+            if (side == 1)
+                hb *= 0.5; /* Illinois: the stale end's value halved */
+            side = 1;
+        } else if (h < 0.0) {
+            b = lam;
+            hb = h;
+            if (side == -1)
+                ha *= 0.5;
+            side = -1;
+        } else {
+            return -1; /* at the maximum: f is the minimum, within the margin of theta */
+        }
+    }
+    return -1;
+}
+
+/* Margins of the certified verdicts (dimensionless, relative): far above the round-off
+ * of the terms compared (~1e-16) and of the old search's answers, far below any
+ * difference that is not a tie; a verdict inside them goes to the old search. Of the dual
+ * problem's terms; of a lower bound of a time, measured from t_from; of absolute times
+ * (their differences lose digits of this size). */
+#define CERT_REL 1e-10
+#define BOUND_REL 1e-9
+#define TIME_REL 1e-13
+
+/* The margin for lin_below's verdicts on theta: of k.z over points at m1 and m2 and of
+ * the times theta is made of (tscale: their size). */
+static double below_margin(const dual_pb *p, double theta, double tscale)
+{
+    const double zs = rc_v3_norm(p->k) * (rc_v3_norm(p->m1) + rc_v3_norm(p->m2));
+    return CERT_REL * (zs + fabs(theta)) + TIME_REL * tscale;
+}
+
+/* Whether a contact no earlier than lb after t_from is certainly not before bt. */
+static int not_before(double t_from, double lb, double bt)
+{
+    return t_from + lb * (1.0 - BOUND_REL) - TIME_REL * (fabs(t_from) + fabs(bt)) >= bt;
+}
+
 /* The section of ball a's world cylinder (shape s, velocity v, centre ca at time ta) by
  * H, in z = y - X: the ellipsoid (z - m)^T A (z - m) <= 1. On H, y's table time is
  * t_x + kappa.z, so the offset from the centre is L z + e with L = I - v kappa^T and
@@ -194,6 +396,24 @@ static void section_on_h(const rc_glue *g, const rc_toi_shape *s, rc_vec3 v, rc_
     const rc_vec3 e = rc_v3_sub(g->x, rc_v3_axpy(ca, g->t_x - ta, v));
     const double ke = rc_v3_dot(g->kappa, e) / (1.0 - rc_v3_dot(g->kappa, v));
     *m = rc_v3_scale(-1.0, rc_v3_axpy(e, ke, v));
+}
+
+/* A lower bound of the time from now at which shape a and shape k (centre separation d,
+ * relative velocity w) can first meet: the time to close their gap across a plane normal
+ * to u (their supports along u), INFINITY if that gap opens, 0 if u separates nothing
+ * beyond round-off (a gap below BOUND_REL of the supports). */
+static double plane_bound(const rc_toi_shape *a, const rc_toi_shape *k, rc_vec3 d, rc_vec3 w,
+                          rc_vec3 u)
+{
+    const double u2 = rc_v3_norm2(u);
+    if (!(u2 > 0.0))
+        return 0.0;
+    const double h = rc_toi_support_scaled_(a, u, u2) + rc_toi_support_scaled_(k, u, u2);
+    const double gap = rc_v3_dot(u, d) - h;
+    if (!(gap > BOUND_REL * h))
+        return 0.0;
+    const double uw = rc_v3_dot(u, w);
+    return uw < 0.0 ? gap / -uw : INFINITY;
 }
 
 int rc_glue_toi(const rc_glue *g, const rc_toi_params *prm, rc_toi_workspace *ws,
@@ -220,14 +440,26 @@ int rc_glue_toi(const rc_glue *g, const rc_toi_params *prm, rc_toi_workspace *ws
     double bt = INFINITY;
     rc_vec3 by = rc_v3(0, 0, 0), bn = by;
     int bp = -1, need_h = 0;
+    double ta_max = 0.0; /* the latest first contact of a straight cylinder, from t_from */
     for (int pc = 0; pc < 2; pc++) {
         const rc_toi_shape *sa = pc ? &g->out : &g->in;
         const rc_vec3 va = pc ? g->v_out : g->v_in;
         const rc_vec3 ca = rc_v3_axpy(g->x_c, t_from - g->t_c, va);
+        const rc_vec3 dk = rc_v3_sub(k->x, ca), wk = rc_v3_sub(vk, va);
+        if (pc == 1 && bp == 0) {
+            /* the incoming piece is met at bt: the outgoing cylinder matters only if it
+             * overlaps k now or meets it before bt, and a contact on H would be one of
+             * this cylinder too (H's section lies in both), so at or after its contact.
+             * A plane separating the two now (along the first contact's normal or the
+             * centre line) that k cannot cross before bt rules out all three. */
+            const double lb =
+                fmax(plane_bound(sa, &sk, dk, wk, bn), plane_bound(sa, &sk, dk, wk, dk));
+            if (not_before(t_from, lb, bt))
+                continue;
+        }
         double ta;
         rc_vec3 ya, na;
-        st = rc_toi_shapes_rel(sa, &sk, rc_v3_sub(k->x, ca), rc_v3_sub(vk, va), prm, ws, &ta,
-                               &ya, &na);
+        st = rc_toi_shapes_rel(sa, &sk, dk, wk, prm, ws, &ta, &ya, &na);
         if (st == RC_MISS)
             continue; /* the whole cylinders never meet: neither does the piece */
         if (st == RC_EOVERLAP) {
@@ -236,13 +468,22 @@ int rc_glue_toi(const rc_glue *g, const rc_toi_params *prm, rc_toi_workspace *ws
             const rc_sym3 Ga = shape_metric(sa);
             rc_vec3 z;
             const rc_vec3 dir = rc_v3_scale(pc ? 1.0 : -1.0, g->kappa);
-            const double lo = lin_min2(&Ga, rc_v3_sub(ca, g->x), &Gk, rc_v3_sub(k->x, g->x), dir, &z);
-            const double side = pc ? lo - (t_from - g->t_x) : -lo - (t_from - g->t_x);
+            const rc_vec3 m1 = rc_v3_sub(ca, g->x), m2 = rc_v3_sub(k->x, g->x);
             /* (pc 0: the largest ell over the common part, > 0 reaches the incoming side;
              * pc 1: the least, < 0 reaches the outgoing side; a tolerance of touch_tol
              * radii of H's travel, as rc_toi's own overlap verdict) */
             const double tol = prm->touch_tol * g->r * rc_v3_norm(g->kappa);
-            if (lo != INFINITY && (pc ? side < -tol : side > tol))
+            /* side < -tol (pc 1) or > tol (pc 0): lo below theta */
+            const double dt = t_from - g->t_x, theta = (pc ? dt : -dt) - tol;
+            const dual_pb pb = dual_pb_make(&Ga, m1, &Gk, m2, dir);
+            const double margin = below_margin(&pb, theta, fabs(t_from) + fabs(g->t_x));
+            int below = lin_below(&pb, theta, margin, 1);
+            if (below < 0) {
+                const double lo = lin_min2(&Ga, m1, &Gk, m2, dir, &z);
+                const double side = pc ? lo - dt : -lo - dt;
+                below = lo != INFINITY && (pc ? side < -tol : side > tol);
+            }
+            if (below)
                 return RC_EOVERLAP;
             need_h = 1;
             continue;
@@ -250,6 +491,7 @@ int rc_glue_toi(const rc_glue *g, const rc_toi_params *prm, rc_toi_workspace *ws
         if (st != RC_OK)
             return st;
         const double tc = t_from + ta;
+        ta_max = fmax(ta_max, ta);
         const rc_vec3 Y = rc_v3_add(rc_v3_axpy(ca, ta, va), ya);
         const double ell = ELL(Y, tc);
         if (pc ? ell <= 0.0 : ell >= 0.0) {
@@ -270,7 +512,22 @@ int rc_glue_toi(const rc_glue *g, const rc_toi_params *prm, rc_toi_workspace *ws
         rc_vec3 ma, mk, z;
         section_on_h(g, &g->in, g->v_in, g->x_c, g->t_c, &Aa, &ma);
         section_on_h(g, &sk, vk, k->x, t_from, &Ak, &mk);
-        const double lo = lin_min2(&Aa, ma, &Ak, mk, g->kappa, &z);
+        /* Only a contact on H before bt would be taken. It is a contact of each cylinder
+         * too (their sections on H coincide), so not before either's first contact: none
+         * if that is at bt or later; else lin_below may certify the minimum not below bt.
+         * lin_min2 finds the minimum where it is needed. */
+        int later = 0;
+        if (bt < INFINITY) {
+            if (not_before(t_from, ta_max, bt)) {
+                later = 1;
+            } else {
+                const dual_pb pb = dual_pb_make(&Aa, ma, &Ak, mk, g->kappa);
+                const double theta = bt - g->t_x;
+                const double margin = below_margin(&pb, theta, fabs(bt) + fabs(g->t_x));
+                later = lin_below(&pb, theta, margin, 0) == 0;
+            }
+        }
+        const double lo = later ? INFINITY : lin_min2(&Aa, ma, &Ak, mk, g->kappa, &z);
         if (isnan(lo))
             return RC_EINVAL;
         const double th = g->t_x + lo;
