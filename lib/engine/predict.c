@@ -205,12 +205,15 @@ __attribute__((always_inline)) static inline double pair_time_dx(
             /* a contact with the incoming piece of a glued tube: not one the model's
              * schedule can order; the overlap policy at its time (counted), if the
              * centres approach there (else, as for an overlap, left to separate: the
-             * policy's centre-line law would find nothing to resolve) */
+             * policy's centre-line law would find nothing to resolve). The approach is
+             * judged when the event comes, max(t_X, now), where the policy will resolve
+             * it: judged at an X before now, a pair parting by then made an event that
+             * changed nothing and came up again at the same instant (RC_ESTALL) */
             const rc_vec3 dv = rc_v3_sub(bk->v, bi->v);
-            if (!(rc_v3_dot(rc_v3_axpy(dx, tref + out.t - pref, dv), dv) < 0.0))
-                return INFINITY;
             ta = tref + out.t;
             ta = ta < s->now ? s->now : ta;
+            if (!(rc_v3_dot(rc_v3_axpy(dx, ta - pref, dv), dv) < 0.0))
+                return INFINITY;
             if (!(ta < best))
                 return INFINITY;
             *n = rc_v3(NAN, 1.0, 0.0);
