@@ -19,8 +19,9 @@
 #include "relcol/status.h"
 
 #define CK_MAGIC "relcolck"
-#define CK_VERSION 4u /* 2: the bookkeeping as one record (eng_books); 3: with pinned and the
-                         transfer moments; 4: with the per_ball counters and hyperplanes */
+#define CK_VERSION 5u /* 2: the bookkeeping as one record (eng_books); 3: with pinned and the
+                         transfer moments; 4: with the per_ball counters and hyperplanes;
+                         5: with the per_ball lines before kinks ahead (eng_pend) */
 #define CK_ORDER 0x01020304u
 
 typedef struct ck_header {
@@ -166,6 +167,7 @@ static void write_all(const rc_sim *s, ck_cursor *c, const int32_t *next)
     if (s->cov) { /* (per_ball frames: the glued tubes' hyperplanes and tubes) */
         put(c, s->cov, n * sizeof *s->cov);
         put(c, s->glu, n * sizeof *s->glu);
+        put(c, s->pend, n * sizeof *s->pend);
     }
     if (n) {
         put(c, s->g.slot, s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot);
@@ -224,6 +226,17 @@ static int check_ball(const rc_sim *s, size_t k)
          !isfinite(s->glu[k].t_last) || !rc_v3_isfinite(s->glu[k].x_c) ||
          !rc_v3_isfinite(s->glu[k].kappa) || !(s->glu[k].inv_c2 == s->inv_c2)))
         return RC_ECORRUPT;
+    if (s->pend) { /* (read only by the read-out, but it must be a state it can read) */
+        const eng_pend *r = &s->pend[k];
+        if (r->depth < 0 || r->depth > 2 ||
+            (r->depth >= 1 && (!isfinite(r->t) || !rc_v3_isfinite(r->x) ||
+                               !rc_v3_isfinite(r->p) || !(r->m > 0.0) || !isfinite(r->m) ||
+                               !isfinite(r->tau) || isnan(r->tau_last) ||
+                               r->tau_last == INFINITY)) ||
+            (r->depth == 2 && (!isfinite(r->t2) || !rc_v3_isfinite(r->p2) ||
+                               !(r->m2 > 0.0) || !isfinite(r->m2))))
+            return RC_ECORRUPT;
+    }
     /* v is derived from p and m, the same way every time the engine sets it */
     const rc_vec3 v = rc_v3_scale(1.0 / eng_mass_rel(a->m, a->p, s->inv_c2), a->p);
     if (memcmp(&v, &b->v, sizeof v) != 0)
@@ -349,7 +362,8 @@ static int read_all(rc_sim *s, ck_cursor *c)
         get(c, s->cnt, n * sizeof *s->cnt) ||
         (s->ev_n && get(c, s->ev_n, n * sizeof *s->ev_n)) ||
         (s->img && get(c, s->img, 3 * n * sizeof *s->img)) ||
-        (s->cov && (get(c, s->cov, n * sizeof *s->cov) || get(c, s->glu, n * sizeof *s->glu))))
+        (s->cov && (get(c, s->cov, n * sizeof *s->cov) || get(c, s->glu, n * sizeof *s->glu) ||
+                     get(c, s->pend, n * sizeof *s->pend))))
         return RC_ECORRUPT;
     if (n && (get(c, s->g.slot, s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot) ||
               get(c, s->g.next, n * sizeof *s->g.next)))

@@ -694,9 +694,11 @@ static void reorder(rc_sim *s)
         rc_vec3 cn = s->ev_n ? s->ev_n[i] : zero;
         eng_cov cg;
         rc_glue cu;
+        eng_pend cp;
         if (s->cov) {
             cg = s->cov[i];
             cu = s->glu[i];
+            cp = s->pend[i];
         }
         eng_ball cb = s->b[i];
         eng_aux ca = s->a[i];
@@ -729,6 +731,9 @@ static void reorder(rc_sim *s)
                 const rc_glue tu = s->glu[to];
                 s->glu[to] = cu;
                 cu = tu;
+                const eng_pend tp = s->pend[to];
+                s->pend[to] = cp;
+                cp = tp;
             }
             s->b[to] = cb;
             s->a[to] = ca;
@@ -753,6 +758,64 @@ static void reorder(rc_sim *s)
     for (size_t k = 0; k < n; k++)
         s->q.e[k].key = key_of(&s->a[k]);
     eng_queue_rebuild(&s->q, s->now);
+}
+
+/* per_ball frames: what an event's ball was before it, for pend_note */
+typedef struct pend_snap {
+    int32_t b;
+    uint32_t cnt;
+    double t_k;
+    rc_particle in;
+    double tau_last;
+} pend_snap;
+
+static pend_snap pend_take(const rc_sim *s, int32_t b)
+{
+    const pend_snap p = {b, s->cnt[b], s->cov[b].t_k, {s->a[b].m, s->a[b].p}, s->clk[b].tau_last};
+    return p;
+}
+
+/* After an event: keep the record of the lines ball p.b is still on at now (eng_pend),
+ * from its state before the event. Only the event's own balls can get a kink after now
+ * (the single-contact path kinks on the hyperplane; a group's members and the overlap
+ * policy's kinks are at the event's time, or at a kink already ahead by the order rule,
+ * which moves no recorded kink). Reads the engine, changes nothing it reads. */
+static void pend_note(rc_sim *s, const pend_snap *p)
+{
+    const int32_t b = p->b;
+    if (s->cnt[b] == p->cnt)
+        return; /* (no change: no kink) */
+    eng_pend *r = &s->pend[b];
+    const double te = s->cov[b].t_k, now = s->now;
+    if (!(te > now)) { /* on its outgoing line from now on */
+        r->depth = 0;
+        return;
+    }
+    if (!(p->t_k > now)) { /* it was on its stored line at now: that line, up to te */
+        const eng_ball *e = &s->b[b];
+        const double h = te - e->t;
+        r->depth = 1;
+        r->t = te;
+        r->x = h == 0.0 ? e->x : rc_v3_axpy(e->x, h, e->v);
+        r->p = p->in.p;
+        r->m = p->in.m;
+        r->tau = s->clk[b].tau;
+        if (h != 0.0)
+            r->tau += h * (s->a[b].m / eng_mass_rel(s->a[b].m, s->a[b].p, s->inv_c2));
+        r->tau_last = p->tau_last;
+        for (int d = 0; d < 3; d++)
+            r->img[d] = s->img ? s->img[3 * (size_t)b + (size_t)d] : 0;
+        return;
+    }
+    /* a kink was already ahead: the line from it to the new one is the stored line the
+     * event found, recorded if the record ends at that kink with one line (else the part
+     * from there on is not recorded, and the read-out says so) */
+    if (te > p->t_k && r->depth == 1 && r->t == p->t_k) {
+        r->depth = 2;
+        r->t2 = te;
+        r->p2 = p->in.p;
+        r->m2 = p->in.m;
+    }
 }
 
 /* Events a run may have at one instant before it is called stalled: every contact of a
@@ -844,9 +907,17 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
             eng_predict(s, i, 1);
         } else {
             s->since_reorder++;
+            pend_snap ps[2];
+            const int np = !s->pend ? 0 : a->ev_partner >= 0 ? 2 : 1;
+            if (np)
+                ps[0] = pend_take(s, i);
+            if (np == 2)
+                ps[1] = pend_take(s, a->ev_partner);
             int st = collide(s, i, a->ev_partner, top_t);
             if (st != RC_OK)
                 return st;
+            for (int j = 0; j < np; j++)
+                pend_note(s, &ps[j]);
         }
     }
     if (isfinite(t_end))
