@@ -109,6 +109,23 @@ int rc_sim_get_ball_latest(const rc_sim *s, size_t i, rc_sim_ball *out)
     return RC_OK;
 }
 
+int rc_sim_get_glue(const rc_sim *s, size_t i, rc_glue *out)
+{
+    if (!s || !out || i >= s->n || !s->glu)
+        return RC_EINVAL;
+    const size_t k = s->slot[i];
+    *out = s->glu[k];
+    if (out->r > 0.0) {
+        /* kept with the contact event at the origin: shifted so that its centre at t_c is
+         * the stored line's there (its kink) */
+        const eng_ball *b = &s->b[k];
+        const rc_vec3 shift = rc_v3_sub(rc_v3_axpy(b->x, out->t_c - b->t, b->v), out->x_c);
+        out->x = rc_v3_add(out->x, shift);
+        out->x_c = rc_v3_add(out->x_c, shift);
+    }
+    return RC_OK;
+}
+
 int rc_sim_kink_ahead(const rc_sim *s, size_t i)
 {
     if (!s || i >= s->n)

@@ -366,6 +366,13 @@ int rc_sim_get_ball(const rc_sim *s, size_t i, rc_sim_ball *out);
  * events lie before t (papers/shape-change.md, section 6). This read-out applies every
  * change at its contact event instead, for both balls alike. */
 int rc_sim_get_ball_latest(const rc_sim *s, size_t i, rc_sim_ball *out);
+/* per_ball frames (covariant): ball i's glued world tube through its latest kink
+ * (relcol/toi.h: rc_glue; its section at a time t is the incoming cylinder's part not yet
+ * reached by H and the outgoing one's part reached), in table coordinates: on a walled
+ * axis those of rc_sim_get_ball's x, on a periodic one up to whole box lengths. out->r = 0:
+ * none -- no kink yet, c infinite, or a kink the order rule put at the ball's previous one
+ * (where no glued tube is defined). RC_EINVAL for a bad index or another frame. */
+int rc_sim_get_glue(const rc_sim *s, size_t i, rc_glue *out);
 /* Whether ball i's latest kink lies after the engine's time (per_ball frames; 0 in every
  * other frame): 0 no, rc_sim_get_ball gives its latest segment; 1 yes, rc_sim_get_ball
  * gives the line it is still on (the incoming one); 2 yes, but the ball has three or more
