@@ -239,8 +239,9 @@ typedef struct rc_sim_diag {
      * less than a glue window apart, where the glued tube of the two is not defined) is
      * put at the previous kink instead. Groups of simultaneous contacts are resolved at
      * one table time as in the other frames, each member's kink through its centre then.
-     * rc_sim_get_ball gives the table-time picture: a ball whose kink lies after the
-     * engine's time on the line it is still on (rc_sim_kink_ahead); the diagnostics'
+     * rc_sim_get_ball gives the table-time picture of the collisions processed so far: a
+     * ball whose kink lies after the engine's time on the line it is still on
+     * (rc_sim_kink_ahead; rc_sim_get_ball_latest for the other read-out); the diagnostics'
      * sums (momentum, energy, rest mass) are over every ball's latest segment, which is
      * what collisions conserve. rc_sim_sync keeps the hyperplanes, tubes and kinks ahead
      * and changes nothing; rc_sim_set_c makes every kink still ahead at once and forgets
