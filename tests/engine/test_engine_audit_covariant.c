@@ -20,6 +20,9 @@
  * model leaves undefined (the order rule's kinks, three windows at once, hyperplanes
  * sweeping a ball out of order) is not judged, and counted. Any other new overlap is a
  * fault, printed with seed, event, slice time and balls.
+ * Beside it, after every event, rc_sim_get_ball of every ball is compared with the rebuilt
+ * worldline at the engine's time: a ball whose kink (or two) lies ahead must be read on
+ * the line it is still on.
  * AUDIT_NO_GLUE=1 reads every ball as the disc of its line (the shape jumps at its kink):
  * the audit then finds 142 and 59 faults in the two runs, so it sees what the glue does. */
 #include <math.h>
@@ -303,6 +306,8 @@ static int section_at(const hist *h, double t, piece out[3])
 
 typedef struct audit_out {
     long events, slices, pairs, counted, counted_pair, undefined, faults;
+    long reads_ahead, reads_two_ahead, read_bad;
+    double read_err;
     double worst, worst_fault, span;
 } audit_out;
 
@@ -405,6 +410,37 @@ static void audit(size_t n, double packing, double v_rms, double eps, long event
             }
             G[i] = g;
             L[i] = b;
+        }
+        /* rc_sim_get_ball at now against the rebuilt worldline there (the line begun by
+         * the last kink at or before now): the read-out of a ball whose kinks lie ahead
+         * (one or two) is the line it is on. 1e-9 of r: the two are the same lines
+         * through the same kinks, computed in other orders (round-off ~1e-13 r) */
+        for (size_t i = 0; i < n; i++) {
+            const hist *h = &H[i];
+            size_t last = 0, ahead_n = 0;
+            int void_ = 0;
+            for (size_t k = 0; k < h->n; k++) {
+                if (h->l[k].ts <= now)
+                    last = k;
+                else
+                    ahead_n += k == 0 || h->l[k].ts != h->l[k - 1].ts;
+                void_ |= !(h->l[k].und_lo > h->l[k].und_hi) && now >= h->l[k].und_lo &&
+                         now <= h->l[k].und_hi;
+            }
+            const int ka = rc_sim_kink_ahead(s, i);
+            if (ka == 2 || void_)
+                continue;
+            rc_sim_ball b;
+            rc_sim_get_ball(s, i, &b);
+            const line *l = &h->l[last];
+            const rc_vec3 x = rc_v3_axpy(l->xs, now - l->tr, l->v);
+            const double M = sqrt(b.m * b.m + rc_v3_norm2(b.p));
+            const double err = fmax(rc_v3_norm(rc_v3_sub(b.x, x)) / h->r,
+                                    rc_v3_norm(rc_v3_sub(rc_v3_scale(1.0 / M, b.p), l->v)));
+            res->reads_ahead += ka == 1;
+            res->reads_two_ahead += ka == 1 && ahead_n >= 2;
+            res->read_err = fmax(res->read_err, err);
+            res->read_bad += err > 1e-9 || (ka == 1) != (ahead_n > 0);
         }
         /* The slice at ta = now - W is final: no collision processed later (contact
          * event at or after now) has a glue window reaching back before now - W, W twice
@@ -512,6 +548,10 @@ static void run(size_t n, double packing, double v_rms, double eps, long events,
     printf("    ball sections left undefined (ball-slices): order rule %ld, three windows %ld, "
            "tube not continuing its line %ld, hyperplanes sweeping out of order %ld\n",
            why[0], why[1], why[2], why[3] + why[4]);
+    printf("    read-out at the engine's time: %ld reads with a kink ahead (%ld with two), "
+           "worst difference from the rebuilt worldline %.2g, %ld wrong\n", r.reads_ahead,
+           r.reads_two_ahead, r.read_err, r.read_bad);
+    ENSURE(r.read_bad == 0 && r.reads_ahead > 0);
     ENSURE(r.events == events && r.slices > events / 2);
     ENSURE_MSG(r.faults == known_faults, "%ld overlaps the engine did not count (worst depth "
                "%.3g), %ld known", r.faults, r.worst_fault, known_faults);
