@@ -165,8 +165,19 @@ WEB_EXPORT int web_set_model(web_world *w, double eps_ball, int frame, int law, 
         snprintf(web_err, sizeof web_err, "out of memory");
         return RC_ENOMEM;
     }
-    for (size_t i = 0; i < n; i++)
+    for (size_t i = 0; i < n; i++) {
         rc_sim_get_ball(w->s, i, &b[i]);
+        /* covariant frame: a kink still ahead is made now, as rc_sim_set_c does (the
+         * latest momentum and rest mass at the true centre), so no momentum is lost */
+        if (rc_sim_kink_ahead(w->s, i) > 0) {
+            rc_sim_ball l;
+            rc_sim_get_ball_latest(w->s, i, &l);
+            b[i].p = l.p;
+            b[i].m = l.m;
+            b[i].collided = 1;
+            b[i].tau_last = b[i].tau;
+        }
+    }
     rc_sim_def def = scn_sim_def(&w->sc);
     def.c = w->c;
     def.eps_ball = eps_ball;

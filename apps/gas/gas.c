@@ -435,8 +435,14 @@ static int run_sim(const options *o, samples *S, char *err)
             st = pb_mark(s, o->periodic, S->boxv, &S->pres);
         double e = 0.0;
         for (size_t i = 0; i < n && st == RC_OK; i++) {
+            /* each ball's latest segment: in the covariant frame every change at its
+             * contact event's table time, the read-out papers/finite-density.md's
+             * numbers are made with (rc_sim_get_ball applies a kink after its contact
+             * event at the kink but one before it at the contact event, which selects
+             * balls by the sign of their kink's lead: papers/shape-change.md section 6);
+             * in every other frame the same as rc_sim_get_ball */
             rc_sim_ball q;
-            st = rc_sim_get_ball(s, i, &q);
+            st = rc_sim_get_ball_latest(s, i, &q);
             const double u = rc_v3_norm2(q.p) * inv_c2 / (q.m * q.m);
             e += q.m * sqrt(1.0 + u);
             S->mass_drift = fmax(S->mass_drift, fabs(q.m - 1.0));

@@ -19,9 +19,10 @@
 #include "relcol/status.h"
 
 #define CK_MAGIC "relcolck"
-#define CK_VERSION 5u /* 2: the bookkeeping as one record (eng_books); 3: with pinned and the
+#define CK_VERSION 6u /* 2: the bookkeeping as one record (eng_books); 3: with pinned and the
                          transfer moments; 4: with the per_ball counters and hyperplanes;
-                         5: with the per_ball undo records and rollbacks */
+                         5: with the per_ball undo records and rollbacks;
+                         6: with the per_ball lines before kinks ahead (eng_pend) */
 #define CK_ORDER 0x01020304u
 
 typedef struct ck_header {
@@ -168,6 +169,7 @@ static void write_all(const rc_sim *s, ck_cursor *c, const int32_t *next)
         put(c, s->cov, n * sizeof *s->cov);
         put(c, s->glu, n * sizeof *s->glu);
         put(c, s->und, n * sizeof *s->und);
+        put(c, s->pend, n * sizeof *s->pend);
     }
     if (n) {
         put(c, s->g.slot, s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot);
@@ -246,6 +248,17 @@ static int check_ball(const rc_sim *s, size_t k)
                !isfinite(u->glu.t_last) || !rc_v3_isfinite(u->glu.x_c) ||
                !rc_v3_isfinite(u->glu.kappa) || !(u->glu.inv_c2 == s->inv_c2))) ||
              (dim == 2 && u->in.p.z != 0.0)))
+            return RC_ECORRUPT;
+    }
+    if (s->pend) { /* (read only by the read-out, but it must be a state it can read) */
+        const eng_pend *r = &s->pend[k];
+        if (r->depth < 0 || r->depth > 2 ||
+            (r->depth >= 1 && (!isfinite(r->t) || !rc_v3_isfinite(r->x) ||
+                               !rc_v3_isfinite(r->p) || !(r->m > 0.0) || !isfinite(r->m) ||
+                               !isfinite(r->tau) || isnan(r->tau_last) ||
+                               r->tau_last == INFINITY)) ||
+            (r->depth == 2 && (!isfinite(r->t2) || !rc_v3_isfinite(r->p2) ||
+                               !(r->m2 > 0.0) || !isfinite(r->m2))))
             return RC_ECORRUPT;
     }
     /* v is derived from p and m, the same way every time the engine sets it */
@@ -374,7 +387,8 @@ static int read_all(rc_sim *s, ck_cursor *c)
         (s->ev_n && get(c, s->ev_n, n * sizeof *s->ev_n)) ||
         (s->img && get(c, s->img, 3 * n * sizeof *s->img)) ||
         (s->cov && (get(c, s->cov, n * sizeof *s->cov) || get(c, s->glu, n * sizeof *s->glu) ||
-                     get(c, s->und, n * sizeof *s->und))))
+                     get(c, s->und, n * sizeof *s->und) ||
+                     get(c, s->pend, n * sizeof *s->pend))))
         return RC_ECORRUPT;
     if (n && (get(c, s->g.slot, s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot) ||
               get(c, s->g.next, n * sizeof *s->g.next)))

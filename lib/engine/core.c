@@ -737,6 +737,64 @@ static void finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int k
 }
 
 
+/* per_ball frames: what an event's ball was before it, for pend_note */
+typedef struct pend_snap {
+    int32_t b;
+    uint32_t cnt;
+    double t_k;
+    rc_particle in;
+    double tau_last;
+} pend_snap;
+
+static pend_snap pend_take(const rc_sim *s, int32_t b)
+{
+    const pend_snap p = {b, s->cnt[b], s->cov[b].t_k, {s->a[b].m, s->a[b].p}, s->clk[b].tau_last};
+    return p;
+}
+
+/* After an event: keep the record of the lines ball p.b is still on at now (eng_pend),
+ * from its state before the event. Only the event's own balls can get a kink after now
+ * (the single-contact path kinks on the hyperplane; a group's members and the overlap
+ * policy's kinks are at the event's time, or at a kink already ahead by the order rule,
+ * which moves no recorded kink). Reads the engine, changes nothing it reads. */
+static void pend_note(rc_sim *s, const pend_snap *p)
+{
+    const int32_t b = p->b;
+    if (s->cnt[b] == p->cnt)
+        return; /* (no change: no kink) */
+    eng_pend *r = &s->pend[b];
+    const double te = s->cov[b].t_k, now = s->now;
+    if (!(te > now)) { /* on its outgoing line from now on */
+        r->depth = 0;
+        return;
+    }
+    if (!(p->t_k > now)) { /* it was on its stored line at now: that line, up to te */
+        const eng_ball *e = &s->b[b];
+        const double h = te - e->t;
+        r->depth = 1;
+        r->t = te;
+        r->x = h == 0.0 ? e->x : rc_v3_axpy(e->x, h, e->v);
+        r->p = p->in.p;
+        r->m = p->in.m;
+        r->tau = s->clk[b].tau;
+        if (h != 0.0)
+            r->tau += h * (s->a[b].m / eng_mass_rel(s->a[b].m, s->a[b].p, s->inv_c2));
+        r->tau_last = p->tau_last;
+        for (int d = 0; d < 3; d++)
+            r->img[d] = s->img ? s->img[3 * (size_t)b + (size_t)d] : 0;
+        return;
+    }
+    /* a kink was already ahead: the line from it to the new one is the stored line the
+     * event found, recorded if the record ends at that kink with one line (else the part
+     * from there on is not recorded, and the read-out says so) */
+    if (te > p->t_k && r->depth == 1 && r->t == p->t_k) {
+        r->depth = 2;
+        r->t2 = te;
+        r->p2 = p->in.p;
+        r->m2 = p->in.m;
+    }
+}
+
 /* ---- undoing a ball's last collision (papers/shape-change.md, section 7) ----------- */
 
 /* X (table time tx, offset dX from ball b's centre then on its stored line) on the future
@@ -863,6 +921,20 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx)
         account_walls(s, 1, p1, p0, NULL); /* (taken: p1 - p0, the original's negated) */
         nc = 0;
     }
+    /* the read-out's records of w and j (eng_pend) described lines before the kinks now
+     * undone: the lines before their earlier kinks were not kept (a kink of theirs still
+     * ahead is then read out as not recorded, rc_sim_kink_ahead 2) */
+    pend_snap ps[3];
+    size_t nps = 0;
+    if (s->pend) {
+        s->pend[w].depth = 0;
+        ps[nps++] = pend_take(s, w);
+        if (ball) {
+            s->pend[j].depth = 0;
+            ps[nps++] = pend_take(s, j);
+        }
+        ps[nps++] = pend_take(s, k);
+    }
     s->bk.events[ball ? RC_SIM_EV_BALL : RC_SIM_EV_WALL]--;
     s->bk.collisions--;
     s->bk.events[RC_SIM_EV_TC] -= (uw.tc | (ball ? s->und[j].tc : 0u)) & 1u; /* (the first
@@ -943,6 +1015,8 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx)
     for (size_t m = 0; m < nm; m++)
         eng_predict(s, s->grp_ball[m], 0);
     finish(s, nm, nc, k0, p0, RC_SIM_EV_MULTI, 1, J);
+    for (size_t q = 0; q < nps; q++)
+        pend_note(s, &ps[q]);
     return 1;
 }
 
@@ -1012,10 +1086,12 @@ static void reorder(rc_sim *s)
         eng_cov cg;
         rc_glue cu;
         eng_undo cz;
+        eng_pend cp;
         if (s->cov) {
             cg = s->cov[i];
             cu = s->glu[i];
             cz = s->und[i];
+            cp = s->pend[i];
         }
         eng_ball cb = s->b[i];
         eng_aux ca = s->a[i];
@@ -1051,6 +1127,9 @@ static void reorder(rc_sim *s)
                 const eng_undo tz = s->und[to]; /* (partners by caller's index: unchanged) */
                 s->und[to] = cz;
                 cz = tz;
+                const eng_pend tp = s->pend[to];
+                s->pend[to] = cp;
+                cp = tp;
             }
             s->b[to] = cb;
             s->a[to] = ca;
@@ -1166,9 +1245,19 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
             eng_predict(s, i, 1);
         } else {
             s->since_reorder++;
+            pend_snap ps[2];
+            const int np = !s->pend ? 0 : a->ev_partner >= 0 ? 2 : 1;
+            if (np)
+                ps[0] = pend_take(s, i);
+            if (np == 2)
+                ps[1] = pend_take(s, a->ev_partner);
+            const uint64_t rb = s->bk.rollbacks;
             int st = collide(s, i, a->ev_partner, top_t);
             if (st != RC_OK)
                 return st;
+            for (int j = 0; j < np && s->bk.rollbacks == rb; j++) /* (a rollback notes its
+                                                                      own three) */
+                pend_note(s, &ps[j]);
         }
     }
     if (isfinite(t_end))

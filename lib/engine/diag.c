@@ -9,8 +9,47 @@
 size_t rc_sim_count(const rc_sim *s) { return s ? s->n : 0; }
 double rc_sim_time(const rc_sim *s) { return s ? s->now : NAN; }
 
-/* Ball i extrapolated (without changing the engine) to the engine's time. */
-static void ball_now(const rc_sim *s, size_t i, rc_sim_ball *o)
+/* per_ball frames: ball i's state at now where its latest kink lies ahead of it, from the
+ * lines eng_pend recorded: 1 (*x in the wrap coordinates *img, p, m, tau, TC memory set),
+ * 2 if the line it is on now was not recorded, 0 if the ball is on its stored line. */
+static int before_kink(const rc_sim *s, size_t i, rc_sim_ball *o, const int32_t **img)
+{
+    if (!s->pend || !(s->cov[i].t_k > s->now))
+        return 0;
+    const eng_pend *r = &s->pend[i];
+    const double now = s->now;
+    double t0;
+    rc_vec3 x0, p;
+    double m, tau0, tau_last;
+    if (r->depth >= 1 && now < r->t) { /* still before the first recorded kink */
+        t0 = r->t;
+        x0 = r->x;
+        p = r->p;
+        m = r->m;
+        tau0 = r->tau;
+        tau_last = r->tau_last;
+    } else if (r->depth >= 2 && now < r->t2) { /* between it and the next */
+        t0 = r->t;
+        x0 = r->x;
+        p = r->p2;
+        m = r->m2;
+        tau0 = r->tau;
+        tau_last = r->tau;
+    } else {
+        return 2;
+    }
+    const double h = now - t0, M = eng_mass_rel(m, p, s->inv_c2);
+    o->x = rc_v3_axpy(x0, h, rc_v3_scale(1.0 / M, p));
+    o->p = p;
+    o->m = m;
+    o->tau = tau0 + h * (m / M);
+    o->collided = isfinite(tau_last);
+    o->tau_last = o->collided ? tau_last : 0.0;
+    *img = r->img;
+    return 1;
+}
+
+int eng_ball_now(const rc_sim *s, size_t i, rc_sim_ball *o, int truth)
 {
     const eng_ball *b = &s->b[i];
     const eng_aux *a = &s->a[i];
@@ -25,13 +64,15 @@ static void ball_now(const rc_sim *s, size_t i, rc_sim_ball *o)
     o->tau_last = o->collided ? k->tau_last : 0.0;
     if (h != 0.0)
         o->tau += s->inv_c2 == 0.0 ? h : h * (a->m / eng_mass_rel(a->m, a->p, s->inv_c2));
+    const int32_t *img = s->img ? s->img + 3 * i : NULL;
+    const int ahead = truth ? before_kink(s, i, o, &img) : 0;
     for (int d = 0; d < 3; d++) {
         o->image[d] = 0;
         if (!s->img || s->walled >> d & 1u || d >= s->def.dim)
             continue;
         /* periodic: in [0, L) (a ball exactly at its wrap, not yet processed, may lie a
          * rounding error outside), with the wrap counted */
-        int32_t im = s->img[3 * i + (size_t)d];
+        int32_t im = img[d];
         double x = rc_v3_get(o->x, d);
         const double L = s->L[d];
         if (x >= L) {
@@ -49,14 +90,48 @@ static void ball_now(const rc_sim *s, size_t i, rc_sim_ball *o)
         rc_v3_set(&o->x, d, x);
         o->image[d] = im;
     }
+    return ahead;
 }
 
 int rc_sim_get_ball(const rc_sim *s, size_t i, rc_sim_ball *out)
 {
     if (!s || !out || i >= s->n)
         return RC_EINVAL;
-    ball_now(s, s->slot[i], out);
+    eng_ball_now(s, s->slot[i], out, 1);
     return RC_OK;
+}
+
+int rc_sim_get_ball_latest(const rc_sim *s, size_t i, rc_sim_ball *out)
+{
+    if (!s || !out || i >= s->n)
+        return RC_EINVAL;
+    eng_ball_now(s, s->slot[i], out, 0);
+    return RC_OK;
+}
+
+int rc_sim_get_glue(const rc_sim *s, size_t i, rc_glue *out)
+{
+    if (!s || !out || i >= s->n || !s->glu)
+        return RC_EINVAL;
+    const size_t k = s->slot[i];
+    *out = s->glu[k];
+    if (out->r > 0.0) {
+        /* kept with the contact event at the origin: shifted so that its centre at t_c is
+         * the stored line's there (its kink) */
+        const eng_ball *b = &s->b[k];
+        const rc_vec3 shift = rc_v3_sub(rc_v3_axpy(b->x, out->t_c - b->t, b->v), out->x_c);
+        out->x = rc_v3_add(out->x, shift);
+        out->x_c = rc_v3_add(out->x_c, shift);
+    }
+    return RC_OK;
+}
+
+int rc_sim_kink_ahead(const rc_sim *s, size_t i)
+{
+    if (!s || i >= s->n)
+        return RC_EINVAL;
+    rc_sim_ball b;
+    return eng_ball_now(s, s->slot[i], &b, 1);
 }
 
 /* Deepest overlap among ball i's neighbours at the engine's time, relative to ri + rk. */
@@ -104,7 +179,7 @@ int rc_sim_diagnostics(const rc_sim *s, rc_sim_diag *d)
         if (s->narrow)
             continue;
         rc_sim_ball b;
-        ball_now(s, i, &b);
+        eng_ball_now(s, i, &b, 1);
         double w = overlap_around(s, i, b.x);
         if (w > d->max_overlap)
             d->max_overlap = w;
@@ -155,8 +230,10 @@ uint64_t rc_sim_hash(const rc_sim *s)
         return h;
     h = fnv(h, s->now);
     for (size_t i = 0; i < s->n; i++) {
+        /* (the stored lines: a fingerprint of the engine's state, the same in every
+         * frame, not the table-time picture of per_ball frames) */
         rc_sim_ball b;
-        ball_now(s, s->slot[i], &b);
+        eng_ball_now(s, s->slot[i], &b, 0);
         h = fnv(h, b.x.x);
         h = fnv(h, b.x.y);
         h = fnv(h, b.x.z);
@@ -177,7 +254,7 @@ size_t rc_sim_bytes(const rc_sim *s)
                                sizeof *s->id + sizeof *s->slot +
                                sizeof *s->cnt + (s->ev_n ? sizeof *s->ev_n : 0) +
                                (s->img ? 3 * sizeof *s->img : 0) +
-                               (s->cov ? sizeof *s->cov + sizeof *s->glu : 0)) +
+                               (s->cov ? sizeof *s->cov + sizeof *s->glu + sizeof *s->pend : 0)) +
            eng_queue_bytes(&s->q) +
            s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot +
            s->grp_ball_cap * (sizeof *s->grp_ball + sizeof *s->grp_part) +

@@ -78,6 +78,31 @@ typedef struct eng_undo {
     uint32_t cnt, pcnt; /* the ball's and the partner's counters after the collision */
     uint32_t tc;        /* the collision counted a TC contact (rc_sim_diag) */
 } eng_undo;
+/* per_ball frames: where a ball's kinks lie after the engine's time. The engine stores a
+ * ball at its latest kink on its outgoing line, which may lie ahead of now; the table-time
+ * picture at now (rc_sim_get_ball) needs the line the ball is still on. Written after each
+ * event for its own balls (engine/core.c, pend_note), read only by the read-out
+ * (engine/diag.c), so nothing here changes a run. depth 0: none (the ball's kinks were at
+ * or before the event that made them). depth >= 1: the ball moves on the line with
+ * momentum p and rest mass m until its kink at table time t, at centre x (in the wrap
+ * coordinates img, periodic boxes), where its proper time is tau; its TC memory before
+ * it is tau_last (-inf: no collision). depth 2: then on the line p2, m2 from that kink
+ * until the next one, at t2. Where the latest kink (eng_cov.t_k) lies beyond the last
+ * recorded end (t, or t2), the lines in between were not recorded (three or more kinks
+ * ahead of now at once): the read-out says so (rc_sim_kink_ahead = 2). */
+typedef struct eng_pend {
+    double t;
+    rc_vec3 x;
+    rc_vec3 p;
+    double m;
+    double tau;
+    double tau_last;
+    double t2;
+    rc_vec3 p2;
+    double m2;
+    int32_t img[3];
+    int32_t depth;
+} eng_pend;
 
 /* The event queue (engine/queue.c): one entry per ball, popped in (time, ball) order.
  * (Functions shared between the engine files carry eng_: exported, not public.) */
@@ -304,6 +329,8 @@ struct rc_sim {
     rc_glue *glu;
     /* per_ball frames only (else NULL): per ball, how to undo its last collision */
     eng_undo *und;
+    /* per_ball frames only (else NULL): per ball, the lines before its kinks ahead of now */
+    eng_pend *pend;
     /* per_ball frames: scratch of the prediction -- the contact event of the pair last
      * put to the frame (pair_time_dx) and of the best event so far (scan_block_narrow),
      * as eng_cov.ev_tx / ev_dx */
@@ -347,6 +374,11 @@ void *eng_alloc(size_t bytes);
 /* Allocate the state of n balls (engine/setup.c), replacing any held: per-ball arrays,
  * cells sized for the largest rest radius rmax, queue; bookkeeping cleared. */
 int eng_alloc_state(rc_sim *s, size_t n, double rmax);
+/* Ball i (storage slot) at the engine's time (engine/diag.c): truth != 0 the table-time
+ * picture (per_ball frames: on the line it is still on where its kink lies ahead, as
+ * eng_pend records it), 0 its stored line taken to now (the state hash's view). */
+/* Returns rc_sim_kink_ahead's value (0 without truth). */
+int eng_ball_now(const rc_sim *s, size_t i, rc_sim_ball *o, int truth);
 /* Release the balls' state (the engine then holds none). */
 void eng_release_state(rc_sim *s);
 

@@ -186,6 +186,8 @@ static void release_balls(rc_sim *s)
     s->glu = NULL;
     free(s->und);
     s->und = NULL;
+    free(s->pend);
+    s->pend = NULL;
     free(s->img);
     s->img = NULL;
     s->b = NULL;
@@ -271,6 +273,10 @@ int rc_sim_sync(rc_sim *s)
 {
     if (!s)
         return RC_EINVAL;
+    /* per_ball frames at finite c: the balls do not carry the hyperplanes, tubes and kinks
+     * ahead, and a prediction asked later rounds differently (relcol/sim.h): keep all */
+    if (s->glue)
+        return RC_OK;
     size_t n = s->n;
     rc_sim_ball *b = malloc((n ? n : 1) * sizeof *b);
     if (!b)
@@ -303,6 +309,17 @@ int rc_sim_set_c(rc_sim *s, double c)
      * are what c leaves alone (sim.h) */
     for (size_t i = 0; i < n; i++)
         rc_sim_get_ball(s, i, &b[i]);
+    /* per_ball frames: a kink still ahead of now is made now, at the ball's true centre
+     * and proper time, with its latest segment's momentum and rest mass (the glued tube
+     * it belongs to is a function of the old c); the hyperplanes go with the reload */
+    for (size_t i = 0; s->glue && i < n; i++)
+        if (rc_sim_kink_ahead(s, i) > 0) {
+            const eng_aux *a = &s->a[s->slot[i]];
+            b[i].p = a->p;
+            b[i].m = a->m;
+            b[i].collided = 1;
+            b[i].tau_last = b[i].tau;
+        }
     const eng_books kept = s->bk;
     const rc_sim_def def0 = s->def;
     const double k0 = s->inv_c2, ic0 = s->inv_c;
@@ -389,7 +406,8 @@ int eng_alloc_state(rc_sim *s, size_t n, double rmax)
         /* no kink yet: every contact is on the future side of a ball's (absent) plane */
         if (!(s->cov = eng_alloc(n * sizeof *s->cov)) ||
             !(s->glu = calloc(n ? n : 1, sizeof *s->glu)) ||
-            !(s->und = calloc(n ? n : 1, sizeof *s->und))) {
+            !(s->und = calloc(n ? n : 1, sizeof *s->und)) ||
+            !(s->pend = calloc(n ? n : 1, sizeof *s->pend))) {
             st = RC_ENOMEM;
             goto fail;
         }

@@ -110,6 +110,8 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events);
 size_t rc_sim_count(const rc_sim *s);
 double rc_sim_time(const rc_sim *s);
 int rc_sim_get_ball(const rc_sim *s, size_t i, rc_sim_ball *out);
+int rc_sim_get_ball_latest(const rc_sim *s, size_t i, rc_sim_ball *out);
+int rc_sim_kink_ahead(const rc_sim *s, size_t i);
 int rc_sim_diagnostics(const rc_sim *s, rc_sim_diag *d);
 uint64_t rc_sim_hash(const rc_sim *s);
 typedef struct rc_sim_gas_def {

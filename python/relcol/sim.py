@@ -303,27 +303,36 @@ class Sim:
         """The engine's table time."""
         return lib.rc_sim_time(self._sim)
 
-    def _read(self):
+    def _read(self, latest=False):
         n, dim = lib.rc_sim_count(self._sim), self.dim
         out = ffi.new("rc_sim_ball *")
         x, p = np.empty((n, dim)), np.empty((n, dim))
         r, m, tau = np.empty(n), np.empty(n), np.empty(n)
         image = np.empty((n, dim), dtype=np.int64)
+        ahead = np.zeros(n, dtype=np.int64)
+        get = lib.rc_sim_get_ball_latest if latest else lib.rc_sim_get_ball
         for i in range(n):
-            check(lib.rc_sim_get_ball(self._sim, i, out), "ball", i)
+            check(get(self._sim, i, out), "ball", i)
             x[i] = (out.x.x, out.x.y, out.x.z)[:dim]
             p[i] = (out.p.x, out.p.y, out.p.z)[:dim]
             r[i], m[i], tau[i] = out.r, out.m, out.tau
             image[i] = list(out.image)[:dim]
-        return x, p, r, m, tau, image
+            if not latest:
+                ahead[i] = lib.rc_sim_kink_ahead(self._sim, i)
+        return x, p, r, m, tau, image, ahead
 
-    def state(self):
+    def state(self, latest=False):
         """Every ball at the engine's time, as a dict of arrays: x, p, v, r, m (rest
-        mass), tau (proper time), image (periodic wraps), t."""
-        x, p, r, m, tau, image = self._read()
+        mass), tau (proper time), image (periodic wraps), kink_ahead, t. In the covariant
+        frame a ball's kink may lie after the engine's time: the state is then the one it
+        has there, on its incoming line, and kink_ahead is 1 (2: not recorded, see
+        rc_sim_kink_ahead in relcol/sim.h); latest=True reads every ball's latest segment
+        instead (each change at its contact event's table time, as the other frames do;
+        rc_sim_get_ball_latest), whose sums are the conserved ones."""
+        x, p, r, m, tau, image, ahead = self._read(latest)
         mr = np.sqrt(m * m + np.sum(p * p, axis=1) * (0.0 if math.isinf(self.c) else self.c ** -2))
         return {"t": self.time, "x": x, "p": p, "v": p / mr[:, None], "r": r, "m": m,
-                "tau": tau, "image": image}
+                "tau": tau, "image": image, "kink_ahead": ahead}
 
     positions = property(lambda self: self._read()[0], doc="centres, (N, dim)")
     momenta = property(lambda self: self._read()[1], doc="momenta, (N, dim)")

@@ -62,6 +62,16 @@ static rc_sim *through_checkpoint(const rc_sim *s, rc_sim_def d)
     int st = rc_sim_checkpoint_read(t, buf, bytes);
     ENSURE_MSG(st == RC_OK, "reading a checkpoint: %s", rc_strerror(st));
     ENSURE(rc_sim_hash(t) == rc_sim_hash(s) && rc_sim_time(t) == rc_sim_time(s));
+    /* the read-out too (the hash sees the stored lines; per_ball frames read a ball whose
+     * kink lies ahead from the lines recorded before it, which the checkpoint carries) */
+    for (size_t i = 0; t && i < rc_sim_count(s); i++) {
+        rc_sim_ball x, y;
+        rc_sim_get_ball(s, i, &x);
+        rc_sim_get_ball(t, i, &y);
+        ENSURE(memcmp(&x.x, &y.x, sizeof x.x) == 0 && memcmp(&x.p, &y.p, sizeof x.p) == 0 &&
+               x.m == y.m && x.tau == y.tau && x.collided == y.collided &&
+               x.tau_last == y.tau_last && rc_sim_kink_ahead(s, i) == rc_sim_kink_ahead(t, i));
+    }
     free(buf);
     return t;
 }

@@ -267,6 +267,230 @@ static void test_two_balls(void)
     }
 }
 
+/* (e) reading a ball whose kink lies after the engine's time. The pair of (c) is stopped
+ * at its collision (the engine's time is then the contact event's): a ball whose kink
+ * rc_glue_make puts later is still on its incoming line, and rc_sim_get_ball must say so
+ * -- its centre rc_glue_centre (the glued tube's), its incoming momentum and rest mass,
+ * its proper time along the incoming line and no collision yet -- at the collision, between
+ * the two kinks and after both; rc_sim_get_ball_latest gives the outgoing line taken back
+ * (the engine's stored segment). Tolerances: 1e-12 of the distances (~10) and momenta,
+ * as (c); the momentum before the kink is the given one, bit for bit. */
+static void test_read_before_kink(void)
+{
+    /* (ball 1 hit from behind: its kink comes after the contact event) */
+    const rc_vec3 v[2] = {rc_v3(0.8, 0.1, 0.0), rc_v3(0.2, 0.3, 0.0)};
+    rc_sim_ball b[2];
+    memset(b, 0, sizeof b);
+    b[0].x = rc_v3(C0 - 4.0, C0, 0.0);
+    b[1].x = rc_v3(C0 + 2.0, C0 - 1.3, 0.0);
+    for (int i = 0; i < 2; i++) {
+        b[i].r = 1.0;
+        b[i].m = 1.0 + i;
+        rc_momentum_from_velocity(b[i].m, v[i], 1.0, &b[i].p);
+    }
+    rc_toi_params prm = rc_toi_params_default();
+    prm.c = 1.0;
+    rc_toi_workspace *ws = NULL;
+    rc_toi_workspace_create(&ws);
+    rc_toi_ball A = {b[0].x, b[0].r, b[0].m, b[0].p}, B = {b[1].x, b[1].r, b[1].m, b[1].p};
+    rc_toi_contact X;
+    ENSURE(rc_toi(&rc_toi_frame_covariant, &prm, &A, &B, ws, &X) == RC_OK);
+    rc_toi_workspace_free(&ws);
+    rc_particle P[2] = {{b[0].m, b[0].p}, {b[1].m, b[1].p}}, Q[2] = {P[0], P[1]};
+    rc_collision_params cp = rc_collision_params_default();
+    cp.c = 1.0;
+    cp.eps = 0.5;
+    ENSURE(rc_law_zmf.collide(&cp, &Q[0], &Q[1], X.n) == RC_OK);
+    rc_glue g[2];
+    for (int i = 0; i < 2; i++) {
+        const rc_vec3 vi = rc_v3_scale(1.0 / mass_of(&b[i]), b[i].p);
+        ENSURE(rc_glue_make(1.0, 1.0, &P[i], &Q[i], X.t, rc_v3_axpy(b[i].x, X.t, vi), X.x,
+                            &g[i]) == RC_OK);
+    }
+    /* one kink after the contact event (else the test would read nothing ahead) */
+    const int late = g[0].t_c > g[1].t_c ? 0 : 1;
+    ENSURE(g[late].t_c > X.t + 1e-3);
+    rc_sim_def d = rc_sim_def_default();
+    d.dim = 2;
+    d.box = rc_v3(BOX, BOX, 0.0);
+    d.c = 1.0;
+    d.eps_ball = 0.5;
+    d.frame = &rc_toi_frame_covariant;
+    rc_sim *s = NULL;
+    ENSURE(rc_sim_create(&d, &s) == RC_OK && rc_sim_set_balls(s, 2, b, NULL) == RC_OK);
+    if (!s)
+        return;
+    rc_sim_diag dg;
+    do { /* (cell crossings are events too) */
+        ENSURE(rc_sim_advance(s, INFINITY, 1) == RC_OK);
+        rc_sim_diagnostics(s, &dg);
+    } while (dg.collisions == 0 && rc_sim_time(s) < 100.0);
+    ENSURE(dg.collisions == 1);
+    const double t_early = g[1 - late].t_c, t_late = g[late].t_c;
+    const double times[3] = {rc_sim_time(s), 0.5 * (fmax(t_early, rc_sim_time(s)) + t_late),
+                             t_late + 5.0};
+    for (int k = 0; k < 3; k++) {
+        if (k > 0)
+            ENSURE(rc_sim_advance(s, times[k], 0) == RC_OK);
+        const double t = rc_sim_time(s);
+        for (int i = 0; i < 2; i++) {
+            rc_sim_ball o, w;
+            ENSURE(rc_sim_get_ball(s, (size_t)i, &o) == RC_OK);
+            ENSURE(rc_sim_get_ball_latest(s, (size_t)i, &w) == RC_OK);
+            const int ahead = t < g[i].t_c;
+            ENSURE_MSG(rc_sim_kink_ahead(s, (size_t)i) == ahead, "t %.17g ball %d: kink at %.17g,"
+                       " kink_ahead %d", t, i, g[i].t_c, rc_sim_kink_ahead(s, (size_t)i));
+            const rc_vec3 xc = rc_glue_centre(&g[i], t);
+            ENSURE_MSG(rc_v3_norm(rc_v3_sub(o.x, xc)) <= 1e-11, "t %.17g ball %d: centre off "
+                       "the glued tube's by %g", t, i, rc_v3_norm(rc_v3_sub(o.x, xc)));
+            const rc_particle *in = ahead ? &P[i] : &Q[i];
+            const double M = sqrt(in->m * in->m + rc_v3_norm2(in->p));
+            ENSURE(rc_v3_norm(rc_v3_sub(o.p, in->p)) <= 1e-12 * rc_v3_norm(in->p));
+            ENSURE_REL(o.m, in->m, 1e-12);
+            /* proper time from 0 at t = 0: along the incoming line, then the outgoing one */
+            const double M0 = mass_of(&b[i]);
+            const double tau = ahead ? t * b[i].m / M0
+                                     : g[i].t_c * b[i].m / M0 + (t - g[i].t_c) * in->m / M;
+            ENSURE_REL(o.tau, tau, 1e-12);
+            ENSURE(o.collided == !ahead);
+            if (ahead) {
+                ENSURE(memcmp(&o.p, &P[i].p, sizeof o.p) == 0 && o.m == P[i].m);
+                /* the stored segment: the outgoing line, taken back to t */
+                ENSURE(rc_v3_norm(rc_v3_sub(w.p, Q[i].p)) <= 1e-12 * rc_v3_norm(Q[i].p));
+                ENSURE(rc_v3_norm(rc_v3_sub(w.x, o.x)) > 1e-6);
+            }
+        }
+    }
+    /* the bad inputs */
+    ENSURE(rc_sim_kink_ahead(s, 2) == RC_EINVAL && rc_sim_kink_ahead(NULL, 0) == RC_EINVAL);
+    rc_sim_ball o;
+    ENSURE(rc_sim_get_ball_latest(s, 2, &o) == RC_EINVAL);
+    rc_sim_free(&s);
+}
+
+/* A covariant gas (2-D, c = 1; walls and periodic, elastic and TC) */
+static rc_sim *cov_gas(int periodic, double eps, size_t n, uint64_t seed)
+{
+    rc_sim_def d = rc_sim_def_default();
+    d.dim = 2;
+    d.c = 1.0;
+    d.frame = &rc_toi_frame_covariant;
+    d.eps_ball = eps;
+    d.t_c = eps < 1.0 ? 0.05 : 0.0;
+    for (int k = 0; k < 3 && periodic; k++)
+        d.boundary[k] = RC_SIM_PERIODIC;
+    return util_gas(d, n, 0.3, 0.6, seed);
+}
+
+/* (f) rc_sim_sync keeps the hyperplanes, glued tubes and kinks ahead: a run with a sync
+ * every 50 events has the same bits (state hash and diagnostics) as the run without. */
+static void test_sync_keeps(void)
+{
+    for (int k = 0; k < 2; k++) {
+        rc_sim *s = cov_gas(k, k ? 0.5 : 1.0, 150, 21 + (uint64_t)k);
+        rc_sim *u = cov_gas(k, k ? 0.5 : 1.0, 150, 21 + (uint64_t)k);
+        if (!s || !u)
+            return;
+        int ahead = 0;
+        for (int j = 0; j < 60; j++) {
+            ENSURE(rc_sim_advance(s, INFINITY, 50) == RC_OK);
+            for (size_t i = 0; i < 150; i++)
+                ahead += rc_sim_kink_ahead(s, i) > 0;
+            ENSURE(rc_sim_sync(s) == RC_OK);
+        }
+        ENSURE(rc_sim_advance(u, INFINITY, 3000) == RC_OK);
+        ENSURE(rc_sim_time(s) == rc_sim_time(u));
+        ENSURE_MSG(rc_sim_hash(s) == rc_sim_hash(u), "case %d: a synced run differs", k);
+        rc_sim_diag a, b;
+        rc_sim_diagnostics(s, &a);
+        rc_sim_diagnostics(u, &b);
+        ENSURE(a.collisions == b.collisions && a.overlaps == b.overlaps &&
+               a.tube_conflicts == b.tube_conflicts && a.order_conflicts == b.order_conflicts);
+        /* (the syncs came while kinks were ahead: not a vacuous test) */
+        ENSURE_MSG(ahead > 0 && a.collisions > 1000, "%d kinks ahead at syncs, %llu contacts",
+                   ahead, (unsigned long long)a.collisions);
+        for (size_t i = 0; i < 150; i++) {
+            rc_sim_ball x, y;
+            rc_sim_get_ball(s, i, &x);
+            rc_sim_get_ball(u, i, &y);
+            ENSURE(memcmp(&x.x, &y.x, sizeof x.x) == 0 && memcmp(&x.p, &y.p, sizeof x.p) == 0 &&
+                   x.m == y.m && x.tau == y.tau && x.tau_last == y.tau_last);
+        }
+        rc_sim_free(&s);
+        rc_sim_free(&u);
+    }
+}
+
+/* (g) rc_sim_set_c with kinks ahead: each such ball is kinked at once, at its true centre
+ * and proper time now, with its latest segment's momentum and rest mass (TC memory: a
+ * collision now); no kink is ahead afterwards, total momentum and M are the latest
+ * segments' (the conserved sums, to round-off of their order: 1e-14 of the scale), and the
+ * run equals a new engine at the new c given the balls read after the call (the
+ * hyperplanes are forgotten, nothing is left that the balls do not carry). */
+static void test_set_c_kinks(void)
+{
+    const size_t n = 150;
+    rc_sim *s = cov_gas(0, 0.5, n, 33);
+    if (!s)
+        return;
+    int ahead = 0;
+    for (int guard = 0; guard < 20000 && ahead < 3; guard++) {
+        ENSURE(rc_sim_advance(s, INFINITY, 1) == RC_OK);
+        ahead = 0;
+        for (size_t i = 0; i < n; i++)
+            ahead += rc_sim_kink_ahead(s, i) == 1;
+    }
+    ENSURE(ahead >= 3);
+    rc_sim_ball *t0 = malloc(n * sizeof *t0), *l0 = malloc(n * sizeof *l0),
+                *b1 = malloc(n * sizeof *b1);
+    int *was = malloc(n * sizeof *was);
+    for (size_t i = 0; i < n; i++) {
+        rc_sim_get_ball(s, i, &t0[i]);
+        rc_sim_get_ball_latest(s, i, &l0[i]);
+        was[i] = rc_sim_kink_ahead(s, i);
+    }
+    rc_sim_diag d0, d1;
+    rc_sim_diagnostics(s, &d0);
+    const double c1 = 2.0;
+    ENSURE(rc_sim_set_c(s, c1) == RC_OK);
+    rc_sim_diagnostics(s, &d1);
+    for (size_t i = 0; i < n; i++) {
+        rc_sim_get_ball(s, i, &b1[i]);
+        ENSURE(rc_sim_kink_ahead(s, i) == 0);
+        ENSURE(memcmp(&b1[i].x, &t0[i].x, sizeof b1[i].x) == 0 && b1[i].tau == t0[i].tau);
+        ENSURE(memcmp(&b1[i].p, &l0[i].p, sizeof b1[i].p) == 0 && b1[i].m == l0[i].m);
+        if (was[i])
+            ENSURE(b1[i].collided && b1[i].tau_last == b1[i].tau);
+        else
+            ENSURE(b1[i].collided == t0[i].collided && b1[i].tau_last == t0[i].tau_last);
+    }
+    ENSURE_CLOSE(d1.momentum.x, d0.momentum.x, 1e-14, d0.momentum_scale);
+    ENSURE_CLOSE(d1.momentum.y, d0.momentum.y, 1e-14, d0.momentum_scale);
+    ENSURE_REL(d1.rest_mass, d0.rest_mass, 1e-14);
+    rc_sim_def d = rc_sim_def_default();
+    d.dim = 2;
+    d.c = c1;
+    d.frame = &rc_toi_frame_covariant;
+    d.eps_ball = 0.5;
+    d.t_c = 0.05;
+    rc_sim_gas_def g = {2, n, 0.5, 0.3, 0.6, 1.0, 1.0, 33};
+    ENSURE(rc_sim_gas_init(&g, &d.box, t0) == RC_OK); /* (the box) */
+    d.restart = 1;
+    rc_sim *r = NULL;
+    ENSURE(rc_sim_create(&d, &r) == RC_OK && rc_sim_set_time(r, rc_sim_time(s)) == RC_OK);
+    const int st = rc_sim_set_balls(r, n, b1, NULL);
+    ENSURE_MSG(st == RC_OK, "restart: %s", rc_strerror(st));
+    const double t = rc_sim_time(s) + 20.0;
+    ENSURE(rc_sim_advance(s, t, 0) == RC_OK && rc_sim_advance(r, t, 0) == RC_OK);
+    ENSURE_MSG(rc_sim_hash(s) == rc_sim_hash(r), "set_c and the restart from its balls differ");
+    free(t0);
+    free(l0);
+    free(b1);
+    free(was);
+    rc_sim_free(&r);
+    rc_sim_free(&s);
+}
+
 /* (d) the open cluster of covariance_cluster (64 discs, rms ~0.5c; the harness is
  * relcol-covariance's, apps/covariance/cluster.h) run from the table frame and from a
  * frame moving at 0.6c: the same contacts, and the final four-momenta, boosted back,
@@ -319,6 +543,9 @@ int main(void)
 {
     RUN_TEST(test_classical);
     RUN_TEST(test_two_balls);
+    RUN_TEST(test_read_before_kink);
+    RUN_TEST(test_sync_keeps);
+    RUN_TEST(test_set_c_kinks);
     RUN_TEST(test_conservation);
     RUN_TEST(test_no_stall);
     RUN_TEST(test_cluster);

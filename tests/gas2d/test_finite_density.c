@@ -83,8 +83,8 @@ static int make_gas(const char *frame, size_t n, double eta, uint64_t seed, rc_s
 
 /* theta_pv - theta_gamma: mean of NBLK block means over n_snap snapshots spread over
  * t_sample after t_eq, and its standard error. */
-static int split(const char *frame, size_t n, double eta, double t_eq, double t_sample,
-                 int n_snap, uint64_t seed, double *diff, double *se)
+static int split_read(const char *frame, size_t n, double eta, double t_eq, double t_sample,
+                      int n_snap, uint64_t seed, int latest, double *diff, double *se)
 {
     rc_sim *s = NULL;
     int st = make_gas(frame, n, eta, seed, &s);
@@ -98,7 +98,7 @@ static int split(const char *frame, size_t n, double eta, double t_eq, double t_
             st = rc_sim_advance(s, t_eq + t_sample * (k * per + j + 1) / (double)n_snap, 0);
             for (size_t i = 0; i < n && st == RC_OK; i++) {
                 rc_sim_ball q;
-                st = rc_sim_get_ball(s, i, &q);
+                st = latest ? rc_sim_get_ball_latest(s, i, &q) : rc_sim_get_ball(s, i, &q);
                 const double u = rc_v3_norm2(q.p), gm = sqrt(1.0 + u);
                 sg += gm;
                 spv += u / gm;
@@ -111,6 +111,13 @@ static int split(const char *frame, size_t n, double eta, double t_eq, double t_
     if (st == RC_OK)
         *diff = gs_mean_se(bd, NBLK, se);
     return st;
+}
+
+/* (the table-time picture of every collision decided so far: rc_sim_get_ball) */
+static int split(const char *frame, size_t n, double eta, double t_eq, double t_sample,
+                 int n_snap, uint64_t seed, double *diff, double *se)
+{
+    return split_read(frame, n, eta, t_eq, t_sample, n_snap, seed, 0, diff, se);
 }
 
 /* The predicted slope s = d(theta_pv - theta_gamma)/d eta (2-D, THETA). */
@@ -186,14 +193,24 @@ static void test_zmf_agrees_cold(void)
  * 0.00328 +- 0.00005, 1.95 of it). N = 2000, ~150 collisions per ball sampled: block
  * errors ~1e-4. 4 sigma: a fixed-seed check; and the split must be below 1.5 s eta, which
  * the zmf frame's is not, so the test tells the two frames apart. */
+/* Read with rc_sim_get_ball_latest: each collision's change at its contact event's table
+ * time, for both balls (the read-out the paper's numbers were made with, and the only one
+ * of the engine's two that treats a ball whose kink comes before its contact event and
+ * one whose kink comes after it alike). rc_sim_get_ball's table-time picture applies a
+ * kink after its contact event at the kink but one before it still at the contact event
+ * (not processed yet), so it selects balls by the sign of their kink's lead: its split is
+ * printed beside, not asserted (papers/shape-change.md, section 6). */
 static void test_covariant_agrees(void)
 {
     const double eta = 0.2, s = predicted_slope();
-    double dc, sec;
-    const int st = split("covariant", 2000, eta, 50.0, 600.0, 100, 9, &dc, &sec);
+    double dc, sec, dt, set;
+    int st = split_read("covariant", 2000, eta, 50.0, 600.0, 100, 9, 1, &dc, &sec);
+    ENSURE(st == RC_OK);
+    st = split("covariant", 2000, eta, 50.0, 600.0, 100, 9, &dt, &set);
     ENSURE(st == RC_OK);
     printf("  covariant: theta_pv - theta_gamma = %+.5f +- %.5f, excluded-volume prediction "
-           "%.5f (measured / predicted %.2f)\n", dc, sec, s * eta, dc / (s * eta));
+           "%.5f (measured / predicted %.2f); read at the decided kinks %+.5f +- %.5f\n", dc,
+           sec, s * eta, dc / (s * eta), dt, set);
     ENSURE_CLOSE(dc, s * eta, 1.0, 4.0 * sec);
     ENSURE(dc < 1.5 * s * eta);
 }

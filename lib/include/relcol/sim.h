@@ -245,9 +245,13 @@ typedef struct rc_sim_diag {
      * less than a glue window apart, where the glued tube of the two is not defined) is
      * put at the previous kink instead. Groups of simultaneous contacts are resolved at
      * one table time as in the other frames, each member's kink through its centre then.
-     * rc_sim_get_ball gives a ball's latest segment (its outgoing line taken to the
-     * engine's time, also when its kink lies later); rc_sim_sync and rc_sim_set_c re-plan
-     * from those and forget the hyperplanes (a checkpoint keeps them). */
+     * rc_sim_get_ball gives the table-time picture of the collisions processed so far: a
+     * ball whose kink lies after the engine's time on the line it is still on
+     * (rc_sim_kink_ahead; rc_sim_get_ball_latest for the other read-out); the diagnostics'
+     * sums (momentum, energy, rest mass) are over every ball's latest segment, which is
+     * what collisions conserve. rc_sim_sync keeps the hyperplanes, tubes and kinks ahead
+     * and changes nothing; rc_sim_set_c makes every kink still ahead at once and forgets
+     * the hyperplanes (both below; a checkpoint keeps everything). */
     uint64_t tube_conflicts, order_conflicts, rollbacks;
     /* After rc_sim_advance returned RC_ESTALL: the ball whose event was next (caller's
      * index) and its partner (a ball's index, -1 - w for wall w = 2 d + side, or a large
@@ -287,6 +291,13 @@ int rc_sim_set_balls(rc_sim *s, size_t n, const rc_sim_ball *balls, size_t *bad)
  * bits from the run without one. To stop and continue a run without changing it, use a
  * checkpoint (below); advancing in pieces, and reading balls or diagnostics between
  * them, gives the same bits as advancing in one go. */
+/* A frame whose balls change velocity at their own events (rc_toi_frame.per_ball:
+ * covariant) at finite c is the exception: a ball's state at now does not carry its
+ * hyperplane, its glued tube or a kink still ahead of now, and the frame's predictions
+ * depend on the time they are asked at, so re-planning would change the run. There
+ * rc_sim_sync keeps the engine's whole state and plans nothing afresh: the run continues
+ * with the same bits as without it (test_engine_covariant), and a state to continue from
+ * is a checkpoint, not the balls. */
 int rc_sim_sync(rc_sim *s);
 
 /* Change the speed of light during a run, at the engine's time: every ball keeps its
@@ -300,6 +311,15 @@ int rc_sim_sync(rc_sim *s);
  * rc_sim_diag.overlaps. RC_EINVAL for a NULL engine, RC_ESPEEDOFLIGHT for c <= 0, NaN
  * or out of range as rc_inv_c2 says (c = INFINITY is the classical case), RC_ENOMEM; on
  * failure the engine keeps its old c and its balls. */
+/* With a frame whose balls change velocity at their own events (covariant) the glued
+ * tubes are functions of c (the hyperplane's tilt is (g0 v0 + g1 v1) / (c^2 (g0 + g1))),
+ * so at the call every kink still ahead of the engine's time is made at once, at the
+ * ball's true centre and proper time now (rc_sim_get_ball), with the momentum and rest
+ * mass of its latest segment -- the one-instant rule, as the overlap policy's kinks;
+ * total momentum and energy are those of the latest segments, so they are kept -- and
+ * every hyperplane and glued tube is forgotten: the new c's collisions start new ones.
+ * The engine then holds nothing the balls do not (set_c equals a new engine at the new
+ * c given the balls read after it; test_engine_covariant). */
 int rc_sim_set_c(rc_sim *s, double c);
 
 /* ---- checkpoints: stopping and continuing without changing the run -------------- */
@@ -335,8 +355,40 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events);
 
 size_t rc_sim_count(const rc_sim *s);
 double rc_sim_time(const rc_sim *s);
-/* Ball i as it is at the engine's time. */
+/* Ball i as it is at the engine's time. With a frame whose balls change velocity at their
+ * own events (rc_toi_frame.per_ball: covariant, finite c) a ball's latest kink may lie
+ * after the engine's time: the state given is then the one it really has at the engine's
+ * time -- centre, momentum, rest mass, proper time and TC memory on the line it is still
+ * on -- and rc_sim_kink_ahead says so. */
 int rc_sim_get_ball(const rc_sim *s, size_t i, rc_sim_ball *out);
+/* Ball i's latest segment taken to the engine's time: every collision processed so far
+ * applied, as if its change came at the table time of its contact event -- the same as
+ * rc_sim_get_ball in every frame but per_ball ones (covariant), where a ball's kink can lie
+ * after (or before) that time. The sums over these states are the ones collisions conserve
+ * (rc_sim_diagnostics). Why both: events are processed in the table time of their contact
+ * events, and a ball's kink may come up to a glue window before its contact event too --
+ * such a collision is not processed yet at the engine's time, so rc_sim_get_ball still
+ * gives that ball's incoming line there: it is the table-time picture of the collisions
+ * decided so far, and the slice at a time t is complete only for collisions whose contact
+ * events lie before t (papers/shape-change.md, section 6). This read-out applies every
+ * change at its contact event instead, for both balls alike. */
+int rc_sim_get_ball_latest(const rc_sim *s, size_t i, rc_sim_ball *out);
+/* per_ball frames (covariant): ball i's glued world tube through its latest kink
+ * (relcol/toi.h: rc_glue; its section at a time t is the incoming cylinder's part not yet
+ * reached by H and the outgoing one's part reached), in table coordinates: on a walled
+ * axis those of rc_sim_get_ball's x, on a periodic one up to whole box lengths. out->r = 0:
+ * none -- no kink yet, c infinite, or a kink the order rule put at the ball's previous one
+ * (where no glued tube is defined). RC_EINVAL for a bad index or another frame. */
+int rc_sim_get_glue(const rc_sim *s, size_t i, rc_glue *out);
+/* Whether ball i's latest kink lies after the engine's time (per_ball frames; 0 in every
+ * other frame): 0 no, rc_sim_get_ball gives its latest segment; 1 yes, rc_sim_get_ball
+ * gives the line it is still on (the incoming one); 2 yes, but the ball has three or more
+ * kinks ahead at once and the line it is on now was not recorded: rc_sim_get_ball then
+ * gives its latest segment taken back to now (position and proper time off by up to a
+ * glue window's travel) -- flagged here so that it is not taken for the truth. A state
+ * read while any ball's kink lies ahead does not carry the change still to come:
+ * continuing from the balls alone loses it (use a checkpoint). Negative: RC_EINVAL. */
+int rc_sim_kink_ahead(const rc_sim *s, size_t i);
 /* Diagnostics at the engine's time (O(N); max_overlap is O(N) with the cells). */
 int rc_sim_diagnostics(const rc_sim *s, rc_sim_diag *d);
 /* FNV-1a hash of every ball's state bits at the engine's time (determinism tests). */
