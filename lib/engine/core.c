@@ -51,6 +51,26 @@ static double kink_time(const rc_sim *s, int32_t b, const rc_particle *in,
     return tx - rc_v3_dot(*kappa, dx) / (1.0 - rc_v3_dot(*kappa, s->b[b].v));
 }
 
+/* Would ball b's new kink (centre at table time te, H's normal kappa) have its hyperplane
+ * reach some point of the ball before its last one did? On the segment between the two
+ * kinks (velocity v, the stored one) a point at offset rho from the centre is reached by
+ * H_i at t_ci + a_i.rho, a_i = kappa_i / (1 - kappa_i.v); the two sweep the contracted
+ * section in order iff t_c2 - t_c1 >= max over it of (a1 - a2).rho, the support of the
+ * contracted disc, r sqrt(|g|^2 - (g.beta)^2). (The order rule checks the centre only,
+ * rho = 0.) */
+static int kinks_cross(const rc_sim *s, int32_t b, double te, rc_vec3 kappa)
+{
+    const eng_cov *c = &s->cov[b];
+    if (!(c->t_k > -INFINITY))
+        return 0;
+    const rc_vec3 v = s->b[b].v;
+    const rc_vec3 g = rc_v3_sub(rc_v3_scale(1.0 / (1.0 - rc_v3_dot(c->kappa, v)), c->kappa),
+                                rc_v3_scale(1.0 / (1.0 - rc_v3_dot(kappa, v)), kappa));
+    const double gb = rc_v3_dot(g, rc_v3_scale(s->inv_c, v));
+    const double h2 = rc_v3_norm2(g) - gb * gb;
+    return te - c->t_k < s->b[b].r * sqrt(h2 > 0.0 ? h2 : 0.0);
+}
+
 static void glue_kink(rc_sim *s, int32_t b, const rc_particle *in, const rc_particle *out,
                       double tx, rc_vec3 dx)
 {
@@ -358,14 +378,15 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T, const double *
         s->bk.events[RC_SIM_EV_TC] = tc_before;
         return st;
     }
-    /* per_ball frames: a ball whose new kink would come before its last one along its
-     * worldline met its new partner before that kink: the last collision is undone if it
+    /* per_ball frames: a ball whose new kink's hyperplane would reach some point of it
+     * before its last one did (kinks_cross; the centre's order is the order rule's) met
+     * its new partner within its last kink's window: the last collision is undone if it
      * can be (2 + the member: the caller's rollback), else the order rule (glue_kink) */
     for (size_t j = 0; j < nm && s->glue && model && undo_order && nm > 1; j++) {
         const int32_t b = s->grp_ball[j];
         rc_vec3 kap;
         if ((Q[j].m != P[j].m || memcmp(&Q[j].p, &P[j].p, sizeof Q[j].p) != 0) &&
-            !(kink_time(s, b, &P[j], &Q[j], tx[j], dX[j], &kap) >= s->cov[b].t_k) &&
+            kinks_cross(s, b, kink_time(s, b, &P[j], &Q[j], tx[j], dX[j], &kap), kap) &&
             undoable(s, b, s->grp_ball[1 - j])) {
             s->bk.events[RC_SIM_EV_TC] = tc_before;
             return 2 + (int)j;
@@ -764,6 +785,18 @@ static void pend_note(rc_sim *s, const pend_snap *p)
         return; /* (no change: no kink) */
     eng_pend *r = &s->pend[b];
     const double te = s->cov[b].t_k, now = s->now;
+    if (r->depth == 2 && r->t <= now) {
+        /* the first recorded line has ended: the second is the one the ball is on, from
+         * that kink (its centre and proper time there) to t2 */
+        const double M2 = eng_mass_rel(r->m2, r->p2, s->inv_c2), h = r->t2 - r->t;
+        r->x = rc_v3_axpy(r->x, h, rc_v3_scale(1.0 / M2, r->p2));
+        r->tau_last = r->tau;
+        r->tau += h * (r->m2 / M2);
+        r->t = r->t2;
+        r->p = r->p2;
+        r->m = r->m2;
+        r->depth = 1;
+    }
     if (!(te > now)) { /* on its outgoing line from now on */
         r->depth = 0;
         return;
@@ -793,6 +826,17 @@ static void pend_note(rc_sim *s, const pend_snap *p)
         r->p2 = p->in.p;
         r->m2 = p->in.m;
     }
+}
+
+/* A ball's read-out record when its kink at te is undone: the line that ended there is
+ * dropped (the one before it, if recorded, is the line it is on again); a record that
+ * does not end there is cleared (a kink still ahead then reads as not recorded). */
+static void pend_undo(eng_pend *r, double te)
+{
+    if (r->depth == 2 && r->t2 == te)
+        r->depth = 1;
+    else
+        r->depth = 0;
 }
 
 /* ---- undoing a ball's last collision (papers/shape-change.md, section 7) ----------- */
@@ -882,11 +926,13 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx)
     /* the collision's books, taken back: its moments at the kinks it was taken at, in its
      * members' order; heat and momentum with the same operations, negated */
     rc_particle in[2] = {uw.in, uw.in}, out[2] = {out_w, out_w};
+    double te_j = 0.0;
     int32_t mem[2] = {w, j};
     size_t n0 = 1;
     if (ball) {
         out[1] = (rc_particle){s->a[j].m, s->a[j].p};
         in[1] = s->und[j].in;
+        te_j = s->cov[j].t_k;
         to_incoming(s, j, &xe_j);
         n0 = 2;
         if (!(uw.tc & 2u)) { /* (j was the event's first ball) */
@@ -921,16 +967,15 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx)
         account_walls(s, 1, p1, p0, NULL); /* (taken: p1 - p0, the original's negated) */
         nc = 0;
     }
-    /* the read-out's records of w and j (eng_pend) described lines before the kinks now
-     * undone: the lines before their earlier kinks were not kept (a kink of theirs still
-     * ahead is then read out as not recorded, rc_sim_kink_ahead 2) */
+    /* the read-out's records of w and j (eng_pend) back to before the undone kinks, then
+     * noted for the group's kinks like any event's balls */
     pend_snap ps[3];
     size_t nps = 0;
     if (s->pend) {
-        s->pend[w].depth = 0;
+        pend_undo(&s->pend[w], te_w);
         ps[nps++] = pend_take(s, w);
         if (ball) {
-            s->pend[j].depth = 0;
+            pend_undo(&s->pend[j], te_j);
             ps[nps++] = pend_take(s, j);
         }
         ps[nps++] = pend_take(s, k);

@@ -531,26 +531,22 @@ static void audit(size_t n, double packing, double v_rms, double eps, long event
     rc_sim_free(&s);
 }
 
-/* The faults the audit finds are all of one class: a ball meets a neighbour while one of
+/* The faults the audit found were all of one class: a ball meets a neighbour while one of
  * its earlier glue windows is open -- collisions less than a glue window apart whose
- * centre kinks come in order (so the order rule lets them through) but whose windows
- * overlap, where the glued tube of the two is not defined. Before collisions were undone
- * (papers/shape-change.md section 7) each run had one:
+ * centre kinks come in order (so the order rule lets them through) but whose hyperplanes
+ * cross inside the ball, where the glued tube of the two is not defined. Before
+ * collisions were undone (papers/shape-change.md section 7) each run had one:
  *  - seed 1, eps 1: event 2974, slice t = 44.889, balls 12 and 30, depth 4.8e-4: ball 12
  *    met balls 7 and 30 at one table time (44.972583, two events in a row, not one group),
  *    its two windows overlapping, and ball 30's window holding both;
  *  - seed 2, eps 0.5: event 381, slice t = 1.680, balls 1 and 3, depth 7.9e-4: ball 1 met
  *    ball 3 (contact 1.6448) with the window of its previous kink (1.479..1.605) and this
  *    one's (1.573..1.864) overlapping.
- * With collisions undone the trajectories change: the elastic run has five (worst depth
- * 0.021), each at two plain single contacts of the model, e.g. event 2259, slice t =
- * 26.914, balls 23 and 37, depth 1.6e-3: ball 23's kink at 27.073 (contact 26.986) and its
- * next one's window, 26.908..27.928, beginning before it; event 2445, balls 0 and 27,
- * depth 0.021: ball 0's kink at 32.576 and its next window from 32.203. The TC run has
- * none (its old one is now a rollback). Overlaps of the model's tubes after contacts of the
- * model, not of the audit's reading; asserted as they are, so that a change of the engine
- * that removes (or adds) one shows up here. Undoing a collision whose next window would
- * begin before its kink is not built (section 7 undoes tube and centre-order conflicts). */
+ * Undoing tube and centre-order conflicts alone left five in the first run (worst depth
+ * 0.021, e.g. event 2445, balls 0 and 27: ball 0's kink at 32.576 and its next window
+ * from 32.203). Undoing also where the new hyperplane would reach any point of the ball
+ * before the last one (core.c kinks_cross) leaves none in either run. Asserted as it is:
+ * a change of the engine that adds one shows up here. */
 static void run(size_t n, double packing, double v_rms, double eps, long events, uint64_t seed,
                 long known_faults)
 {
@@ -577,7 +573,7 @@ static void run(size_t n, double packing, double v_rms, double eps, long events,
                "%.3g), %ld known", r.faults, r.worst_fault, known_faults);
 }
 
-static void test_covariant_elastic(void) { run(40, 0.2, 0.6, 1.0, 3000, 1, 5); }
+static void test_covariant_elastic(void) { run(40, 0.2, 0.6, 1.0, 3000, 1, 0); }
 static void test_covariant_tc(void) { run(40, 0.2, 0.6, 0.5, 3000, 2, 0); }
 
 int main(void)
