@@ -184,11 +184,14 @@ static int run_pair(const rc_sim_ball *in, double t0, double t_end, rc_sim_ball 
 
 static double mass_of(const rc_sim_ball *b) { return sqrt(b->m * b->m + rc_v3_norm2(b->p)); }
 
-static void test_two_balls(void)
+/* Two balls (m = 1, 2, rest radius 1) with velocities v at (C0 - 4, C0) and (C0 + 2,
+ * C0 - 1.3), and what the model makes of their collision: the zmf kernel's contact event
+ * X from the start, the states before and after (P, Q: the law, eps 0.5) and each
+ * ball's glued tube g. */
+static void two_balls(const rc_vec3 v[2], rc_sim_ball b[2], rc_toi_contact *X,
+                      rc_particle P[2], rc_particle Q[2], rc_glue g[2])
 {
-    const rc_vec3 v[2] = {rc_v3(0.7, 0.1, 0.0), rc_v3(-0.5, 0.3, 0.0)};
-    rc_sim_ball b[2];
-    memset(b, 0, sizeof b);
+    memset(b, 0, 2 * sizeof *b);
     b[0].x = rc_v3(C0 - 4.0, C0, 0.0);
     b[1].x = rc_v3(C0 + 2.0, C0 - 1.3, 0.0);
     for (int i = 0; i < 2; i++) {
@@ -196,26 +199,35 @@ static void test_two_balls(void)
         b[i].m = 1.0 + i;
         rc_momentum_from_velocity(b[i].m, v[i], 1.0, &b[i].p);
     }
-    /* expected: the zmf kernel's contact event from the start, the law, the glue */
     rc_toi_params prm = rc_toi_params_default();
     prm.c = 1.0;
     rc_toi_workspace *ws = NULL;
     rc_toi_workspace_create(&ws);
     rc_toi_ball A = {b[0].x, b[0].r, b[0].m, b[0].p}, B = {b[1].x, b[1].r, b[1].m, b[1].p};
-    rc_toi_contact X;
-    ENSURE(rc_toi(&rc_toi_frame_covariant, &prm, &A, &B, ws, &X) == RC_OK);
+    ENSURE(rc_toi(&rc_toi_frame_covariant, &prm, &A, &B, ws, X) == RC_OK);
     rc_toi_workspace_free(&ws);
-    rc_particle P[2] = {{b[0].m, b[0].p}, {b[1].m, b[1].p}}, Q[2] = {P[0], P[1]};
+    for (int i = 0; i < 2; i++)
+        P[i] = Q[i] = (rc_particle){b[i].m, b[i].p};
     rc_collision_params cp = rc_collision_params_default();
     cp.c = 1.0;
     cp.eps = 0.5;
-    ENSURE(rc_law_zmf.collide(&cp, &Q[0], &Q[1], X.n) == RC_OK);
-    rc_glue g[2];
+    ENSURE(rc_law_zmf.collide(&cp, &Q[0], &Q[1], X->n) == RC_OK);
     for (int i = 0; i < 2; i++) {
         const rc_vec3 vi = rc_v3_scale(1.0 / mass_of(&b[i]), b[i].p);
-        ENSURE(rc_glue_make(1.0, 1.0, &P[i], &Q[i], X.t, rc_v3_axpy(b[i].x, X.t, vi), X.x,
+        ENSURE(rc_glue_make(1.0, 1.0, &P[i], &Q[i], X->t, rc_v3_axpy(b[i].x, X->t, vi), X->x,
                             &g[i]) == RC_OK);
     }
+}
+
+static void test_two_balls(void)
+{
+    const rc_vec3 v[2] = {rc_v3(0.7, 0.1, 0.0), rc_v3(-0.5, 0.3, 0.0)};
+    /* expected: the zmf kernel's contact event from the start, the law, the glue */
+    rc_sim_ball b[2];
+    rc_toi_contact X;
+    rc_particle P[2], Q[2];
+    rc_glue g[2];
+    two_balls(v, b, &X, P, Q, g);
     /* the kinks differ from the contact time and from each other (not a vacuous test) */
     ENSURE(fabs(g[0].t_c - X.t) > 1e-3 && fabs(g[1].t_c - X.t) > 1e-3);
     const double t_end = 40.0;
@@ -280,33 +292,10 @@ static void test_read_before_kink(void)
     /* (ball 1 hit from behind: its kink comes after the contact event) */
     const rc_vec3 v[2] = {rc_v3(0.8, 0.1, 0.0), rc_v3(0.2, 0.3, 0.0)};
     rc_sim_ball b[2];
-    memset(b, 0, sizeof b);
-    b[0].x = rc_v3(C0 - 4.0, C0, 0.0);
-    b[1].x = rc_v3(C0 + 2.0, C0 - 1.3, 0.0);
-    for (int i = 0; i < 2; i++) {
-        b[i].r = 1.0;
-        b[i].m = 1.0 + i;
-        rc_momentum_from_velocity(b[i].m, v[i], 1.0, &b[i].p);
-    }
-    rc_toi_params prm = rc_toi_params_default();
-    prm.c = 1.0;
-    rc_toi_workspace *ws = NULL;
-    rc_toi_workspace_create(&ws);
-    rc_toi_ball A = {b[0].x, b[0].r, b[0].m, b[0].p}, B = {b[1].x, b[1].r, b[1].m, b[1].p};
     rc_toi_contact X;
-    ENSURE(rc_toi(&rc_toi_frame_covariant, &prm, &A, &B, ws, &X) == RC_OK);
-    rc_toi_workspace_free(&ws);
-    rc_particle P[2] = {{b[0].m, b[0].p}, {b[1].m, b[1].p}}, Q[2] = {P[0], P[1]};
-    rc_collision_params cp = rc_collision_params_default();
-    cp.c = 1.0;
-    cp.eps = 0.5;
-    ENSURE(rc_law_zmf.collide(&cp, &Q[0], &Q[1], X.n) == RC_OK);
+    rc_particle P[2], Q[2];
     rc_glue g[2];
-    for (int i = 0; i < 2; i++) {
-        const rc_vec3 vi = rc_v3_scale(1.0 / mass_of(&b[i]), b[i].p);
-        ENSURE(rc_glue_make(1.0, 1.0, &P[i], &Q[i], X.t, rc_v3_axpy(b[i].x, X.t, vi), X.x,
-                            &g[i]) == RC_OK);
-    }
+    two_balls(v, b, &X, P, Q, g);
     /* one kink after the contact event (else the test would read nothing ahead) */
     const int late = g[0].t_c > g[1].t_c ? 0 : 1;
     ENSURE(g[late].t_c > X.t + 1e-3);

@@ -9,36 +9,10 @@
 #include <math.h>
 #include <quadmath.h>
 
+#include "rc_quad.h"
 #include "rc_test.h"
 #include "relcol/relcol.h"
 
-__extension__ typedef __float128 q128;
-
-typedef struct {
-    q128 x, y, z;
-} qv;
-
-static qv qv_of(rc_vec3 v) { return (qv){v.x, v.y, v.z}; }
-static rc_vec3 dv_of(qv v) { return rc_v3((double)v.x, (double)v.y, (double)v.z); }
-static q128 qdot(qv a, qv b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static qv qaxpy(qv a, q128 s, qv b) { return (qv){a.x + s * b.x, a.y + s * b.y, a.z + s * b.z}; }
-static qv qscale(q128 s, qv a) { return (qv){s * a.x, s * a.y, s * a.z}; }
-static q128 qnorm(qv a) { return sqrtq(qdot(a, a)); }
-static q128 qenergy(double m, qv p, q128 k) { return sqrtq((q128)m * m + qdot(p, p) * k); }
-
-/* Into the frame moving at u (Lorentz factor g): the textbook boost of (t, x). */
-static void qboost(qv u, q128 g, q128 k, q128 *t, qv *x)
-{
-    const q128 xu = qdot(*x, u);
-    const q128 f = g * g * k / (g + 1) * xu - g * *t;
-    *t = g * (*t - xu * k);
-    *x = qaxpy(*x, f, u);
-}
-
-static double logu(rc_test_rng *r, double lo, double hi)
-{
-    return lo * exp(log(hi / lo) * rc_test_uniform(r));
-}
 
 /* The pair taken to its ZMF in __float128 (both states to the later of their ZMF times,
  * ball 0's centre there the origin), the frame's kernel run there in double, its event
