@@ -99,28 +99,43 @@ static double both(const piece *a, const piece *b, double x, double y)
     return fa < fb ? fa : fb;
 }
 
-/* max over y in [y0, y1] of both(a, b, x, y) (concave in y: golden section) */
-static double best_y(const piece *a, const piece *b, double x, double y0, double y1)
+/* max over [lo, hi] of a function concave there, f(ctx, u): golden section */
+typedef struct two_pieces {
+    const piece *a, *b;
+    double x, y0, y1;
+} two_pieces;
+
+static double golden_max(double (*f)(const two_pieces *, double), const two_pieces *ctx,
+                         double lo, double hi)
 {
     const double gr = 0.5 * (sqrt(5.0) - 1.0);
-    double lo = y0, hi = y1, u = hi - gr * (hi - lo), w = lo + gr * (hi - lo);
-    double fu = both(a, b, x, u), fw = both(a, b, x, w);
+    double u = hi - gr * (hi - lo), w = lo + gr * (hi - lo);
+    double fu = f(ctx, u), fw = f(ctx, w);
     for (int it = 0; it < GOLDEN; it++) {
         if (fu < fw) {
             lo = u;
             u = w;
             fu = fw;
             w = lo + gr * (hi - lo);
-            fw = both(a, b, x, w);
+            fw = f(ctx, w);
         } else {
             hi = w;
             w = u;
             fw = fu;
             u = hi - gr * (hi - lo);
-            fu = both(a, b, x, u);
+            fu = f(ctx, u);
         }
     }
     return fu > fw ? fu : fw;
+}
+
+static double both_at_y(const two_pieces *c, double y) { return both(c->a, c->b, c->x, y); }
+
+/* max over y in [y0, y1] of both(a, b, x, y) (concave in y) */
+static double best_y_at_x(const two_pieces *c, double x)
+{
+    const two_pieces at = {c->a, c->b, x, c->y0, c->y1};
+    return golden_max(both_at_y, &at, c->y0, c->y1);
 }
 
 /* The overlap depth of two pieces (negative: apart), over the box where both bounding
@@ -131,25 +146,8 @@ static double overlap2(const piece *a, const piece *b)
     const double y0 = fmax(a->cy - a->r, b->cy - b->r), y1 = fmin(a->cy + a->r, b->cy + b->r);
     if (!(x0 < x1 && y0 < y1))
         return -1.0;
-    const double gr = 0.5 * (sqrt(5.0) - 1.0);
-    double lo = x0, hi = x1, u = hi - gr * (hi - lo), w = lo + gr * (hi - lo);
-    double fu = best_y(a, b, u, y0, y1), fw = best_y(a, b, w, y0, y1);
-    for (int it = 0; it < GOLDEN; it++) {
-        if (fu < fw) {
-            lo = u;
-            u = w;
-            fu = fw;
-            w = lo + gr * (hi - lo);
-            fw = best_y(a, b, w, y0, y1);
-        } else {
-            hi = w;
-            w = u;
-            fw = fu;
-            u = hi - gr * (hi - lo);
-            fu = best_y(a, b, u, y0, y1);
-        }
-    }
-    return fu > fw ? fu : fw;
+    const two_pieces c = {a, b, 0.0, y0, y1};
+    return golden_max(best_y_at_x, &c, x0, x1);
 }
 
 /* The pieces of a ball's section at time t inside the windows of its kinks g[0 .. ng)
