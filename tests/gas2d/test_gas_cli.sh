@@ -94,6 +94,13 @@ run '' --frame table --n 50 --t-equil 5 --t-sample 20 --snapshots 20 --out "$T/g
 grep -q '^relcol-gas: warning: frame table: its stationary state is not Jüttner' "$T/err" \
     && ok || bad "no warning for the table frame: $(cat "$T/err")"
 
+# a dense 3-D covariant gas runs past t = 615.37, where an overlap-policy kink put at a
+# kink still pending left the pair's geometry as it was and the same contact came up at
+# one instant until the stall guard stopped the run (core.c glue_kink, at_event)
+run '' --dim 3 --frame covariant --theta-start 0.75 --n 4000 --packing 0.2 \
+    --boundary periodic --t-equil 50 --t-sample 600 --snapshots 20 --seed 7 --out "$T/gc3"
+[ "$st" -eq 0 ] && ok || bad "3-D covariant gas: exit $st: $(grep -v warning "$T/err")"
+
 # 1-D mixture: two species in the CSV, one stdout block each
 run '' --dim 1 --n 200 --t-equil 200 --t-sample 800 --snapshots 40 --out "$T/g1"
 expect_ok run1d

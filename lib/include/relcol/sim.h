@@ -240,10 +240,10 @@ typedef struct rc_sim_diag {
      * one whose centres part there is left to separate. Where the straight cylinder of
      * a ball's stored line overlaps or meets a neighbour inside the ball's window, its
      * glued tube is asked instead (rc_glue_toi: first table time of contact).
-     * order_conflicts: a model rule -- a kink that would come before the ball's previous
-     * kink along its worldline (successive hyperplanes cross inside the tube: collisions
-     * less than a glue window apart, where the glued tube of the two is not defined) is
-     * put at the previous kink instead. Groups of simultaneous contacts are resolved at
+     * order_conflicts: kinks whose hyperplane crosses the ball's previous one inside it
+     * (collisions less than a glue window apart, where the glued tube of the two is not
+     * defined), not undone: counted; one that would come before the previous kink along
+     * the worldline, a model rule, is put at the previous kink instead. Groups of simultaneous contacts are resolved at
      * one table time as in the other frames, each member's kink through its centre then.
      * rc_sim_get_ball gives the table-time picture of the collisions processed so far: a
      * ball whose kink lies after the engine's time on the line it is still on
