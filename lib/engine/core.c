@@ -411,14 +411,15 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T, const double *
              * ball's line and its hyperplane) */
             kinked[j] = 0;
             if (Q[j].m != P[j].m || memcmp(&Q[j].p, &P[j].p, sizeof Q[j].p) != 0) {
-                const uint64_t oc = s->bk.order_conflicts;
                 /* hyperplanes crossing inside the ball though the centres' kinks come in
                  * order (kinks_cross; not undone above): the tube of the two is not
-                 * defined there, counted with the order conflicts */
+                 * defined there, counted with the order conflicts (the collision can
+                 * still be undone: its kink is where the model puts it) */
                 rc_vec3 kap;
                 const double te = kink_time(s, b, &P[j], &Q[j], tx[j], dX[j], &kap);
                 if (te >= s->cov[b].t_k && kinks_cross(s, b, te, kap))
                     s->bk.order_conflicts++;
+                const uint64_t oc = s->bk.order_conflicts;
                 glue_kink(s, b, &P[j], &Q[j], tx[j], dX[j], !model);
                 kinked[j] = s->bk.order_conflicts == oc && s->glu[b].r > 0.0;
             }
