@@ -531,6 +531,61 @@ static void test_cluster(void)
     cluster(120.0, 1.0, 1); /* (within the round-off growth of the run itself) */
 }
 
+/* (f) a collision undone at a wall (papers/shape-change.md section 7): ball 0 (c = 1,
+ * rest radius 1, m = 1) runs into the wall x = 0 at 0.9c; ball 1 comes down onto it at
+ * 0.95c and meets it on the incoming side of its wall kink's hyperplane, before that kink
+ * along its tube. The wall collision is undone and the two contacts solved together: one
+ * rollback, no overlap-policy decision, no wall event left (the group holds the wall
+ * contact), the wall's impulse taken back and given again to the one wall x- (per-wall
+ * books equal to the total, to round-off of the momenta, 1e-12 of them), and energy and
+ * momentum plus wall impulse kept to 1e-12 relative. Three starts found by a scan of the
+ * offsets (relcol.Sim; other nearby starts make the contact a plain one). */
+static void test_undo_wall(void)
+{
+    const double x1[3] = {1.1, 1.1, 1.3}, y1[3] = {12.4, 12.5, 12.3};
+    for (int k = 0; k < 3; k++) {
+        rc_sim_def d = rc_sim_def_default();
+        d.dim = 2;
+        d.box = rc_v3(40.0, 20.0, 0.0);
+        d.c = 1.0;
+        d.frame = &rc_toi_frame_covariant;
+        rc_sim_ball b[2];
+        memset(b, 0, sizeof b);
+        b[0].x = rc_v3(1.5, 10.0, 0.0);
+        b[1].x = rc_v3(x1[k], y1[k], 0.0);
+        const rc_vec3 v[2] = {rc_v3(-0.9, 0.0, 0.0), rc_v3(0.0, -0.95, 0.0)};
+        for (int i = 0; i < 2; i++) {
+            b[i].r = 1.0;
+            b[i].m = 1.0;
+            rc_momentum_from_velocity(1.0, v[i], 1.0, &b[i].p);
+        }
+        rc_sim *s = NULL;
+        ENSURE(rc_sim_create(&d, &s) == RC_OK && rc_sim_set_balls(s, 2, b, NULL) == RC_OK);
+        if (!s)
+            return;
+        rc_sim_diag d0, d1;
+        rc_sim_diagnostics(s, &d0);
+        ENSURE(rc_sim_advance(s, 5.0, 0) == RC_OK);
+        rc_sim_diagnostics(s, &d1);
+        ENSURE_MSG(d1.rollbacks == 1 && d1.overlaps == 0 && d1.events[RC_SIM_EV_WALL] == 0 &&
+                       d1.events[RC_SIM_EV_MULTI] == 1,
+                   "start %d: rollbacks %llu overlaps %llu wall events %llu groups %llu", k,
+                   (unsigned long long)d1.rollbacks, (unsigned long long)d1.overlaps,
+                   (unsigned long long)d1.events[RC_SIM_EV_WALL],
+                   (unsigned long long)d1.events[RC_SIM_EV_MULTI]);
+        ENSURE_REL(d1.energy, d0.energy, 1e-12);
+        const rc_vec3 pw = rc_v3_add(d1.momentum, d1.wall_impulse);
+        ENSURE_CLOSE(pw.x, d0.momentum.x, 1e-12, d0.momentum_scale);
+        ENSURE_CLOSE(pw.y, d0.momentum.y, 1e-12, d0.momentum_scale);
+        /* the wall x- took all of it, x+ and the y walls nothing */
+        ENSURE_CLOSE(d1.wall_impulse_by_wall[0], d1.wall_impulse.x, 1e-12, d0.momentum_scale);
+        ENSURE(d1.wall_impulse.x < -1.0); /* (it pushed the ball back: about -2 gamma v) */
+        ENSURE(d1.wall_impulse_by_wall[1] == 0.0 && d1.wall_impulse_by_wall[2] == 0.0 &&
+               d1.wall_impulse_by_wall[3] == 0.0);
+        rc_sim_free(&s);
+    }
+}
+
 int main(void)
 {
     RUN_TEST(test_classical);
@@ -541,5 +596,6 @@ int main(void)
     RUN_TEST(test_conservation);
     RUN_TEST(test_no_stall);
     RUN_TEST(test_cluster);
+    RUN_TEST(test_undo_wall);
     RC_TEST_MAIN_END();
 }
