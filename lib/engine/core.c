@@ -9,47 +9,10 @@
 #include "approach.h"
 #include "pairs.h"
 #include "private.h"
+#include "resolve.h"
 #include "relcol/status.h"
 
 /* ---- resolving events ------------------------------------------------------------ */
-
-/* Move ball i's stored state to time T (position, proper time, clock). */
-static void advance_ball(rc_sim *s, int32_t i, double T)
-{
-    eng_ball *b = &s->b[i];
-    const eng_aux *a = &s->a[i];
-    double h = T - b->t;
-    if (h == 0.0)
-        return;
-    b->x = rc_v3_axpy(b->x, h, b->v);
-    if (s->inv_c2 == 0.0)
-        s->clk[i].tau += h;
-    else
-        s->clk[i].tau += h * (a->m / eng_mass_rel(a->m, a->p, s->inv_c2));
-    b->t = T;
-}
-
-/* per_ball frames: ball b's velocity changes from `in` to `out` through the contact event
- * X at table time tx, dx = X - (its centre at tx on its stored line), which is still the
- * incoming one (papers/shape-change.md, section 2): its kink is where the hyperplane H
- * through X with normal u_in + u_out, t - tx = kappa.(y - X), meets that line, at
- * t_E = tx - kappa.dx / (1 - kappa.v_in). The stored state is moved there (backwards or
- * forwards along the incoming line; the caller then writes the outgoing momentum) and H
- * is kept as the start of the new segment. A kink before the ball's previous one along
- * its worldline (successive hyperplanes crossing inside the tube: collisions less than a
- * glue window apart, where the glued tube of the two is not defined) is a model rule:
- * the change is put at the previous kink, and counted. */
-/* H's normal and the kink's time (glue_kink; the stored line is the incoming one) */
-static double kink_time(const rc_sim *s, int32_t b, const rc_particle *in,
-                        const rc_particle *out, double tx, rc_vec3 dx, rc_vec3 *kappa)
-{
-    const double ic2 = s->inv_c2;
-    /* kappa = (g0 v0 + g1 v1) / (c^2 (g0 + g1)), g v = p / m, g = M / m (as rc_glue_make) */
-    const double W0 = eng_mass_rel(in->m, in->p, ic2) / in->m + eng_mass_rel(out->m, out->p, ic2) / out->m;
-    const rc_vec3 Wv = rc_v3_add(rc_v3_scale(1.0 / in->m, in->p), rc_v3_scale(1.0 / out->m, out->p));
-    *kappa = rc_v3_scale(ic2 / W0, Wv);
-    return tx - rc_v3_dot(*kappa, dx) / (1.0 - rc_v3_dot(*kappa, s->b[b].v));
-}
 
 /* Would ball b's new kink (centre at table time te, H's normal kappa) have its hyperplane
  * reach some point of the ball before its last one did? On the segment between the two
@@ -71,23 +34,30 @@ static int kinks_cross(const rc_sim *s, int32_t b, double te, rc_vec3 kappa)
     return te - c->t_k < s->b[b].r * sqrt(h2 > 0.0 ? h2 : 0.0);
 }
 
-/* at_event: a kink the engine puts at the event's time through the centre (the overlap
+/* per_ball frames: ball b's velocity changes from `in` to `out` through the contact event
+ * X at table time tx, dx = X - (its centre at tx on its stored line), which is still the
+ * incoming one (papers/shape-change.md, section 2): its kink is where the hyperplane H
+ * through X with normal u_in + u_out, t - tx = kappa.(y - X), meets that line, at
+ * t_E = tx - kappa.dx / (1 - kappa.v_in). The stored state is moved there (backwards or
+ * forwards along the incoming line; the caller then writes the outgoing momentum) and H
+ * is kept as the start of the new segment. A kink before the ball's previous one along
+ * its worldline (successive hyperplanes crossing inside the tube: collisions less than a
+ * glue window apart, where the glued tube of the two is not defined) is a model rule:
+ * the change is put at the previous kink, and counted.
+ * at_event: a kink the engine puts at the event's time through the centre (the overlap
  * policy's, a group's). Such a kink before a kink still pending (ahead of now) overtakes
  * it: put where the order rule would, at the pending kink, it would leave the ball's line
  * up to there, and so the geometry that called the policy, as it was, and the same
  * contact would come up again at the same instant for ever (RC_ESTALL, a 3-D covariant gas
  * at packing 0.2). It is kept at the event's time instead (counted with the order
- * conflicts; the ball's centre there is its stored line's). */
-static void glue_kink(rc_sim *s, int32_t b, const rc_particle *in, const rc_particle *out,
-                      double tx, rc_vec3 dx, int at_event)
+ * conflicts; the ball's centre there is its stored line's). te, kappa: eng_kink_time's. */
+static void glue_kink_at(rc_sim *s, int32_t b, const rc_particle *in, const rc_particle *out,
+                         double tx, rc_vec3 dx, double te, rc_vec3 kappa, int at_event)
 {
     eng_cov *cv = &s->cov[b];
-    const double ic2 = s->inv_c2;
-    rc_vec3 kappa;
-    double te = kink_time(s, b, in, out, tx, dx, &kappa);
     /* the tube, for a neighbour met while the ball is in its window (X at the origin) */
-    if (rc_glue_make(ic2, s->b[b].r, in, out, tx, rc_v3_scale(-1.0, dx), rc_v3(0.0, 0.0, 0.0),
-                     &s->glu[b]) != RC_OK)
+    if (rc_glue_make(s->inv_c2, s->b[b].r, in, out, tx, rc_v3_scale(-1.0, dx),
+                     rc_v3(0.0, 0.0, 0.0), &s->glu[b]) != RC_OK)
         s->glu[b].r = 0.0;
     if (!(te >= cv->t_k)) {
         if (!(at_event && cv->t_k > s->now))
@@ -95,9 +65,17 @@ static void glue_kink(rc_sim *s, int32_t b, const rc_particle *in, const rc_part
         s->bk.order_conflicts++;
         s->glu[b].r = 0.0; /* (the stored line is no longer the tube's outgoing one) */
     }
-    advance_ball(s, b, te);
+    eng_advance_ball(s, b, te);
     cv->t_k = te;
     cv->kappa = kappa;
+}
+
+void eng_glue_kink(rc_sim *s, int32_t b, const rc_particle *in, const rc_particle *out,
+                   double tx, rc_vec3 dx, int at_event)
+{
+    rc_vec3 kappa;
+    const double te = eng_kink_time(s, b, in, out, tx, dx, &kappa);
+    glue_kink_at(s, b, in, out, tx, dx, te, kappa, at_event);
 }
 
 static int grow(void **p, size_t *cap, size_t need, size_t elem)
@@ -116,7 +94,7 @@ static int grow(void **p, size_t *cap, size_t need, size_t elem)
 }
 
 /* Group member index of ball k, adding it (advanced to T) if new; -1 on ENOMEM. */
-static int member_of(rc_sim *s, size_t *nm, int32_t k, double T)
+int eng_member_of(rc_sim *s, size_t *nm, int32_t k, double T)
 {
     for (size_t j = 0; j < *nm; j++)
         if (s->grp_ball[j] == k)
@@ -126,7 +104,7 @@ static int member_of(rc_sim *s, size_t *nm, int32_t k, double T)
         return -1;
     if (grow((void **)&s->grp_part, &s->grp_ball_cap, *nm + 1, sizeof *s->grp_part) != RC_OK)
         return -1;
-    advance_ball(s, k, T);
+    eng_advance_ball(s, k, T);
     s->grp_ball[*nm] = k;
     return (int)(*nm)++;
 }
@@ -141,7 +119,7 @@ static int have_contact(const rc_sim *s, size_t nc, int a, int b)
     return 0;
 }
 
-static int add_contact(rc_sim *s, size_t *nc, int a, int b, rc_vec3 n)
+int eng_add_contact(rc_sim *s, size_t *nc, int a, int b, rc_vec3 n)
 {
     size_t cap = s->grp_con_cap;
     if (grow((void **)&s->grp_j, &cap, *nc + 1, sizeof *s->grp_j) != RC_OK ||
@@ -184,7 +162,7 @@ static int grow_group(rc_sim *s, size_t *nm, size_t *nc, double T)
                 continue;
             rc_vec3 n = rc_v3(0, 0, 0);
             rc_v3_set(&n, d, v > 0.0 ? 1.0 : -1.0);
-            if (add_contact(s, nc, (int)mi, ENG_WALL(w), n) != RC_OK)
+            if (eng_add_contact(s, nc, (int)mi, ENG_WALL(w), n) != RC_OK)
                 return RC_ENOMEM;
         }
         int c[3];
@@ -230,12 +208,12 @@ static int grow_group(rc_sim *s, size_t *nm, size_t *nc, double T)
                             if (!eng_narrow_conflict(s, bi, bk, dx, d2, &now, &n))
                                 continue;
                         }
-                        int mk = member_of(s, nm, k, T);
+                        int mk = eng_member_of(s, nm, k, T);
                         if (mk < 0)
                             return RC_ENOMEM;
                         if (have_contact(s, *nc, (int)mi, mk))
                             continue;
-                        if (add_contact(s, nc, (int)mi, mk, n) != RC_OK)
+                        if (eng_add_contact(s, nc, (int)mi, mk, n) != RC_OK)
                             return RC_ENOMEM;
                     }
                 }
@@ -243,24 +221,7 @@ static int grow_group(rc_sim *s, size_t *nm, size_t *nc, double T)
     return RC_OK;
 }
 
-static inline void kahan(double *sum, double *comp, double x)
-{
-    double y = x - *comp;
-    double t = *sum + y;
-    *comp = (t - *sum) - y;
-    *sum = t;
-}
 
-static double kinetic(const rc_particle *b, double inv_c2)
-{
-    double M = eng_mass_rel(b->m, b->p, inv_c2);
-    return rc_v3_norm2(b->p) / (M + b->m);
-}
-
-
-static double contact_eps(rc_sim *s, const rc_contact *c);
-static void finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int kind, int done,
-                   const double *J);
 
 /* Surface gap of group member mi to wall w at the members' time (negative: the shape
  * crosses the wall), relative to the ball's rest radius. */
@@ -304,7 +265,7 @@ static void count_overlaps(rc_sim *s, size_t from, size_t nc)
  * approaching along n: the states are left as they were) are outcomes; any other code is
  * the law's failure, which ends the event loop with that status (rc_sim_advance) rather
  * than leaving a state the law did not stand behind. */
-static int resolve_contact(rc_sim *s, rc_particle *P, const rc_contact *c)
+int eng_resolve_contact(rc_sim *s, rc_particle *P, const rc_contact *c)
 {
     int st;
     if (c->b >= 0) {
@@ -321,40 +282,6 @@ static int resolve_contact(rc_sim *s, rc_particle *P, const rc_contact *c)
  * while checking that no other contact was simultaneous with it; if one was, undo
  * (return 0) so the caller resolves the whole group. 1 when done; the law's failure
  * (negative, nothing written back). */
-/* per_ball frames: after a single contact of the model (model != 0) every member whose
- * line kinked cleanly gets the record that undoes it (eng_undo); any other collision
- * leaves the members' records stale (their counters moved) or clears them. */
-static void write_undo(rc_sim *s, size_t nm, int32_t bp, int model, const rc_particle *P,
-                       const rc_vec3 *vold, const eng_clock *cat, const eng_cov *gat,
-                       const rc_glue *uat, const double *tx, const rc_vec3 *dX,
-                       const int *kinked, int tc)
-{
-    const rc_vec3 n0 = s->grp_con[0].n;
-    for (size_t j = 0; j < nm; j++) {
-        const int32_t b = s->grp_ball[j];
-        eng_undo *u = &s->und[b];
-        const int32_t o = nm > 1 ? s->grp_ball[1 - j] : ENG_NONE;
-        if (!model || !kinked[j] || (nm > 1 && !kinked[1 - j])) {
-            u->partner = ENG_NONE;
-            continue;
-        }
-        const double te = s->cov[b].t_k; /* (its kink E: X - E, the same on both lines) */
-        u->in = P[j];
-        u->cov = gat[j];
-        u->glu = uat[j];
-        u->tau_last = cat[j].tau_last;
-        u->n = j == 0 ? n0 : rc_v3_scale(-1.0, n0);
-        u->dt = tx[j] - te;
-        u->dx = rc_v3_axpy(dX[j], tx[j] - te, vold[j]);
-        u->partner = nm > 1 ? (int32_t)s->id[o] : bp;
-        u->cnt = s->cnt[b];
-        u->pcnt = nm > 1 ? s->cnt[o] : 0;
-        u->tc = (uint32_t)(tc && j == 0) | (uint32_t)(j == 0) << 1;
-    }
-}
-
-static int undoable(const rc_sim *s, int32_t w, int32_t k);
-
 static int try_single(rc_sim *s, size_t nm, int32_t bp, double T, const double *tx,
                       const rc_vec3 *dX, int model, int undo_order)
 {
@@ -374,28 +301,38 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T, const double *
         P[j].m = s->a[b].m;
         P[j].p = s->a[b].p;
         vold[j] = s->b[b].v;
-        k0 += kinetic(&P[j], s->inv_c2);
+        k0 += eng_kinetic(&P[j], s->inv_c2);
         p0 = rc_v3_add(p0, P[j].p);
     }
     rc_contact *c = &s->grp_con[0];
     const uint64_t tc_before = s->bk.events[RC_SIM_EV_TC];
-    c->eps = contact_eps(s, c);
+    c->eps = eng_contact_eps(s, c);
     rc_particle Q[2] = {P[0], nm > 1 ? P[1] : P[0]};
-    const int st = resolve_contact(s, Q, c);
+    const int st = eng_resolve_contact(s, Q, c);
     if (st != RC_OK) {
         s->bk.events[RC_SIM_EV_TC] = tc_before;
         return st;
     }
-    /* per_ball frames: a ball whose new kink's hyperplane would reach some point of it
-     * before its last one did (kinks_cross; the centre's order is the order rule's) met
-     * its new partner within its last kink's window: the last collision is undone if it
-     * can be (2 + the member: the caller's rollback), else the order rule (glue_kink) */
+    /* per_ball frames: each changed member's kink (time, H's normal), once, and whether
+     * its hyperplane would reach some point of the ball before the last one did
+     * (kinks_cross; the centre's order is the order rule's). (A member's kink moves only
+     * its own record, so the other's is the same before and after it.) */
+    int changed[2] = {0, 0}, cross[2] = {0, 0};
+    double te[2] = {0.0, 0.0};
+    rc_vec3 kap[2] = {rc_v3(0, 0, 0), rc_v3(0, 0, 0)};
+    for (size_t j = 0; j < nm; j++) {
+        changed[j] = Q[j].m != P[j].m || memcmp(&Q[j].p, &P[j].p, sizeof Q[j].p) != 0;
+        if (s->glue && changed[j]) {
+            const int32_t b = s->grp_ball[j];
+            te[j] = eng_kink_time(s, b, &P[j], &Q[j], tx[j], dX[j], &kap[j]);
+            cross[j] = kinks_cross(s, b, te[j], kap[j]);
+        }
+    }
+    /* such a ball met its new partner within its last kink's window: the last collision
+     * is undone if it can be (2 + the member: the caller's rollback), else the order rule
+     * (glue_kink_at) */
     for (size_t j = 0; j < nm && s->glue && model && undo_order && nm > 1; j++) {
-        const int32_t b = s->grp_ball[j];
-        rc_vec3 kap;
-        if ((Q[j].m != P[j].m || memcmp(&Q[j].p, &P[j].p, sizeof Q[j].p) != 0) &&
-            kinks_cross(s, b, kink_time(s, b, &P[j], &Q[j], tx[j], dX[j], &kap), kap) &&
-            undoable(s, b, s->grp_ball[1 - j])) {
+        if (changed[j] && cross[j] && eng_undoable(s, s->grp_ball[j], s->grp_ball[1 - j])) {
             s->bk.events[RC_SIM_EV_TC] = tc_before;
             return 2 + (int)j;
         }
@@ -410,17 +347,15 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T, const double *
             /* (no change, no kink: a contact the law found nothing to resolve keeps the
              * ball's line and its hyperplane) */
             kinked[j] = 0;
-            if (Q[j].m != P[j].m || memcmp(&Q[j].p, &P[j].p, sizeof Q[j].p) != 0) {
+            if (changed[j]) {
                 /* hyperplanes crossing inside the ball though the centres' kinks come in
-                 * order (kinks_cross; not undone above): the tube of the two is not
-                 * defined there, counted with the order conflicts (the collision can
-                 * still be undone: its kink is where the model puts it) */
-                rc_vec3 kap;
-                const double te = kink_time(s, b, &P[j], &Q[j], tx[j], dX[j], &kap);
-                if (te >= s->cov[b].t_k && kinks_cross(s, b, te, kap))
+                 * order (not undone above): the tube of the two is not defined there,
+                 * counted with the order conflicts (the collision can still be undone:
+                 * its kink is where the model puts it) */
+                if (te[j] >= s->cov[b].t_k && cross[j])
                     s->bk.order_conflicts++;
                 const uint64_t oc = s->bk.order_conflicts;
-                glue_kink(s, b, &P[j], &Q[j], tx[j], dX[j], !model);
+                glue_kink_at(s, b, &P[j], &Q[j], tx[j], dX[j], te[j], kap[j], !model);
                 kinked[j] = s->bk.order_conflicts == oc && s->glu[b].r > 0.0;
             }
         }
@@ -460,11 +395,11 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T, const double *
     }
     eng_moments_add(s, nm, s->grp_ball, P, Q);
     if (s->glue)
-        write_undo(s, nm, bp, model, P, vold, cat, gat, uat, tx, dX, kinked,
+        eng_write_undo(s, nm, bp, model, P, vold, cat, gat, uat, tx, dX, kinked,
                    s->bk.events[RC_SIM_EV_TC] != tc_before);
     for (size_t j = 0; j < nm; j++)
         P[j] = Q[j];
-    finish(s, nm, 1, k0, p0, bp >= 0 ? RC_SIM_EV_BALL : RC_SIM_EV_WALL, 1, NULL);
+    eng_finish(s, nm, 1, k0, p0, bp >= 0 ? RC_SIM_EV_BALL : RC_SIM_EV_WALL, 1, NULL);
     return 1;
 }
 
@@ -485,12 +420,9 @@ static int wall_event_point(rc_sim *s, int32_t i, int w, double *tx, rc_vec3 *dx
     rc_v3_set(&e, d, up ? 1.0 : -1.0);
     const double bn = rc_v3_get(beta, d) * (up ? 1.0 : -1.0);
     *dx = rc_v3_scale(b->r * b->r / h, rc_v3_axpy(e, -bn, beta));
-    const eng_cov *cv = &s->cov[i];
-    return (*tx - cv->t_k) * (1.0 - rc_v3_dot(cv->kappa, b->v)) >= rc_v3_dot(cv->kappa, *dx);
+    return eng_glue_side(&s->cov[i], b->v, *tx, *dx);
 }
 
-static int undo_conflict(rc_sim *s, int32_t i, int32_t bp, double T, int tube);
-static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx);
 
 static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
 {
@@ -512,7 +444,7 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
                 have_x = 1;
             }
             else {
-                const int st = undo_conflict(s, i, bp, T, n.y == 1.0);
+                const int st = eng_undo_conflict(s, i, bp, T, n.y == 1.0);
                 if (st != 0)
                     return st > 0 ? RC_OK : st;
                 if (n.y == 1.0)
@@ -543,10 +475,10 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
             frame_normal = 1;
         }
     }
-    if (member_of(s, &nm, i, T) < 0)
+    if (eng_member_of(s, &nm, i, T) < 0)
         return RC_ENOMEM;
     if (bp >= 0) {
-        if (member_of(s, &nm, bp, T) < 0)
+        if (eng_member_of(s, &nm, bp, T) < 0)
             return RC_ENOMEM;
         rc_vec3 dx = eng_image(s, rc_v3_sub(s->b[bp].x, s->b[i].x));
         double len = rc_v3_norm(dx);
@@ -560,13 +492,13 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
             s->bk.overlaps++;
             s->bk.overlap_kind[0]++;
         }
-        if (add_contact(s, &nc, 0, 1, n0) != RC_OK)
+        if (eng_add_contact(s, &nc, 0, 1, n0) != RC_OK)
             return RC_ENOMEM;
     } else {
         int w = ENG_WALL_INDEX(bp), d = w / 2;
         n0 = rc_v3(0, 0, 0);
         rc_v3_set(&n0, d, (w & 1) ? 1.0 : -1.0);
-        if (add_contact(s, &nc, 0, bp, n0) != RC_OK)
+        if (eng_add_contact(s, &nc, 0, bp, n0) != RC_OK)
             return RC_ENOMEM;
         const uint64_t ov = s->bk.overlaps;
         count_overlaps(s, 0, 1); /* (before the collision changes the shape) */
@@ -577,7 +509,7 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
     }
     int single = try_single(s, nm, bp, T, tx, dX, have_x, 1);
     if (single >= 2) { /* (an order conflict that undoing w's last collision resolves) */
-        const int st = rollback(s, s->grp_ball[single - 2], s->grp_ball[3 - single], T, tx[0]);
+        const int st = eng_rollback(s, s->grp_ball[single - 2], s->grp_ball[3 - single], T, tx[0]);
         if (st != 0)
             return st > 0 ? RC_OK : st;
         single = try_single(s, nm, bp, T, tx, dX, have_x, 0);
@@ -598,16 +530,16 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
         const eng_aux *a = &s->a[s->grp_ball[j]];
         P[j].m = a->m;
         P[j].p = a->p;
-        k0 += kinetic(&P[j], s->inv_c2);
+        k0 += eng_kinetic(&P[j], s->inv_c2);
         p0 = rc_v3_add(p0, a->p);
     }
     for (size_t j = 0; j < nc; j++)
-        s->grp_con[j].eps = contact_eps(s, &s->grp_con[j]);
+        s->grp_con[j].eps = eng_contact_eps(s, &s->grp_con[j]);
     int kind;
     const double *J = NULL; /* the group solver's impulses, once it has solved */
     if (nc == 1) {
         const rc_contact *c = &s->grp_con[0];
-        const int st = resolve_contact(s, P, c);
+        const int st = eng_resolve_contact(s, P, c);
         if (st != RC_OK)
             return st;
         kind = c->b >= 0 ? RC_SIM_EV_BALL : RC_SIM_EV_WALL;
@@ -617,7 +549,7 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
          * previous ones left -- the outcome depends on that order (relcol/sim.h) */
         kind = RC_SIM_EV_MULTI;
         for (size_t j = 0; j < nc; j++) {
-            const int st = resolve_contact(s, P, &s->grp_con[j]);
+            const int st = eng_resolve_contact(s, P, &s->grp_con[j]);
             if (st != RC_OK)
                 return st;
         }
@@ -635,7 +567,7 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
                 P[j].m = s->a[s->grp_ball[j]].m;
                 P[j].p = s->a[s->grp_ball[j]].p;
             }
-            if ((st = resolve_contact(s, P, &s->grp_con[0])) != RC_OK)
+            if ((st = eng_resolve_contact(s, P, &s->grp_con[0])) != RC_OK)
                 return st;
             nm = bp >= 0 ? 2 : 1;
             nc = 1;
@@ -647,13 +579,13 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
             p0 = rc_v3(0, 0, 0);
             for (size_t j = 0; j < nm; j++) {
                 const rc_particle before = {s->a[s->grp_ball[j]].m, s->a[s->grp_ball[j]].p};
-                k0 += kinetic(&before, s->inv_c2);
+                k0 += eng_kinetic(&before, s->inv_c2);
                 p0 = rc_v3_add(p0, before.p);
             }
         }
     }
     eng_moments_add(s, nm, s->grp_ball, NULL, P);
-    finish(s, nm, nc, k0, p0, kind, 0, J);
+    eng_finish(s, nm, nc, k0, p0, kind, 0, J);
     return RC_OK;
 }
 
@@ -674,7 +606,7 @@ static int wall_jammed(const rc_sim *s, const rc_contact *c)
  * the complementarity problem (the only outcome that does not push through the opposite
  * wall) -- a model choice: the motion along the axis stops, and its kinetic energy
  * becomes heat (rest mass at finite c), counted in rc_sim_diag.pinned. */
-static double contact_eps(rc_sim *s, const rc_contact *c)
+double eng_contact_eps(rc_sim *s, const rc_contact *c)
 {
     const eng_clock *aa = &s->clk[s->grp_ball[c->a]];
     int wall = c->b < 0;
@@ -702,7 +634,7 @@ static double contact_eps(rc_sim *s, const rc_contact *c)
  * chain of balls across the box) needs the solver's impulses J to share it: each wall
  * its own J n_d, and what the relativistic rest-mass step adds to the total shared
  * equally -- counted in wall_shared, since that split is a choice. */
-static void account_walls(rc_sim *s, size_t nc, rc_vec3 p0, rc_vec3 p1, const double *J)
+void eng_account_walls(rc_sim *s, size_t nc, rc_vec3 p0, rc_vec3 p1, const double *J)
 {
     unsigned sides[3] = {0, 0, 0};
     for (size_t j = 0; j < nc; j++)
@@ -714,7 +646,7 @@ static void account_walls(rc_sim *s, size_t nc, rc_vec3 p0, rc_vec3 p1, const do
         const double taken = rc_v3_get(p0, d) - rc_v3_get(p1, d);
         if (sides[d] == 1u || sides[d] == 2u) {
             const int w = 2 * d + (sides[d] == 2u);
-            kahan(&s->bk.wallw[w], &s->bk.wallw_c[w], taken);
+            eng_kahan(&s->bk.wallw[w], &s->bk.wallw_c[w], taken);
         } else if (sides[d] == 3u) {
             double rest = taken;
             for (size_t j = 0; j < nc; j++) {
@@ -722,17 +654,17 @@ static void account_walls(rc_sim *s, size_t nc, rc_vec3 p0, rc_vec3 p1, const do
                 if (c->b >= 0 || ENG_WALL_INDEX(c->b) / 2 != d)
                     continue;
                 const double part = J ? J[j] * rc_v3_get(c->n, d) : 0.0;
-                kahan(&s->bk.wallw[ENG_WALL_INDEX(c->b)], &s->bk.wallw_c[ENG_WALL_INDEX(c->b)], part);
+                eng_kahan(&s->bk.wallw[ENG_WALL_INDEX(c->b)], &s->bk.wallw_c[ENG_WALL_INDEX(c->b)], part);
                 rest -= part;
             }
-            kahan(&s->bk.wallw[2 * d], &s->bk.wallw_c[2 * d], 0.5 * rest);
-            kahan(&s->bk.wallw[2 * d + 1], &s->bk.wallw_c[2 * d + 1], 0.5 * rest);
+            eng_kahan(&s->bk.wallw[2 * d], &s->bk.wallw_c[2 * d], 0.5 * rest);
+            eng_kahan(&s->bk.wallw[2 * d + 1], &s->bk.wallw_c[2 * d + 1], 0.5 * rest);
             s->bk.wall_shared++;
         }
     }
 }
 
-static void finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int kind, int single,
+void eng_finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int kind, int single,
                    const double *J)
 {
     const rc_particle *P = s->grp_part;
@@ -745,12 +677,12 @@ static void finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int k
     for (size_t j = 0; j < nm; j++) {
         int32_t b = s->grp_ball[j];
         eng_aux *a = &s->a[b];
-        k1 += kinetic(&P[j], s->inv_c2);
+        k1 += eng_kinetic(&P[j], s->inv_c2);
         p1 = rc_v3_add(p1, P[j].p);
         if (!single && s->glue) { /* a group: every kink at the group's time (members are
                                      there), through the centre */
             const rc_particle in = {a->m, a->p};
-            glue_kink(s, b, &in, &P[j], s->b[b].t, rc_v3(0, 0, 0), 1);
+            eng_glue_kink(s, b, &in, &P[j], s->b[b].t, rc_v3(0, 0, 0), 1);
         }
         s->clk[b].tau_last = s->clk[b].tau;
         if (!single) {
@@ -760,11 +692,11 @@ static void finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int k
             s->cnt[b]++;
         }
     }
-    kahan(&s->bk.heat, &s->bk.heat_c, k0 - k1);
-    kahan(&s->bk.wall[0], &s->bk.wall_c[0], p0.x - p1.x);
-    kahan(&s->bk.wall[1], &s->bk.wall_c[1], p0.y - p1.y);
-    kahan(&s->bk.wall[2], &s->bk.wall_c[2], p0.z - p1.z);
-    account_walls(s, nc, p0, p1, J);
+    eng_kahan(&s->bk.heat, &s->bk.heat_c, k0 - k1);
+    eng_kahan(&s->bk.wall[0], &s->bk.wall_c[0], p0.x - p1.x);
+    eng_kahan(&s->bk.wall[1], &s->bk.wall_c[1], p0.y - p1.y);
+    eng_kahan(&s->bk.wall[2], &s->bk.wall_c[2], p0.z - p1.z);
+    eng_account_walls(s, nc, p0, p1, J);
     for (size_t j = 0; j < nm; j++) {
         if (single)
             eng_queue_update(&s->q, (uint32_t)s->grp_ball[j], key_of(&s->a[s->grp_ball[j]]));
@@ -773,338 +705,6 @@ static void finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int k
     }
 }
 
-
-/* per_ball frames: what an event's ball was before it, for pend_note */
-typedef struct pend_snap {
-    int32_t b;
-    uint32_t cnt;
-    double t_k;
-    rc_particle in;
-    double tau_last;
-} pend_snap;
-
-static pend_snap pend_take(const rc_sim *s, int32_t b)
-{
-    const pend_snap p = {b, s->cnt[b], s->cov[b].t_k, {s->a[b].m, s->a[b].p}, s->clk[b].tau_last};
-    return p;
-}
-
-/* After an event: keep the record of the lines ball p.b is still on at now (eng_pend),
- * from its state before the event. Only the event's own balls can get a kink after now
- * (the single-contact path kinks on the hyperplane; a group's members and the overlap
- * policy's kinks are at the event's time, or at a kink already ahead by the order rule,
- * which moves no recorded kink). Reads the engine, changes nothing it reads. */
-static void pend_note(rc_sim *s, const pend_snap *p)
-{
-    const int32_t b = p->b;
-    if (s->cnt[b] == p->cnt)
-        return; /* (no change: no kink) */
-    eng_pend *r = &s->pend[b];
-    const double te = s->cov[b].t_k, now = s->now;
-    if (r->depth == 2 && r->t <= now) {
-        /* the first recorded line has ended: the second is the one the ball is on, from
-         * that kink (its centre and proper time there) to t2 */
-        const double M2 = eng_mass_rel(r->m2, r->p2, s->inv_c2), h = r->t2 - r->t;
-        r->x = rc_v3_axpy(r->x, h, rc_v3_scale(1.0 / M2, r->p2));
-        r->tau_last = r->tau;
-        r->tau += h * (r->m2 / M2);
-        r->t = r->t2;
-        r->p = r->p2;
-        r->m = r->m2;
-        r->depth = 1;
-    }
-    if (!(te > now)) { /* on its outgoing line from now on */
-        r->depth = 0;
-        return;
-    }
-    if (!(p->t_k > now)) { /* it was on its stored line at now: that line, up to te */
-        const eng_ball *e = &s->b[b];
-        const double h = te - e->t;
-        r->depth = 1;
-        r->t = te;
-        r->x = h == 0.0 ? e->x : rc_v3_axpy(e->x, h, e->v);
-        r->p = p->in.p;
-        r->m = p->in.m;
-        r->tau = s->clk[b].tau;
-        if (h != 0.0)
-            r->tau += h * (s->a[b].m / eng_mass_rel(s->a[b].m, s->a[b].p, s->inv_c2));
-        r->tau_last = p->tau_last;
-        for (int d = 0; d < 3; d++)
-            r->img[d] = s->img ? s->img[3 * (size_t)b + (size_t)d] : 0;
-        return;
-    }
-    /* a kink was already ahead: the line from it to the new one is the stored line the
-     * event found, recorded if the record ends at that kink with one line (else the part
-     * from there on is not recorded, and the read-out says so) */
-    if (te > p->t_k && r->depth == 1 && r->t == p->t_k) {
-        r->depth = 2;
-        r->t2 = te;
-        r->p2 = p->in.p;
-        r->m2 = p->in.m;
-    }
-}
-
-/* A ball's read-out record when its kink at te is undone: the line that ended there is
- * dropped (the one before it, if recorded, is the line it is on again); a record that
- * does not end there is cleared (a kink still ahead then reads as not recorded). */
-static void pend_undo(eng_pend *r, double te)
-{
-    if (r->depth == 2 && r->t2 == te)
-        r->depth = 1;
-    else
-        r->depth = 0;
-}
-
-/* ---- undoing a ball's last collision (papers/shape-change.md, section 7) ----------- */
-
-/* X (table time tx, offset dX from ball b's centre then on its stored line) on the future
- * side of b's last hyperplane (predict.c's glue_side). */
-static int future_side(const rc_sim *s, int32_t b, double tx, rc_vec3 dX)
-{
-    const eng_cov *c = &s->cov[b];
-    return (tx - c->t_k) * (1.0 - rc_v3_dot(c->kappa, s->b[b].v)) >= rc_v3_dot(c->kappa, dX);
-}
-
-/* Ball b back on its incoming line: stored at its kink E (where the collision's moments
- * were taken), with the momentum, hyperplane, glued tube and clock it had before. *xe:
- * E's position. */
-static void to_incoming(rc_sim *s, int32_t b, rc_vec3 *xe)
-{
-    const eng_undo *u = &s->und[b];
-    advance_ball(s, b, s->cov[b].t_k);
-    *xe = s->b[b].x;
-    s->a[b].m = u->in.m;
-    s->a[b].p = u->in.p;
-    s->b[b].v = rc_v3_scale(1.0 / eng_mass_rel(u->in.m, u->in.p, s->inv_c2), u->in.p);
-    s->cov[b] = u->cov;
-    s->glu[b] = u->glu;
-    s->clk[b].tau_last = u->tau_last;
-}
-
-/* Can ball w's last collision be undone for a contact with ball k: a single contact of
- * the model, neither w nor its partner (not k) has collided since. */
-static int undoable(const rc_sim *s, int32_t w, int32_t k)
-{
-    const eng_undo *u = &s->und[w];
-    if (u->partner == ENG_NONE || u->cnt != s->cnt[w])
-        return 0;
-    if (u->partner < 0)
-        return 1;
-    const int32_t j = (int32_t)s->slot[u->partner];
-    return j != k && s->cnt[j] == u->pcnt && s->und[j].partner == (int32_t)s->id[w] &&
-           s->und[j].cnt == s->cnt[j];
-}
-
-/* Ball w met ball k before its last kink along its tube (a tube conflict at the
- * prediction's X, table time tx; an overlap the frame reported: tx = inf). If that kink
- * was a single contact of the model (with ball j or a wall) and neither w nor j has
- * collided since, the collision is undone (its books too) and w's two contacts -- the one
- * with j as it was, the one with k as the frame finds it from w's incoming line -- are
- * solved together by the group rule (the scenario's, relcol/sim.h), each ball's velocity
- * changed at its own kink: j's and k's through their contact's event, w's through the
- * later of its two (so that both lie on its incoming piece, whose state the impulses act
- * on). The group's members get no undo record (a choice: it bounds the work, and a
- * conflict with one of them goes to the overlap policy). 1 when done; 0 when it does not
- * apply (nothing changed); the law's failure (negative). */
-static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx)
-{
-    if (!undoable(s, w, k))
-        return 0;
-    const eng_undo uw = s->und[w];
-    const int ball = uw.partner >= 0;
-    const int32_t j = ball ? (int32_t)s->slot[uw.partner] : ENG_NONE;
-    /* w on its incoming line (its records kept, to put back if there is no contact of the
-     * model); the frame is asked from a pair's light-crossing time before both the
-     * conflict's X and w's kink: from t0 = min(t_X, t_E) itself the pair's ZMF, whose
-     * simultaneity tilts by up to that much across the pair, often found the two already
-     * overlapping (papers/shape-change.md, section 7) */
-    const eng_ball sb = s->b[w];
-    const eng_aux sa = s->a[w];
-    const eng_clock sc = s->clk[w];
-    const eng_cov sg = s->cov[w];
-    const rc_glue su = s->glu[w];
-    const rc_particle out_w = {s->a[w].m, s->a[w].p};
-    rc_vec3 xe_w, xe_j = rc_v3(0, 0, 0);
-    const double te_w = s->cov[w].t_k;
-    to_incoming(s, w, &xe_w);
-    double t2;
-    rc_vec3 dX2, n2;
-    const double t0 = (tx < te_w ? tx : te_w) - (s->b[w].r + s->b[k].r) * s->inv_c;
-    if (eng_pair_contact(s, w, k, t0, &t2, &dX2, &n2) != RC_OK) {
-        s->b[w] = sb;
-        s->a[w] = sa;
-        s->clk[w] = sc;
-        s->cov[w] = sg;
-        s->glu[w] = su;
-        return 0;
-    }
-    s->bk.rollbacks++;
-    /* the collision's books, taken back: its moments at the kinks it was taken at, in its
-     * members' order; heat and momentum with the same operations, negated */
-    rc_particle in[2] = {uw.in, uw.in}, out[2] = {out_w, out_w};
-    double te_j = 0.0;
-    int32_t mem[2] = {w, j};
-    size_t n0 = 1;
-    if (ball) {
-        out[1] = (rc_particle){s->a[j].m, s->a[j].p};
-        in[1] = s->und[j].in;
-        te_j = s->cov[j].t_k;
-        to_incoming(s, j, &xe_j);
-        n0 = 2;
-        if (!(uw.tc & 2u)) { /* (j was the event's first ball) */
-            mem[0] = j;
-            mem[1] = w;
-            const rc_particle ti = in[0], to = out[0];
-            in[0] = in[1];
-            out[0] = out[1];
-            in[1] = ti;
-            out[1] = to;
-        }
-    }
-    eng_moments_add(s, n0, mem, out, in);
-    double k0 = 0.0, k1 = 0.0;
-    rc_vec3 p0 = rc_v3(0, 0, 0), p1 = rc_v3(0, 0, 0);
-    for (size_t m = 0; m < n0; m++) {
-        k0 += kinetic(&in[m], s->inv_c2);
-        p0 = rc_v3_add(p0, in[m].p);
-        k1 += kinetic(&out[m], s->inv_c2);
-        p1 = rc_v3_add(p1, out[m].p);
-    }
-    kahan(&s->bk.heat, &s->bk.heat_c, -(k0 - k1));
-    kahan(&s->bk.wall[0], &s->bk.wall_c[0], -(p0.x - p1.x));
-    kahan(&s->bk.wall[1], &s->bk.wall_c[1], -(p0.y - p1.y));
-    kahan(&s->bk.wall[2], &s->bk.wall_c[2], -(p0.z - p1.z));
-    size_t nm = 0, nc = 0;
-    if (member_of(s, &nm, w, T) < 0)
-        return RC_ENOMEM;
-    if (!ball) {
-        if (add_contact(s, &nc, 0, uw.partner, uw.n) != RC_OK)
-            return RC_ENOMEM;
-        account_walls(s, 1, p1, p0, NULL); /* (taken: p1 - p0, the original's negated) */
-        nc = 0;
-    }
-    /* the read-out's records of w and j (eng_pend) back to before the undone kinks, then
-     * noted for the group's kinks like any event's balls */
-    pend_snap ps[3];
-    size_t nps = 0;
-    if (s->pend) {
-        pend_undo(&s->pend[w], te_w);
-        ps[nps++] = pend_take(s, w);
-        if (ball) {
-            pend_undo(&s->pend[j], te_j);
-            ps[nps++] = pend_take(s, j);
-        }
-        ps[nps++] = pend_take(s, k);
-    }
-    s->bk.events[ball ? RC_SIM_EV_BALL : RC_SIM_EV_WALL]--;
-    s->bk.collisions--;
-    s->bk.events[RC_SIM_EV_TC] -= (uw.tc | (ball ? s->und[j].tc : 0u)) & 1u; /* (the first
-                                                                      ball's record has it) */
-    s->und[w].partner = ENG_NONE;
-    if (ball)
-        s->und[j].partner = ENG_NONE;
-    /* the group: w, j, k at T (w and j on their incoming lines) */
-    const int mj = ball ? member_of(s, &nm, j, T) : 0, mk = member_of(s, &nm, k, T);
-    if (mj < 0 || mk < 0)
-        return RC_ENOMEM;
-    const double tw[2] = {te_w + uw.dt, t2};
-    const rc_vec3 xw[2] = {rc_v3_add(xe_w, uw.dx), rc_v3_add(rc_v3_axpy(xe_w, t2 - te_w, s->b[w].v), dX2)};
-    if (add_contact(s, &nc, 0, ball ? mj : uw.partner, uw.n) != RC_OK ||
-        add_contact(s, &nc, 0, mk, n2) != RC_OK)
-        return RC_ENOMEM;
-    for (size_t c = 0; c < 2; c++) { /* the events, in w's coordinates */
-        s->grp_con[c].t = tw[c];
-        s->grp_con[c].x = xw[c];
-    }
-    rc_particle *P = s->grp_part;
-    rc_particle B[3];
-    k0 = 0.0;
-    p0 = rc_v3(0, 0, 0);
-    for (size_t m = 0; m < nm; m++) {
-        P[m] = (rc_particle){s->a[s->grp_ball[m]].m, s->a[s->grp_ball[m]].p};
-        B[m] = P[m];
-        k0 += kinetic(&P[m], s->inv_c2);
-        p0 = rc_v3_add(p0, P[m].p);
-    }
-    for (size_t c = 0; c < nc; c++)
-        s->grp_con[c].eps = contact_eps(s, &s->grp_con[c]);
-    const double *J = NULL;
-    int st = s->def.law->group ? s->def.law->group(&s->prm, nm, P, nc, s->grp_con, s->grp_j)
-                               : RC_EINVAL;
-    if (st == RC_OK) {
-        J = s->grp_j;
-    } else {
-        /* no group solver, or none found: the two contacts one after the other, in the
-         * order of their events' table times (a choice; counted) */
-        if (s->def.law->group)
-            s->bk.group_fallbacks++;
-        else
-            s->bk.group_sequential++;
-        for (size_t m = 0; m < nm; m++)
-            P[m] = B[m];
-        const size_t first = tw[1] < tw[0];
-        if ((st = resolve_contact(s, P, &s->grp_con[first])) != RC_OK ||
-            (st = resolve_contact(s, P, &s->grp_con[1 - first])) != RC_OK)
-            return st;
-    }
-    /* each member's kink through its contact's event (w: the later of its two) */
-    for (size_t m = 0; m < nm; m++) {
-        const int32_t b = s->grp_ball[m];
-        if (P[m].m == B[m].m && memcmp(&P[m].p, &B[m].p, sizeof P[m].p) == 0)
-            continue;
-        size_t c = m == (size_t)mk ? 1 : 0;
-        const eng_ball *bb = &s->b[b];
-        rc_vec3 d[2];
-        for (size_t q = 0; q < 2; q++)
-            d[q] = eng_image(s, rc_v3_sub(xw[q], rc_v3_axpy(bb->x, tw[q] - bb->t, bb->v)));
-        if (b == w) {
-            rc_vec3 kap;
-            c = kink_time(s, b, &B[m], &P[m], tw[1], d[1], &kap) >
-                kink_time(s, b, &B[m], &P[m], tw[0], d[0], &kap);
-        }
-        glue_kink(s, b, &B[m], &P[m], tw[c], d[c], 0);
-    }
-    for (size_t m = 0; m < nm; m++) {
-        const int32_t b = s->grp_ball[m];
-        s->a[b].m = P[m].m;
-        s->a[b].p = P[m].p;
-        s->b[b].v = rc_v3_scale(1.0 / eng_mass_rel(P[m].m, P[m].p, s->inv_c2), P[m].p);
-        s->cnt[b]++;
-        s->und[b].partner = ENG_NONE;
-    }
-    eng_moments_add(s, nm, s->grp_ball, B, P);
-    for (size_t m = 0; m < nm; m++)
-        eng_predict(s, s->grp_ball[m], 0);
-    finish(s, nm, nc, k0, p0, RC_SIM_EV_MULTI, 1, J);
-    for (size_t q = 0; q < nps; q++)
-        pend_note(s, &ps[q]);
-    return 1;
-}
-
-/* Which collision a conflict at ball i's event with partner bp can undo: a tube
- * conflict's X (the prediction's) on the incoming side of exactly one ball's hyperplane
- * names that ball; an overlap the frame reported (no X) tries the ball with the later
- * kink, then the other. 1 done, 0 none applies, or the law's failure. */
-static int undo_conflict(rc_sim *s, int32_t i, int32_t bp, double T, int tube)
-{
-    if (tube) {
-        const double tx = s->cov[i].ev_tx;
-        const rc_vec3 dXi = s->cov[i].ev_dx;
-        const eng_ball *bi = &s->b[i], *bq = &s->b[bp];
-        const rc_vec3 sep = eng_image(s, rc_v3_sub(rc_v3_axpy(bq->x, tx - bq->t, bq->v),
-                                                   rc_v3_axpy(bi->x, tx - bi->t, bi->v)));
-        const int in_i = !future_side(s, i, tx, dXi),
-                  in_q = !future_side(s, bp, tx, rc_v3_sub(dXi, sep));
-        if (in_i == in_q) {
-            return 0;
-        }
-        return in_i ? rollback(s, i, bp, T, tx) : rollback(s, bp, i, T, tx);
-    }
-    const int later = s->cov[bp].t_k > s->cov[i].t_k;
-    const int32_t w0 = later ? bp : i, w1 = later ? i : bp;
-    const int st = rollback(s, w0, w1, T, INFINITY);
-    return st != 0 ? st : rollback(s, w1, w0, T, INFINITY);
-}
 
 /* Every REORDER_EVERY x N collisions and cell crossings the balls are renumbered in cell
  * order again: they diffuse away from the order set_balls gave them, and neighbours that
@@ -1306,19 +906,19 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
             eng_predict(s, i, 1);
         } else {
             s->since_reorder++;
-            pend_snap ps[2];
+            eng_pend_snap ps[2];
             const int np = !s->pend ? 0 : a->ev_partner >= 0 ? 2 : 1;
             if (np)
-                ps[0] = pend_take(s, i);
+                ps[0] = eng_pend_take(s, i);
             if (np == 2)
-                ps[1] = pend_take(s, a->ev_partner);
+                ps[1] = eng_pend_take(s, a->ev_partner);
             const uint64_t rb = s->bk.rollbacks;
             int st = collide(s, i, a->ev_partner, top_t);
             if (st != RC_OK)
                 return st;
             for (int j = 0; j < np && s->bk.rollbacks == rb; j++) /* (a rollback notes its
                                                                       own three) */
-                pend_note(s, &ps[j]);
+                eng_pend_note(s, &ps[j]);
         }
     }
     if (isfinite(t_end))

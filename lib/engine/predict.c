@@ -41,11 +41,8 @@ __attribute__((always_inline)) static inline double pair_time(const rc_sim *s,
 }
 
 /* per_ball frames: is the contact event X, found t after tref, on the future side of
- * both balls' last hyperplanes? y = X - (bi's centre at tref), dx = bk - bi at tref
- * (nearest image). With x_k the kink on a ball's stored line and v its velocity, X -
- * x_k = dX + v (t_X - t_k), dX = X - centre(t_X), so t_X - t_k >= kappa.(X - x_k) reads
- * (t_X - t_k)(1 - kappa.v) >= kappa.dX (1 - kappa.v > 0: |kappa| < 1/c). No kink yet:
- * t_k = -inf, always true. */
+ * both balls' last hyperplanes (eng_glue_side)? y = X - (bi's centre at tref), dx = bk -
+ * bi at tref (nearest image). */
 static int glue_valid(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
                       double tref, double t, rc_vec3 y)
 {
@@ -53,8 +50,7 @@ static int glue_valid(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, r
     const rc_vec3 dxi = rc_v3_axpy(y, -t, bi->v);
     const rc_vec3 dxk = rc_v3_sub(y, rc_v3_axpy(dx, t, bk->v));
     const eng_cov *ci = &s->cov[bi - s->b], *ck = &s->cov[bk - s->b];
-    return (tx - ci->t_k) * (1.0 - rc_v3_dot(ci->kappa, bi->v)) >= rc_v3_dot(ci->kappa, dxi) &&
-           (tx - ck->t_k) * (1.0 - rc_v3_dot(ck->kappa, bk->v)) >= rc_v3_dot(ck->kappa, dxk);
+    return eng_glue_side(ci, bi->v, tx, dxi) && eng_glue_side(ck, bk->v, tx, dxk);
 }
 
 /* per_ball frames: a ball whose kink lies ahead of now is stored at it, on its outgoing
@@ -92,13 +88,6 @@ static int frame_call(const rc_sim *cs, const eng_ball *bi, const eng_ball *bk, 
         out->x = rc_v3_add(out->x, dx);
     }
     return st;
-}
-
-/* X on the future side of one ball's last hyperplane (glue_valid for one ball; dxb = X -
- * its centre at tx on its stored line). */
-static inline int glue_side(const eng_cov *c, rc_vec3 v, double tx, rc_vec3 dxb)
-{
-    return (tx - c->t_k) * (1.0 - rc_v3_dot(c->kappa, v)) >= rc_v3_dot(c->kappa, dxb);
 }
 
 /* per_ball frames: the contact of bi and bk (separation dx at t1) when exactly one of
@@ -140,7 +129,7 @@ static int window_contact(const rc_sim *cs, const eng_ball *bi, const eng_ball *
     const rc_vec3 dxo = rc_v3_sub(rc_v3_axpy(out->x, -out->t, bi->v),
                                   wi ? rc_v3_axpy(dx, out->t, rc_v3_sub(bk->v, bi->v))
                                      : rc_v3(0.0, 0.0, 0.0));
-    *valid = piece != 0 && glue_side(co, bo->v, t, dxo);
+    *valid = piece != 0 && eng_glue_side(co, bo->v, t, dxo);
     return RC_OK;
 }
 

@@ -81,7 +81,7 @@ typedef struct eng_undo {
 /* per_ball frames: where a ball's kinks lie after the engine's time. The engine stores a
  * ball at its latest kink on its outgoing line, which may lie ahead of now; the table-time
  * picture at now (rc_sim_get_ball) needs the line the ball is still on. Written after each
- * event for its own balls (engine/core.c, pend_note), read only by the read-out
+ * event for its own balls (engine/pending.c, eng_pend_note), read only by the read-out
  * (engine/diag.c), so nothing here changes a run. depth 0: none (the ball's kinks were at
  * or before the event that made them). depth >= 1: the ball moves on the line with
  * momentum p and rest mass m until its kink at table time t, at centre x (in the wrap
@@ -103,6 +103,16 @@ typedef struct eng_pend {
     int32_t img[3];
     int32_t depth;
 } eng_pend;
+
+/* Is the event X (table time tx, offset dxb from the ball's centre then on its stored
+ * line, velocity v) on the future side of the hyperplane c that began its segment,
+ * t - t_k = kappa.(y - x_k)? With x_k on the stored line, X - x_k = dxb + v (tx - t_k), so
+ * the test reads (tx - t_k)(1 - kappa.v) >= kappa.dxb (1 - kappa.v > 0: |kappa| < 1/c).
+ * No kink yet: t_k = -inf, always true. */
+static inline int eng_glue_side(const eng_cov *c, rc_vec3 v, double tx, rc_vec3 dxb)
+{
+    return (tx - c->t_k) * (1.0 - rc_v3_dot(c->kappa, v)) >= rc_v3_dot(c->kappa, dxb);
+}
 
 /* The event queue (engine/queue.c): one entry per ball, popped in (time, ball) order.
  * (Functions shared between the engine files carry eng_: exported, not public.) */

@@ -394,7 +394,7 @@ static void audit(size_t n, double packing, double v_rms, double eps, long event
                 l.tube = g;
             } else if (H[i].l[H[i].n - 1].ts > now) {
                 /* a policy's or a group's kink at the event's time before a kink still
-                 * pending overtakes it (core.c glue_kink, at_event): the pending lines are
+                 * pending overtakes it (core.c glue_kink_at, at_event): the pending lines are
                  * gone, the new one starts now from the stored line's centre */
                 while (H[i].n > 1 && H[i].l[H[i].n - 1].ts > now)
                     H[i].n--;

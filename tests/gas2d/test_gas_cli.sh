@@ -96,7 +96,7 @@ grep -q '^relcol-gas: warning: frame table: its stationary state is not Jüttner
 
 # a dense 3-D covariant gas runs past t = 615.37, where an overlap-policy kink put at a
 # kink still pending left the pair's geometry as it was and the same contact came up at
-# one instant until the stall guard stopped the run (core.c glue_kink, at_event)
+# one instant until the stall guard stopped the run (core.c glue_kink_at, at_event)
 run '' --dim 3 --frame covariant --theta-start 0.75 --n 4000 --packing 0.2 \
     --boundary periodic --t-equil 50 --t-sample 600 --snapshots 20 --seed 7 --out "$T/gc3"
 [ "$st" -eq 0 ] && ok || bad "3-D covariant gas: exit $st: $(grep -v warning "$T/err")"

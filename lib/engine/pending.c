@@ -1,0 +1,79 @@
+/* engine/pending.c — per_ball frames: the read-out's record of the lines a ball is still
+ * on before kinks that lie after the engine's time (eng_pend, read by engine/diag.c); kept
+ * after each event and after an undo. Reads the engine, changes nothing a run reads. */
+#include <math.h>
+
+#include "resolve.h"
+
+eng_pend_snap eng_pend_take(const rc_sim *s, int32_t b)
+{
+    const eng_pend_snap p = {b, s->cnt[b], s->cov[b].t_k, {s->a[b].m, s->a[b].p}, s->clk[b].tau_last};
+    return p;
+}
+
+/* After an event: keep the record of the lines ball p.b is still on at now (eng_pend),
+ * from its state before the event. Only the event's own balls can get a kink after now
+ * (the single-contact path kinks on the hyperplane; a group's members and the overlap
+ * policy's kinks are at the event's time, or at a kink already ahead by the order rule,
+ * which moves no recorded kink). Reads the engine, changes nothing it reads. */
+void eng_pend_note(rc_sim *s, const eng_pend_snap *p)
+{
+    const int32_t b = p->b;
+    if (s->cnt[b] == p->cnt)
+        return; /* (no change: no kink) */
+    eng_pend *r = &s->pend[b];
+    const double te = s->cov[b].t_k, now = s->now;
+    if (r->depth == 2 && r->t <= now) {
+        /* the first recorded line has ended: the second is the one the ball is on, from
+         * that kink (its centre and proper time there) to t2 */
+        const double M2 = eng_mass_rel(r->m2, r->p2, s->inv_c2), h = r->t2 - r->t;
+        r->x = rc_v3_axpy(r->x, h, rc_v3_scale(1.0 / M2, r->p2));
+        r->tau_last = r->tau;
+        r->tau += h * (r->m2 / M2);
+        r->t = r->t2;
+        r->p = r->p2;
+        r->m = r->m2;
+        r->depth = 1;
+    }
+    if (!(te > now)) { /* on its outgoing line from now on */
+        r->depth = 0;
+        return;
+    }
+    if (!(p->t_k > now)) { /* it was on its stored line at now: that line, up to te */
+        const eng_ball *e = &s->b[b];
+        const double h = te - e->t;
+        r->depth = 1;
+        r->t = te;
+        r->x = h == 0.0 ? e->x : rc_v3_axpy(e->x, h, e->v);
+        r->p = p->in.p;
+        r->m = p->in.m;
+        r->tau = s->clk[b].tau;
+        if (h != 0.0)
+            r->tau += h * (s->a[b].m / eng_mass_rel(s->a[b].m, s->a[b].p, s->inv_c2));
+        r->tau_last = p->tau_last;
+        for (int d = 0; d < 3; d++)
+            r->img[d] = s->img ? s->img[3 * (size_t)b + (size_t)d] : 0;
+        return;
+    }
+    /* a kink was already ahead: the line from it to the new one is the stored line the
+     * event found, recorded if the record ends at that kink with one line (else the part
+     * from there on is not recorded, and the read-out says so) */
+    if (te > p->t_k && r->depth == 1 && r->t == p->t_k) {
+        r->depth = 2;
+        r->t2 = te;
+        r->p2 = p->in.p;
+        r->m2 = p->in.m;
+    }
+}
+
+/* A ball's read-out record when its kink at te is undone: the line that ended there is
+ * dropped (the one before it, if recorded, is the line it is on again); a record that
+ * does not end there is cleared (a kink still ahead then reads as not recorded). */
+void eng_pend_undo(eng_pend *r, double te)
+{
+    if (r->depth == 2 && r->t2 == te)
+        r->depth = 1;
+    else
+        r->depth = 0;
+}
+

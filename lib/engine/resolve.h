@@ -1,0 +1,98 @@
+/* engine/resolve.h — what resolving an event shares between engine/core.c (the single
+ * contact, groups, the books) and the per_ball frames' files: engine/undo.c (undoing a
+ * ball's last collision, papers/shape-change.md section 7) and engine/pending.c (the
+ * read-out's record of lines before kinks ahead). Not exported: eng_ prefix. */
+#ifndef RELCOL_ENGINE_RESOLVE_H
+#define RELCOL_ENGINE_RESOLVE_H
+
+#include "private.h"
+
+/* Move ball i's stored state to time T (position, proper time, clock). */
+static inline void eng_advance_ball(rc_sim *s, int32_t i, double T)
+{
+    eng_ball *b = &s->b[i];
+    const eng_aux *a = &s->a[i];
+    double h = T - b->t;
+    if (h == 0.0)
+        return;
+    b->x = rc_v3_axpy(b->x, h, b->v);
+    if (s->inv_c2 == 0.0)
+        s->clk[i].tau += h;
+    else
+        s->clk[i].tau += h * (a->m / eng_mass_rel(a->m, a->p, s->inv_c2));
+    b->t = T;
+}
+
+
+/* H's normal and the kink's time (glue_kink; the stored line is the incoming one) */
+static inline double eng_kink_time(const rc_sim *s, int32_t b, const rc_particle *in,
+                                   const rc_particle *out, double tx, rc_vec3 dx, rc_vec3 *kappa)
+{
+    const double ic2 = s->inv_c2;
+    /* kappa = (g0 v0 + g1 v1) / (c^2 (g0 + g1)), g v = p / m, g = M / m (as rc_glue_make) */
+    const double W0 = eng_mass_rel(in->m, in->p, ic2) / in->m + eng_mass_rel(out->m, out->p, ic2) / out->m;
+    const rc_vec3 Wv = rc_v3_add(rc_v3_scale(1.0 / in->m, in->p), rc_v3_scale(1.0 / out->m, out->p));
+    *kappa = rc_v3_scale(ic2 / W0, Wv);
+    return tx - rc_v3_dot(*kappa, dx) / (1.0 - rc_v3_dot(*kappa, s->b[b].v));
+}
+
+
+static inline void eng_kahan(double *sum, double *comp, double x)
+{
+    double y = x - *comp;
+    double t = *sum + y;
+    *comp = (t - *sum) - y;
+    *sum = t;
+}
+
+static inline double eng_kinetic(const rc_particle *b, double inv_c2)
+{
+    double M = eng_mass_rel(b->m, b->p, inv_c2);
+    return rc_v3_norm2(b->p) / (M + b->m);
+}
+
+
+/* engine/core.c */
+/* per_ball frames: ball b's velocity changes from `in` to `out` through the contact event
+ * (tx, dx = X - its centre then on its stored line): its kink, moved to and kept
+ * (at_event: a kink at the event's time through the centre, which overtakes a pending one) */
+void eng_glue_kink(rc_sim *s, int32_t b, const rc_particle *in, const rc_particle *out,
+                   double tx, rc_vec3 dx, int at_event);
+/* Group member index of ball k, adding it (advanced to T) if new; -1 on ENOMEM. */
+int eng_member_of(rc_sim *s, size_t *nm, int32_t k, double T);
+/* Contact a-b (member indices; b < 0 a wall code) with normal n from a to b. */
+int eng_add_contact(rc_sim *s, size_t *nc, int a, int b, rc_vec3 n);
+/* Restitution of contact c (TC model, jammed walls). */
+double eng_contact_eps(rc_sim *s, const rc_contact *c);
+/* The law's or the wall law's outcome of contact c among P[]. */
+int eng_resolve_contact(rc_sim *s, rc_particle *P, const rc_contact *c);
+/* Write back, account heat and wall impulse, predict (single: states and predictions
+ * done by the caller, the queue updated). */
+void eng_finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int kind, int single,
+                const double *J);
+/* The walls' shares of the momentum p0 - p1 taken in an event (contacts 0 .. nc). */
+void eng_account_walls(rc_sim *s, size_t nc, rc_vec3 p0, rc_vec3 p1, const double *J);
+
+/* engine/undo.c */
+void eng_write_undo(rc_sim *s, size_t nm, int32_t bp, int model, const rc_particle *P,
+                    const rc_vec3 *vold, const eng_clock *cat, const eng_cov *gat,
+                    const rc_glue *uat, const double *tx, const rc_vec3 *dX,
+                    const int *kinked, int tc);
+int eng_undoable(const rc_sim *s, int32_t w, int32_t k);
+int eng_rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx);
+int eng_undo_conflict(rc_sim *s, int32_t i, int32_t bp, double T, int tube);
+
+/* engine/pending.c */
+/* per_ball frames: what an event's ball was before it, for pend_note */
+typedef struct eng_pend_snap {
+    int32_t b;
+    uint32_t cnt;
+    double t_k;
+    rc_particle in;
+    double tau_last;
+} eng_pend_snap;
+eng_pend_snap eng_pend_take(const rc_sim *s, int32_t b);
+void eng_pend_note(rc_sim *s, const eng_pend_snap *p);
+void eng_pend_undo(eng_pend *r, double te);
+
+#endif
