@@ -70,7 +70,7 @@ static void glue_kink_at(rc_sim *s, int32_t b, const rc_particle *in, const rc_p
     cv->kappa = kappa;
 }
 
-void eng_glue_kink(rc_sim *s, int32_t b, const rc_particle *in, const rc_particle *out,
+static void glue_kink(rc_sim *s, int32_t b, const rc_particle *in, const rc_particle *out,
                    double tx, rc_vec3 dx, int at_event)
 {
     rc_vec3 kappa;
@@ -94,7 +94,7 @@ static int grow(void **p, size_t *cap, size_t need, size_t elem)
 }
 
 /* Group member index of ball k, adding it (advanced to T) if new; -1 on ENOMEM. */
-int eng_member_of(rc_sim *s, size_t *nm, int32_t k, double T)
+static int member_of(rc_sim *s, size_t *nm, int32_t k, double T)
 {
     for (size_t j = 0; j < *nm; j++)
         if (s->grp_ball[j] == k)
@@ -119,7 +119,7 @@ static int have_contact(const rc_sim *s, size_t nc, int a, int b)
     return 0;
 }
 
-int eng_add_contact(rc_sim *s, size_t *nc, int a, int b, rc_vec3 n)
+static int add_contact(rc_sim *s, size_t *nc, int a, int b, rc_vec3 n)
 {
     size_t cap = s->grp_con_cap;
     if (grow((void **)&s->grp_j, &cap, *nc + 1, sizeof *s->grp_j) != RC_OK ||
@@ -162,7 +162,7 @@ static int grow_group(rc_sim *s, size_t *nm, size_t *nc, double T)
                 continue;
             rc_vec3 n = rc_v3(0, 0, 0);
             rc_v3_set(&n, d, v > 0.0 ? 1.0 : -1.0);
-            if (eng_add_contact(s, nc, (int)mi, ENG_WALL(w), n) != RC_OK)
+            if (add_contact(s, nc, (int)mi, ENG_WALL(w), n) != RC_OK)
                 return RC_ENOMEM;
         }
         int c[3];
@@ -208,12 +208,12 @@ static int grow_group(rc_sim *s, size_t *nm, size_t *nc, double T)
                             if (!eng_narrow_conflict(s, bi, bk, dx, d2, &now, &n))
                                 continue;
                         }
-                        int mk = eng_member_of(s, nm, k, T);
+                        int mk = member_of(s, nm, k, T);
                         if (mk < 0)
                             return RC_ENOMEM;
                         if (have_contact(s, *nc, (int)mi, mk))
                             continue;
-                        if (eng_add_contact(s, nc, (int)mi, mk, n) != RC_OK)
+                        if (add_contact(s, nc, (int)mi, mk, n) != RC_OK)
                             return RC_ENOMEM;
                     }
                 }
@@ -260,12 +260,16 @@ static void count_overlaps(rc_sim *s, size_t from, size_t nc)
     }
 }
 
+static double contact_eps(rc_sim *s, const rc_contact *c);
+static void finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int kind, int single,
+                   const double *J);
+
 /* The one law-or-wall dispatch: contact c of the group among P[] with restitution c->eps,
  * by the run's law (ball-ball) or the wall law. RC_OK and RC_NO_COLLISION (not
  * approaching along n: the states are left as they were) are outcomes; any other code is
  * the law's failure, which ends the event loop with that status (rc_sim_advance) rather
  * than leaving a state the law did not stand behind. */
-int eng_resolve_contact(rc_sim *s, rc_particle *P, const rc_contact *c)
+static int resolve_contact(rc_sim *s, rc_particle *P, const rc_contact *c)
 {
     int st;
     if (c->b >= 0) {
@@ -306,9 +310,9 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T, const double *
     }
     rc_contact *c = &s->grp_con[0];
     const uint64_t tc_before = s->bk.events[RC_SIM_EV_TC];
-    c->eps = eng_contact_eps(s, c);
+    c->eps = contact_eps(s, c);
     rc_particle Q[2] = {P[0], nm > 1 ? P[1] : P[0]};
-    const int st = eng_resolve_contact(s, Q, c);
+    const int st = resolve_contact(s, Q, c);
     if (st != RC_OK) {
         s->bk.events[RC_SIM_EV_TC] = tc_before;
         return st;
@@ -399,7 +403,7 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T, const double *
                    s->bk.events[RC_SIM_EV_TC] != tc_before);
     for (size_t j = 0; j < nm; j++)
         P[j] = Q[j];
-    eng_finish(s, nm, 1, k0, p0, bp >= 0 ? RC_SIM_EV_BALL : RC_SIM_EV_WALL, 1, NULL);
+    finish(s, nm, 1, k0, p0, bp >= 0 ? RC_SIM_EV_BALL : RC_SIM_EV_WALL, 1, NULL);
     return 1;
 }
 
@@ -475,10 +479,10 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
             frame_normal = 1;
         }
     }
-    if (eng_member_of(s, &nm, i, T) < 0)
+    if (member_of(s, &nm, i, T) < 0)
         return RC_ENOMEM;
     if (bp >= 0) {
-        if (eng_member_of(s, &nm, bp, T) < 0)
+        if (member_of(s, &nm, bp, T) < 0)
             return RC_ENOMEM;
         rc_vec3 dx = eng_image(s, rc_v3_sub(s->b[bp].x, s->b[i].x));
         double len = rc_v3_norm(dx);
@@ -492,13 +496,13 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
             s->bk.overlaps++;
             s->bk.overlap_kind[0]++;
         }
-        if (eng_add_contact(s, &nc, 0, 1, n0) != RC_OK)
+        if (add_contact(s, &nc, 0, 1, n0) != RC_OK)
             return RC_ENOMEM;
     } else {
         int w = ENG_WALL_INDEX(bp), d = w / 2;
         n0 = rc_v3(0, 0, 0);
         rc_v3_set(&n0, d, (w & 1) ? 1.0 : -1.0);
-        if (eng_add_contact(s, &nc, 0, bp, n0) != RC_OK)
+        if (add_contact(s, &nc, 0, bp, n0) != RC_OK)
             return RC_ENOMEM;
         const uint64_t ov = s->bk.overlaps;
         count_overlaps(s, 0, 1); /* (before the collision changes the shape) */
@@ -534,12 +538,12 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
         p0 = rc_v3_add(p0, a->p);
     }
     for (size_t j = 0; j < nc; j++)
-        s->grp_con[j].eps = eng_contact_eps(s, &s->grp_con[j]);
+        s->grp_con[j].eps = contact_eps(s, &s->grp_con[j]);
     int kind;
     const double *J = NULL; /* the group solver's impulses, once it has solved */
     if (nc == 1) {
         const rc_contact *c = &s->grp_con[0];
-        const int st = eng_resolve_contact(s, P, c);
+        const int st = resolve_contact(s, P, c);
         if (st != RC_OK)
             return st;
         kind = c->b >= 0 ? RC_SIM_EV_BALL : RC_SIM_EV_WALL;
@@ -549,7 +553,7 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
          * previous ones left -- the outcome depends on that order (relcol/sim.h) */
         kind = RC_SIM_EV_MULTI;
         for (size_t j = 0; j < nc; j++) {
-            const int st = eng_resolve_contact(s, P, &s->grp_con[j]);
+            const int st = resolve_contact(s, P, &s->grp_con[j]);
             if (st != RC_OK)
                 return st;
         }
@@ -567,7 +571,7 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
                 P[j].m = s->a[s->grp_ball[j]].m;
                 P[j].p = s->a[s->grp_ball[j]].p;
             }
-            if ((st = eng_resolve_contact(s, P, &s->grp_con[0])) != RC_OK)
+            if ((st = resolve_contact(s, P, &s->grp_con[0])) != RC_OK)
                 return st;
             nm = bp >= 0 ? 2 : 1;
             nc = 1;
@@ -585,7 +589,7 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
         }
     }
     eng_moments_add(s, nm, s->grp_ball, NULL, P);
-    eng_finish(s, nm, nc, k0, p0, kind, 0, J);
+    finish(s, nm, nc, k0, p0, kind, 0, J);
     return RC_OK;
 }
 
@@ -606,7 +610,7 @@ static int wall_jammed(const rc_sim *s, const rc_contact *c)
  * the complementarity problem (the only outcome that does not push through the opposite
  * wall) -- a model choice: the motion along the axis stops, and its kinetic energy
  * becomes heat (rest mass at finite c), counted in rc_sim_diag.pinned. */
-double eng_contact_eps(rc_sim *s, const rc_contact *c)
+static double contact_eps(rc_sim *s, const rc_contact *c)
 {
     const eng_clock *aa = &s->clk[s->grp_ball[c->a]];
     int wall = c->b < 0;
@@ -634,7 +638,7 @@ double eng_contact_eps(rc_sim *s, const rc_contact *c)
  * chain of balls across the box) needs the solver's impulses J to share it: each wall
  * its own J n_d, and what the relativistic rest-mass step adds to the total shared
  * equally -- counted in wall_shared, since that split is a choice. */
-void eng_account_walls(rc_sim *s, size_t nc, rc_vec3 p0, rc_vec3 p1, const double *J)
+static void account_walls(rc_sim *s, size_t nc, rc_vec3 p0, rc_vec3 p1, const double *J)
 {
     unsigned sides[3] = {0, 0, 0};
     for (size_t j = 0; j < nc; j++)
@@ -664,7 +668,7 @@ void eng_account_walls(rc_sim *s, size_t nc, rc_vec3 p0, rc_vec3 p1, const doubl
     }
 }
 
-void eng_finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int kind, int single,
+static void finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int kind, int single,
                    const double *J)
 {
     const rc_particle *P = s->grp_part;
@@ -682,7 +686,7 @@ void eng_finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int kind
         if (!single && s->glue) { /* a group: every kink at the group's time (members are
                                      there), through the centre */
             const rc_particle in = {a->m, a->p};
-            eng_glue_kink(s, b, &in, &P[j], s->b[b].t, rc_v3(0, 0, 0), 1);
+            glue_kink(s, b, &in, &P[j], s->b[b].t, rc_v3(0, 0, 0), 1);
         }
         s->clk[b].tau_last = s->clk[b].tau;
         if (!single) {
@@ -696,7 +700,7 @@ void eng_finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int kind
     eng_kahan(&s->bk.wall[0], &s->bk.wall_c[0], p0.x - p1.x);
     eng_kahan(&s->bk.wall[1], &s->bk.wall_c[1], p0.y - p1.y);
     eng_kahan(&s->bk.wall[2], &s->bk.wall_c[2], p0.z - p1.z);
-    eng_account_walls(s, nc, p0, p1, J);
+    account_walls(s, nc, p0, p1, J);
     for (size_t j = 0; j < nm; j++) {
         if (single)
             eng_queue_update(&s->q, (uint32_t)s->grp_ball[j], key_of(&s->a[s->grp_ball[j]]));
@@ -924,4 +928,38 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
     if (isfinite(t_end))
         s->now = t_end;
     return RC_OK;
+}
+
+/* ---- for engine/undo.c (resolve.h): the same functions, kept static above so that the
+ * event loop's own calls stay direct and inlinable ------------------------------------ */
+
+void eng_glue_kink(rc_sim *s, int32_t b, const rc_particle *in, const rc_particle *out,
+                   double tx, rc_vec3 dx, int at_event)
+{
+    glue_kink(s, b, in, out, tx, dx, at_event);
+}
+
+int eng_member_of(rc_sim *s, size_t *nm, int32_t k, double T) { return member_of(s, nm, k, T); }
+
+int eng_add_contact(rc_sim *s, size_t *nc, int a, int b, rc_vec3 n)
+{
+    return add_contact(s, nc, a, b, n);
+}
+
+double eng_contact_eps(rc_sim *s, const rc_contact *c) { return contact_eps(s, c); }
+
+int eng_resolve_contact(rc_sim *s, rc_particle *P, const rc_contact *c)
+{
+    return resolve_contact(s, P, c);
+}
+
+void eng_finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int kind, int single,
+                const double *J)
+{
+    finish(s, nm, nc, k0, p0, kind, single, J);
+}
+
+void eng_account_walls(rc_sim *s, size_t nc, rc_vec3 p0, rc_vec3 p1, const double *J)
+{
+    account_walls(s, nc, p0, p1, J);
 }
