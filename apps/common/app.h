@@ -258,4 +258,15 @@ void app_progress_init(app_progress *p, const char *label, size_t total);
 void app_progress_update(app_progress *p, size_t done);
 void app_progress_done(app_progress *p);
 
+/* ---- how much of a run its rules decided ------------------------------------------ */
+
+/* The share of a run's collisions above which app_rules_warn speaks: issue 16's bound on
+ * the overlap policy (apps/common/rules.c says why). */
+#define APP_RULES_SHARE 1e-3
+/* Between diagnostics d0 (NULL: the start of the engine) and d: when the overlap policy's
+ * share of the collisions, or the order rule's kinks per collision (per_ball frames),
+ * exceeds APP_RULES_SHARE, one warning line "prog: warning: ..." on f naming both; 1 if
+ * it warned, else 0. */
+int app_rules_warn(FILE *f, const char *prog, const rc_sim_diag *d, const rc_sim_diag *d0);
+
 #endif

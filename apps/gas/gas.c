@@ -304,6 +304,8 @@ typedef struct samples {
     double gamma0;       /* the common starting gamma of the light species */
     double mass_drift, energy_drift;
     uint64_t events, overlaps;
+    rc_sim_diag end;     /* the diagnostics at the end (all of the run: app_rules_warn) */
+    int have_end;
     double box;          /* box edge */
     rc_vec3 boxv;        /* the box as the engine has it (2-D: z unused) */
     pb_acc pres;         /* pressure per block (apps/eos/pressure_blocks.h) */
@@ -462,6 +464,8 @@ static int run_sim(const options *o, samples *S, char *err)
     if (st == RC_OK && (st = rc_sim_diagnostics(s, &dg)) == RC_OK) {
         S->events = dg.collisions;
         S->overlaps = dg.overlaps;
+        S->end = dg;
+        S->have_end = 1;
         /* the energy at t = 0 is n m gamma0 exactly: compare with the end too */
         const double e_start = (double)n * S->gamma0;
         S->energy_drift = fmax(S->energy_drift, fabs(dg.mass_rel - e_start) / e_start);
@@ -976,6 +980,8 @@ int main(int argc, char **argv)
            o.dim == 1 ? "\n" : "");
     if (o.dim != 1)
         printf(", %llu overlaps (shape change)\n", (unsigned long long)S.overlaps);
+    if (o.dim != 1 && S.have_end)
+        app_rules_warn(stderr, prog, &S.end, NULL);
     if (o.dim == 1)
         printf("kT of the gas's energy (canonical, both species; the light mass's theta) = "
                "%.5f\n", S.theta_energy);

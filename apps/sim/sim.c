@@ -331,6 +331,11 @@ int main(int argc, char **argv)
     }
     if (!rc)
         printf("%s: t = %.9g, %s\n", prog, rc_sim_time(sim), o.line);
+    if (!rc && o.have_d0) {
+        rc_sim_diag d;
+        if (rc_sim_diagnostics(sim, &d) == RC_OK)
+            app_rules_warn(stderr, prog, &d, &o.d0);
+    }
     rc_sim_free(&sim);
     scn_free(&s);
     return rc ? rc : (interrupted ? 130 : 0);
