@@ -19,10 +19,11 @@
 #include "relcol/status.h"
 
 #define CK_MAGIC "relcolck"
-#define CK_VERSION 6u /* 2: the bookkeeping as one record (eng_books); 3: with pinned and the
+#define CK_VERSION 7u /* 2: the bookkeeping as one record (eng_books); 3: with pinned and the
                          transfer moments; 4: with the per_ball counters and hyperplanes;
                          5: with the per_ball undo records and rollbacks;
-                         6: with the per_ball lines before kinks ahead (eng_pend) */
+                         6: with the per_ball lines before kinks ahead (eng_pend);
+                         7: undo records of groups (members, kind, TC count) */
 #define CK_ORDER 0x01020304u
 
 typedef struct ck_header {
@@ -233,10 +234,26 @@ static int check_ball(const rc_sim *s, size_t k)
     if (s->und) {
         const eng_undo *u = &s->und[k];
         const int32_t q = u->partner;
-        if (!(q == ENG_NONE ||
+        if (!(q == ENG_NONE || q == ENG_ROOT ||
               (q >= 0 && (size_t)q < s->n && (uint32_t)q != s->id[k]) ||
               (q < 0 && ENG_WALL_INDEX(q) < 2 * dim && (s->walled >> ENG_WALL_INDEX(q) / 2 & 1u))))
             return RC_ECORRUPT;
+        /* its collision's members: balls of this engine, this one among them; a kind of
+         * event a collision is */
+        if (q != ENG_NONE) {
+            int self = 0;
+            if (!(u->nm >= 1 && u->nm <= ENG_UNDO_NMAX) ||
+                !(u->kind == RC_SIM_EV_BALL || u->kind == RC_SIM_EV_WALL ||
+                  u->kind == RC_SIM_EV_MULTI))
+                return RC_ECORRUPT;
+            for (uint32_t m = 0; m < u->nm; m++) {
+                if (!(u->mem[m] >= 0 && (size_t)u->mem[m] < s->n))
+                    return RC_ECORRUPT;
+                self |= (uint32_t)u->mem[m] == s->id[k];
+            }
+            if (!self)
+                return RC_ECORRUPT;
+        }
         if (q != ENG_NONE &&
             (!(u->in.m > 0.0) || !isfinite(u->in.m) || !rc_v3_isfinite(u->in.p) ||
              !rc_v3_isfinite(u->n) || !isfinite(u->dt) || !rc_v3_isfinite(u->dx) ||

@@ -61,11 +61,16 @@ typedef struct eng_cov {
 } eng_cov;
 _Static_assert(sizeof(eng_cov) == 64, "one cache line per record");
 
-/* per_ball frames: what undoing a ball's last collision needs, written when the collision
- * was a single contact of the model (papers/shape-change.md, section 7): a third ball
- * that meets the ball's incoming piece, before its kink along its tube, undoes it and the
- * contacts are solved together. Valid while neither ball has collided since (the
- * counters); the partner by its caller's index, which renumbering does not change. */
+/* per_ball frames: what undoing a ball's last collision needs (papers/shape-change.md,
+ * sections 7 and 8): a third ball that meets the ball's incoming piece, before its kink
+ * along its tube, undoes the collision -- a single contact of the model, or a group an
+ * earlier undo solved -- and the contacts are solved together. Every member of the
+ * collision holds a record; valid while no member has collided since (the counters). The
+ * collision's contacts form a tree over its members: each member but the first holds its
+ * contact with the member it joined (its parent), the first its contact with a wall if
+ * there is one. Balls by their caller's index, which renumbering does not change. */
+#define ENG_UNDO_NMAX 8 /* members of a collision that can be undone (bounds the work) */
+#define ENG_ROOT (INT32_MIN + 1) /* partner: the first member, without a wall contact */
 typedef struct eng_undo {
     rc_particle in;     /* the ball's state before */
     eng_cov cov;        /* its hyperplane before (and its scheduled event's X, unused) */
@@ -74,9 +79,13 @@ typedef struct eng_undo {
     rc_vec3 n;          /* the contact normal, from the ball to its partner */
     double dt;          /* the contact event X - the ball's kink E: time ... */
     rc_vec3 dx;         /* ... and position (E on both the incoming and the outgoing line) */
-    int32_t partner;    /* caller's index of the partner ball, ENG_WALL(w), or ENG_NONE */
-    uint32_t cnt, pcnt; /* the ball's and the partner's counters after the collision */
-    uint32_t tc;        /* the collision counted a TC contact (rc_sim_diag) */
+    int32_t partner;    /* its parent (caller's index), ENG_WALL(w), ENG_ROOT, or ENG_NONE:
+                           no record */
+    uint32_t nm;        /* the collision's members ... */
+    int32_t mem[ENG_UNDO_NMAX];  /* ... by caller's index, in the order its books took them */
+    uint32_t mcnt[ENG_UNDO_NMAX]; /* their counters after it */
+    uint32_t kind;      /* its event kind (RC_SIM_EV_BALL, _WALL or _MULTI) ... */
+    uint32_t ntc;       /* ... and the TC contacts it counted (rc_sim_diag) */
 } eng_undo;
 /* per_ball frames: where a ball's kinks lie after the engine's time. The engine stores a
  * ball at its latest kink on its outgoing line, which may lie ahead of now; the table-time

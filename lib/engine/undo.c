@@ -1,7 +1,9 @@
-/* engine/undo.c — per_ball frames: undoing a ball's last collision when a third ball
- * meets it before that kink along its tube, and solving the two contacts together
- * (papers/shape-change.md, section 7). The record is written by the single-contact path
- * (eng_write_undo), read here. */
+/* engine/undo.c — per_ball frames: undoing a ball's last collision when a third ball meets
+ * it before that kink along its tube, and solving the contacts together
+ * (papers/shape-change.md, sections 7 and 8). A collision that can be undone is a single
+ * contact of the model, or a group an earlier undo solved: undoing a group into a larger
+ * one is what lets a fourth ball meet a group of three inside a window. Records are
+ * written by the single-contact path (eng_write_undo) and by the groups made here. */
 #include <math.h>
 #include <string.h>
 
@@ -17,12 +19,15 @@ void eng_write_undo(rc_sim *s, size_t nm, int32_t bp, int model, const rc_partic
                     const int *kinked, int tc)
 {
     const rc_vec3 n0 = s->grp_con[0].n;
+    int ok = model;
+    for (size_t j = 0; j < nm; j++)
+        ok = ok && kinked[j];
     for (size_t j = 0; j < nm; j++) {
         const int32_t b = s->grp_ball[j];
         eng_undo *u = &s->und[b];
-        const int32_t o = nm > 1 ? s->grp_ball[1 - j] : ENG_NONE;
-        if (!model || !kinked[j] || (nm > 1 && !kinked[1 - j])) {
+        if (!ok) {
             u->partner = ENG_NONE;
+            u->nm = 0;
             continue;
         }
         const double te = s->cov[b].t_k; /* (its kink E: X - E, the same on both lines) */
@@ -33,174 +38,363 @@ void eng_write_undo(rc_sim *s, size_t nm, int32_t bp, int model, const rc_partic
         u->n = j == 0 ? n0 : rc_v3_scale(-1.0, n0);
         u->dt = tx[j] - te;
         u->dx = rc_v3_axpy(dX[j], tx[j] - te, vold[j]);
-        u->partner = nm > 1 ? (int32_t)s->id[o] : bp;
-        u->cnt = s->cnt[b];
-        u->pcnt = nm > 1 ? s->cnt[o] : 0;
-        u->tc = (uint32_t)(tc && j == 0) | (uint32_t)(j == 0) << 1;
+        u->partner = j == 0 ? (nm > 1 ? ENG_ROOT : bp) : (int32_t)s->id[s->grp_ball[0]];
+        u->nm = (uint32_t)nm;
+        for (size_t q = 0; q < nm; q++) {
+            u->mem[q] = (int32_t)s->id[s->grp_ball[q]];
+            u->mcnt[q] = s->cnt[s->grp_ball[q]];
+        }
+        u->kind = nm > 1 ? RC_SIM_EV_BALL : RC_SIM_EV_WALL;
+        u->ntc = tc ? 1u : 0u;
     }
 }
 
-/* Ball b back on its incoming line: stored at its kink E (where the collision's moments
- * were taken), with the momentum, hyperplane, glued tube and clock it had before. *xe:
- * E's position. */
-static void to_incoming(rc_sim *s, int32_t b, rc_vec3 *xe)
-{
-    const eng_undo *u = &s->und[b];
-    eng_advance_ball(s, b, s->cov[b].t_k);
-    *xe = s->b[b].x;
-    s->a[b].m = u->in.m;
-    s->a[b].p = u->in.p;
-    s->b[b].v = rc_v3_scale(1.0 / eng_mass_rel(u->in.m, u->in.p, s->inv_c2), u->in.p);
-    s->cov[b] = u->cov;
-    s->glu[b] = u->glu;
-    s->clk[b].tau_last = u->tau_last;
-}
-
-/* Can ball w's last collision be undone for a contact with ball k: a single contact of
- * the model, neither w nor its partner (not k) has collided since. */
-int eng_undoable(const rc_sim *s, int32_t w, int32_t k)
+/* The members of ball w's last collision (their slots in sl[], in its books' order) if it
+ * can be undone: it left a record and none of them has collided since; else 0. */
+static size_t undo_members(const rc_sim *s, int32_t w, int32_t *sl)
 {
     const eng_undo *u = &s->und[w];
-    if (u->partner == ENG_NONE || u->cnt != s->cnt[w])
+    if (u->partner == ENG_NONE || u->nm == 0 || u->nm > ENG_UNDO_NMAX)
         return 0;
-    if (u->partner < 0)
-        return 1;
-    const int32_t j = (int32_t)s->slot[u->partner];
-    return j != k && s->cnt[j] == u->pcnt && s->und[j].partner == (int32_t)s->id[w] &&
-           s->und[j].cnt == s->cnt[j];
+    for (size_t m = 0; m < u->nm; m++) {
+        const int32_t b = (int32_t)s->slot[u->mem[m]];
+        const eng_undo *v = &s->und[b];
+        /* (the same collision: member 0's counter after it names it) */
+        if (s->cnt[b] != u->mcnt[m] || v->partner == ENG_NONE || v->nm != u->nm ||
+            v->mem[0] != u->mem[0] || v->mcnt[0] != u->mcnt[0])
+            return 0;
+        sl[m] = b;
+    }
+    return u->nm;
 }
 
-/* Ball w met ball k before its last kink along its tube (a tube conflict at the
- * prediction's X, table time tx; an overlap the frame reported: tx = inf). If that kink
- * was a single contact of the model (with ball j or a wall) and neither w nor j has
- * collided since, the collision is undone (its books too) and w's two contacts -- the one
- * with j as it was, the one with k as the frame finds it from w's incoming line -- are
- * solved together by the group rule (the scenario's, relcol/sim.h), each ball's velocity
- * changed at its own kink: j's and k's through their contact's event, w's through the
- * later of its two (so that both lie on its incoming piece, whose state the impulses act
- * on). The group's members get no undo record (a choice: it bounds the work, and a
- * conflict with one of them goes to the overlap policy). 1 when done; 0 when it does not
- * apply (nothing changed); the law's failure (negative). */
-int eng_rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx)
+static int in_list(const int32_t *sl, size_t n, int32_t b)
 {
-    if (!eng_undoable(s, w, k))
-        return 0;
-    const eng_undo uw = s->und[w];
-    const int ball = uw.partner >= 0;
-    const int32_t j = ball ? (int32_t)s->slot[uw.partner] : ENG_NONE;
-    /* w on its incoming line (its records kept, to put back if there is no contact of the
-     * model); the frame is asked from a pair's light-crossing time before both the
-     * conflict's X and w's kink: from t0 = min(t_X, t_E) itself the pair's ZMF, whose
-     * simultaneity tilts by up to that much across the pair, often found the two already
-     * overlapping (papers/shape-change.md, section 7) */
-    const eng_ball sb = s->b[w];
-    const eng_aux sa = s->a[w];
-    const eng_clock sc = s->clk[w];
-    const eng_cov sg = s->cov[w];
-    const rc_glue su = s->glu[w];
-    const rc_particle out_w = {s->a[w].m, s->a[w].p};
-    rc_vec3 xe_w, xe_j = rc_v3(0, 0, 0);
-    const double te_w = s->cov[w].t_k;
-    to_incoming(s, w, &xe_w);
-    double t2;
-    rc_vec3 dX2, n2;
-    const double t0 = (tx < te_w ? tx : te_w) - (s->b[w].r + s->b[k].r) * s->inv_c;
-    if (eng_pair_contact(s, w, k, t0, &t2, &dX2, &n2) != RC_OK) {
-        s->b[w] = sb;
-        s->a[w] = sa;
-        s->clk[w] = sc;
-        s->cov[w] = sg;
-        s->glu[w] = su;
-        return 0;
+    for (size_t m = 0; m < n; m++)
+        if (sl[m] == b)
+            return 1;
+    return 0;
+}
+
+/* Can ball w's last collision be undone for a contact with ball k (not one of its
+ * members). */
+int eng_undoable(const rc_sim *s, int32_t w, int32_t k)
+{
+    int32_t sl[ENG_UNDO_NMAX];
+    const size_t n = undo_members(s, w, sl);
+    return n > 0 && !in_list(sl, n, k);
+}
+
+/* One collision being undone: its members, their states as they were (to put back if the
+ * frame finds no contact) and after it, and where each kinked. */
+typedef struct ugroup {
+    size_t nm;
+    int32_t sl[ENG_UNDO_NMAX];
+    eng_ball b[ENG_UNDO_NMAX];
+    eng_aux a[ENG_UNDO_NMAX];
+    eng_clock c[ENG_UNDO_NMAX];
+    eng_cov g[ENG_UNDO_NMAX];
+    rc_glue u[ENG_UNDO_NMAX];
+    rc_particle out[ENG_UNDO_NMAX];
+    rc_vec3 xe[ENG_UNDO_NMAX]; /* its kink E's position ... */
+    double te[ENG_UNDO_NMAX];  /* ... and time */
+} ugroup;
+
+/* Every member back on its incoming line: stored at its kink E (where the collision's
+ * moments were taken), with the momentum, hyperplane, glued tube and clock it had
+ * before. */
+static void lift(rc_sim *s, ugroup *G)
+{
+    for (size_t m = 0; m < G->nm; m++) {
+        const int32_t b = G->sl[m];
+        const eng_undo *u = &s->und[b];
+        G->b[m] = s->b[b];
+        G->a[m] = s->a[b];
+        G->c[m] = s->clk[b];
+        G->g[m] = s->cov[b];
+        G->u[m] = s->glu[b];
+        G->out[m] = (rc_particle){s->a[b].m, s->a[b].p};
+        G->te[m] = s->cov[b].t_k;
+        eng_advance_ball(s, b, G->te[m]);
+        G->xe[m] = s->b[b].x;
+        s->a[b].m = u->in.m;
+        s->a[b].p = u->in.p;
+        s->b[b].v = rc_v3_scale(1.0 / eng_mass_rel(u->in.m, u->in.p, s->inv_c2), u->in.p);
+        s->cov[b] = u->cov;
+        s->glu[b] = u->glu;
+        s->clk[b].tau_last = u->tau_last;
     }
-    s->bk.rollbacks++;
-    /* the collision's books, taken back: its moments at the kinks it was taken at, in its
-     * members' order; heat and momentum with the same operations, negated */
-    rc_particle in[2] = {uw.in, uw.in}, out[2] = {out_w, out_w};
-    double te_j = 0.0;
-    int32_t mem[2] = {w, j};
-    size_t n0 = 1;
-    if (ball) {
-        out[1] = (rc_particle){s->a[j].m, s->a[j].p};
-        in[1] = s->und[j].in;
-        te_j = s->cov[j].t_k;
-        to_incoming(s, j, &xe_j);
-        n0 = 2;
-        if (!(uw.tc & 2u)) { /* (j was the event's first ball) */
-            mem[0] = j;
-            mem[1] = w;
-            const rc_particle ti = in[0], to = out[0];
-            in[0] = in[1];
-            out[0] = out[1];
-            in[1] = ti;
-            out[1] = to;
-        }
+}
+
+static void put_back(rc_sim *s, const ugroup *G)
+{
+    for (size_t m = 0; m < G->nm; m++) {
+        const int32_t b = G->sl[m];
+        s->b[b] = G->b[m];
+        s->a[b] = G->a[m];
+        s->clk[b] = G->c[m];
+        s->cov[b] = G->g[m];
+        s->glu[b] = G->u[m];
     }
-    eng_moments_add(s, n0, mem, out, in);
+}
+
+/* The collision's books, taken back: its moments at the kinks it was taken at, in its
+ * members' order; heat and momentum with the same operations, negated; its counts. (The
+ * members are at their kinks, lift.) The per-wall share is the caller's (it needs the
+ * group's contact list). */
+static void unbook(rc_sim *s, const ugroup *G)
+{
+    rc_particle in[ENG_UNDO_NMAX];
+    for (size_t m = 0; m < G->nm; m++)
+        in[m] = s->und[G->sl[m]].in;
+    eng_moments_add(s, G->nm, G->sl, G->out, in);
     double k0 = 0.0, k1 = 0.0;
     rc_vec3 p0 = rc_v3(0, 0, 0), p1 = rc_v3(0, 0, 0);
-    for (size_t m = 0; m < n0; m++) {
+    for (size_t m = 0; m < G->nm; m++) {
         k0 += eng_kinetic(&in[m], s->inv_c2);
         p0 = rc_v3_add(p0, in[m].p);
-        k1 += eng_kinetic(&out[m], s->inv_c2);
-        p1 = rc_v3_add(p1, out[m].p);
+        k1 += eng_kinetic(&G->out[m], s->inv_c2);
+        p1 = rc_v3_add(p1, G->out[m].p);
     }
     eng_kahan(&s->bk.heat, &s->bk.heat_c, -(k0 - k1));
     eng_kahan(&s->bk.wall[0], &s->bk.wall_c[0], -(p0.x - p1.x));
     eng_kahan(&s->bk.wall[1], &s->bk.wall_c[1], -(p0.y - p1.y));
     eng_kahan(&s->bk.wall[2], &s->bk.wall_c[2], -(p0.z - p1.z));
-    size_t nm = 0, nc = 0;
-    if (eng_member_of(s, &nm, w, T) < 0)
-        return RC_ENOMEM;
-    if (!ball) {
-        if (eng_add_contact(s, &nc, 0, uw.partner, uw.n) != RC_OK)
-            return RC_ENOMEM;
-        eng_account_walls(s, 1, p1, p0, NULL); /* (taken: p1 - p0, the original's negated) */
-        nc = 0;
+    const eng_undo *u = &s->und[G->sl[0]];
+    size_t walls = 0;
+    for (size_t m = 0; m < G->nm; m++) {
+        const int32_t q = s->und[G->sl[m]].partner;
+        walls += q < 0 && q != ENG_ROOT && q != ENG_NONE;
     }
-    /* the read-out's records of w and j (eng_pend) back to before the undone kinks, then
-     * noted for the group's kinks like any event's balls */
-    eng_pend_snap ps[3];
+    s->bk.events[u->kind]--;
+    s->bk.collisions -= G->nm - 1 + walls;
+    s->bk.events[RC_SIM_EV_TC] -= u->ntc;
+}
+
+/* The records of a group made here, when its contacts form a tree over its members (each
+ * ball contact joining a member to the rest, at most one wall contact, at the first
+ * member then) and every member kinked cleanly; otherwise every record is cleared. B: the
+ * states before, xk[m]: member m's kink E's position (te its time: cov t_k), gat, uat,
+ * tau0: its hyperplane, tube and TC memory before, ntc: the TC contacts counted. */
+static void write_group(rc_sim *s, size_t nm, size_t nc, const rc_particle *B,
+                        const eng_cov *gat, const rc_glue *uat, const double *tau0,
+                        const int *kinked, uint32_t ntc)
+{
+    int ok = nm <= ENG_UNDO_NMAX;
+    size_t walls = 0, root = 0;
+    for (size_t c = 0; c < nc && ok; c++)
+        if (s->grp_con[c].b < 0) {
+            walls++;
+            root = (size_t)s->grp_con[c].a;
+        }
+    ok = ok && walls <= 1 && nc - walls == nm - 1;
+    for (size_t m = 0; m < nm && ok; m++)
+        ok = kinked[m];
+    /* each member's parent, from the root outwards; a member no contact reaches: no tree */
+    int32_t parent[ENG_UNDO_NMAX];
+    size_t pc[ENG_UNDO_NMAX], order[ENG_UNDO_NMAX], head = 0, tail = 0;
+    if (ok) {
+        for (size_t m = 0; m < nm; m++)
+            parent[m] = -1;
+        parent[root] = (int32_t)root;
+        order[tail++] = root;
+        while (head < tail) {
+            const int a = (int)order[head++];
+            for (size_t c = 0; c < nc; c++) {
+                const rc_contact *ct = &s->grp_con[c];
+                if (ct->b < 0 || (ct->a != a && ct->b != a))
+                    continue;
+                const int o = ct->a == a ? ct->b : ct->a;
+                if (parent[o] < 0) {
+                    parent[o] = a;
+                    pc[o] = c;
+                    order[tail++] = (size_t)o;
+                }
+            }
+        }
+        ok = tail == nm;
+    }
+    for (size_t m = 0; m < nm; m++) {
+        const int32_t b = s->grp_ball[m];
+        eng_undo *u = &s->und[b];
+        if (!ok) {
+            u->partner = ENG_NONE;
+            u->nm = 0;
+            continue;
+        }
+        u->in = B[m];
+        u->cov = gat[m];
+        u->glu = uat[m];
+        u->tau_last = tau0[m];
+        const rc_contact *ct = NULL;
+        if (m != root) {
+            ct = &s->grp_con[pc[m]];
+            u->partner = (int32_t)s->id[s->grp_ball[parent[m]]];
+        } else {
+            u->partner = ENG_ROOT;
+            for (size_t c = 0; c < nc; c++)
+                if (s->grp_con[c].b < 0) {
+                    ct = &s->grp_con[c];
+                    u->partner = ct->b;
+                }
+        }
+        if (ct) {
+            /* (the normal from this member to its parent or wall) */
+            u->n = ct->a == (int)m ? ct->n : rc_v3_scale(-1.0, ct->n);
+            u->dt = ct->t - s->cov[b].t_k;
+            u->dx = eng_image(s, rc_v3_sub(ct->x, s->b[b].x));
+        } else {
+            u->n = rc_v3(0, 0, 0);
+            u->dt = 0.0;
+            u->dx = rc_v3(0, 0, 0);
+        }
+        u->nm = (uint32_t)nm;
+        for (size_t q = 0; q < nm; q++) {
+            u->mem[q] = (int32_t)s->id[s->grp_ball[q]];
+            u->mcnt[q] = s->cnt[s->grp_ball[q]];
+        }
+        u->kind = RC_SIM_EV_MULTI;
+        u->ntc = ntc;
+    }
+}
+
+/* Ball w met ball k before its last kink along its tube (a tube conflict at the
+ * prediction's X, table time tx; an overlap the frame reported: tx = inf). If w's last
+ * collision can be undone (eng_undoable) -- and with both, k's too -- it is undone (its
+ * books too) and the contacts of the undone collisions, as they were, and w's with k, as
+ * the frame finds it from the incoming lines, are solved together by the group rule (the
+ * scenario's, relcol/sim.h), each ball's velocity changed at its own kink: through its
+ * contact's event, or the latest of its contacts' events along its worldline (so that
+ * all lie on its incoming piece, whose state the impulses act on). The group's members
+ * get records of their own when its contacts form a tree, so a later conflict can undo
+ * it into a larger group, up to ENG_UNDO_NMAX members (a choice: it bounds the work; a
+ * conflict beyond goes to the overlap policy). 1 when done; 0 when it does not apply
+ * (nothing changed); the law's failure (negative). */
+static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int both)
+{
+    ugroup G[2];
+    size_t ng = 1;
+    if (!(G[0].nm = undo_members(s, w, G[0].sl)) || in_list(G[0].sl, G[0].nm, k))
+        return 0;
+    if (both) {
+        if (!(G[1].nm = undo_members(s, k, G[1].sl)) || in_list(G[1].sl, G[1].nm, w))
+            return 0;
+        ng = 2;
+    }
+    if (G[0].nm + (both ? G[1].nm : 1) > ENG_UNDO_NMAX)
+        return 0;
+    double te_w = s->cov[w].t_k, t_first = tx < te_w ? tx : te_w;
+    if (both && s->cov[k].t_k < t_first)
+        t_first = s->cov[k].t_k;
+    for (size_t g = 0; g < ng; g++)
+        lift(s, &G[g]);
+    /* the frame is asked from a pair's light-crossing time before the conflict's X and the
+     * undone kinks: from t_first itself the pair's ZMF, whose simultaneity tilts by up to
+     * that much across the pair, often found the two already overlapping
+     * (papers/shape-change.md, section 7) */
+    double t2;
+    rc_vec3 dX2, n2;
+    const double t0 = t_first - (s->b[w].r + s->b[k].r) * s->inv_c;
+    if (eng_pair_contact(s, w, k, t0, &t2, &dX2, &n2) != RC_OK) {
+        for (size_t g = ng; g-- > 0;)
+            put_back(s, &G[g]);
+        return 0;
+    }
+    s->bk.rollbacks++;
+    /* the contacts of the undone collisions (member slot, partner slot or wall, normal,
+     * event), read from their records before these are cleared */
+    typedef struct { int32_t a, b; rc_vec3 n; double t; rc_vec3 x; } ucon;
+    ucon con[2 * ENG_UNDO_NMAX];
+    size_t ncon = 0;
+    int32_t wall_root = -1, wall_code = 0;
+    rc_vec3 wall_n = rc_v3(0, 0, 0);
+    for (size_t g = 0; g < ng; g++) {
+        for (size_t m = 0; m < G[g].nm; m++) {
+            const eng_undo *u = &s->und[G[g].sl[m]];
+            if (u->partner == ENG_ROOT)
+                continue;
+            con[ncon] = (ucon){G[g].sl[m], u->partner >= 0 ? (int32_t)s->slot[u->partner] : u->partner,
+                               u->n, G[g].te[m] + u->dt, rc_v3_add(G[g].xe[m], u->dx)};
+            if (u->partner < 0) {
+                wall_root = G[g].sl[m];
+                wall_code = u->partner;
+                wall_n = u->n;
+            }
+            ncon++;
+        }
+        unbook(s, &G[g]);
+    }
+    /* the read-out's records of the undone members (eng_pend) back to before the undone
+     * kinks, then noted for the group's kinks like any event's balls */
+    eng_pend_snap ps[ENG_UNDO_NMAX + 1];
     size_t nps = 0;
     if (s->pend) {
-        eng_pend_undo(&s->pend[w], te_w);
-        ps[nps++] = eng_pend_take(s, w);
-        if (ball) {
-            eng_pend_undo(&s->pend[j], te_j);
-            ps[nps++] = eng_pend_take(s, j);
-        }
-        ps[nps++] = eng_pend_take(s, k);
+        for (size_t g = 0; g < ng; g++)
+            for (size_t m = 0; m < G[g].nm; m++) {
+                eng_pend_undo(&s->pend[G[g].sl[m]], G[g].te[m]);
+                ps[nps++] = eng_pend_take(s, G[g].sl[m]);
+            }
+        if (!both)
+            ps[nps++] = eng_pend_take(s, k);
     }
-    s->bk.events[ball ? RC_SIM_EV_BALL : RC_SIM_EV_WALL]--;
-    s->bk.collisions--;
-    s->bk.events[RC_SIM_EV_TC] -= (uw.tc | (ball ? s->und[j].tc : 0u)) & 1u; /* (the first
-                                                                      ball's record has it) */
-    s->und[w].partner = ENG_NONE;
-    if (ball)
-        s->und[j].partner = ENG_NONE;
-    /* the group: w, j, k at T (w and j on their incoming lines) */
-    const int mj = ball ? eng_member_of(s, &nm, j, T) : 0, mk = eng_member_of(s, &nm, k, T);
-    if (mj < 0 || mk < 0)
+    for (size_t g = 0; g < ng; g++)
+        for (size_t m = 0; m < G[g].nm; m++) {
+            s->und[G[g].sl[m]].partner = ENG_NONE;
+            s->und[G[g].sl[m]].nm = 0;
+        }
+    /* the group at T (the undone members on their incoming lines) */
+    size_t nm = 0, nc = 0;
+    for (size_t g = 0; g < ng; g++)
+        for (size_t m = 0; m < G[g].nm; m++)
+            if (eng_member_of(s, &nm, G[g].sl[m], T) < 0)
+                return RC_ENOMEM;
+    if (!both && eng_member_of(s, &nm, k, T) < 0)
         return RC_ENOMEM;
-    const double tw[2] = {te_w + uw.dt, t2};
-    const rc_vec3 xw[2] = {rc_v3_add(xe_w, uw.dx), rc_v3_add(rc_v3_axpy(xe_w, t2 - te_w, s->b[w].v), dX2)};
-    if (eng_add_contact(s, &nc, 0, ball ? mj : uw.partner, uw.n) != RC_OK ||
-        eng_add_contact(s, &nc, 0, mk, n2) != RC_OK)
+    if (wall_root >= 0) { /* (the wall's share taken back: p1 - p0, the original's negated) */
+        const ugroup *Gw = in_list(G[0].sl, G[0].nm, wall_root) ? &G[0] : &G[1];
+        const int32_t *sl = Gw->sl;
+        rc_vec3 p0 = rc_v3(0, 0, 0), p1 = rc_v3(0, 0, 0);
+        for (size_t m = 0; m < Gw->nm; m++) {
+            p0 = rc_v3_add(p0, s->und[sl[m]].in.p);
+            p1 = rc_v3_add(p1, Gw->out[m].p);
+        }
+        const int mw = eng_member_of(s, &nm, wall_root, T);
+        if (mw < 0 || eng_add_contact(s, &nc, mw, wall_code, wall_n) != RC_OK)
+            return RC_ENOMEM;
+        eng_account_walls(s, 1, p1, p0, NULL);
+        nc = 0;
+    }
+    /* the contacts: the undone ones, then w's with k (events in the first ball's
+     * coordinates) */
+    const int mw = eng_member_of(s, &nm, w, T), mk = eng_member_of(s, &nm, k, T);
+    if (mw < 0 || mk < 0)
         return RC_ENOMEM;
-    for (size_t c = 0; c < 2; c++) { /* the events, in w's coordinates */
-        s->grp_con[c].t = tw[c];
-        s->grp_con[c].x = xw[c];
+    for (size_t c = 0; c < ncon; c++) {
+        const int a = eng_member_of(s, &nm, con[c].a, T);
+        const int b = con[c].b >= 0 ? eng_member_of(s, &nm, con[c].b, T) : con[c].b;
+        if (a < 0 || (con[c].b >= 0 && b < 0) || eng_add_contact(s, &nc, a, b, con[c].n) != RC_OK)
+            return RC_ENOMEM;
+        s->grp_con[nc - 1].t = con[c].t;
+        s->grp_con[nc - 1].x = con[c].x;
+    }
+    {
+        const eng_ball *bw = &s->b[w];
+        if (eng_add_contact(s, &nc, mw, mk, n2) != RC_OK)
+            return RC_ENOMEM;
+        s->grp_con[nc - 1].t = t2;
+        s->grp_con[nc - 1].x = rc_v3_add(rc_v3_axpy(bw->x, t2 - bw->t, bw->v), dX2);
     }
     rc_particle *P = s->grp_part;
-    rc_particle B[3];
-    k0 = 0.0;
-    p0 = rc_v3(0, 0, 0);
+    rc_particle B[2 * ENG_UNDO_NMAX];
+    double k0 = 0.0;
+    rc_vec3 p0 = rc_v3(0, 0, 0);
     for (size_t m = 0; m < nm; m++) {
         P[m] = (rc_particle){s->a[s->grp_ball[m]].m, s->a[s->grp_ball[m]].p};
         B[m] = P[m];
         k0 += eng_kinetic(&P[m], s->inv_c2);
         p0 = rc_v3_add(p0, P[m].p);
     }
+    const uint64_t tc_before = s->bk.events[RC_SIM_EV_TC];
     for (size_t c = 0; c < nc; c++)
         s->grp_con[c].eps = eng_contact_eps(s, &s->grp_con[c]);
     const double *J = NULL;
@@ -209,35 +403,57 @@ int eng_rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx)
     if (st == RC_OK) {
         J = s->grp_j;
     } else {
-        /* no group solver, or none found: the two contacts one after the other, in the
-         * order of their events' table times (a choice; counted) */
+        /* no group solver, or none found: the contacts one after the other, in the order
+         * of their events' table times (a choice; counted) */
         if (s->def.law->group)
             s->bk.group_fallbacks++;
         else
             s->bk.group_sequential++;
         for (size_t m = 0; m < nm; m++)
             P[m] = B[m];
-        const size_t first = tw[1] < tw[0];
-        if ((st = eng_resolve_contact(s, P, &s->grp_con[first])) != RC_OK ||
-            (st = eng_resolve_contact(s, P, &s->grp_con[1 - first])) != RC_OK)
-            return st;
+        size_t ord[2 * ENG_UNDO_NMAX + 1];
+        for (size_t c = 0; c < nc; c++) {
+            size_t q = c;
+            for (; q > 0 && s->grp_con[ord[q - 1]].t > s->grp_con[c].t; q--)
+                ord[q] = ord[q - 1];
+            ord[q] = c;
+        }
+        for (size_t c = 0; c < nc; c++)
+            if ((st = eng_resolve_contact(s, P, &s->grp_con[ord[c]])) != RC_OK)
+                return st;
     }
-    /* each member's kink through its contact's event (w: the later of its two) */
+    /* each member's kink through its contact's event, or the latest along its worldline
+     * of its contacts' events */
+    eng_cov gat[2 * ENG_UNDO_NMAX];
+    rc_glue uat[2 * ENG_UNDO_NMAX];
+    double tau0[2 * ENG_UNDO_NMAX];
+    int kinked[2 * ENG_UNDO_NMAX];
     for (size_t m = 0; m < nm; m++) {
         const int32_t b = s->grp_ball[m];
+        gat[m] = s->cov[b];
+        uat[m] = s->glu[b];
+        tau0[m] = s->clk[b].tau_last;
+        kinked[m] = 0;
         if (P[m].m == B[m].m && memcmp(&P[m].p, &B[m].p, sizeof P[m].p) == 0)
             continue;
-        size_t c = m == (size_t)mk ? 1 : 0;
         const eng_ball *bb = &s->b[b];
-        rc_vec3 d[2];
-        for (size_t q = 0; q < 2; q++)
-            d[q] = eng_image(s, rc_v3_sub(xw[q], rc_v3_axpy(bb->x, tw[q] - bb->t, bb->v)));
-        if (b == w) {
-            rc_vec3 kap;
-            c = eng_kink_time(s, b, &B[m], &P[m], tw[1], d[1], &kap) >
-                eng_kink_time(s, b, &B[m], &P[m], tw[0], d[0], &kap);
+        double best = -INFINITY, tb = 0.0;
+        rc_vec3 db = rc_v3(0, 0, 0), kap;
+        for (size_t c = 0; c < nc; c++) {
+            const rc_contact *ct = &s->grp_con[c];
+            if (ct->a != (int)m && ct->b != (int)m)
+                continue;
+            const rc_vec3 d = eng_image(s, rc_v3_sub(ct->x, rc_v3_axpy(bb->x, ct->t - bb->t, bb->v)));
+            const double te = eng_kink_time(s, b, &B[m], &P[m], ct->t, d, &kap);
+            if (te > best) {
+                best = te;
+                tb = ct->t;
+                db = d;
+            }
         }
-        eng_glue_kink(s, b, &B[m], &P[m], tw[c], d[c], 0);
+        const uint64_t oc = s->bk.order_conflicts;
+        eng_glue_kink(s, b, &B[m], &P[m], tb, db, 0);
+        kinked[m] = s->bk.order_conflicts == oc && s->glu[b].r > 0.0;
     }
     for (size_t m = 0; m < nm; m++) {
         const int32_t b = s->grp_ball[m];
@@ -245,9 +461,10 @@ int eng_rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx)
         s->a[b].p = P[m].p;
         s->b[b].v = rc_v3_scale(1.0 / eng_mass_rel(P[m].m, P[m].p, s->inv_c2), P[m].p);
         s->cnt[b]++;
-        s->und[b].partner = ENG_NONE;
     }
     eng_moments_add(s, nm, s->grp_ball, B, P);
+    write_group(s, nm, nc, B, gat, uat, tau0, kinked,
+                (uint32_t)(s->bk.events[RC_SIM_EV_TC] - tc_before));
     for (size_t m = 0; m < nm; m++)
         eng_predict(s, s->grp_ball[m], 0);
     eng_finish(s, nm, nc, k0, p0, RC_SIM_EV_MULTI, 1, J);
@@ -256,12 +473,20 @@ int eng_rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx)
     return 1;
 }
 
-/* Which collision a conflict at ball i's event with partner bp can undo: a tube
- * conflict's X (the prediction's) on the incoming side of exactly one ball's hyperplane
- * names that ball; an overlap the frame reported (no X) tries the ball with the later
- * kink, then the other. 1 done, 0 none applies, or the law's failure. */
+int eng_rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx)
+{
+    return rollback(s, w, k, T, tx, 0);
+}
+
+/* Which collisions a conflict at ball i's event with partner bp can undo: a tube
+ * conflict's X (the prediction's) on the incoming side of one ball's hyperplane names
+ * that ball's last collision, then both balls' if the frame finds no contact from that
+ * ball's incoming line alone; on the incoming side of both, both. An overlap the frame
+ * reported (no X) tries the ball with the later kink, then the other, then both. 1 done,
+ * 0 none applies, or the law's failure. */
 int eng_undo_conflict(rc_sim *s, int32_t i, int32_t bp, double T, int tube)
 {
+    int st;
     if (tube) {
         const double tx = s->cov[i].ev_tx;
         const rc_vec3 dXi = s->cov[i].ev_dx;
@@ -270,13 +495,19 @@ int eng_undo_conflict(rc_sim *s, int32_t i, int32_t bp, double T, int tube)
                                                    rc_v3_axpy(bi->x, tx - bi->t, bi->v)));
         const int in_i = !eng_glue_side(&s->cov[i], s->b[i].v, tx, dXi),
                   in_q = !eng_glue_side(&s->cov[bp], s->b[bp].v, tx, rc_v3_sub(dXi, sep));
-        if (in_i == in_q) {
+        if (!in_i && !in_q)
             return 0;
-        }
-        return in_i ? eng_rollback(s, i, bp, T, tx) : eng_rollback(s, bp, i, T, tx);
+        if (in_i && in_q)
+            return rollback(s, i, bp, T, tx, 1);
+        const int32_t w = in_i ? i : bp, k = in_i ? bp : i;
+        st = rollback(s, w, k, T, tx, 0);
+        return st != 0 ? st : rollback(s, w, k, T, tx, 1);
     }
     const int later = s->cov[bp].t_k > s->cov[i].t_k;
     const int32_t w0 = later ? bp : i, w1 = later ? i : bp;
-    const int st = eng_rollback(s, w0, w1, T, INFINITY);
-    return st != 0 ? st : eng_rollback(s, w1, w0, T, INFINITY);
+    if ((st = rollback(s, w0, w1, T, INFINITY, 0)) != 0)
+        return st;
+    if ((st = rollback(s, w1, w0, T, INFINITY, 0)) != 0)
+        return st;
+    return rollback(s, w0, w1, T, INFINITY, 1);
 }

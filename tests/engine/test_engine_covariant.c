@@ -69,6 +69,13 @@ static void conserve(int dim, int periodic, double eps, double v, double packing
      * (heat, wall impulse and momentum taken back: a missing step would leave one
      * collision's heat twice, ~1e-3 of the energy) */
     ENSURE_MSG(d1.rollbacks > 0, "%dD per %d eps %g: no rollback", dim, periodic, eps);
+    /* and groups solved by an undo were undone into larger ones (papers/shape-change.md,
+     * section 8): a group of three or more contacts. None forms otherwise in these gases
+     * (simultaneous at one table time; 2 at most in all eight before groups could be
+     * undone), so it tells that the records of groups are written, kept and used, and
+     * the sums above hold through them */
+    ENSURE_MSG(d1.max_group >= 3, "%dD per %d eps %g: largest group %llu", dim, periodic, eps,
+               (unsigned long long)d1.max_group);
     if (!periodic)
         ENSURE(d1.events[RC_SIM_EV_WALL] > 0);
     free(m0);
