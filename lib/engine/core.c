@@ -830,9 +830,10 @@ __attribute__((always_inline)) static inline void glue_prefetch(const rc_sim *s,
 {
     const char *g = (const char *)&s->glu[b];
     __builtin_prefetch(&s->cov[b]);
+    /* (five lines: the array is line-aligned, so a record starts at most 56 bytes into
+     * its first line) */
     for (size_t o = 0; o < sizeof(rc_glue); o += 64)
         __builtin_prefetch(g + o);
-    __builtin_prefetch(g + sizeof(rc_glue) - 1); /* (a record may straddle one more line) */
     __builtin_prefetch(&s->und[b].partner);
     __builtin_prefetch(&s->pend[b].depth);
 }
