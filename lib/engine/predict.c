@@ -505,6 +505,11 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
             s->cand[nc].k = kk;
             nc++;
             __builtin_prefetch(&s->a[kk]); /* (the frame will want its momentum and mass) */
+            if (s->glue) { /* (and glue_valid its hyperplane, window_contact its window) */
+                __builtin_prefetch(&s->cov[kk]);
+                __builtin_prefetch(&s->glu[kk].r);
+                __builtin_prefetch(&s->glu[kk].t_last);
+            }
         }
     }
     for (size_t a = 1; a < nc; a++) { /* insertion sort by (t, k): lists are short */

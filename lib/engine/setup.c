@@ -403,14 +403,20 @@ int eng_alloc_state(rc_sim *s, size_t n, double rmax)
         goto fail;
     }
     if (s->narrow && s->def.frame->per_ball) {
-        /* no kink yet: every contact is on the future side of a ball's (absent) plane */
+        /* no kink yet: every contact is on the future side of a ball's (absent) plane.
+         * (The tubes, undo and read-out records as the engine's other per-ball arrays:
+         * aligned, and on huge pages when large -- a collision touches two balls' records
+         * anywhere in them.) */
         if (!(s->cov = eng_alloc(n * sizeof *s->cov)) ||
-            !(s->glu = calloc(n ? n : 1, sizeof *s->glu)) ||
-            !(s->und = calloc(n ? n : 1, sizeof *s->und)) ||
-            !(s->pend = calloc(n ? n : 1, sizeof *s->pend))) {
+            !(s->glu = eng_alloc(n * sizeof *s->glu)) ||
+            !(s->und = eng_alloc(n * sizeof *s->und)) ||
+            !(s->pend = eng_alloc(n * sizeof *s->pend))) {
             st = RC_ENOMEM;
             goto fail;
         }
+        memset(s->glu, 0, n * sizeof *s->glu);
+        memset(s->und, 0, n * sizeof *s->und);
+        memset(s->pend, 0, n * sizeof *s->pend);
         for (size_t k = 0; k < n; k++) {
             s->cov[k] = (eng_cov){-INFINITY, {0.0, 0.0, 0.0}, 0.0, {0.0, 0.0, 0.0}};
             s->und[k].partner = ENG_NONE; /* (nothing to undo) */
