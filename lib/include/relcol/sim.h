@@ -370,8 +370,9 @@ int rc_sim_get_ball(const rc_sim *s, size_t i, rc_sim_ball *out);
  * such a collision is not processed yet at the engine's time, so rc_sim_get_ball still
  * gives that ball's incoming line there: it is the table-time picture of the collisions
  * decided so far, and the slice at a time t is complete only for collisions whose contact
- * events lie before t (papers/shape-change.md, section 6). This read-out applies every
- * change at its contact event instead, for both balls alike. */
+ * events lie before t (papers/shape-change.md, section 6; the complete slice, read later:
+ * rc_sim_slice_request below). This read-out applies every change at its contact event
+ * instead, for both balls alike. */
 int rc_sim_get_ball_latest(const rc_sim *s, size_t i, rc_sim_ball *out);
 /* per_ball frames (covariant): ball i's glued world tube through its latest kink
  * (relcol/toi.h: rc_glue; its section at a time t is the incoming cylinder's part not yet
