@@ -25,6 +25,7 @@ struct eng_slice {
                       once the engine's next event lies after ts */
     int read;      /* read final at least once */
     uint64_t late; /* changes after that */
+    double reach;  /* the latest change: now - ts */
     slice_ball *e; /* per caller's index */
 };
 
@@ -68,6 +69,13 @@ static void wrap_all(const rc_sim *s, rc_sim_ball *o)
         rc_v3_set(&o->x, d, x);
         o->image[d] = im;
     }
+}
+
+/* A change to slice sl at the engine's time: counted late if it was read. */
+static void changed(const rc_sim *s, struct eng_slice *sl)
+{
+    sl->late += (uint64_t)sl->read;
+    sl->reach = fmax(sl->reach, s->now - sl->ts);
 }
 
 /* Ball k's stored line at the slice's time (truth: the lines before kinks ahead where its
@@ -146,7 +154,8 @@ int rc_sim_slice_request(rc_sim *s, double ts, uint32_t *id)
             return RC_ENOMEM;
         }
     }
-    struct eng_slice sl = {ts, 0.0, s->slc_next_id, 0, 0, 0, malloc(s->n * sizeof(slice_ball))};
+    struct eng_slice sl = {ts, 0.0, s->slc_next_id, 0, 0, 0, -INFINITY,
+                           malloc(s->n * sizeof(slice_ball))};
     if (!sl.e)
         return RC_ENOMEM;
     for (size_t k = 0; k < s->n; k++)
@@ -189,6 +198,7 @@ int rc_sim_slice_ready(const rc_sim *s, uint32_t id, rc_sim_slice_info *info)
         info->t_final = t_final;
         info->final = fin;
         info->late = sl->late;
+        info->reach = sl->reach;
     }
     return fin;
 }
@@ -267,7 +277,7 @@ void eng_slice_undo(rc_sim *s, int32_t k)
     for (size_t q = 0; q < s->slc_n; q++) {
         struct eng_slice *sl = &s->slc[q];
         if (te <= sl->ts) {
-            sl->late += sl->read;
+            changed(s, sl);
             take(s, sl, k, 0);
         }
     }
@@ -295,7 +305,7 @@ void eng_slice_flush(rc_sim *s)
             const slice_ball *e = &sl->e[i];
             if (e->tk == tk && e->b.m == a->m && memcmp(&e->b.p, &a->p, sizeof a->p) == 0)
                 continue;
-            sl->late += sl->read;
+            changed(s, sl);
             take(s, sl, k, 0);
         }
     }

@@ -348,12 +348,13 @@ class Sim:
 
     def slice_ready(self, sid):
         """A dict: final (bool), ts, t_final (the engine time from which it is final, as
-        now bounded), late (changes after it was first read: relcol/sim.h)."""
+        now bounded), late (changes after it was first read: relcol/sim.h), reach (the
+        largest engine time minus ts at which the slice changed, -inf: none)."""
         info = ffi.new("rc_sim_slice_info *")
         rc = lib.rc_sim_slice_ready(self._sim, int(sid), info)
         check(rc, "slice %d" % sid)
         return {"final": rc == 1, "ts": info.ts, "t_final": info.t_final,
-                "late": int(info.late)}
+                "late": int(info.late), "reach": info.reach}
 
     def slice_state(self, sid, release=False):
         """Slice sid's balls as a dict like state() (t: the slice's time), once final

@@ -309,7 +309,7 @@ typedef struct audit_out {
      * final and again three delays later, proper times compared, wrong ones, late changes,
      * slices the engine refused (three kinks ahead of ts) */
     long slice_reads, slice_tau, slice_bad, slice_late, slice_refused, slices_done;
-    double slice_err;
+    double slice_err, slice_use; /* slice_use: the largest reach / W (rc_sim_slice_info) */
     long undone; /* kinks the engine undid (their lines dropped from the history) */
     double read_err;
     double worst, worst_fault, span;
@@ -537,6 +537,7 @@ static void audit(size_t n, double packing, double v_rms, double eps, long event
             } else if (now >= inf.t_final + 3.0 * (inf.t_final - inf.ts)) {
                 check_slice(s, H, n, sid[q], sts[q], now, res);
                 res->slice_late += (long)inf.late;
+                res->slice_use = fmax(res->slice_use, inf.reach / (inf.t_final - inf.ts));
                 res->slices_done++;
                 ENSURE(rc_sim_slice_release(s, sid[q]) == RC_OK);
                 sid[q] = sid[nsl - 1];
@@ -663,10 +664,12 @@ static void run(size_t n, double packing, double v_rms, double eps, long events,
            r.reads_two_ahead, r.read_err, r.read_bad);
     printf("    delayed slices: %ld read final and %ld three delays later (%ld refused), %ld "
            "ball-states and %ld proper times against the rebuilt worldlines, worst %.2g, %ld "
-           "wrong, %ld changed after read\n", r.slices_done, r.slices_done, r.slice_refused,
-           r.slice_reads, r.slice_tau, r.slice_err, r.slice_bad, r.slice_late);
+           "wrong, %ld changed after read; the latest change came %.2f W after ts\n", r.slices_done,
+           r.slices_done, r.slice_refused, r.slice_reads, r.slice_tau, r.slice_err, r.slice_bad,
+           r.slice_late, r.slice_use);
     ENSURE(r.read_bad == 0 && r.reads_ahead > 0);
     ENSURE(r.slice_bad == 0 && r.slice_late == 0 && r.slices_done > 20 && r.slice_tau > 0);
+    ENSURE(r.slice_use > 0.0 && r.slice_use < 1.0); /* (changes were followed, within W) */
     /* (a slice per event at most, fewer where the lag W grows with the fastest ball: the
      * audit must still have looked at most of the run, some 1400-2600 slices of 3000) */
     ENSURE(r.events == events && r.slices > events / 3);

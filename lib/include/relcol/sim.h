@@ -431,6 +431,9 @@ typedef struct rc_sim_slice_info {
      * pair, which is not bounded): the values read then were not the final ones. The
      * engine keeps the slice up to date while it is held, so a read after it is. */
     uint64_t late;
+    /* the largest engine time minus ts at which an event changed the slice (-inf: none
+     * since it was asked for): how much of W the run has used */
+    double reach;
 } rc_sim_slice_info;
 
 /* Ask for the slice at table time ts >= the engine's time; *id names it. RC_EINVAL for
