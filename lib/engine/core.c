@@ -922,7 +922,7 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
                 ps[1] = eng_pend_take(s, a->ev_partner);
             const uint64_t rb = s->bk.rollbacks;
             int st = collide(s, i, a->ev_partner, top_t);
-            if (s->slc_nd)
+            if (s->slc_nd) /* (delayed slices follow the event's kinks: engine/slice.c) */
                 eng_slice_flush(s);
             if (st != RC_OK)
                 return st;
