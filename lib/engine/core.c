@@ -68,6 +68,8 @@ static void glue_kink_at(rc_sim *s, int32_t b, const rc_particle *in, const rc_p
     eng_advance_ball(s, b, te);
     cv->t_k = te;
     cv->kappa = kappa;
+    if (s->slc_n) /* (a delayed slice at or after te follows the ball after the event) */
+        eng_slice_mark(s, b);
 }
 
 static void glue_kink(rc_sim *s, int32_t b, const rc_particle *in, const rc_particle *out,
@@ -874,6 +876,8 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
         double top_t;
         uint32_t top_ball;
         eng_queue_top(&s->q, &top_t, &top_ball);
+        if (top_t > s->slc_due) /* (other frames: delayed slices the engine now passes) */
+            eng_slice_take(s, top_t);
         /* nothing will ever happen again (every ball at rest or alone): done */
         if (!(top_t <= t_end) || top_t == INFINITY)
             break;
@@ -940,6 +944,8 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
                 ps[1] = eng_pend_take(s, a->ev_partner);
             const uint64_t rb = s->bk.rollbacks;
             int st = collide(s, i, a->ev_partner, top_t);
+            if (s->slc_nd) /* (delayed slices follow the event's kinks: engine/slice.c) */
+                eng_slice_flush(s);
             if (st != RC_OK)
                 return st;
             for (int j = 0; j < np && s->bk.rollbacks == rb; j++) /* (a rollback notes its

@@ -341,6 +341,21 @@ struct rc_sim {
     eng_undo *und;
     /* per_ball frames only (else NULL): per ball, the lines before its kinks ahead of now */
     eng_pend *pend;
+    /* delayed table-time slices asked for (engine/slice.c; none: slc_n = 0, and no hook
+     * does more than test slc_n) */
+    struct eng_slice *slc;
+    size_t slc_n, slc_cap;
+    uint32_t slc_next_id;
+    /* per_ball frames: caller's indices of the balls whose lines changed in the event
+     * being resolved (slc_mark[i] != 0: listed), brought up to date after it */
+    uint32_t *slc_dirty;
+    unsigned char *slc_mark;
+    size_t slc_nd;
+    /* other frames: the least table time of a slice not yet taken (INFINITY: none) */
+    double slc_due;
+    /* per_ball frames: the largest Lorentz factor of any segment since the oldest slice
+     * was asked for (the reach of later events: slice.c) */
+    double slc_gmax;
     /* per_ball frames: scratch of the prediction -- the contact event of the pair last
      * put to the frame (pair_time_dx) and of the best event so far (scan_block_narrow),
      * as eng_cov.ev_tx / ev_dx */
@@ -391,6 +406,25 @@ int eng_alloc_state(rc_sim *s, size_t n, double rmax);
 int eng_ball_now(const rc_sim *s, size_t i, rc_sim_ball *o, int truth);
 /* Release the balls' state (the engine then holds none). */
 void eng_release_state(rc_sim *s);
+
+/* Ball i (storage slot) at table time t >= its stored time's last event (engine/diag.c),
+ * as eng_ball_now at the engine's time: the kink-ahead test and the lines before kinks
+ * ahead (truth) are taken at t. eng_ball_now is eng_ball_at at s->now. */
+int eng_ball_at(const rc_sim *s, size_t i, double t, rc_sim_ball *o, int truth);
+
+/* engine/slice.c: the delayed slices' hooks, called only where s->slc_n != 0. A kink was
+ * put on ball k (storage slot) in the event being resolved (its line is read after it). */
+void eng_slice_mark(rc_sim *s, int32_t k);
+/* Ball k's last kink, at its stored time, was undone: it is on its incoming line again. */
+void eng_slice_undo(rc_sim *s, int32_t k);
+/* After an event: the slices of the balls marked brought up to date. */
+void eng_slice_flush(rc_sim *s);
+/* Other frames: the engine's next event comes at t_next > slc_due: take the slices due. */
+void eng_slice_take(rc_sim *s, double t_next);
+/* Forget every slice (new balls, a new c, a checkpoint read, the engine freed). */
+void eng_slice_clear(rc_sim *s);
+/* Bytes the slices held take. */
+size_t eng_slice_bytes(const rc_sim *s);
 
 /* Velocity p / M and inverse Lorentz factor of a state. */
 static inline double eng_mass_rel(double m, rc_vec3 p, double inv_c2)

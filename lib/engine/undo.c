@@ -54,6 +54,8 @@ static void to_incoming(rc_sim *s, int32_t b, rc_vec3 *xe)
     s->cov[b] = u->cov;
     s->glu[b] = u->glu;
     s->clk[b].tau_last = u->tau_last;
+    if (s->slc_n) /* (a delayed slice at or after the undone kink: the incoming line) */
+        eng_slice_undo(s, b);
 }
 
 /* Can ball w's last collision be undone for a contact with ball k: a single contact of
@@ -111,6 +113,8 @@ int eng_rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx)
         s->clk[w] = sc;
         s->cov[w] = sg;
         s->glu[w] = su;
+        if (s->slc_nd) /* (slices to_incoming moved: back on w's line before it kinks again) */
+            eng_slice_flush(s);
         return 0;
     }
     s->bk.rollbacks++;
