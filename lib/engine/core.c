@@ -372,12 +372,9 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T, const double *
     for (size_t j = 0; j < nm && !conflict; j++) {
         int32_t b = s->grp_ball[j];
         int32_t partner = nm > 1 ? s->grp_ball[1 - j] : bp;
-        if (s->narrow) {
-            const eng_check chk = {P[j], vold[j], partner, s->glue ? &bat[j] : NULL};
-            conflict = eng_predict_checked_narrow(s, b, &chk);
-        } else {
-            conflict = eng_predict_checked(s, b, vold[j], partner, T);
-        }
+        const eng_check chk = {P[j], vold[j], partner, s->glue ? &bat[j] : NULL};
+        conflict = s->narrow ? eng_predict_checked_narrow(s, b, &chk)
+                             : eng_predict_checked(s, b, &chk, T);
     }
     if (conflict) {
         for (size_t j = 0; j < nm; j++) {

@@ -342,11 +342,10 @@ static void wall_event(const rc_sim *s, int32_t i, unsigned dims, double *best, 
 /* The neighbour scans and the cell crossing run in the engine's lanes (engine/lanes.h:
  * AVX-512, AVX2 or plain C by s->simd, the same bits every way). */
 static inline int test_list(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *best,
-                            int32_t *bp, const rc_vec3 *vold, int32_t partner, double T,
-                            int latest, int per)
+                            int32_t *bp, const eng_check *chk, double T, int latest,
+                            int per)
 {
-    return eng_lanes_of(s->simd)->test_list(s, i, nb, m, best, bp, vold, partner, T, latest,
-                                            per);
+    return eng_lanes_of(s->simd)->test_list(s, i, nb, m, best, bp, chk, T, latest, per);
 }
 
 static inline void sphere_lanes(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double best,
@@ -603,7 +602,7 @@ static int scan_block(const rc_sim *s, int32_t i, const int c[3], const int lo[3
     int32_t nb[NB_CAP];
     while (!w.done) {
         const size_t m = walk_gather(&w, nb);
-        test_list(s, i, nb, m, best, bp, NULL, ENG_NONE, 0.0, 0, w.image);
+        test_list(s, i, nb, m, best, bp, NULL, 0.0, 0, w.image);
     }
     return 0;
 }
@@ -732,12 +731,15 @@ int eng_predict_checked_narrow(rc_sim *s, int32_t i, const eng_check *chk)
 }
 
 /* Full prediction for member i of a tentatively resolved single contact (i is at time T,
- * vold its velocity before): while scanning, look with the old velocities for any other
- * contact simultaneous with the resolved one (gap <= sim_tol, approaching) -- the same
- * test as grow_group, at no extra distance computation. Returns 1 on such a contact (the
- * caller then undoes and resolves the whole group), else stores the event and returns 0. */
-int eng_predict_checked(rc_sim *s, int32_t i, rc_vec3 vold, int32_t partner, double T)
+ * chk->old its state before, chk->vold its velocity): while scanning, look with the old
+ * state for any other contact simultaneous with the resolved one (gap <= sim_tol,
+ * approaching) -- the same test as grow_group, at no extra distance computation. Returns
+ * 1 on such a contact (the caller then undoes and resolves the whole group), else stores
+ * the event and returns 0. */
+int eng_predict_checked(rc_sim *s, int32_t i, const eng_check *chk, double T)
 {
+    const rc_vec3 vold = chk->vold;
+    const int32_t partner = chk->partner;
     const double stol = s->def.sim_tol;
     const eng_ball *bi = &s->b[i];
     /* sim_tol = 0: no grouping asked for, no check */
@@ -766,7 +768,7 @@ int eng_predict_checked(rc_sim *s, int32_t i, rc_vec3 vold, int32_t partner, dou
     int32_t nb[NB_CAP];
     while (!w.done) {
         const size_t m = walk_gather(&w, nb);
-        if (test_list(s, i, nb, m, &best, &bp, check ? &vold : NULL, partner, T, 1, w.image))
+        if (test_list(s, i, nb, m, &best, &bp, check ? chk : NULL, T, 1, w.image))
             return 1;
     }
     store_event(s, i, best, bp, rc_v3(0, 0, 0), NULL);

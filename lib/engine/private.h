@@ -500,7 +500,7 @@ typedef struct eng_check {
 /* Prediction for ball i just resolved at T (uncontracted frames / contracted ones), that
  * also looks for another contact simultaneous with the resolved one: 1 on one (nothing
  * stored), else the events are stored (the queue is not updated) and 0. */
-int eng_predict_checked(rc_sim *s, int32_t i, rc_vec3 vold, int32_t partner, double T);
+int eng_predict_checked(rc_sim *s, int32_t i, const eng_check *chk, double T);
 int eng_predict_checked_narrow(rc_sim *s, int32_t i, const eng_check *chk);
 /* Ball i crosses into its next cell (events updated, queue too). */
 void eng_cross(rc_sim *s, int32_t i);
