@@ -5,6 +5,7 @@
 #ifndef RELCOL_ENGINE_RESOLVE_H
 #define RELCOL_ENGINE_RESOLVE_H
 
+#include "../glue_kv.h"
 #include "private.h"
 
 /* Move ball i's stored state to time T (position, proper time, clock). */
@@ -30,10 +31,14 @@ static inline double eng_kink_time(const rc_sim *s, int32_t b, const rc_particle
 {
     const double ic2 = s->inv_c2;
     /* kappa = (g0 v0 + g1 v1) / (c^2 (g0 + g1)), g v = p / m, g = M / m (as rc_glue_make) */
-    const double W0 = eng_mass_rel(in->m, in->p, ic2) / in->m + eng_mass_rel(out->m, out->p, ic2) / out->m;
+    const double M0 = eng_mass_rel(in->m, in->p, ic2), M1 = eng_mass_rel(out->m, out->p, ic2);
+    const double W0 = M0 / in->m + M1 / out->m;
     const rc_vec3 Wv = rc_v3_add(rc_v3_scale(1.0 / in->m, in->p), rc_v3_scale(1.0 / out->m, out->p));
     *kappa = rc_v3_scale(ic2 / W0, Wv);
-    return tx - rc_v3_dot(*kappa, dx) / (1.0 - rc_v3_dot(*kappa, s->b[b].v));
+    /* (1 - kappa.v_in without the cancellation of a ball fast before and after) */
+    const double omkv = rc_glue_one_minus_kv(ic2, in, M0, out, M1, W0,
+                                             rc_v3_dot(*kappa, s->b[b].v));
+    return tx - rc_v3_dot(*kappa, dx) / omkv;
 }
 
 
