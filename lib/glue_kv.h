@@ -16,6 +16,7 @@
 #include <math.h>
 
 #include "relcol/kinematics.h"
+#include "relcol/toi.h"
 #include "pair_axis.h"
 
 /* Below this kappa.v_in the plain form loses at most ten bits (a relative error ~1e-13)
@@ -32,6 +33,19 @@ static inline double rc_glue_one_minus_kv(double k, const rc_particle *in, doubl
         return 1.0 - kv;
     const double d01 = rc_pair_dot(in->m, in->p, M0, out->m, out->p, M1, k, sqrt(k));
     return (in->m + d01 / out->m) / (M0 * W0);
+}
+
+/* 1 - kappa.v_out for a tube's H from its table-frame shapes (g = 1/gamma, g2, beta =
+ * v/c: relcol/toi.h), the ball's velocity after the kink: with x = out above,
+ *   1 - kappa.v1 = (gamma0 (1 - beta0.beta1) + 1/gamma1) / (gamma0 + gamma1),
+ *   1 - beta0.beta1 = (|beta0 - beta1|^2 + 1/gamma0^2 + 1/gamma1^2) / 2,
+ * positive terms again. beta0 - beta1 is rounded to ~2^-53 in each component, which moves
+ * |beta0 - beta1|^2 by no more than a rounding of the momenta would. */
+static inline double rc_glue_omkv_out(const rc_toi_shape *in, const rc_toi_shape *out)
+{
+    const double G0 = 1.0 / in->g, G1 = 1.0 / out->g;
+    const double d2 = rc_v3_norm2(rc_v3_sub(in->beta, out->beta));
+    return (G0 * 0.5 * (d2 + in->g2 + out->g2) + out->g) / (G0 + G1);
 }
 
 #endif
