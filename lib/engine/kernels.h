@@ -17,6 +17,36 @@
 
 /* ---- the sphere contact test ---------------------------------------------------------- */
 
+/* The touching lanes `cand` of a chunk (the centres closer than the radius sum) in which
+ * ball i and the lane's ball both move near c: their approach verdict from the momenta
+ * (engine/approach.h) where the plain one, dx.(vk - vi) on the stored velocities, has lost
+ * its sign to their rounding (it would miss the collision of a touching pair, or resolve
+ * a parting one). One scalar function for every back end, called per lane, so the same
+ * verdicts in each. Returns the chunk's hit bits with those lanes' replaced where the pair
+ * is of approach.h's fast kind. dx, dy, dz: the lanes' separations. */
+__attribute__((noinline)) static unsigned touching_fast(const rc_sim *s, const eng_ball *bi,
+                                                        const double *const k[ENG_W],
+                                                        const double *dx, const double *dy,
+                                                        const double *dz, unsigned hit,
+                                                        unsigned cand)
+{
+    const eng_aux *ai = &s->a[bi - s->b];
+    const rc_particle pi = {ai->m, ai->p};
+    for (int l = 0; l < ENG_W; l++) {
+        if (!(cand >> l & 1u))
+            continue;
+        const eng_ball *bk = (const eng_ball *)(const void *)k[l];
+        const eng_aux *ak = &s->a[bk - s->b];
+        const rc_particle pk = {ak->m, ak->p};
+        const int v = eng_approach_fast(s->inv_c2, &pi, bi->v, &pk, bk->v,
+                                        rc_v3(dx[l], dy[l], dz[l]), bi->r + bk->r,
+                                        s->def.approach_tol, NULL);
+        if (v >= 0)
+            hit = (hit & ~(1u << l)) | (unsigned)v << l;
+    }
+    return hit;
+}
+
 /* Lane l: the contact time of the bounding spheres of bi and k[l] (the balls' records as
  * doubles: x, v, t, r), absolute and >= now, into out[l] -- INFINITY on a miss or when it
  * cannot beat `best`; bit l of *nears: the centres within lim = (r_i + r_k)(1 + stol) at
@@ -30,7 +60,8 @@
  * clock is the later one (a ball that has just collided, at the engine's time), so only
  * that branch is computed. three == 0 (2-D, every z component 0): the z terms add +0 and
  * are left out (the sums are the same bits unless one is -0, which no comparison below
- * can tell from +0). */
+ * can tell from +0). A touching pair of two balls near c has its approach decided from the
+ * momenta (touching_fast), only looked at when ball i moves above 0.89 c. */
 ENG_INLINE unsigned pair_lanes(const rc_sim *s, const eng_ball *bi,
                                const double *const k[ENG_W], double best, double stol,
                                double out[ENG_W], unsigned *nears, const int three,
@@ -87,7 +118,22 @@ ENG_INLINE unsigned pair_lanes(const rc_sim *s, const eng_ball *bi,
     const eng_wm slow = eng_gt(eng_mul(b, b), eng_mul(eng_mul(tol, tol), dv2));
     const eng_wd bound = eng_mul(eng_mul(eng_set1(-2.0), b), eng_sub(eng_set1(best), tref));
     const eng_wm flying = eng_and(eng_gt(disc, zero), eng_lt(dd, bound));
-    const eng_wm hit = eng_and(eng_lt(b, zero), eng_select_m(touching, slow, flying));
+    eng_wm hit = eng_and(eng_lt(b, zero), eng_select_m(touching, slow, flying));
+    /* (0.8 c^2: approach.h's first test of a Lorentz factor above 3) */
+    if (__builtin_expect(rc_v3_norm2(bi->v) * s->inv_c2 > 0.8, 0)) {
+        eng_wd vk2 = eng_add(eng_mul(vkx, vkx), eng_mul(vky, vky));
+        if (three)
+            vk2 = eng_add(vk2, eng_mul(vkz, vkz));
+        const unsigned cand = eng_bits(eng_and(
+            touching, eng_gt(eng_mul(vk2, eng_set1(s->inv_c2)), eng_set1(0.8))));
+        if (cand) {
+            double ax[ENG_W], ay[ENG_W], az[ENG_W];
+            eng_store(ax, dx);
+            eng_store(ay, dy);
+            eng_store(az, three ? dz : zero);
+            hit = eng_mask_bits(touching_fast(s, bi, k, ax, ay, az, eng_bits(hit), cand));
+        }
+    }
     *nears = eng_bits(eng_le(d2, eng_mul(lim, lim)));
     if (!eng_bits(hit)) { /* (most chunks) */
         eng_store(out, inf);

@@ -187,7 +187,35 @@ static int predict_conflict(rc_sim_simd simd, double c, const rc_particle *P, co
     return v;
 }
 
-static void test_predict_checked(void)
+/* The engine's first event, run to 1e-9 after the start: 1 if it was a collision (a
+ * touching pair is predicted at once by the lanes' sphere test, pair_lanes in
+ * lib/engine/kernels.h, when it approaches; the law then resolves it). */
+static int first_collision(rc_sim_simd simd, double c, const rc_particle *P, const double *rad,
+                           rc_vec3 x0, rc_vec3 x1)
+{
+    rc_sim_def d = rc_sim_def_default();
+    d.dim = 3;
+    d.box = rc_v3(8, 8, 8);
+    d.c = c;
+    d.simd = simd;
+    rc_sim *s = NULL;
+    if (rc_sim_create(&d, &s) != RC_OK)
+        return -1;
+    const rc_sim_ball b[2] = {{.x = x0, .p = P[0].p, .r = rad[0], .m = P[0].m},
+                              {.x = x1, .p = P[1].p, .r = rad[1], .m = P[1].m}};
+    int v = -1;
+    rc_sim_diag dg;
+    if (rc_sim_set_balls(s, 2, b, NULL) == RC_OK && rc_sim_advance(s, 1e-9, 16) >= 0 &&
+        rc_sim_diagnostics(s, &dg) == RC_OK)
+        v = dg.collisions > 0;
+    rc_sim_free(&s);
+    return v;
+}
+
+/* engine: 0 asks eng_predict_checked's simultaneity check (the pair within sim_tol of
+ * touching), 1 the engine's own prediction of a touching pair (overlapping by 1e-12 of the
+ * radius sum, far below overlap_tol: the state after a collision) */
+static void touching_pairs(int engine)
 {
     rc_test_rng r = {2031};
     const double atol = 1e-10; /* the engine's default approach_tol */
@@ -236,13 +264,15 @@ static void test_predict_checked(void)
             dir = qaxpy(qscale(rc_test_uniform(&r) < 0.5 ? -1 : 1, d),
                         how == 0 ? 0 : logu(&r, 1e-20, 1) / qnorm(e), e);
         const rc_vec3 x0 = rc_v3(4, 4, 4);
-        const rc_vec3 x1 = rc_v3_add(x0, dv_of(qscale(sig / qnorm(dir), dir)));
+        const q128 f = engine ? 1 - (q128)1e-12 : 1;
+        const rc_vec3 x1 = rc_v3_add(x0, dv_of(qscale(f * sig / qnorm(dir), dir)));
         const rc_vec3 dx = rc_v3_sub(x1, x0); /* (exact: Sterbenz) */
         q128 w2;
         const int want = exact(k, &P[0], &P[1], dx, sig, atol, &w2);
         int got[3];
         for (int l = 0; l < 3; l++)
-            got[l] = predict_conflict(widths[l], c, P, rad, x0, x1);
+            got[l] = engine ? first_collision(widths[l], c, P, rad, x0, x1)
+                            : predict_conflict(widths[l], c, P, rad, x0, x1);
         ENSURE_MSG(got[0] >= 0, "gamma %.3g: the engine refused the pair", (double)G);
         if (got[0] < 0)
             continue;
@@ -260,18 +290,25 @@ static void test_predict_checked(void)
             nflip += ok;
         }
         wrong += got[0] != want;
-        ENSURE_MSG(ok, "gamma %.3g, c %g, contact %s: conflict %d (exact %d)", (double)G, c,
+        ENSURE_MSG(ok, "%s: gamma %.3g, c %g, contact %s: %d (exact %d)",
+                   engine ? "collision" : "conflict", (double)G, c,
                    how == 0 ? "along the motion" : how == 3 ? "random" : "tilted", got[0],
                    want);
     }
-    printf("  eng_predict_checked, %d touching pairs (%d approaching), gamma 10 .. 1e8, three "
+    printf("  %s, %d touching pairs (%d approaching), gamma 10 .. 1e8, three "
            "lane widths (%d differ): %d verdicts differ from the exact one (%d where one "
-           "rounding of the data flips it)\n", n, napp, differ, wrong, nflip);
+           "rounding of the data flips it)\n",
+           engine ? "the engine's first collision" : "eng_predict_checked", n, napp, differ,
+           wrong, nflip);
 }
+
+static void test_predict_checked(void) { touching_pairs(0); }
+static void test_touching_predicted(void) { touching_pairs(1); }
 
 int main(void)
 {
     RUN_TEST(test_comoving_pairs);
     RUN_TEST(test_predict_checked);
+    RUN_TEST(test_touching_predicted);
     RC_TEST_MAIN_END();
 }
