@@ -401,7 +401,7 @@ static int wall_event_point(rc_sim *s, int32_t i, int w, double *tx, rc_vec3 *dx
     rc_v3_set(&e, d, up ? 1.0 : -1.0);
     const double bn = rc_v3_get(beta, d) * (up ? 1.0 : -1.0);
     *dx = rc_v3_scale(b->r * b->r / h, rc_v3_axpy(e, -bn, beta));
-    return eng_glue_side(&s->cov[i], b->v, *tx, *dx);
+    return eng_glue_side(&s->cov[i], &s->glu[i], b->v, *tx, *dx);
 }
 
 

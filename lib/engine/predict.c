@@ -50,7 +50,8 @@ static int glue_valid(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, r
     const rc_vec3 dxi = rc_v3_axpy(y, -t, bi->v);
     const rc_vec3 dxk = rc_v3_sub(y, rc_v3_axpy(dx, t, bk->v));
     const eng_cov *ci = &s->cov[bi - s->b], *ck = &s->cov[bk - s->b];
-    return eng_glue_side(ci, bi->v, tx, dxi) && eng_glue_side(ck, bk->v, tx, dxk);
+    return eng_glue_side(ci, &s->glu[bi - s->b], bi->v, tx, dxi) &&
+           eng_glue_side(ck, &s->glu[bk - s->b], bk->v, tx, dxk);
 }
 
 /* per_ball frames: a ball whose kink lies ahead of now is stored at it, on its outgoing
@@ -129,7 +130,7 @@ static int window_contact(const rc_sim *cs, const eng_ball *bi, const eng_ball *
     const rc_vec3 dxo = rc_v3_sub(rc_v3_axpy(out->x, -out->t, bi->v),
                                   wi ? rc_v3_axpy(dx, out->t, rc_v3_sub(bk->v, bi->v))
                                      : rc_v3(0.0, 0.0, 0.0));
-    *valid = piece != 0 && eng_glue_side(co, bo->v, t, dxo);
+    *valid = piece != 0 && eng_glue_side(co, &s->glu[bo - s->b], bo->v, t, dxo);
     return RC_OK;
 }
 

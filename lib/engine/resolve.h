@@ -5,7 +5,6 @@
 #ifndef RELCOL_ENGINE_RESOLVE_H
 #define RELCOL_ENGINE_RESOLVE_H
 
-#include "../glue_kv.h"
 #include "private.h"
 
 /* Move ball i's stored state to time T (position, proper time, clock). */
@@ -59,7 +58,7 @@ static inline double eng_kink_time(const rc_sim *s, int32_t b, const rc_particle
  * order rule checks the centre only, rho = 0.) For a ball fast before and after each kink
  * the same way, both denominators are ~1/gamma^2 and the support's two terms gamma^2 times
  * its value: the last kink's denominator then comes from its tube's shapes (s->glu:
- * rc_glue_omkv_out), the new one's from the momenta (eng_kink_den), and the support as
+ * eng_seg_den), the new one's from the momenta (eng_kink_den), and the support as
  * r sqrt(|g|^2 / gamma^2 + |beta x g|^2), a sum of positive terms. */
 static inline int eng_kinks_cross(const rc_sim *s, int32_t b, double te, rc_vec3 kappa,
                                   const rc_particle *in, const rc_particle *out)
@@ -68,10 +67,7 @@ static inline int eng_kinks_cross(const rc_sim *s, int32_t b, double te, rc_vec3
     if (!(c->t_k > -INFINITY))
         return 0;
     const rc_vec3 v = s->b[b].v;
-    const double kv1 = rc_v3_dot(c->kappa, v);
-    const double d1 = kv1 > RC_GLUE_KV_FAST && s->glu[b].r > 0.0
-                          ? rc_glue_omkv_out(&s->glu[b].in, &s->glu[b].out)
-                          : 1.0 - kv1;
+    const double d1 = eng_seg_den(c, &s->glu[b], v);
     const double d2 = eng_kink_den(s->inv_c2, in, out, kappa, v);
     const rc_vec3 g = rc_v3_sub(rc_v3_scale(1.0 / d1, c->kappa), rc_v3_scale(1.0 / d2, kappa));
     const rc_vec3 beta = rc_v3_scale(s->inv_c, v);

@@ -269,9 +269,102 @@ static void test_kinks_cross(void)
            nflip);
 }
 
+/* eng_glue_side (lib/engine/private.h): is a contact event X, at table time tx and offset
+ * dxb from the ball's centre then (a point of its contracted surface), on the future side
+ * of the hyperplane of its last kink (at t_k = 0), (tx - t_k)(1 - kappa.v) >= kappa.dxb?
+ * The ball slow in R before and after the kink, R at gamma 10 .. 1e8; tx - t_k f times the
+ * exact threshold kappa.dxb / (1 - kappa.v) (|f| log-uniform 0.5 .. 2, either sign). The
+ * verdict must be the exact one on the double data, except where one rounding of the
+ * momenta flips it. */
+static int exact_side(q128 k, const rc_particle *S, double tx, rc_vec3 dxb)
+{
+    const qv kap = qkappa(k, &S[0], &S[1]);
+    const qv v = qscale(1 / qenergy(S[1].m, qv_of(S[1].p), k), qv_of(S[1].p));
+    return tx * (1 - qdot(kap, v)) >= qdot(kap, qv_of(dxb));
+}
+
+static void test_glue_side(void)
+{
+    rc_test_rng r = {2036};
+    int n = 0, nfut = 0, wrong = 0, nflip = 0;
+    static eng_cov cv;
+    static rc_glue gl;
+    for (int it = 0; it < 20000; it++) {
+        const double c = rc_test_uniform(&r) < 0.5 ? 1.0 : logu(&r, 0.1, 10);
+        const q128 k = rc_inv_c2_of(c);
+        const double rad = rc_test_range(&r, 0.2, 1.0);
+        const int axis = it % 3 != 0, ax = (int)(3 * rc_test_uniform(&r));
+        qv d = qv_of(rc_v3(rc_test_range(&r, -1, 1), rc_test_range(&r, -1, 1),
+                           rc_test_range(&r, -1, 1)));
+        if (axis)
+            d = (qv){ax == 0, ax == 1, ax == 2};
+        d = qscale(1 / qnorm(d), d);
+        const q128 G = logu(&r, 10, 1e8), V = sqrtq((1 - 1 / (G * G)) / k);
+        rc_particle S[2];
+        double m = logu(&r, 0.2, 5);
+        for (int i = 0; i < 2; i++) {
+            if (i > 0 && it % 2 == 0)
+                m *= rc_test_range(&r, 1.0, 1.3);
+            const qv w = qv_of(rc_v3(rc_test_range(&r, -1, 1), rc_test_range(&r, -1, 1),
+                                     rc_test_range(&r, -1, 1)));
+            const qv vR = qscale(c * rc_test_range(&r, 0.0, 0.9) / qnorm(w), w);
+            const q128 g = 1 / sqrtq(1 - qdot(vR, vR) * k);
+            q128 E = m * g;
+            qv p = qscale(m * g, vR);
+            qboost(qscale(-V, d), G, k, &E, &p);
+            S[i] = (rc_particle){m, dv_of(p)};
+        }
+        /* dxb: a point of the outgoing ball's contracted surface */
+        const q128 M1 = qenergy(S[1].m, qv_of(S[1].p), k);
+        const qv b = qscale(sqrtq(k) / M1, qv_of(S[1].p));
+        const q128 g1 = M1 / S[1].m;
+        const qv y0 = qv_of(rc_v3(rc_test_range(&r, -1, 1), rc_test_range(&r, -1, 1),
+                                  rc_test_range(&r, -1, 1)));
+        const qv y = qscale(rad / qnorm(y0), y0);
+        const rc_vec3 dxb = dv_of(qaxpy(y, -(1 - 1 / g1) * qdot(y, b) / qdot(b, b), b));
+        const qv kap = qkappa(k, &S[0], &S[1]);
+        const qv v = qscale(1 / M1, qv_of(S[1].p));
+        const q128 th = qdot(kap, qv_of(dxb)) / (1 - qdot(kap, v));
+        const double tx = (double)(th * logu(&r, 0.5, 2) * (rc_test_uniform(&r) < 0.5 ? -1 : 1));
+        const int want = exact_side(k, S, tx, dxb);
+        if (rc_glue_make((double)k, rad, &S[0], &S[1], 0.0, rc_v3(0, 0, 0), rc_v3(0, 0, 0),
+                         &gl) != RC_OK) {
+            ENSURE_MSG(0, "gamma %.3g: rc_glue_make failed", (double)G);
+            continue;
+        }
+        cv.t_k = 0.0;
+        cv.kappa = gl.kappa;
+        const rc_vec3 vd = rc_v3_scale(1.0 / rc_mass_rel(S[1].m, S[1].p, (double)k), S[1].p);
+        const int got = eng_glue_side(&cv, &gl, vd, tx, dxb);
+        n++;
+        nfut += want;
+        int ok = got == want;
+        if (!ok) {
+            rc_test_rng g = {4242};
+            for (int t = 0; t < 8 && !ok; t++) {
+                rc_particle A[2] = {S[0], S[1]};
+                for (int i = 0; i < 2; i++) {
+                    A[i].p.x *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
+                    A[i].p.y *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
+                    A[i].p.z *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
+                }
+                ok = exact_side(k, A, tx, dxb) != want;
+            }
+            nflip += ok;
+        }
+        wrong += got != want;
+        ENSURE_MSG(ok, "gamma %.3g, c %g: future side %d (exact %d), tx %.3g of the threshold",
+                   (double)G, c, got, want, (double)(tx / th));
+    }
+    printf("  %d events after a kink (%d on its future side), gamma 10 .. 1e8: %d verdicts "
+           "differ from the exact one (%d where one rounding of the momenta flips it)\n", n,
+           nfut, wrong, nflip);
+}
+
 int main(void)
 {
     RUN_TEST(test_comoving_glue);
     RUN_TEST(test_kinks_cross);
+    RUN_TEST(test_glue_side);
     RC_TEST_MAIN_END();
 }
