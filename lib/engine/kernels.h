@@ -119,8 +119,9 @@ ENG_INLINE unsigned pair_lanes(const rc_sim *s, const eng_ball *bi,
     const eng_wd bound = eng_mul(eng_mul(eng_set1(-2.0), b), eng_sub(eng_set1(best), tref));
     const eng_wm flying = eng_and(eng_gt(disc, zero), eng_lt(dd, bound));
     eng_wm hit = eng_and(eng_lt(b, zero), eng_select_m(touching, slow, flying));
-    /* (0.8 c^2: approach.h's first test of a Lorentz factor above 3) */
-    if (__builtin_expect(rc_v3_norm2(bi->v) * s->inv_c2 > 0.8, 0)) {
+    /* (a touching lane is rare: the partner just after a collision; 0.8 c^2: approach.h's
+     * first test of a Lorentz factor above 3) */
+    if (__builtin_expect(eng_bits(touching) != 0, 0) && rc_v3_norm2(bi->v) * s->inv_c2 > 0.8) {
         eng_wd vk2 = eng_add(eng_mul(vkx, vkx), eng_mul(vky, vky));
         if (three)
             vk2 = eng_add(vk2, eng_mul(vkz, vkz));
