@@ -5,8 +5,11 @@
  * double data: rc_glue_make's centre event on H (t_c - t_x, x_c) and its glue window
  * t_last - t_c (lib/toi_glue.c), and the engine's kink time eng_kink_time
  * (lib/engine/resolve.h), each to 1e-12 of itself or to 16 times its move under one
- * rounding of the data. The times all divide by 1 - kappa.v_in, which is ~1/gamma^2 and
- * whose plain form keeps only the rounding of its terms. */
+ * rounding of the data; and the decisions made from such times, the crossing of two
+ * successive kinks' hyperplanes inside the ball (eng_kinks_cross) and the side of the last
+ * kink's H a contact event lies on (eng_glue_side), against their exact verdicts. The
+ * times all divide by 1 - kappa.v, which is ~1/gamma^2 and whose plain form keeps only the
+ * rounding of its terms. */
 #include <math.h>
 #include <quadmath.h>
 #include <string.h>
