@@ -7,6 +7,7 @@
 
 #include <stdint.h>
 #include "relcol/sim.h"
+#include "../glue_kv.h"
 
 /* Hot data read by every pair test: one 64-byte line per ball. The state is stored at
  * the ball's own time t (its local clock); v = p / M is derived from p and m. */
@@ -104,14 +105,29 @@ typedef struct eng_pend {
     int32_t depth;
 } eng_pend;
 
+/* 1 - kappa.v for the hyperplane c that began a ball's segment and its velocity v on it:
+ * for a ball fast before and after that kink the same way ~1/gamma^2, which the plain
+ * difference loses to the rounding of its terms; then from the kink's tube's shapes
+ * (glue_kv.h rc_glue_omkv_out), when g is that tube (r > 0: not an order conflict's) and
+ * v its outgoing velocity, bit for bit. */
+static inline double eng_seg_den(const eng_cov *c, const rc_glue *g, rc_vec3 v)
+{
+    const double kv = rc_v3_dot(c->kappa, v);
+    if (!(kv > RC_GLUE_KV_FAST) || !(g->r > 0.0) || g->v_out.x != v.x || g->v_out.y != v.y ||
+        g->v_out.z != v.z)
+        return 1.0 - kv;
+    return rc_glue_omkv_out(&g->in, &g->out);
+}
+
 /* Is the event X (table time tx, offset dxb from the ball's centre then on its stored
  * line, velocity v) on the future side of the hyperplane c that began its segment,
  * t - t_k = kappa.(y - x_k)? With x_k on the stored line, X - x_k = dxb + v (tx - t_k), so
  * the test reads (tx - t_k)(1 - kappa.v) >= kappa.dxb (1 - kappa.v > 0: |kappa| < 1/c).
- * No kink yet: t_k = -inf, always true. */
-static inline int eng_glue_side(const eng_cov *c, rc_vec3 v, double tx, rc_vec3 dxb)
+ * No kink yet: t_k = -inf, always true. g: the ball's tube of that kink (s->glu). */
+static inline int eng_glue_side(const eng_cov *c, const rc_glue *g, rc_vec3 v, double tx,
+                                rc_vec3 dxb)
 {
-    return (tx - c->t_k) * (1.0 - rc_v3_dot(c->kappa, v)) >= rc_v3_dot(c->kappa, dxb);
+    return (tx - c->t_k) * eng_seg_den(c, g, v) >= rc_v3_dot(c->kappa, dxb);
 }
 
 /* The event queue (engine/queue.c): one entry per ball, popped in (time, ball) order.
@@ -534,7 +550,7 @@ typedef struct eng_check {
 /* Prediction for ball i just resolved at T (uncontracted frames / contracted ones), that
  * also looks for another contact simultaneous with the resolved one: 1 on one (nothing
  * stored), else the events are stored (the queue is not updated) and 0. */
-int eng_predict_checked(rc_sim *s, int32_t i, rc_vec3 vold, int32_t partner, double T);
+int eng_predict_checked(rc_sim *s, int32_t i, const eng_check *chk, double T);
 int eng_predict_checked_narrow(rc_sim *s, int32_t i, const eng_check *chk);
 /* Ball i crosses into its next cell (events updated, queue too). */
 void eng_cross(rc_sim *s, int32_t i);

@@ -272,8 +272,9 @@ int eng_undo_conflict(rc_sim *s, int32_t i, int32_t bp, double T, int tube)
         const eng_ball *bi = &s->b[i], *bq = &s->b[bp];
         const rc_vec3 sep = eng_image(s, rc_v3_sub(rc_v3_axpy(bq->x, tx - bq->t, bq->v),
                                                    rc_v3_axpy(bi->x, tx - bi->t, bi->v)));
-        const int in_i = !eng_glue_side(&s->cov[i], s->b[i].v, tx, dXi),
-                  in_q = !eng_glue_side(&s->cov[bp], s->b[bp].v, tx, rc_v3_sub(dXi, sep));
+        const int in_i = !eng_glue_side(&s->cov[i], &s->glu[i], s->b[i].v, tx, dXi),
+                  in_q = !eng_glue_side(&s->cov[bp], &s->glu[bp], s->b[bp].v, tx,
+                                        rc_v3_sub(dXi, sep));
         if (in_i == in_q) {
             return 0;
         }
