@@ -23,6 +23,8 @@ const char *rc_strerror(int status)
     case RC_ECORRUPT: return "not a whole, undamaged relcol checkpoint";
     case RC_EMISMATCH: return "checkpoint written by another run definition, format or machine";
     case RC_ESTALL: return "simulated time stands still: events keep coming at one instant";
+    case RC_ENOTREADY: return "slice not final yet: advance the engine past its final time";
+    case RC_ENOSLICE: return "no slice held under that id (released, or dropped with the balls, c or a checkpoint read)";
     default: return "unknown status code";
     }
 }

@@ -7,6 +7,7 @@
 #include "relcol/kinematics.h"
 #include "relcol/status.h"
 #include "relcol/toi.h"
+#include "glue_kv.h"
 #include "toi_private.h"
 
 int rc_glue_make(double inv_c2, double r, const rc_particle *in, const rc_particle *out,
@@ -36,8 +37,10 @@ int rc_glue_make(double inv_c2, double r, const rc_particle *in, const rc_partic
     const rc_vec3 Wv = rc_v3_add(rc_v3_scale(1.0 / in->m, in->p), rc_v3_scale(1.0 / out->m, out->p));
     g->kappa = rc_v3_scale(inv_c2 / W0, Wv);
     /* the centre's event on H: (t_c - t_x)(1 - kappa.v_in) = kappa.(xc - X) */
-    const double kv = rc_v3_dot(g->kappa, g->v_in);
-    const double dt = rc_v3_dot(g->kappa, rc_v3_sub(xc, X)) / (1.0 - kv);
+    /* (1 - kappa.v_in without the cancellation of a ball fast before and after: glue_kv.h) */
+    const double omkv = rc_glue_one_minus_kv(inv_c2, in, M0, out, M1, W0,
+                                             rc_v3_dot(g->kappa, g->v_in));
+    const double dt = rc_v3_dot(g->kappa, rc_v3_sub(xc, X)) / omkv;
     g->t_c = t_x + dt;
     g->x_c = rc_v3_axpy(xc, dt, g->v_in);
     /* H meets the incoming section first and last where it is tangent to it:
@@ -45,7 +48,7 @@ int rc_glue_make(double inv_c2, double r, const rc_particle *in, const rc_partic
      * from the outgoing side: the sections on H coincide; papers/shape-change.md) */
     const double k2 = rc_v3_norm2(g->kappa);
     const double h = k2 > 0.0 ? rc_toi_support_scaled_(&g->in, g->kappa, k2) : 0.0;
-    const double D = h / (1.0 - kv);
+    const double D = h / omkv;
     g->t_first = g->t_c - D;
     g->t_last = g->t_c + D;
     return RC_OK;

@@ -44,7 +44,7 @@ static void usage(FILE *f)
 "usage: relcol-gas [--dim 1|2|3] [--n N] [--c C] [--theta-start T | --v-rms V]\n"
 "                  [--packing P] [--t-equil T] [--t-sample T] [--snapshots K]\n"
 "                  [--seed S] [--frame NAME] [--boundary walls|periodic]\n"
-"                  [--observer-velocity V] [--out DIR]\n"
+"                  [--observer-velocity V] [--readout slice|latest|now] [--out DIR]\n"
 "\n"
 "Run a relativistic gas from a far-from-equilibrium start (every speed equal, random\n"
 "directions) to equilibrium, and read its temperature theta = kT/(m c^2) two ways:\n"
@@ -96,6 +96,15 @@ static void usage(FILE *f)
 "                   exactly; 1-D: followed event by event), chi2 against the boosted\n"
 "                   Jüttner law at theta from <gamma> (1-D: each species'); writes\n"
 "                   DIR/observer.csv, observer.gp, observer.png\n"
+"  --readout R      a frame that changes each ball's velocity at its own kink\n"
+"                   (covariant): what a snapshot at table time t reads -- slice (the\n"
+"                   default): every ball's state at t on its worldline, read once the\n"
+"                   engine is far enough past t that no later collision can move a kink\n"
+"                   to or from before t (rc_sim_slice_get); latest: each ball's latest\n"
+"                   segment at t, every change at its contact event's table time\n"
+"                   (rc_sim_get_ball_latest); now: the state at t of the collisions\n"
+"                   processed by t (rc_sim_get_ball, which misses those whose contact\n"
+"                   lies after t but whose kink lies before it)\n"
 "  --out DIR        output folder, created if missing (default out/gas)\n"
 "\n"
 "error bars: the K snapshots are cut into %d consecutive blocks and each figure is the\n"
@@ -103,7 +112,8 @@ static void usage(FILE *f)
 "much longer than the snapshots' correlation time: the app measures that time (the\n"
 "integrated autocorrelation time of the per-snapshot <p.v>) and prints it, with a\n"
 "warning when a block is shorter than 4 of them. In 2-D and 3-D one species' <gamma> is\n"
-"fixed by the conserved energy, so its error bar is round-off; the <p.v> one is not.\n"
+"fixed by the conserved energy, so its error bar is round-off (not with --readout slice\n"
+"or now); the <p.v> one is not.\n"
 "The chi-square per species uses %d cells equiprobable under Jüttner, divided by the\n"
 "variance inflation phi measured from the block-to-block scatter of the cell counts.\n"
 "\n"
@@ -125,12 +135,17 @@ typedef struct options {
     double c, theta_start, v_start, packing, t_equil, t_sample;
     int theta_given, v_given, packing_given, frame_given, tequil_given, tsample_given;
     int periodic, boundary_given;
+    int readout, readout_given; /* per_ball frames: READ_* */
     double v_obs;
     int obs_given;
     uint64_t seed;
     const rc_toi_frame *frame;
     const char *out;
 } options;
+
+/* per_ball frames (covariant): which state a snapshot reads (--readout) */
+enum { READ_SLICE = 0, READ_LATEST, READ_NOW };
+static const char *const readout_name[] = {"slice", "latest", "now"};
 
 static int parse_options(int argc, char **argv, options *o)
 {
@@ -146,7 +161,7 @@ static int parse_options(int argc, char **argv, options *o)
     static const char *const known[] = {"--dim", "--n", "--c", "--theta-start", "--v-rms",
                                         "--packing", "--t-equil", "--t-sample", "--snapshots",
                                         "--seed", "--out", "--frame", "--boundary",
-                                        "--observer-velocity", NULL};
+                                        "--observer-velocity", "--readout", NULL};
     app_opts it;
     app_opts_init(&it, prog, argc, argv, known, NULL, "see --help");
     const char *name, *val;
@@ -181,6 +196,14 @@ static int parse_options(int argc, char **argv, options *o)
                             app_toi_frame_list(list, sizeof list));
             }
             o->frame_given = 1;
+        } else if (strcmp(name, "--readout") == 0) {
+            o->readout = -1;
+            for (int k = 0; k < 3; k++)
+                if (strcmp(val, readout_name[k]) == 0)
+                    o->readout = k;
+            if (o->readout < 0)
+                return fail("--readout: '%s' is not slice, latest or now", val);
+            o->readout_given = 1;
         } else if (strcmp(name, "--boundary") == 0) {
             if (strcmp(val, "walls") && strcmp(val, "periodic"))
                 return fail("--boundary: '%s' is not walls or periodic", val);
@@ -257,6 +280,9 @@ static int parse_options(int argc, char **argv, options *o)
         return fail("--packing: not used with --dim 1 (point particles at unit density)");
     if (o->dim == 1 && o->frame_given)
         return fail("--frame: not used with --dim 1 (point particles have no shape)");
+    if (o->readout_given && (o->dim == 1 || !o->frame->per_ball))
+        return fail("--readout: only with a frame that changes each ball's velocity at its "
+                    "own kink (covariant); in every other the three read-outs are one");
     if (o->dim == 1 && o->boundary_given)
         return fail("--boundary: not used with --dim 1 (the 1-D gas has walls)");
     const double pmax = o->dim == 3 ? 0.52 : 0.78; /* rc_sim_gas_init's lattice start */
@@ -419,6 +445,29 @@ static int sim_start(const options *o, samples *S, rc_sim **out, char *err)
     return 0;
 }
 
+/* --readout slice: read every slice asked for (snapshots up to last) that is final, in
+ * order (snapshot j's u into row j - 1), releasing each; *next: the first not read yet. */
+static int read_slices(rc_sim *s, samples *S, const uint32_t *sid, size_t *next, size_t last,
+                       double inv_c2)
+{
+    const size_t n = S->n;
+    while (*next <= last) {
+        const int r = rc_sim_slice_ready(s, sid[*next], NULL);
+        if (r != 1)
+            return r;
+        for (size_t i = 0; i < n; i++) {
+            rc_sim_ball q;
+            const int st = rc_sim_slice_get(s, sid[*next], i, &q);
+            if (st != RC_OK)
+                return st;
+            S->u[(*next - 1) * n + i] = rc_v3_norm2(q.p) * inv_c2 / (q.m * q.m);
+        }
+        rc_sim_slice_release(s, sid[*next]);
+        (*next)++;
+    }
+    return RC_OK;
+}
+
 static int run_sim(const options *o, samples *S, char *err)
 {
     const size_t n = S->n;
@@ -427,12 +476,27 @@ static int run_sim(const options *o, samples *S, char *err)
         return -1;
     int st = RC_OK;
     const double inv_c2 = 1.0 / (o->c * o->c);
+    /* per_ball frames: the snapshots' read-out (every other frame reads each ball's latest
+     * segment, the same as the others there); slice: snapshot j >= 1 from the delayed
+     * slice asked for before the engine reaches its time, read once final (the energy
+     * check still sums the latest segments, the conserved ones: a slice's sum is not) */
+    const int readout = o->frame->per_ball ? o->readout : READ_LATEST;
+    uint32_t *sid = readout == READ_SLICE ? malloc((S->ns + 1) * sizeof *sid) : NULL;
+    size_t next = 1;
+    if (readout == READ_SLICE && !sid) {
+        rc_sim_free(&s);
+        app_errf(err, "out of memory");
+        return -1;
+    }
     double e0 = 0.0;
     app_progress bar;
     app_progress_init(&bar, prog, S->ns);
     for (size_t j = 0; j <= S->ns && st == RC_OK; j++) {
         const double t = o->t_equil + o->t_sample * (double)j / (double)S->ns;
-        st = rc_sim_advance(s, t, 0);
+        if (sid && j > 0)
+            st = rc_sim_slice_request(s, t, &sid[j]);
+        if (st == RC_OK)
+            st = rc_sim_advance(s, t, 0);
         if (st == RC_OK && j % (S->ns / NBLOCK) == 0)
             st = pb_mark(s, o->periodic, S->boxv, &S->pres);
         double e = 0.0;
@@ -448,9 +512,14 @@ static int run_sim(const options *o, samples *S, char *err)
             const double u = rc_v3_norm2(q.p) * inv_c2 / (q.m * q.m);
             e += q.m * sqrt(1.0 + u);
             S->mass_drift = fmax(S->mass_drift, fabs(q.m - 1.0));
-            if (j > 0)
+            if (j > 0 && readout == READ_LATEST)
                 S->u[(j - 1) * n + i] = u;
+            if (j > 0 && readout == READ_NOW && st == RC_OK &&
+                (st = rc_sim_get_ball(s, i, &q)) == RC_OK)
+                S->u[(j - 1) * n + i] = rc_v3_norm2(q.p) * inv_c2 / (q.m * q.m);
         }
+        if (sid && st == RC_OK && (st = read_slices(s, S, sid, &next, j, inv_c2)) > 0)
+            st = RC_OK;
         if (j == 0) /* the energy at the end of the equilibration (exact since t = 0) */
             e0 = e;
         rc_sim_diag dj;
@@ -470,6 +539,16 @@ static int run_sim(const options *o, samples *S, char *err)
         const double e_start = (double)n * S->gamma0;
         S->energy_drift = fmax(S->energy_drift, fabs(dg.mass_rel - e_start) / e_start);
     }
+    /* the slices still held: the engine run on until each is final (past the sample: the
+     * counts above are the sample's) */
+    while (sid && st == RC_OK && next <= S->ns) {
+        rc_sim_slice_info in;
+        const int r = rc_sim_slice_ready(s, sid[next], &in);
+        st = r < 0 ? r : r == 0 ? rc_sim_advance(s, in.t_final, 0) : RC_OK;
+        if (st == RC_OK && (st = read_slices(s, S, sid, &next, S->ns, inv_c2)) > 0)
+            st = RC_OK;
+    }
+    free(sid);
     rc_sim_free(&s);
     if (st != RC_OK) {
         app_errf(err, "engine: %s", rc_strerror(st));
@@ -720,6 +799,7 @@ static void fill_summary(const options *o, const samples *S, int nspec,
     g->blocks = NBLOCK;
     g->seed = o->seed;
     g->frame = o->dim == 1 ? NULL : o->frame->name;
+    g->readout = o->dim >= 2 && o->frame->per_ball ? readout_name[o->readout] : NULL;
     g->thermal = o->dim == 1 ? -1 : gas_frame_thermal(o->frame);
     g->boundary = o->periodic ? "periodic" : "walls";
     g->gamma_start = S->gamma0;
@@ -997,8 +1077,13 @@ int main(int argc, char **argv)
         const species_stats *s = &ss[q];
         if (nspec > 1)
             printf("species m = %g (%zu particles): kT = m theta\n", s->mass, s->count);
+        /* (a per_ball frame's slice or read at now takes each ball at one table time, not
+         * across the hyperplanes collisions exchange energy on: its sum is not conserved) */
+        const int conserved = o.dim != 1 && (!o.frame->per_ball || o.readout == READ_LATEST);
         printf("theta from <gamma>  (Jüttner)       = %.5f +- %.5f%s\n", s->th_g, s->se_g,
-               o.dim != 1 ? "  (fixed by the conserved energy)" : "");
+               conserved      ? "  (fixed by the conserved energy)"
+               : o.dim != 1   ? "  (not fixed: a table-time read-out, see --readout)"
+                              : "");
         printf("theta from <p.v>/%d (equipartition) = %.5f +- %.5f\n", o.dim, s->th_pv,
                s->se_pv);
         /* (no spread between the blocks: no significance to state, rather than +-inf) */

@@ -72,6 +72,8 @@ int gas_summary_write(const char *path, const gas_summary *s, char *err)
         cJSON_AddStringToObject(x, "frame", s->frame);
     else
         cJSON_AddNullToObject(x, "frame");
+    if (s->readout)
+        cJSON_AddStringToObject(x, "readout", s->readout);
     add(x, "t_equil", s->t_equil);
     add(x, "t_sample", s->t_sample);
     add(x, "snapshots", (double)s->snapshots);

@@ -30,6 +30,7 @@ typedef struct gas_summary {
     int blocks;
     uint64_t seed;
     const char *frame;         /* NULL in 1-D */
+    const char *readout;       /* per_ball frames: the snapshots' read-out; else NULL */
     int thermal;               /* gas_frame_thermal(), -1 in 1-D */
     const char *boundary;
     double gamma_start, box;

@@ -20,10 +20,13 @@
  * Mi pk)/Mt from the momenta without cancellation (rc_pair_split_of) and its part along
  * n = dx/|dx| the zmf law's a0 (rc_pair_a0_fast): the test dx.(vk - vi) < 0 with
  * (dx.(vk - vi))^2 > atol^2 sig^2 |vk - vi|^2 is |dx| a0 > 0 with |dx|^2 a0^2 > atol^2
- * sig^2 |d|^2 (mu cancels). Other pairs keep the plain form and its bits. */
-static inline int eng_approaching(double k, const rc_particle *bi, rc_vec3 vi,
-                                  const rc_particle *bk, rc_vec3 vk, rc_vec3 dx, double sig,
-                                  double atol, double *dv2)
+ * sig^2 |d|^2 (mu cancels). Other pairs keep the plain form and its bits.
+ *
+ * eng_approach_fast: the verdict for such a pair, -1 for any other (the caller keeps its
+ * plain form); eng_approaching: either. */
+static inline int eng_approach_fast(double k, const rc_particle *bi, rc_vec3 vi,
+                                    const rc_particle *bk, rc_vec3 vk, rc_vec3 dx, double sig,
+                                    double atol, double *dv2)
 {
     /* (a cheap first test on the stored velocities: a Lorentz factor above 3 is a speed
      * above 0.94 c) */
@@ -33,13 +36,8 @@ static inline int eng_approaching(double k, const rc_particle *bi, rc_vec3 vi,
     const double Mt = Mi + Mk, d2 = rc_v3_norm2(dx);
     if (!(fast && Mi > RC_GAMMA_FAST * bi->m && Mk > RC_GAMMA_FAST * bk->m &&
           rc_v3_dot(bi->p, bk->p) > 0.0 &&
-          rc_v3_norm2(rc_v3_add(bi->p, bk->p)) * k > RC_PAIR_FAST * Mt * Mt && d2 > 0.0)) {
-        const rc_vec3 dv = rc_v3_sub(vk, vi);
-        const double bb = rc_v3_dot(dx, dv), w2 = rc_v3_norm2(dv);
-        if (dv2)
-            *dv2 = w2;
-        return bb < 0.0 && bb * bb > atol * atol * sig * sig * w2;
-    }
+          rc_v3_norm2(rc_v3_add(bi->p, bk->p)) * k > RC_PAIR_FAST * Mt * Mt && d2 > 0.0))
+        return -1;
     const double sqrt_k = sqrt(k);
     rc_pair_split z;
     rc_pair_split_of(bi, bk, Mi, Mk, k, sqrt_k, &z);
@@ -53,6 +51,20 @@ static inline int eng_approaching(double k, const rc_particle *bi, rc_vec3 vi,
     const rc_axis ax = rc_axis_along(bi, bk, n, k, Mi, Mk, pni, pnk);
     const double a0 = rc_pair_a0_fast(bi, bk, n, k, sqrt_k, &ax);
     return a0 > 0.0 && d2 * a0 * a0 > atol * atol * sig * sig * z2;
+}
+
+static inline int eng_approaching(double k, const rc_particle *bi, rc_vec3 vi,
+                                  const rc_particle *bk, rc_vec3 vk, rc_vec3 dx, double sig,
+                                  double atol, double *dv2)
+{
+    const int f = eng_approach_fast(k, bi, vi, bk, vk, dx, sig, atol, dv2);
+    if (f >= 0)
+        return f;
+    const rc_vec3 dv = rc_v3_sub(vk, vi);
+    const double bb = rc_v3_dot(dx, dv), w2 = rc_v3_norm2(dv);
+    if (dv2)
+        *dv2 = w2;
+    return bb < 0.0 && bb * bb > atol * atol * sig * sig * w2;
 }
 
 #endif

@@ -437,6 +437,7 @@ int rc_sim_checkpoint_read(rc_sim *s, const void *buf, size_t bytes)
 {
     if (!s || !buf)
         return RC_EINVAL;
+    eng_slice_clear(s); /* (slices are not in a checkpoint: sim.h) */
     if (bytes < sizeof(ck_header) + sizeof(uint64_t))
         return RC_ECORRUPT;
     uint64_t sum;

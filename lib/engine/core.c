@@ -14,26 +14,6 @@
 
 /* ---- resolving events ------------------------------------------------------------ */
 
-/* Would ball b's new kink (centre at table time te, H's normal kappa) have its hyperplane
- * reach some point of the ball before its last one did? On the segment between the two
- * kinks (velocity v, the stored one) a point at offset rho from the centre is reached by
- * H_i at t_ci + a_i.rho, a_i = kappa_i / (1 - kappa_i.v); the two sweep the contracted
- * section in order iff t_c2 - t_c1 >= max over it of (a1 - a2).rho, the support of the
- * contracted disc, r sqrt(|g|^2 - (g.beta)^2). (The order rule checks the centre only,
- * rho = 0.) */
-static int kinks_cross(const rc_sim *s, int32_t b, double te, rc_vec3 kappa)
-{
-    const eng_cov *c = &s->cov[b];
-    if (!(c->t_k > -INFINITY))
-        return 0;
-    const rc_vec3 v = s->b[b].v;
-    const rc_vec3 g = rc_v3_sub(rc_v3_scale(1.0 / (1.0 - rc_v3_dot(c->kappa, v)), c->kappa),
-                                rc_v3_scale(1.0 / (1.0 - rc_v3_dot(kappa, v)), kappa));
-    const double gb = rc_v3_dot(g, rc_v3_scale(s->inv_c, v));
-    const double h2 = rc_v3_norm2(g) - gb * gb;
-    return te - c->t_k < s->b[b].r * sqrt(h2 > 0.0 ? h2 : 0.0);
-}
-
 /* per_ball frames: ball b's velocity changes from `in` to `out` through the contact event
  * X at table time tx, dx = X - (its centre at tx on its stored line), which is still the
  * incoming one (papers/shape-change.md, section 2): its kink is where the hyperplane H
@@ -68,6 +48,8 @@ static void glue_kink_at(rc_sim *s, int32_t b, const rc_particle *in, const rc_p
     eng_advance_ball(s, b, te);
     cv->t_k = te;
     cv->kappa = kappa;
+    if (s->slc_n) /* (a delayed slice at or after te follows the ball after the event) */
+        eng_slice_mark(s, b);
 }
 
 static void glue_kink(rc_sim *s, int32_t b, const rc_particle *in, const rc_particle *out,
@@ -319,7 +301,7 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T, const double *
     }
     /* per_ball frames: each changed member's kink (time, H's normal), once, and whether
      * its hyperplane would reach some point of the ball before the last one did
-     * (kinks_cross; the centre's order is the order rule's). (A member's kink moves only
+     * (eng_kinks_cross; the centre's order is the order rule's). (A member's kink moves only
      * its own record, so the other's is the same before and after it.) */
     int changed[2] = {0, 0}, cross[2] = {0, 0};
     double te[2] = {0.0, 0.0};
@@ -329,7 +311,7 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T, const double *
         if (s->glue && changed[j]) {
             const int32_t b = s->grp_ball[j];
             te[j] = eng_kink_time(s, b, &P[j], &Q[j], tx[j], dX[j], &kap[j]);
-            cross[j] = kinks_cross(s, b, te[j], kap[j]);
+            cross[j] = eng_kinks_cross(s, b, te[j], kap[j], &P[j], &Q[j]);
         }
     }
     /* such a ball met its new partner within its last kink's window: the last collision
@@ -372,12 +354,9 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T, const double *
     for (size_t j = 0; j < nm && !conflict; j++) {
         int32_t b = s->grp_ball[j];
         int32_t partner = nm > 1 ? s->grp_ball[1 - j] : bp;
-        if (s->narrow) {
-            const eng_check chk = {P[j], vold[j], partner, s->glue ? &bat[j] : NULL};
-            conflict = eng_predict_checked_narrow(s, b, &chk);
-        } else {
-            conflict = eng_predict_checked(s, b, vold[j], partner, T);
-        }
+        const eng_check chk = {P[j], vold[j], partner, s->glue ? &bat[j] : NULL};
+        conflict = s->narrow ? eng_predict_checked_narrow(s, b, &chk)
+                             : eng_predict_checked(s, b, &chk, T);
     }
     if (conflict) {
         for (size_t j = 0; j < nm; j++) {
@@ -424,7 +403,7 @@ static int wall_event_point(rc_sim *s, int32_t i, int w, double *tx, rc_vec3 *dx
     rc_v3_set(&e, d, up ? 1.0 : -1.0);
     const double bn = rc_v3_get(beta, d) * (up ? 1.0 : -1.0);
     *dx = rc_v3_scale(b->r * b->r / h, rc_v3_axpy(e, -bn, beta));
-    return eng_glue_side(&s->cov[i], b->v, *tx, *dx);
+    return eng_glue_side(&s->cov[i], &s->glu[i], b->v, *tx, *dx);
 }
 
 
@@ -874,6 +853,8 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
         double top_t;
         uint32_t top_ball;
         eng_queue_top(&s->q, &top_t, &top_ball);
+        if (top_t > s->slc_due) /* (other frames: delayed slices the engine now passes) */
+            eng_slice_take(s, top_t);
         /* nothing will ever happen again (every ball at rest or alone): done */
         if (!(top_t <= t_end) || top_t == INFINITY)
             break;
@@ -940,6 +921,8 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
                 ps[1] = eng_pend_take(s, a->ev_partner);
             const uint64_t rb = s->bk.rollbacks;
             int st = collide(s, i, a->ev_partner, top_t);
+            if (s->slc_nd) /* (delayed slices follow the event's kinks: engine/slice.c) */
+                eng_slice_flush(s);
             if (st != RC_OK)
                 return st;
             for (int j = 0; j < np && s->bk.rollbacks == rb; j++) /* (a rollback notes its

@@ -9,15 +9,16 @@
 size_t rc_sim_count(const rc_sim *s) { return s ? s->n : 0; }
 double rc_sim_time(const rc_sim *s) { return s ? s->now : NAN; }
 
-/* per_ball frames: ball i's state at now where its latest kink lies ahead of it, from the
- * lines eng_pend recorded: 1 (*x in the wrap coordinates *img, p, m, tau, TC memory set),
- * 2 if the line it is on now was not recorded, 0 if the ball is on its stored line. */
-static int before_kink(const rc_sim *s, size_t i, rc_sim_ball *o, const int32_t **img)
+/* per_ball frames: ball i's state at now (t >= now) where its latest kink lies ahead of
+ * it, from the lines eng_pend recorded: 1 (*x in the wrap coordinates *img, p, m, tau, TC
+ * memory set), 2 if the line it is on then was not recorded, 0 if the ball is on its
+ * stored line. */
+static int before_kink(const rc_sim *s, size_t i, double now, rc_sim_ball *o,
+                       const int32_t **img)
 {
-    if (!s->pend || !(s->cov[i].t_k > s->now))
+    if (!s->pend || !(s->cov[i].t_k > now))
         return 0;
     const eng_pend *r = &s->pend[i];
-    const double now = s->now;
     double t0;
     rc_vec3 x0, p;
     double m, tau0, tau_last;
@@ -51,9 +52,14 @@ static int before_kink(const rc_sim *s, size_t i, rc_sim_ball *o, const int32_t 
 
 int eng_ball_now(const rc_sim *s, size_t i, rc_sim_ball *o, int truth)
 {
+    return eng_ball_at(s, i, s->now, o, truth);
+}
+
+int eng_ball_at(const rc_sim *s, size_t i, double t, rc_sim_ball *o, int truth)
+{
     const eng_ball *b = &s->b[i];
     const eng_aux *a = &s->a[i];
-    double h = s->now - b->t;
+    double h = t - b->t;
     o->x = h == 0.0 ? b->x : rc_v3_axpy(b->x, h, b->v);
     o->p = a->p;
     o->r = b->r;
@@ -65,7 +71,7 @@ int eng_ball_now(const rc_sim *s, size_t i, rc_sim_ball *o, int truth)
     if (h != 0.0)
         o->tau += s->inv_c2 == 0.0 ? h : h * (a->m / eng_mass_rel(a->m, a->p, s->inv_c2));
     const int32_t *img = s->img ? s->img + 3 * i : NULL;
-    const int ahead = truth ? before_kink(s, i, o, &img) : 0;
+    const int ahead = truth ? before_kink(s, i, t, o, &img) : 0;
     for (int d = 0; d < 3; d++) {
         o->image[d] = 0;
         if (!s->img || s->walled >> d & 1u || d >= s->def.dim)
@@ -255,7 +261,7 @@ size_t rc_sim_bytes(const rc_sim *s)
                                sizeof *s->cnt + (s->ev_n ? sizeof *s->ev_n : 0) +
                                (s->img ? 3 * sizeof *s->img : 0) +
                                (s->cov ? sizeof *s->cov + sizeof *s->glu + sizeof *s->pend : 0)) +
-           eng_queue_bytes(&s->q) +
+           eng_queue_bytes(&s->q) + eng_slice_bytes(s) +
            s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot +
            s->grp_ball_cap * (sizeof *s->grp_ball + sizeof *s->grp_part) +
            s->grp_con_cap * sizeof *s->grp_con;

@@ -9,12 +9,43 @@
 #include <math.h>
 #include <stdint.h>
 
+#include "approach.h"
 #include "lanes.h"
 #include "private.h"
 #include "walk.h"
 #include "wide.h"
 
 /* ---- the sphere contact test ---------------------------------------------------------- */
+
+/* The touching lanes `cand` of a chunk (the centres closer than the radius sum) in which
+ * ball i and the lane's ball both move near c: their approach verdict from the momenta
+ * (engine/approach.h) where the plain one, dx.(vk - vi) on the stored velocities, has lost
+ * its sign to their rounding (it would miss the collision of a touching pair, or resolve
+ * a parting one). One scalar function for every back end, called per lane, so the same
+ * verdicts in each. Returns the chunk's hit bits with those lanes' replaced where the pair
+ * is of approach.h's fast kind. dx, dy, dz: the lanes' separations. */
+__attribute__((noinline)) static unsigned touching_fast(const rc_sim *s, const eng_ball *bi,
+                                                        const double *const k[ENG_W],
+                                                        const double *dx, const double *dy,
+                                                        const double *dz, unsigned hit,
+                                                        unsigned cand)
+{
+    const eng_aux *ai = &s->a[bi - s->b];
+    const rc_particle pi = {ai->m, ai->p};
+    for (int l = 0; l < ENG_W; l++) {
+        if (!(cand >> l & 1u))
+            continue;
+        const eng_ball *bk = (const eng_ball *)(const void *)k[l];
+        const eng_aux *ak = &s->a[bk - s->b];
+        const rc_particle pk = {ak->m, ak->p};
+        const int v = eng_approach_fast(s->inv_c2, &pi, bi->v, &pk, bk->v,
+                                        rc_v3(dx[l], dy[l], dz[l]), bi->r + bk->r,
+                                        s->def.approach_tol, NULL);
+        if (v >= 0)
+            hit = (hit & ~(1u << l)) | (unsigned)v << l;
+    }
+    return hit;
+}
 
 /* Lane l: the contact time of the bounding spheres of bi and k[l] (the balls' records as
  * doubles: x, v, t, r), absolute and >= now, into out[l] -- INFINITY on a miss or when it
@@ -29,7 +60,8 @@
  * clock is the later one (a ball that has just collided, at the engine's time), so only
  * that branch is computed. three == 0 (2-D, every z component 0): the z terms add +0 and
  * are left out (the sums are the same bits unless one is -0, which no comparison below
- * can tell from +0). */
+ * can tell from +0). A touching pair of two balls near c has its approach decided from the
+ * momenta (touching_fast), only looked at when ball i moves above 0.89 c. */
 ENG_INLINE unsigned pair_lanes(const rc_sim *s, const eng_ball *bi,
                                const double *const k[ENG_W], double best, double stol,
                                double out[ENG_W], unsigned *nears, const int three,
@@ -86,7 +118,23 @@ ENG_INLINE unsigned pair_lanes(const rc_sim *s, const eng_ball *bi,
     const eng_wm slow = eng_gt(eng_mul(b, b), eng_mul(eng_mul(tol, tol), dv2));
     const eng_wd bound = eng_mul(eng_mul(eng_set1(-2.0), b), eng_sub(eng_set1(best), tref));
     const eng_wm flying = eng_and(eng_gt(disc, zero), eng_lt(dd, bound));
-    const eng_wm hit = eng_and(eng_lt(b, zero), eng_select_m(touching, slow, flying));
+    eng_wm hit = eng_and(eng_lt(b, zero), eng_select_m(touching, slow, flying));
+    /* (a touching lane is rare: the partner just after a collision; 0.8 c^2: approach.h's
+     * first test of a Lorentz factor above 3) */
+    if (__builtin_expect(eng_bits(touching) != 0, 0) && rc_v3_norm2(bi->v) * s->inv_c2 > 0.8) {
+        eng_wd vk2 = eng_add(eng_mul(vkx, vkx), eng_mul(vky, vky));
+        if (three)
+            vk2 = eng_add(vk2, eng_mul(vkz, vkz));
+        const unsigned cand = eng_bits(eng_and(
+            touching, eng_gt(eng_mul(vk2, eng_set1(s->inv_c2)), eng_set1(0.8))));
+        if (cand) {
+            double ax[ENG_W], ay[ENG_W], az[ENG_W];
+            eng_store(ax, dx);
+            eng_store(ay, dy);
+            eng_store(az, three ? dz : zero);
+            hit = eng_mask_bits(touching_fast(s, bi, k, ax, ay, az, eng_bits(hit), cand));
+        }
+    }
     *nears = eng_bits(eng_le(d2, eng_mul(lim, lim)));
     if (!eng_bits(hit)) { /* (most chunks) */
         eng_store(out, inf);
@@ -120,27 +168,29 @@ ENG_INLINE void lane_records(const rc_sim *s, const int32_t *nb, const double *k
         k[l] = &s->b[nb[l]].x.x;
 }
 
-/* Simultaneity check of a prediction with vold for neighbour k of ball i (at time T,
- * velocity before the collision vold): approaching within approach_tol, so in contact
- * now. */
-static int approaching_with(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, double T,
-                            rc_vec3 vold)
+/* Simultaneity check of a prediction for neighbour k of ball i (at time T, its state
+ * before the collision chk->old, velocity chk->vold): approaching within approach_tol, so
+ * in contact now. grow_group's test (engine/approach.h), from the momenta: for two balls
+ * moving fast together the stored velocities no longer hold the sign of their approach.
+ * One scalar function for every back end (the lanes call it one neighbour at a time), so
+ * the verdicts are the same bits in each. */
+static int approaching_with(const rc_sim *s, const eng_ball *bi, int32_t k, double T,
+                            const eng_check *chk)
 {
+    const eng_ball *bk = &s->b[k];
     const double atol = s->def.approach_tol, sig = bi->r + bk->r;
     const rc_vec3 dx = eng_image(s, rc_v3_sub(rc_v3_axpy(bk->x, T - bk->t, bk->v), bi->x));
-    const rc_vec3 dv = rc_v3_sub(bk->v, vold);
-    const double bb = rc_v3_dot(dx, dv);
-    return bb < 0.0 && bb * bb > atol * atol * sig * sig * rc_v3_norm2(dv);
+    const rc_particle pk = {s->a[k].m, s->a[k].p};
+    return eng_approaching(s->inv_c2, &chk->old, chk->vold, &pk, bk->v, dx, sig, atol, NULL);
 }
 
 /* One neighbour's verdict, in scan order: 1 if it is a simultaneous contact (see
  * test_list), else keep it if it is the earliest so far (ties: the first). */
 ENG_INLINE int visit(const rc_sim *s, const eng_ball *bi, int32_t k, double t, int near,
-                     int check, int32_t partner, const rc_vec3 *vold, double T, double *bt,
-                     int32_t *bk)
+                     int check, const eng_check *chk, double T, double *bt, int32_t *bk)
 {
     /* one rarely taken branch (&, not &&: the parts are cheap) */
-    if (check & near & (k != partner) && approaching_with(s, bi, &s->b[k], T, *vold))
+    if (check & near & (k != chk->partner) && approaching_with(s, bi, k, T, chk))
         return 1;
     const int take = t < *bt;
     *bt = take ? t : *bt;
@@ -165,12 +215,11 @@ ENG_INLINE unsigned partner_lanes(const int32_t *nb, int32_t partner)
  * else the chunk's earliest lane (the first of equals) replaces the best if strictly
  * earlier -- visit's choice. */
 ENG_INLINE int test_list_dim(const rc_sim *s, int32_t i, int32_t *nb, size_t m,
-                             double *best, int32_t *bp, const rc_vec3 *vold,
-                             int32_t partner, double T, const int three, const int latest,
-                             const int per)
+                             double *best, int32_t *bp, const eng_check *chk, double T,
+                             const int three, const int latest, const int per)
 {
     const eng_ball *bi = &s->b[i];
-    const int check = vold && s->def.sim_tol > 0.0;
+    const int check = chk && s->def.sim_tol > 0.0;
     double bt = *best;
     int32_t bk = *bp;
     const size_t mw = pad_lanes(nb, m, i);
@@ -183,11 +232,10 @@ ENG_INLINE int test_list_dim(const rc_sim *s, int32_t i, int32_t *nb, size_t m,
         const size_t left = m - j < ENG_W ? m - j : ENG_W;
         unsigned near_in = nears & ((1u << left) - 1u);
         if (check && near_in)
-            near_in &= ~partner_lanes(nb + j, partner);
+            near_in &= ~partner_lanes(nb + j, chk->partner);
         if (check && near_in) {
             for (size_t l = 0; l < left; l++)
-                if (visit(s, bi, nb[j + l], t[l], near_in >> l & 1, check, partner, vold, T,
-                          &bt, &bk))
+                if (visit(s, bi, nb[j + l], t[l], near_in >> l & 1, check, chk, T, &bt, &bk))
                     return 1;
             continue;
         }
@@ -206,21 +254,20 @@ ENG_INLINE int test_list_dim(const rc_sim *s, int32_t i, int32_t *nb, size_t m,
 /* (each combination of the constants gets its own copy, 2-D one without z; per without
  * the image -- exactly the identity for neighbours in a block that does not wrap) */
 static int test_list(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *best,
-                     int32_t *bp, const rc_vec3 *vold, int32_t partner, double T, int latest,
-                     int per)
+                     int32_t *bp, const eng_check *chk, double T, int latest, int per)
 {
     if (s->def.dim == 3) {
         if (per)
-            return latest ? test_list_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 1, 1)
-                          : test_list_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 0, 1);
-        return latest ? test_list_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 1, 0)
-                      : test_list_dim(s, i, nb, m, best, bp, vold, partner, T, 1, 0, 0);
+            return latest ? test_list_dim(s, i, nb, m, best, bp, chk, T, 1, 1, 1)
+                          : test_list_dim(s, i, nb, m, best, bp, chk, T, 1, 0, 1);
+        return latest ? test_list_dim(s, i, nb, m, best, bp, chk, T, 1, 1, 0)
+                      : test_list_dim(s, i, nb, m, best, bp, chk, T, 1, 0, 0);
     }
     if (per)
-        return latest ? test_list_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 1, 1)
-                      : test_list_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 0, 1);
-    return latest ? test_list_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 1, 0)
-                  : test_list_dim(s, i, nb, m, best, bp, vold, partner, T, 0, 0, 0);
+        return latest ? test_list_dim(s, i, nb, m, best, bp, chk, T, 0, 1, 1)
+                      : test_list_dim(s, i, nb, m, best, bp, chk, T, 0, 0, 1);
+    return latest ? test_list_dim(s, i, nb, m, best, bp, chk, T, 0, 1, 0)
+                  : test_list_dim(s, i, nb, m, best, bp, chk, T, 0, 0, 0);
 }
 
 /* eng_lanes.sphere_times with three and per constants. */

@@ -23,15 +23,15 @@ struct eng_walk;
 
 typedef struct eng_lanes {
     /* Sphere contact of ball i with the m gathered neighbours nb (uncontracted frames),
-     * the earliest below *best into (*best, *bp) (ties: the first in nb order). With vold
+     * the earliest below *best into (*best, *bp) (ties: the first in nb order). With chk
      * (ball i just collided at T = t_i, every other clock <= T) it also looks for another
-     * contact simultaneous with the resolved one -- gap <= sim_tol, approaching with the
-     * old velocity, not the partner -- and returns 1 at the first, else 0. latest: every
-     * neighbour's clock is at most ball i's; per: the pairs need the nearest image (the
-     * walk's block wraps, eng_walk.image). nb holds NB_CAP (padded in place). */
+     * contact simultaneous with the resolved one -- gap <= sim_tol, approaching ball i's
+     * old state (engine/approach.h), not chk->partner -- and returns 1 at the first, else
+     * 0. latest: every neighbour's clock is at most ball i's; per: the pairs need the
+     * nearest image (the walk's block wraps, eng_walk.image). nb holds NB_CAP (padded in
+     * place). */
     int (*test_list)(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *best,
-                     int32_t *bp, const rc_vec3 *vold, int32_t partner, double T, int latest,
-                     int per);
+                     int32_t *bp, const eng_check *chk, double T, int latest, int per);
     /* Bounding-sphere times t[j] of ball i with the m <= GATHER_MAX neighbours nb
      * (INFINITY unless below `best`; nb and t hold NB_CAP), the broad phase of a contracted
      * frame; as bits (j of the 128): hit, t[j] finite; near, the centres within

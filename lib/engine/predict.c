@@ -50,7 +50,8 @@ static int glue_valid(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, r
     const rc_vec3 dxi = rc_v3_axpy(y, -t, bi->v);
     const rc_vec3 dxk = rc_v3_sub(y, rc_v3_axpy(dx, t, bk->v));
     const eng_cov *ci = &s->cov[bi - s->b], *ck = &s->cov[bk - s->b];
-    return eng_glue_side(ci, bi->v, tx, dxi) && eng_glue_side(ck, bk->v, tx, dxk);
+    return eng_glue_side(ci, &s->glu[bi - s->b], bi->v, tx, dxi) &&
+           eng_glue_side(ck, &s->glu[bk - s->b], bk->v, tx, dxk);
 }
 
 /* per_ball frames: a ball whose kink lies ahead of now is stored at it, on its outgoing
@@ -129,7 +130,7 @@ static int window_contact(const rc_sim *cs, const eng_ball *bi, const eng_ball *
     const rc_vec3 dxo = rc_v3_sub(rc_v3_axpy(out->x, -out->t, bi->v),
                                   wi ? rc_v3_axpy(dx, out->t, rc_v3_sub(bk->v, bi->v))
                                      : rc_v3(0.0, 0.0, 0.0));
-    *valid = piece != 0 && eng_glue_side(co, bo->v, t, dxo);
+    *valid = piece != 0 && eng_glue_side(co, &s->glu[bo - s->b], bo->v, t, dxo);
     return RC_OK;
 }
 
@@ -342,11 +343,10 @@ static void wall_event(const rc_sim *s, int32_t i, unsigned dims, double *best, 
 /* The neighbour scans and the cell crossing run in the engine's lanes (engine/lanes.h:
  * AVX-512, AVX2 or plain C by s->simd, the same bits every way). */
 static inline int test_list(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double *best,
-                            int32_t *bp, const rc_vec3 *vold, int32_t partner, double T,
-                            int latest, int per)
+                            int32_t *bp, const eng_check *chk, double T, int latest,
+                            int per)
 {
-    return eng_lanes_of(s->simd)->test_list(s, i, nb, m, best, bp, vold, partner, T, latest,
-                                            per);
+    return eng_lanes_of(s->simd)->test_list(s, i, nb, m, best, bp, chk, T, latest, per);
 }
 
 static inline void sphere_lanes(const rc_sim *s, int32_t i, int32_t *nb, size_t m, double best,
@@ -608,7 +608,7 @@ static int scan_block(const rc_sim *s, int32_t i, const int c[3], const int lo[3
     int32_t nb[NB_CAP];
     while (!w.done) {
         const size_t m = walk_gather(&w, nb);
-        test_list(s, i, nb, m, best, bp, NULL, ENG_NONE, 0.0, 0, w.image);
+        test_list(s, i, nb, m, best, bp, NULL, 0.0, 0, w.image);
     }
     return 0;
 }
@@ -737,12 +737,15 @@ int eng_predict_checked_narrow(rc_sim *s, int32_t i, const eng_check *chk)
 }
 
 /* Full prediction for member i of a tentatively resolved single contact (i is at time T,
- * vold its velocity before): while scanning, look with the old velocities for any other
- * contact simultaneous with the resolved one (gap <= sim_tol, approaching) -- the same
- * test as grow_group, at no extra distance computation. Returns 1 on such a contact (the
- * caller then undoes and resolves the whole group), else stores the event and returns 0. */
-int eng_predict_checked(rc_sim *s, int32_t i, rc_vec3 vold, int32_t partner, double T)
+ * chk->old its state before, chk->vold its velocity): while scanning, look with the old
+ * state for any other contact simultaneous with the resolved one (gap <= sim_tol,
+ * approaching) -- the same test as grow_group, at no extra distance computation. Returns
+ * 1 on such a contact (the caller then undoes and resolves the whole group), else stores
+ * the event and returns 0. */
+int eng_predict_checked(rc_sim *s, int32_t i, const eng_check *chk, double T)
 {
+    const rc_vec3 vold = chk->vold;
+    const int32_t partner = chk->partner;
     const double stol = s->def.sim_tol;
     const eng_ball *bi = &s->b[i];
     /* sim_tol = 0: no grouping asked for, no check */
@@ -771,7 +774,7 @@ int eng_predict_checked(rc_sim *s, int32_t i, rc_vec3 vold, int32_t partner, dou
     int32_t nb[NB_CAP];
     while (!w.done) {
         const size_t m = walk_gather(&w, nb);
-        if (test_list(s, i, nb, m, &best, &bp, check ? &vold : NULL, partner, T, 1, w.image))
+        if (test_list(s, i, nb, m, &best, &bp, check ? chk : NULL, T, 1, w.image))
             return 1;
     }
     store_event(s, i, best, bp, rc_v3(0, 0, 0), NULL);

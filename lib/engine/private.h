@@ -7,6 +7,7 @@
 
 #include <stdint.h>
 #include "relcol/sim.h"
+#include "../glue_kv.h"
 
 /* Hot data read by every pair test: one 64-byte line per ball. The state is stored at
  * the ball's own time t (its local clock); v = p / M is derived from p and m. */
@@ -113,14 +114,29 @@ typedef struct eng_pend {
     int32_t depth;
 } eng_pend;
 
+/* 1 - kappa.v for the hyperplane c that began a ball's segment and its velocity v on it:
+ * for a ball fast before and after that kink the same way ~1/gamma^2, which the plain
+ * difference loses to the rounding of its terms; then from the kink's tube's shapes
+ * (glue_kv.h rc_glue_omkv_out), when g is that tube (r > 0: not an order conflict's) and
+ * v its outgoing velocity, bit for bit. */
+static inline double eng_seg_den(const eng_cov *c, const rc_glue *g, rc_vec3 v)
+{
+    const double kv = rc_v3_dot(c->kappa, v);
+    if (!(kv > RC_GLUE_KV_FAST) || !(g->r > 0.0) || g->v_out.x != v.x || g->v_out.y != v.y ||
+        g->v_out.z != v.z)
+        return 1.0 - kv;
+    return rc_glue_omkv_out(&g->in, &g->out);
+}
+
 /* Is the event X (table time tx, offset dxb from the ball's centre then on its stored
  * line, velocity v) on the future side of the hyperplane c that began its segment,
  * t - t_k = kappa.(y - x_k)? With x_k on the stored line, X - x_k = dxb + v (tx - t_k), so
  * the test reads (tx - t_k)(1 - kappa.v) >= kappa.dxb (1 - kappa.v > 0: |kappa| < 1/c).
- * No kink yet: t_k = -inf, always true. */
-static inline int eng_glue_side(const eng_cov *c, rc_vec3 v, double tx, rc_vec3 dxb)
+ * No kink yet: t_k = -inf, always true. g: the ball's tube of that kink (s->glu). */
+static inline int eng_glue_side(const eng_cov *c, const rc_glue *g, rc_vec3 v, double tx,
+                                rc_vec3 dxb)
 {
-    return (tx - c->t_k) * (1.0 - rc_v3_dot(c->kappa, v)) >= rc_v3_dot(c->kappa, dxb);
+    return (tx - c->t_k) * eng_seg_den(c, g, v) >= rc_v3_dot(c->kappa, dxb);
 }
 
 /* The event queue (engine/queue.c): one entry per ball, popped in (time, ball) order.
@@ -350,6 +366,21 @@ struct rc_sim {
     eng_undo *und;
     /* per_ball frames only (else NULL): per ball, the lines before its kinks ahead of now */
     eng_pend *pend;
+    /* delayed table-time slices asked for (engine/slice.c; none: slc_n = 0, and no hook
+     * does more than test slc_n) */
+    struct eng_slice *slc;
+    size_t slc_n, slc_cap;
+    uint32_t slc_next_id;
+    /* per_ball frames: caller's indices of the balls whose lines changed in the event
+     * being resolved (slc_mark[i] != 0: listed), brought up to date after it */
+    uint32_t *slc_dirty;
+    unsigned char *slc_mark;
+    size_t slc_nd;
+    /* other frames: the least table time of a slice not yet taken (INFINITY: none) */
+    double slc_due;
+    /* per_ball frames: the largest Lorentz factor of any segment since the oldest slice
+     * was asked for (the reach of later events: slice.c) */
+    double slc_gmax;
     /* per_ball frames: scratch of the prediction -- the contact event of the pair last
      * put to the frame (pair_time_dx) and of the best event so far (scan_block_narrow),
      * as eng_cov.ev_tx / ev_dx */
@@ -400,6 +431,25 @@ int eng_alloc_state(rc_sim *s, size_t n, double rmax);
 int eng_ball_now(const rc_sim *s, size_t i, rc_sim_ball *o, int truth);
 /* Release the balls' state (the engine then holds none). */
 void eng_release_state(rc_sim *s);
+
+/* Ball i (storage slot) at table time t >= its stored time's last event (engine/diag.c),
+ * as eng_ball_now at the engine's time: the kink-ahead test and the lines before kinks
+ * ahead (truth) are taken at t. eng_ball_now is eng_ball_at at s->now. */
+int eng_ball_at(const rc_sim *s, size_t i, double t, rc_sim_ball *o, int truth);
+
+/* engine/slice.c: the delayed slices' hooks, called only where s->slc_n != 0. A kink was
+ * put on ball k (storage slot) in the event being resolved (its line is read after it). */
+void eng_slice_mark(rc_sim *s, int32_t k);
+/* Ball k's last kink, at its stored time, was undone: it is on its incoming line again. */
+void eng_slice_undo(rc_sim *s, int32_t k);
+/* After an event: the slices of the balls marked brought up to date. */
+void eng_slice_flush(rc_sim *s);
+/* Other frames: the engine's next event comes at t_next > slc_due: take the slices due. */
+void eng_slice_take(rc_sim *s, double t_next);
+/* Forget every slice (new balls, a new c, a checkpoint read, the engine freed). */
+void eng_slice_clear(rc_sim *s);
+/* Bytes the slices held take. */
+size_t eng_slice_bytes(const rc_sim *s);
 
 /* Velocity p / M and inverse Lorentz factor of a state. */
 static inline double eng_mass_rel(double m, rc_vec3 p, double inv_c2)
@@ -509,7 +559,7 @@ typedef struct eng_check {
 /* Prediction for ball i just resolved at T (uncontracted frames / contracted ones), that
  * also looks for another contact simultaneous with the resolved one: 1 on one (nothing
  * stored), else the events are stored (the queue is not updated) and 0. */
-int eng_predict_checked(rc_sim *s, int32_t i, rc_vec3 vold, int32_t partner, double T);
+int eng_predict_checked(rc_sim *s, int32_t i, const eng_check *chk, double T);
 int eng_predict_checked_narrow(rc_sim *s, int32_t i, const eng_check *chk);
 /* Ball i crosses into its next cell (events updated, queue too). */
 void eng_cross(rc_sim *s, int32_t i);

@@ -24,6 +24,19 @@ static inline void eng_advance_ball(rc_sim *s, int32_t i, double T)
 }
 
 
+/* 1 - kappa.v_in of the kink from `in` to `out` (H's normal kappa, v_in the stored
+ * velocity p / M of `in`): the plain form, or for a ball fast before and after the same
+ * way the one free of its cancellation (glue_kv.h) */
+static inline double eng_kink_den(double ic2, const rc_particle *in, const rc_particle *out,
+                                  rc_vec3 kappa, rc_vec3 v_in)
+{
+    const double kv = rc_v3_dot(kappa, v_in);
+    if (!(kv > RC_GLUE_KV_FAST))
+        return 1.0 - kv;
+    const double M0 = eng_mass_rel(in->m, in->p, ic2), M1 = eng_mass_rel(out->m, out->p, ic2);
+    return rc_glue_one_minus_kv(ic2, in, M0, out, M1, M0 / in->m + M1 / out->m, kv);
+}
+
 /* H's normal and the kink's time (glue_kink; the stored line is the incoming one) */
 static inline double eng_kink_time(const rc_sim *s, int32_t b, const rc_particle *in,
                                    const rc_particle *out, double tx, rc_vec3 dx, rc_vec3 *kappa)
@@ -33,7 +46,41 @@ static inline double eng_kink_time(const rc_sim *s, int32_t b, const rc_particle
     const double W0 = eng_mass_rel(in->m, in->p, ic2) / in->m + eng_mass_rel(out->m, out->p, ic2) / out->m;
     const rc_vec3 Wv = rc_v3_add(rc_v3_scale(1.0 / in->m, in->p), rc_v3_scale(1.0 / out->m, out->p));
     *kappa = rc_v3_scale(ic2 / W0, Wv);
-    return tx - rc_v3_dot(*kappa, dx) / (1.0 - rc_v3_dot(*kappa, s->b[b].v));
+    return tx - rc_v3_dot(*kappa, dx) / eng_kink_den(ic2, in, out, *kappa, s->b[b].v);
+}
+
+/* Would ball b's new kink (centre at table time te, H's normal kappa, from `in`, its
+ * stored state, to `out`) have its hyperplane reach some point of the ball before its last
+ * one did? On the segment between the two kinks (velocity v, the stored one) a point at
+ * offset rho from the centre is reached by H_i at t_ci + a_i.rho, a_i = kappa_i / (1 -
+ * kappa_i.v); the two sweep the contracted section in order iff t_c2 - t_c1 >= max over it
+ * of (a1 - a2).rho, the support of the contracted disc, r sqrt(|g|^2 - (g.beta)^2). (The
+ * order rule checks the centre only, rho = 0.) For a ball fast before and after each kink
+ * the same way, both denominators are ~1/gamma^2 and the support's two terms gamma^2 times
+ * its value: the last kink's denominator then comes from its tube's shapes (s->glu:
+ * eng_seg_den), the new one's from the momenta (eng_kink_den), and the support as
+ * r sqrt(|g|^2 / gamma^2 + |beta x g|^2), a sum of positive terms. */
+static inline int eng_kinks_cross(const rc_sim *s, int32_t b, double te, rc_vec3 kappa,
+                                  const rc_particle *in, const rc_particle *out)
+{
+    const eng_cov *c = &s->cov[b];
+    if (!(c->t_k > -INFINITY))
+        return 0;
+    const rc_vec3 v = s->b[b].v;
+    const double d1 = eng_seg_den(c, &s->glu[b], v);
+    const double d2 = eng_kink_den(s->inv_c2, in, out, kappa, v);
+    const rc_vec3 g = rc_v3_sub(rc_v3_scale(1.0 / d1, c->kappa), rc_v3_scale(1.0 / d2, kappa));
+    const rc_vec3 beta = rc_v3_scale(s->inv_c, v);
+    double h2;
+    /* (1/gamma^2 above 2^-10: the plain form loses ten bits at most) */
+    if (!(rc_v3_norm2(beta) > RC_GLUE_KV_FAST)) {
+        const double gb = rc_v3_dot(g, beta);
+        h2 = rc_v3_norm2(g) - gb * gb;
+    } else {
+        const double w = in->m / eng_mass_rel(in->m, in->p, s->inv_c2);
+        h2 = w * w * rc_v3_norm2(g) + rc_v3_norm2(rc_v3_cross(beta, g));
+    }
+    return te - c->t_k < s->b[b].r * sqrt(h2 > 0.0 ? h2 : 0.0);
 }
 
 

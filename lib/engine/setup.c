@@ -127,6 +127,7 @@ int rc_sim_create(const rc_sim_def *def, rc_sim **out)
     rc_sim *s = calloc(1, sizeof *s);
     if (!s)
         return RC_ENOMEM;
+    s->slc_due = INFINITY; /* (no delayed slice) */
     s->def = *def;
     if (def->dim == 2)
         s->def.box.z = 0.0;
@@ -206,6 +207,7 @@ void rc_sim_free(rc_sim **sp)
     if (!sp || !*sp)
         return;
     rc_sim *s = *sp;
+    eng_slice_clear(s);
     release_balls(s);
     free(s->grp_ball);
     free(s->grp_part);
@@ -266,6 +268,8 @@ static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, i
 
 int rc_sim_set_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad)
 {
+    if (s)
+        eng_slice_clear(s); /* (slices are of the balls replaced: sim.h) */
     return load_balls(s, n, in, bad, 1);
 }
 
@@ -301,6 +305,7 @@ int rc_sim_set_c(rc_sim *s, double c)
     int st = rc_inv_c2(c, &k);
     if (st != RC_OK)
         return st;
+    eng_slice_clear(s); /* (the kinks ahead are made now: the worldlines change, sim.h) */
     size_t n = s->n;
     rc_sim_ball *b = malloc((n ? n : 1) * sizeof *b);
     if (!b)

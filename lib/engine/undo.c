@@ -123,6 +123,8 @@ static void lift(rc_sim *s, ugroup *G)
         s->cov[b] = u->cov;
         s->glu[b] = u->glu;
         s->clk[b].tau_last = u->tau_last;
+        if (s->slc_n) /* (a delayed slice at or after the undone kink: the incoming line) */
+            eng_slice_undo(s, b);
     }
 }
 
@@ -298,6 +300,8 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
     if (eng_pair_contact(s, w, k, t0, &t2, &dX2, &n2) != RC_OK) {
         for (size_t g = ng; g-- > 0;)
             put_back(s, &G[g]);
+        if (s->slc_nd) /* (slices lift moved: back on the members' lines) */
+            eng_slice_flush(s);
         return 0;
     }
     s->bk.rollbacks++;
@@ -493,8 +497,9 @@ int eng_undo_conflict(rc_sim *s, int32_t i, int32_t bp, double T, int tube)
         const eng_ball *bi = &s->b[i], *bq = &s->b[bp];
         const rc_vec3 sep = eng_image(s, rc_v3_sub(rc_v3_axpy(bq->x, tx - bq->t, bq->v),
                                                    rc_v3_axpy(bi->x, tx - bi->t, bi->v)));
-        const int in_i = !eng_glue_side(&s->cov[i], s->b[i].v, tx, dXi),
-                  in_q = !eng_glue_side(&s->cov[bp], s->b[bp].v, tx, rc_v3_sub(dXi, sep));
+        const int in_i = !eng_glue_side(&s->cov[i], &s->glu[i], s->b[i].v, tx, dXi),
+                  in_q = !eng_glue_side(&s->cov[bp], &s->glu[bp], s->b[bp].v, tx,
+                                        rc_v3_sub(dXi, sep));
         if (!in_i && !in_q)
             return 0;
         if (in_i && in_q)

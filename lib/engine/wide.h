@@ -57,6 +57,8 @@ ENG_INLINE eng_wm eng_select_m(eng_wm m, eng_wm a, eng_wm b)
 }
 /* bit l: lane l of the mask */
 ENG_INLINE unsigned eng_bits(eng_wm m) { return m; }
+/* the mask whose lane l is bit l */
+ENG_INLINE eng_wm eng_mask_bits(unsigned bits) { return (eng_wm)bits; }
 
 /* Lane l gets the eight doubles at rec[l] (field f into out[f]): a 64-byte ball record a
  * lane, transposed by three rounds of eight shuffles. */
@@ -148,6 +150,12 @@ ENG_INLINE eng_wm eng_or(eng_wm a, eng_wm b) { return _mm256_or_pd(a, b); }
 ENG_INLINE eng_wd eng_select(eng_wm m, eng_wd a, eng_wd b) { return _mm256_blendv_pd(b, a, m); }
 ENG_INLINE eng_wm eng_select_m(eng_wm m, eng_wm a, eng_wm b) { return _mm256_blendv_pd(b, a, m); }
 ENG_INLINE unsigned eng_bits(eng_wm m) { return (unsigned)_mm256_movemask_pd(m); }
+ENG_INLINE eng_wm eng_mask_bits(unsigned bits)
+{
+    const __m256i sel = _mm256_setr_epi64x(1, 2, 4, 8);
+    const __m256i b = _mm256_and_si256(_mm256_set1_epi64x((long long)bits), sel);
+    return _mm256_castsi256_pd(_mm256_cmpeq_epi64(b, sel));
+}
 
 /* Lane l gets the eight doubles at rec[l]: each record's two halves, transposed four by
  * four (low halves: fields 0..3, high halves: 4..7). */
@@ -257,6 +265,7 @@ ENG_INLINE eng_wm eng_or(eng_wm a, eng_wm b) { return a | b; }
 ENG_INLINE eng_wd eng_select(eng_wm m, eng_wd a, eng_wd b) { return m ? a : b; }
 ENG_INLINE eng_wm eng_select_m(eng_wm m, eng_wm a, eng_wm b) { return m ? a : b; }
 ENG_INLINE unsigned eng_bits(eng_wm m) { return (unsigned)m; }
+ENG_INLINE eng_wm eng_mask_bits(unsigned bits) { return (eng_wm)(bits & 1u); }
 
 ENG_INLINE void eng_load_records(const double *const rec[1], eng_wd out[8])
 {

@@ -112,6 +112,13 @@ double rc_sim_time(const rc_sim *s);
 int rc_sim_get_ball(const rc_sim *s, size_t i, rc_sim_ball *out);
 int rc_sim_get_ball_latest(const rc_sim *s, size_t i, rc_sim_ball *out);
 int rc_sim_kink_ahead(const rc_sim *s, size_t i);
+typedef struct rc_sim_slice_info {
+    double ts; double t_final; int final; uint64_t late; double reach;
+} rc_sim_slice_info;
+int rc_sim_slice_request(rc_sim *s, double ts, uint32_t *id);
+int rc_sim_slice_ready(const rc_sim *s, uint32_t id, rc_sim_slice_info *info);
+int rc_sim_slice_get(rc_sim *s, uint32_t id, size_t i, rc_sim_ball *out);
+int rc_sim_slice_release(rc_sim *s, uint32_t id);
 int rc_sim_diagnostics(const rc_sim *s, rc_sim_diag *d);
 uint64_t rc_sim_hash(const rc_sim *s);
 typedef struct rc_sim_gas_def {

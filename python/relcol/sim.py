@@ -303,14 +303,18 @@ class Sim:
         """The engine's table time."""
         return lib.rc_sim_time(self._sim)
 
-    def _read(self, latest=False):
+    def _read(self, latest=False, slice_id=None):
         n, dim = lib.rc_sim_count(self._sim), self.dim
         out = ffi.new("rc_sim_ball *")
         x, p = np.empty((n, dim)), np.empty((n, dim))
         r, m, tau = np.empty(n), np.empty(n), np.empty(n)
         image = np.empty((n, dim), dtype=np.int64)
         ahead = np.zeros(n, dtype=np.int64)
-        get = lib.rc_sim_get_ball_latest if latest else lib.rc_sim_get_ball
+        if slice_id is not None:
+            latest = True  # (no kink_ahead: a final slice has none to flag)
+            get = lambda sim, i, o: lib.rc_sim_slice_get(sim, slice_id, i, o)
+        else:
+            get = lib.rc_sim_get_ball_latest if latest else lib.rc_sim_get_ball
         for i in range(n):
             check(get(self._sim, i, out), "ball", i)
             x[i] = (out.x.x, out.x.y, out.x.z)[:dim]
@@ -333,6 +337,40 @@ class Sim:
         mr = np.sqrt(m * m + np.sum(p * p, axis=1) * (0.0 if math.isinf(self.c) else self.c ** -2))
         return {"t": self.time, "x": x, "p": p, "v": p / mr[:, None], "r": r, "m": m,
                 "tau": tau, "image": image, "kink_ahead": ahead}
+
+    def slice_request(self, t):
+        """Ask for the delayed table-time slice at t >= the engine's time (relcol/sim.h,
+        rc_sim_slice_request): every ball's state at t on its worldline, kept by the engine
+        as later collisions place or undo kinks before t. Returns its id."""
+        sid = ffi.new("uint32_t *")
+        check(lib.rc_sim_slice_request(self._sim, _num(t, "t"), sid), "slice at t = %g" % t)
+        return int(sid[0])
+
+    def slice_ready(self, sid):
+        """A dict: final (bool), ts, t_final (the engine time from which it is final, as
+        now bounded), late (changes after it was first read: relcol/sim.h), reach (the
+        largest engine time minus ts at which the slice changed, -inf: none)."""
+        info = ffi.new("rc_sim_slice_info *")
+        rc = lib.rc_sim_slice_ready(self._sim, int(sid), info)
+        check(rc, "slice %d" % sid)
+        return {"final": rc == 1, "ts": info.ts, "t_final": info.t_final,
+                "late": int(info.late), "reach": info.reach}
+
+    def slice_state(self, sid, release=False):
+        """Slice sid's balls as a dict like state() (t: the slice's time), once final
+        (RelcolError RC_ENOTREADY before: advance to slice_ready(sid)["t_final"]). Its sums
+        are not the conserved ones (relcol/sim.h). release=True drops it after reading."""
+        ts = self.slice_ready(sid)["ts"]
+        x, p, r, m, tau, image, _ = self._read(slice_id=int(sid))
+        if release:
+            self.slice_release(sid)
+        mr = np.sqrt(m * m + np.sum(p * p, axis=1) * (0.0 if math.isinf(self.c) else self.c ** -2))
+        return {"t": ts, "x": x, "p": p, "v": p / mr[:, None], "r": r, "m": m,
+                "tau": tau, "image": image}
+
+    def slice_release(self, sid):
+        """Drop slice sid."""
+        check(lib.rc_sim_slice_release(self._sim, int(sid)), "slice %d" % sid)
 
     positions = property(lambda self: self._read()[0], doc="centres, (N, dim)")
     momenta = property(lambda self: self._read()[1], doc="momenta, (N, dim)")

@@ -142,3 +142,37 @@ def test_covariant_state_reads_kinks_ahead():
         assert not np.array_equal(st["p"][ahead], lt["p"][ahead]) or not ahead.any()
         assert np.allclose(lt["p"].sum(axis=0), p0, atol=1e-12 * np.abs(lt["p"]).sum())
     assert seen > 0
+
+
+def test_slices():
+    # a delayed slice: in the zmf frame the state a second run has at t, bit for bit; in
+    # the covariant frame refused (RC_ENOTREADY) until the engine is past t + W, then read
+    box, balls = relcol.gas_init(2, 100, 1.0, 0.3, 0.5, c=1.0, seed=3)
+    a = relcol.Sim(dim=2, box=box, c=1.0, balls=balls, contact_frame="zmf",
+                   boundary="periodic")
+    b = relcol.Sim(dim=2, box=box, c=1.0, balls=balls, contact_frame="zmf",
+                   boundary="periodic")
+    sid = b.slice_request(3.0)
+    b.advance(6.0)
+    sl = b.slice_state(sid, release=True)
+    st = a.advance(3.0).state()
+    for k in ("x", "p", "m", "tau", "image"):
+        assert np.array_equal(sl[k], st[k])
+    with pytest.raises(relcol.RelcolError) as e:
+        b.slice_ready(sid)
+    assert e.value.name == "RC_ENOSLICE"
+    cov = relcol.Sim(dim=2, box=box, c=1.0, balls=balls, contact_frame="covariant",
+                     boundary="periodic")
+    sid = cov.slice_request(2.0)
+    cov.advance(2.5)
+    info = cov.slice_ready(sid)
+    assert not info["final"] and info["t_final"] > 2.5
+    with pytest.raises(relcol.RelcolError) as e:
+        cov.slice_state(sid)
+    assert e.value.name == "RC_ENOTREADY"
+    while not info["final"]:  # (t_final grows while the run makes faster balls)
+        cov.advance(info["t_final"])
+        info = cov.slice_ready(sid)
+    sl = cov.slice_state(sid)
+    assert sl["t"] == 2.0 and cov.slice_ready(sid)["late"] == 0
+    assert sl["x"].shape == (100, 2) and np.all((sl["x"] >= 0) & (sl["x"] < box[0]))

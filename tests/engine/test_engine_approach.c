@@ -13,6 +13,7 @@
 #include "rc_test.h"
 #include "relcol/relcol.h"
 #include "../../lib/engine/approach.h"
+#include "../../lib/engine/private.h"
 
 
 /* The exact verdict on the double data (velocities p/M in __float128), and |vk - vi|^2. */
@@ -153,8 +154,161 @@ static void test_comoving_pairs(void)
            n, napp, wrong, nflip, ww, nill, ratio, aw);
 }
 
+/* The same question as the engine's lanes ask it: eng_predict_checked, after a resolved
+ * contact, looks among the neighbours of a ball just collided for one in contact with it
+ * (the spheres within sim_tol) and approaching its velocity before -- a simultaneous
+ * contact, which sends the whole group to the group solver. Two uncontracted spheres
+ * touching in the table, moving together near c (Lorentz factors 10 .. 1e8) with the
+ * data's momenta, in an engine of each lane width (plain C, AVX2, AVX-512: the widths the
+ * CPU lacks fall back to narrower ones, and that part is trivially met). The verdict must
+ * be the exact one on the double data (__float128), except where one rounding of the data
+ * flips it, and the same in every width. */
+static int predict_conflict(rc_sim_simd simd, double c, const rc_particle *P, const double *rad,
+                            rc_vec3 x0, rc_vec3 x1)
+{
+    rc_sim_def d = rc_sim_def_default();
+    d.dim = 3;
+    d.box = rc_v3(8, 8, 8);
+    d.c = c;
+    d.simd = simd;
+    rc_sim *s = NULL;
+    if (rc_sim_create(&d, &s) != RC_OK)
+        return -1;
+    const rc_sim_ball b[2] = {{.x = x0, .p = P[0].p, .r = rad[0], .m = P[0].m},
+                              {.x = x1, .p = P[1].p, .r = rad[1], .m = P[1].m}};
+    int v = -1;
+    if (rc_sim_set_balls(s, 2, b, NULL) == RC_OK) {
+        /* (the engine's own index of ball 0: its cells may order them otherwise) */
+        const int32_t i = s->b[0].x.x == x0.x && s->b[0].x.y == x0.y && s->b[0].x.z == x0.z ? 0 : 1;
+        const eng_check chk = {{s->a[i].m, s->a[i].p}, s->b[i].v, ENG_NONE, NULL};
+        v = eng_predict_checked(s, i, &chk, s->now);
+    }
+    rc_sim_free(&s);
+    return v;
+}
+
+/* The engine's first event, run to 1e-9 after the start: 1 if it was a collision (a
+ * touching pair is predicted at once by the lanes' sphere test, pair_lanes in
+ * lib/engine/kernels.h, when it approaches; the law then resolves it). */
+static int first_collision(rc_sim_simd simd, double c, const rc_particle *P, const double *rad,
+                           rc_vec3 x0, rc_vec3 x1)
+{
+    rc_sim_def d = rc_sim_def_default();
+    d.dim = 3;
+    d.box = rc_v3(8, 8, 8);
+    d.c = c;
+    d.simd = simd;
+    rc_sim *s = NULL;
+    if (rc_sim_create(&d, &s) != RC_OK)
+        return -1;
+    const rc_sim_ball b[2] = {{.x = x0, .p = P[0].p, .r = rad[0], .m = P[0].m},
+                              {.x = x1, .p = P[1].p, .r = rad[1], .m = P[1].m}};
+    int v = -1;
+    rc_sim_diag dg;
+    if (rc_sim_set_balls(s, 2, b, NULL) == RC_OK && rc_sim_advance(s, 1e-9, 16) >= 0 &&
+        rc_sim_diagnostics(s, &dg) == RC_OK)
+        v = dg.collisions > 0;
+    rc_sim_free(&s);
+    return v;
+}
+
+/* engine: 0 asks eng_predict_checked's simultaneity check (the pair within sim_tol of
+ * touching), 1 the engine's own prediction of a touching pair (overlapping by 1e-12 of the
+ * radius sum, far below overlap_tol: the state after a collision) */
+static void touching_pairs(int engine)
+{
+    rc_test_rng r = {2031};
+    const double atol = 1e-10; /* the engine's default approach_tol */
+    const rc_sim_simd widths[3] = {RC_SIM_SIMD_SCALAR, RC_SIM_SIMD_AVX2, RC_SIM_SIMD_AUTO};
+    int n = 0, napp = 0, wrong = 0, nflip = 0, differ = 0;
+    for (int it = 0; it < 4000; it++) {
+        const double c = rc_test_uniform(&r) < 0.5 ? 1.0 : logu(&r, 0.1, 10);
+        const q128 k = rc_inv_c2_of(c);
+        double m[2], rad[2];
+        for (int i = 0; i < 2; i++) {
+            m[i] = logu(&r, 0.2, 5);
+            rad[i] = rc_test_range(&r, 0.2, 1.0);
+        }
+        const double sig = rad[0] + rad[1];
+        /* the pair slow in a frame R (relative speed up to 0.9 c), R moving at Lorentz
+         * factor 10 .. 1e8 along a coordinate axis in two draws of three, else along a
+         * random direction d */
+        const int axis = it % 3 != 0, ax = (int)(3 * rc_test_uniform(&r));
+        qv d = qv_of(rc_v3(rc_test_range(&r, -1, 1), rc_test_range(&r, -1, 1),
+                           rc_test_range(&r, -1, 1)));
+        if (axis)
+            d = (qv){ax == 0, ax == 1, ax == 2};
+        d = qscale(1 / qnorm(d), d);
+        qv vR[2];
+        for (int i = 0; i < 2; i++) {
+            const qv w = qv_of(rc_v3(rc_test_range(&r, -1, 1), rc_test_range(&r, -1, 1),
+                                     rc_test_range(&r, -1, 1)));
+            vR[i] = qscale(c * rc_test_range(&r, 0.0, 0.45) / qnorm(w), w);
+        }
+        const q128 G = logu(&r, 10, 1e8), V = sqrtq((1 - 1 / (G * G)) / k);
+        rc_particle P[2];
+        for (int i = 0; i < 2; i++) {
+            const q128 g = 1 / sqrtq(1 - qdot(vR[i], vR[i]) * k);
+            q128 E = m[i] * g;
+            qv p = qscale(m[i] * g, vR[i]);
+            qboost(qscale(-V, d), G, k, &E, &p);
+            P[i] = (rc_particle){m[i], dv_of(p)};
+        }
+        /* touching in the table along the motion (a row of balls), off it by a
+         * log-uniform angle 1e-20 .. 1, or in a random direction */
+        const qv e = qv_of(rc_v3(rc_test_range(&r, -1, 1), rc_test_range(&r, -1, 1),
+                                 rc_test_range(&r, -1, 1)));
+        const int how = it % 4;
+        qv dir = e;
+        if (how != 3)
+            dir = qaxpy(qscale(rc_test_uniform(&r) < 0.5 ? -1 : 1, d),
+                        how == 0 ? 0 : logu(&r, 1e-20, 1) / qnorm(e), e);
+        const rc_vec3 x0 = rc_v3(4, 4, 4);
+        const q128 f = engine ? 1 - (q128)1e-12 : 1;
+        const rc_vec3 x1 = rc_v3_add(x0, dv_of(qscale(f * sig / qnorm(dir), dir)));
+        const rc_vec3 dx = rc_v3_sub(x1, x0); /* (exact: Sterbenz) */
+        q128 w2;
+        const int want = exact(k, &P[0], &P[1], dx, sig, atol, &w2);
+        int got[3];
+        for (int l = 0; l < 3; l++)
+            got[l] = engine ? first_collision(widths[l], c, P, rad, x0, x1)
+                            : predict_conflict(widths[l], c, P, rad, x0, x1);
+        ENSURE_MSG(got[0] >= 0, "gamma %.3g: the engine refused the pair", (double)G);
+        if (got[0] < 0)
+            continue;
+        n++;
+        napp += want;
+        differ += got[1] != got[0] || got[2] != got[0];
+        ENSURE_MSG(got[1] == got[0] && got[2] == got[0], "gamma %.3g: lanes differ: %d %d %d",
+                   (double)G, got[0], got[1], got[2]);
+        int ok = got[0] == want;
+        if (!ok) {
+            int flips;
+            double kw;
+            conditioning(k, &P[0], &P[1], dx, sig, atol, want, w2, &flips, &kw);
+            ok = flips;
+            nflip += ok;
+        }
+        wrong += got[0] != want;
+        ENSURE_MSG(ok, "%s: gamma %.3g, c %g, contact %s: %d (exact %d)",
+                   engine ? "collision" : "conflict", (double)G, c,
+                   how == 0 ? "along the motion" : how == 3 ? "random" : "tilted", got[0],
+                   want);
+    }
+    printf("  %s, %d touching pairs (%d approaching), gamma 10 .. 1e8, three "
+           "lane widths (%d differ): %d verdicts differ from the exact one (%d where one "
+           "rounding of the data flips it)\n",
+           engine ? "the engine's first collision" : "eng_predict_checked", n, napp, differ,
+           wrong, nflip);
+}
+
+static void test_predict_checked(void) { touching_pairs(0); }
+static void test_touching_predicted(void) { touching_pairs(1); }
+
 int main(void)
 {
     RUN_TEST(test_comoving_pairs);
+    RUN_TEST(test_predict_checked);
+    RUN_TEST(test_touching_predicted);
     RC_TEST_MAIN_END();
 }

@@ -305,10 +305,58 @@ static int section_at(const hist *h, double t, piece out[3])
 typedef struct audit_out {
     long events, slices, pairs, counted, counted_pair, undefined, faults;
     long reads_ahead, reads_two_ahead, read_bad;
+    /* delayed slices (rc_sim_slice_*): ball-states compared with the rebuilt worldline when
+     * final and again three delays later, proper times compared, wrong ones, late changes,
+     * slices the engine refused (three kinks ahead of ts) */
+    long slice_reads, slice_tau, slice_bad, slice_late, slice_refused, slices_done;
+    double slice_err, slice_use; /* slice_use: the largest reach / W (rc_sim_slice_info) */
     long undone; /* kinks the engine undid (their lines dropped from the history) */
     double read_err;
     double worst, worst_fault, span;
 } audit_out;
+
+/* Every ball of delayed slice id at ts against the rebuilt worldlines: the line begun by
+ * the last kink at or before ts, where the model defines it (not inside the void windows
+ * of the order rule's kinks). 1e-9 of r and of c: the same lines through the same kinks,
+ * computed in another order (round-off ~1e-13). Where that line is the ball's latest
+ * segment, its proper time at ts is the latest read-out's taken back along it, to 1e-9
+ * relative (times ~50, round-off ~1e-14 relative). The slice's sums are not compared with
+ * the conserved ones: its balls are taken at one table time, while a collision exchanges
+ * momentum across its hyperplanes, so a slice between a pair's two kinks holds one ball
+ * before and the other after (relcol/sim.h). */
+static void check_slice(rc_sim *s, const hist *H, size_t n, uint32_t id, double ts, double now,
+                        audit_out *res)
+{
+    for (size_t i = 0; i < n; i++) {
+        const hist *h = &H[i];
+        size_t last = 0;
+        int void_ = 0;
+        for (size_t k = 0; k < h->n; k++) {
+            if (h->l[k].ts <= ts)
+                last = k;
+            void_ |= !(h->l[k].und_lo > h->l[k].und_hi) && ts >= h->l[k].und_lo &&
+                     ts <= h->l[k].und_hi;
+        }
+        if (void_)
+            continue;
+        rc_sim_ball b, w;
+        ENSURE(rc_sim_slice_get(s, id, i, &b) == RC_OK);
+        const line *l = &h->l[last];
+        const rc_vec3 x = rc_v3_axpy(l->xs, ts - l->tr, l->v);
+        const double M = sqrt(b.m * b.m + rc_v3_norm2(b.p));
+        double err = fmax(rc_v3_norm(rc_v3_sub(b.x, x)) / h->r,
+                          rc_v3_norm(rc_v3_sub(rc_v3_scale(1.0 / M, b.p), l->v)));
+        res->slice_reads++;
+        if (last == h->n - 1) {
+            rc_sim_get_ball_latest(s, i, &w);
+            const double tau = w.tau - (now - ts) * w.m / sqrt(w.m * w.m + rc_v3_norm2(w.p));
+            err = fmax(err, fabs(b.tau - tau) / fmax(1.0, fabs(tau)));
+            res->slice_tau++;
+        }
+        res->slice_err = fmax(res->slice_err, err);
+        res->slice_bad += err > 1e-9;
+    }
+}
 
 static void audit(size_t n, double packing, double v_rms, double eps, long events, uint64_t seed,
                   audit_out *res)
@@ -353,7 +401,25 @@ static void audit(size_t n, double packing, double v_rms, double eps, long event
     res->worst = res->worst_fault = -1.0;
     int printed = 0;
     double t_last_audit = -INFINITY;
+    /* delayed slices held: id, table time, checked once final */
+    enum { NSLICE = 32 };
+    uint32_t sid[NSLICE];
+    double sts[NSLICE];
+    int sck[NSLICE];
+    int nsl = 0;
     for (long e = 0; e < events; e++) {
+        /* a slice asked for every 20 events, at the engine's time or a little ahead */
+        if (e % 20 == 0 && nsl < NSLICE) {
+            const double ts = rc_sim_time(s) + (e % 40 == 0 ? 0.0 : 0.3);
+            const int st = rc_sim_slice_request(s, ts, &sid[nsl]);
+            ENSURE(st == RC_OK || st == RC_EINVAL);
+            if (st == RC_OK) {
+                sts[nsl] = ts;
+                sck[nsl++] = 0;
+            } else {
+                res->slice_refused++;
+            }
+        }
         if (rc_sim_advance(s, INFINITY, 1) != RC_OK)
             break;
         res->events++;
@@ -460,6 +526,26 @@ static void audit(size_t n, double packing, double v_rms, double eps, long event
             res->reads_two_ahead += ka == 1 && ahead_n >= 2;
             res->read_err = fmax(res->read_err, err);
             res->read_bad += err > 1e-9 || (ka == 1) != (ahead_n > 0);
+        }
+        for (int q = 0; q < nsl; q++) {
+            rc_sim_slice_info inf;
+            if (rc_sim_slice_ready(s, sid[q], &inf) != 1)
+                continue;
+            if (!sck[q]) {
+                check_slice(s, H, n, sid[q], sts[q], now, res);
+                sck[q] = 1;
+            } else if (now >= inf.t_final + 3.0 * (inf.t_final - inf.ts)) {
+                check_slice(s, H, n, sid[q], sts[q], now, res);
+                res->slice_late += (long)inf.late;
+                res->slice_use = fmax(res->slice_use, inf.reach / (inf.t_final - inf.ts));
+                res->slices_done++;
+                ENSURE(rc_sim_slice_release(s, sid[q]) == RC_OK);
+                sid[q] = sid[nsl - 1];
+                sts[q] = sts[nsl - 1];
+                sck[q] = sck[nsl - 1];
+                nsl--;
+                q--;
+            }
         }
         /* The slice at ta = now - W is final: no collision processed later (contact
          * event at or after now) has a glue window reaching back before now - W, W twice
@@ -576,7 +662,14 @@ static void run(size_t n, double packing, double v_rms, double eps, long events,
     printf("    read-out at the engine's time: %ld reads with a kink ahead (%ld with two), "
            "worst difference from the rebuilt worldline %.2g, %ld wrong\n", r.reads_ahead,
            r.reads_two_ahead, r.read_err, r.read_bad);
+    printf("    delayed slices: %ld read final and %ld three delays later (%ld refused), %ld "
+           "ball-states and %ld proper times against the rebuilt worldlines, worst %.2g, %ld "
+           "wrong, %ld changed after read; the latest change came %.2f W after ts\n", r.slices_done,
+           r.slices_done, r.slice_refused, r.slice_reads, r.slice_tau, r.slice_err, r.slice_bad,
+           r.slice_late, r.slice_use);
     ENSURE(r.read_bad == 0 && r.reads_ahead > 0);
+    ENSURE(r.slice_bad == 0 && r.slice_late == 0 && r.slices_done > 20 && r.slice_tau > 0);
+    ENSURE(r.slice_use > 0.0 && r.slice_use < 1.0); /* (changes were followed, within W) */
     /* (a slice per event at most, fewer where the lag W grows with the fastest ball: the
      * audit must still have looked at most of the run, some 1400-2600 slices of 3000) */
     ENSURE(r.events == events && r.slices > events / 3);

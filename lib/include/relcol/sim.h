@@ -372,8 +372,9 @@ int rc_sim_get_ball(const rc_sim *s, size_t i, rc_sim_ball *out);
  * such a collision is not processed yet at the engine's time, so rc_sim_get_ball still
  * gives that ball's incoming line there: it is the table-time picture of the collisions
  * decided so far, and the slice at a time t is complete only for collisions whose contact
- * events lie before t (papers/shape-change.md, section 6). This read-out applies every
- * change at its contact event instead, for both balls alike. */
+ * events lie before t (papers/shape-change.md, section 6; the complete slice, read later:
+ * rc_sim_slice_request below). This read-out applies every change at its contact event
+ * instead, for both balls alike. */
 int rc_sim_get_ball_latest(const rc_sim *s, size_t i, rc_sim_ball *out);
 /* per_ball frames (covariant): ball i's glued world tube through its latest kink
  * (relcol/toi.h: rc_glue; its section at a time t is the incoming cylinder's part not yet
@@ -391,6 +392,69 @@ int rc_sim_get_glue(const rc_sim *s, size_t i, rc_glue *out);
  * read while any ball's kink lies ahead does not carry the change still to come:
  * continuing from the balls alone loses it (use a checkpoint). Negative: RC_EINVAL. */
 int rc_sim_kink_ahead(const rc_sim *s, size_t i);
+/* ---- delayed table-time slices: every ball's state at one table time ts ------------- */
+
+/* A per_ball frame (covariant) changes a ball's velocity at its own kink E, up to a glue
+ * window before or after the contact event X whose table time orders the events, and a
+ * later collision can undo a kink and place new ones (papers/shape-change.md, sections
+ * 6-8). So no read-out at the engine's time gives the table-time slice: rc_sim_get_ball
+ * misses collisions whose X lies after now but whose kink lies before it, and
+ * rc_sim_get_ball_latest applies every change at X. A slice asked for ahead of time is
+ * kept by the engine -- every ball's state at ts on the segment of its worldline that
+ * holds ts, brought up to date whenever a kink at or before ts is placed or undone -- and
+ * can be read once no later event can place or undo a kink at or before ts: from the
+ * engine's time ts + W on,
+ *     W = (2 r_max / c) (1 + 3 sqrt(G^2 - 1)),
+ * r_max the largest rest radius and G the largest Lorentz factor of any ball's segment
+ * since the slice was asked for (it grows as the run makes faster balls), which bounds a
+ * single contact's reach (its X before now, its kink before X) and a rollback's (the kink
+ * it undoes, the collision that kink belonged to, its partner's new kink:
+ * papers/shape-change.md, section 9). In every other frame (and at infinite c) a ball's
+ * velocity changes at its event's table time: W = 0, and the slice is the one
+ * rc_sim_get_ball gives with the engine's time at ts (taken as the engine passes ts, bit
+ * for bit). A slice is not a conserved sum: its balls are taken at one table time, not
+ * across the hyperplanes on which collisions exchange momentum, so its total momentum and
+ * energy differ from rc_sim_diagnostics'. Reading never changes the run. The engine's work
+ * per slice is O(N) when asked (and, other frames, when taken) and O(1) per kink it must
+ * follow; its memory O(N) per slice held. Slices are not part of a checkpoint:
+ * rc_sim_checkpoint_read, rc_sim_set_balls and rc_sim_set_c drop every slice held
+ * (afterwards their ids give RC_ENOSLICE); a checkpoint written while slices are held
+ * does not carry them (ask again after reading it). rc_sim_sync keeps them. */
+
+/* What rc_sim_slice_ready reports. */
+typedef struct rc_sim_slice_info {
+    double ts;      /* the slice's table time */
+    double t_final; /* engine time from which it is final, as W is bounded now (it can
+                       grow while the run makes faster balls) */
+    int final;      /* 1: final, it can be read */
+    /* changes to the slice after it was first read final: a later event reached back
+     * before ts, beyond W (W's bound holds for single contacts and tube-conflict
+     * rollbacks; a rollback for an overlap the frame reported undoes the later kink of the
+     * pair, which is not bounded): the values read then were not the final ones. The
+     * engine keeps the slice up to date while it is held, so a read after it is. */
+    uint64_t late;
+    /* the largest engine time minus ts at which an event changed the slice (-inf: none
+     * since it was asked for): how much of W the run has used */
+    double reach;
+} rc_sim_slice_info;
+
+/* Ask for the slice at table time ts >= the engine's time; *id names it. RC_EINVAL for
+ * NULL arguments, no balls, ts NaN, infinite or before the engine's time, or (per_ball
+ * frames) a ball with three or more kinks after ts whose line at ts was not recorded
+ * (rc_sim_kink_ahead = 2: ask for a later ts); RC_ENOMEM. */
+int rc_sim_slice_request(rc_sim *s, double ts, uint32_t *id);
+/* 1 if slice id is final, 0 if not yet; *info (may be NULL) filled. RC_EINVAL for a NULL
+ * engine, RC_ENOSLICE for an id not held. */
+int rc_sim_slice_ready(const rc_sim *s, uint32_t id, rc_sim_slice_info *info);
+/* Ball i of slice id: centre (in [0, L) with image counted on periodic axes, as
+ * rc_sim_get_ball), momentum, rest mass, proper time and TC memory at ts on the segment of
+ * its worldline that holds ts. RC_ENOTREADY before the slice is final (nothing written),
+ * RC_ENOSLICE for an id not held, RC_EINVAL for a NULL argument or a bad index. The first
+ * read marks the slice read (rc_sim_slice_info.late counts changes after it). */
+int rc_sim_slice_get(rc_sim *s, uint32_t id, size_t i, rc_sim_ball *out);
+/* Drop slice id (its memory and the engine's work for it). RC_ENOSLICE if not held. */
+int rc_sim_slice_release(rc_sim *s, uint32_t id);
+
 /* Diagnostics at the engine's time (O(N); max_overlap is O(N) with the cells). */
 int rc_sim_diagnostics(const rc_sim *s, rc_sim_diag *d);
 /* FNV-1a hash of every ball's state bits at the engine's time (determinism tests). */

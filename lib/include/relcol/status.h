@@ -30,7 +30,9 @@ enum rc_status {
     RC_EDIM = -13,         /* dimension outside 1..3 or inconsistent */
     RC_ECORRUPT = -14,     /* bytes that are not a whole, undamaged relcol checkpoint */
     RC_EMISMATCH = -15,    /* a checkpoint of another run definition, format or machine */
-    RC_ESTALL = -16        /* simulated time stands still: events keep coming at one instant */
+    RC_ESTALL = -16,       /* simulated time stands still: events keep coming at one instant */
+    RC_ENOTREADY = -17,    /* a delayed slice read before it is final */
+    RC_ENOSLICE = -18      /* no slice held under that id */
 };
 
 /* A short English description of a status code (static storage, never NULL). */
