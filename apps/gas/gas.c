@@ -493,8 +493,15 @@ static int run_sim(const options *o, samples *S, char *err)
     app_progress_init(&bar, prog, S->ns);
     for (size_t j = 0; j <= S->ns && st == RC_OK; j++) {
         const double t = o->t_equil + o->t_sample * (double)j / (double)S->ns;
-        if (sid && j > 0)
-            st = rc_sim_slice_request(s, t, &sid[j]);
+        if (sid && j > 0 && (st = rc_sim_slice_request(s, t, &sid[j])) == RC_EINVAL) {
+            /* (t >= the engine's time here: the one other reason, relcol/sim.h) */
+            app_errf(err, "--readout slice: at t = %.9g a ball had more kinks ahead of the "
+                          "engine than it records, so its line at the snapshot is not known "
+                          "(a dense hot gas): use --readout latest or now", t);
+            rc_sim_free(&s);
+            free(sid);
+            return -1;
+        }
         if (st == RC_OK)
             st = rc_sim_advance(s, t, 0);
         if (st == RC_OK && j % (S->ns / NBLOCK) == 0)

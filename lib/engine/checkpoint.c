@@ -23,7 +23,8 @@
                          transfer moments; 4: with the per_ball counters and hyperplanes;
                          5: with the per_ball undo records and rollbacks;
                          6: with the per_ball lines before kinks ahead (eng_pend);
-                         7: undo records of groups (members, kind, TC count) */
+                         7: undo records of groups (members, kind, TC count),
+                         up to ENG_PEND_LINES lines before kinks ahead */
 #define CK_ORDER 0x01020304u
 
 typedef struct ck_header {
@@ -269,14 +270,14 @@ static int check_ball(const rc_sim *s, size_t k)
     }
     if (s->pend) { /* (read only by the read-out, but it must be a state it can read) */
         const eng_pend *r = &s->pend[k];
-        if (r->depth < 0 || r->depth > 2 ||
-            (r->depth >= 1 && (!isfinite(r->t) || !rc_v3_isfinite(r->x) ||
-                               !rc_v3_isfinite(r->p) || !(r->m > 0.0) || !isfinite(r->m) ||
-                               !isfinite(r->tau) || isnan(r->tau_last) ||
-                               r->tau_last == INFINITY)) ||
-            (r->depth == 2 && (!isfinite(r->t2) || !rc_v3_isfinite(r->p2) ||
-                               !(r->m2 > 0.0) || !isfinite(r->m2))))
+        if (r->depth < 0 || r->depth > ENG_PEND_LINES ||
+            (r->depth >= 1 && (!rc_v3_isfinite(r->x) || !isfinite(r->tau) ||
+                               isnan(r->tau_last) || r->tau_last == INFINITY)))
             return RC_ECORRUPT;
+        for (int q = 0; q < r->depth; q++)
+            if (!isfinite(r->t[q]) || !rc_v3_isfinite(r->p[q]) || !(r->m[q] > 0.0) ||
+                !isfinite(r->m[q]))
+                return RC_ECORRUPT;
     }
     /* v is derived from p and m, the same way every time the engine sets it */
     const rc_vec3 v = rc_v3_scale(1.0 / eng_mass_rel(a->m, a->p, s->inv_c2), a->p);

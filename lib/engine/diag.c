@@ -19,26 +19,25 @@ static int before_kink(const rc_sim *s, size_t i, double now, rc_sim_ball *o,
     if (!s->pend || !(s->cov[i].t_k > now))
         return 0;
     const eng_pend *r = &s->pend[i];
-    double t0;
-    rc_vec3 x0, p;
-    double m, tau0, tau_last;
-    if (r->depth >= 1 && now < r->t) { /* still before the first recorded kink */
-        t0 = r->t;
-        x0 = r->x;
-        p = r->p;
-        m = r->m;
-        tau0 = r->tau;
-        tau_last = r->tau_last;
-    } else if (r->depth >= 2 && now < r->t2) { /* between it and the next */
-        t0 = r->t;
-        x0 = r->x;
-        p = r->p2;
-        m = r->m2;
-        tau0 = r->tau;
-        tau_last = r->tau;
-    } else {
+    int k = 0;
+    while (k < r->depth && !(now < r->t[k]))
+        k++;
+    if (k == r->depth)
         return 2;
+    /* line k: from the first recorded kink (k = 0: back from it), else along the lines
+     * between to kink k - 1 */
+    double t0 = r->t[0], tau0 = r->tau, tau_last = r->tau_last;
+    rc_vec3 x0 = r->x;
+    for (int q = 1; q < k; q++) {
+        const double M = eng_mass_rel(r->m[q], r->p[q], s->inv_c2), h = r->t[q] - t0;
+        x0 = rc_v3_axpy(x0, h, rc_v3_scale(1.0 / M, r->p[q]));
+        tau0 += h * (r->m[q] / M);
+        t0 = r->t[q];
     }
+    if (k >= 1)
+        tau_last = tau0;
+    const rc_vec3 p = r->p[k];
+    const double m = r->m[k];
     const double h = now - t0, M = eng_mass_rel(m, p, s->inv_c2);
     o->x = rc_v3_axpy(x0, h, rc_v3_scale(1.0 / M, p));
     o->p = p;

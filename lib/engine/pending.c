@@ -23,17 +23,19 @@ void eng_pend_note(rc_sim *s, const eng_pend_snap *p)
         return; /* (no change: no kink) */
     eng_pend *r = &s->pend[b];
     const double te = s->cov[b].t_k, now = s->now;
-    if (r->depth == 2 && r->t <= now) {
-        /* the first recorded line has ended: the second is the one the ball is on, from
-         * that kink (its centre and proper time there) to t2 */
-        const double M2 = eng_mass_rel(r->m2, r->p2, s->inv_c2), h = r->t2 - r->t;
-        r->x = rc_v3_axpy(r->x, h, rc_v3_scale(1.0 / M2, r->p2));
+    while (r->depth >= 2 && r->t[0] <= now) {
+        /* the first recorded line has ended: the next is the one the ball is on, from
+         * that kink (its centre and proper time there) */
+        const double M = eng_mass_rel(r->m[1], r->p[1], s->inv_c2), h = r->t[1] - r->t[0];
+        r->x = rc_v3_axpy(r->x, h, rc_v3_scale(1.0 / M, r->p[1]));
         r->tau_last = r->tau;
-        r->tau += h * (r->m2 / M2);
-        r->t = r->t2;
-        r->p = r->p2;
-        r->m = r->m2;
-        r->depth = 1;
+        r->tau += h * (r->m[1] / M);
+        for (int k = 1; k < r->depth; k++) {
+            r->t[k - 1] = r->t[k];
+            r->p[k - 1] = r->p[k];
+            r->m[k - 1] = r->m[k];
+        }
+        r->depth--;
     }
     if (!(te > now)) { /* on its outgoing line from now on */
         r->depth = 0;
@@ -43,10 +45,10 @@ void eng_pend_note(rc_sim *s, const eng_pend_snap *p)
         const eng_ball *e = &s->b[b];
         const double h = te - e->t;
         r->depth = 1;
-        r->t = te;
+        r->t[0] = te;
         r->x = h == 0.0 ? e->x : rc_v3_axpy(e->x, h, e->v);
-        r->p = p->in.p;
-        r->m = p->in.m;
+        r->p[0] = p->in.p;
+        r->m[0] = p->in.m;
         r->tau = s->clk[b].tau;
         if (h != 0.0)
             r->tau += h * (s->a[b].m / eng_mass_rel(s->a[b].m, s->a[b].p, s->inv_c2));
@@ -56,13 +58,14 @@ void eng_pend_note(rc_sim *s, const eng_pend_snap *p)
         return;
     }
     /* a kink was already ahead: the line from it to the new one is the stored line the
-     * event found, recorded if the record ends at that kink with one line (else the part
+     * event found, recorded if the record ends at that kink and has room (else the part
      * from there on is not recorded, and the read-out says so) */
-    if (te > p->t_k && r->depth == 1 && r->t == p->t_k) {
-        r->depth = 2;
-        r->t2 = te;
-        r->p2 = p->in.p;
-        r->m2 = p->in.m;
+    if (te > p->t_k && r->depth >= 1 && r->depth < ENG_PEND_LINES &&
+        r->t[r->depth - 1] == p->t_k) {
+        r->t[r->depth] = te;
+        r->p[r->depth] = p->in.p;
+        r->m[r->depth] = p->in.m;
+        r->depth++;
     }
 }
 
@@ -71,8 +74,8 @@ void eng_pend_note(rc_sim *s, const eng_pend_snap *p)
  * does not end there is cleared (a kink still ahead then reads as not recorded). */
 void eng_pend_undo(eng_pend *r, double te)
 {
-    if (r->depth == 2 && r->t2 == te)
-        r->depth = 1;
+    if (r->depth >= 2 && r->t[r->depth - 1] == te)
+        r->depth--;
     else
         r->depth = 0;
 }

@@ -94,22 +94,22 @@ typedef struct eng_undo {
  * event for its own balls (engine/pending.c, eng_pend_note), read only by the read-out
  * (engine/diag.c), so nothing here changes a run. depth 0: none (the ball's kinks were at
  * or before the event that made them). depth >= 1: the ball moves on the line with
- * momentum p and rest mass m until its kink at table time t, at centre x (in the wrap
- * coordinates img, periodic boxes), where its proper time is tau; its TC memory before
- * it is tau_last (-inf: no collision). depth 2: then on the line p2, m2 from that kink
- * until the next one, at t2. Where the latest kink (eng_cov.t_k) lies beyond the last
- * recorded end (t, or t2), the lines in between were not recorded (three or more kinks
- * ahead of now at once): the read-out says so (rc_sim_kink_ahead = 2). */
+ * momentum p[0] and rest mass m[0] until its kink at table time t[0], at centre x (in the
+ * wrap coordinates img, periodic boxes), where its proper time is tau; its TC memory
+ * before it is tau_last (-inf: no collision); then on line k (p[k], m[k]) from kink
+ * t[k - 1] until kink t[k], k < depth. Where the latest kink (eng_cov.t_k) lies beyond
+ * the last recorded end t[depth - 1], the lines in between were not recorded (more than
+ * ENG_PEND_LINES kinks ahead of now at once, or a chain the record lost): the read-out
+ * says so (rc_sim_kink_ahead = 2). Dense hot gases put several kinks ahead of a ball
+ * within a glue window: two lines made the delayed slice at packing 0.2 fail. */
+#define ENG_PEND_LINES 6
 typedef struct eng_pend {
-    double t;
+    double t[ENG_PEND_LINES];
+    rc_vec3 p[ENG_PEND_LINES];
+    double m[ENG_PEND_LINES];
     rc_vec3 x;
-    rc_vec3 p;
-    double m;
     double tau;
     double tau_last;
-    double t2;
-    rc_vec3 p2;
-    double m2;
     int32_t img[3];
     int32_t depth;
 } eng_pend;

@@ -105,10 +105,8 @@ static double gamma_now(const rc_sim *s)
     for (size_t k = 0; k < s->n; k++) {
         g = fmax(g, seg_gamma(s, (int32_t)k));
         const eng_pend *r = &s->pend[k];
-        if (r->depth >= 1)
-            g = fmax(g, gamma_of(s, r->m, r->p));
-        if (r->depth >= 2)
-            g = fmax(g, gamma_of(s, r->m2, r->p2));
+        for (int q = 0; q < r->depth; q++)
+            g = fmax(g, gamma_of(s, r->m[q], r->p[q]));
         if (s->und[k].partner != ENG_NONE)
             g = fmax(g, gamma_of(s, s->und[k].in.m, s->und[k].in.p));
     }

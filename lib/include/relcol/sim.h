@@ -385,8 +385,9 @@ int rc_sim_get_ball_latest(const rc_sim *s, size_t i, rc_sim_ball *out);
 int rc_sim_get_glue(const rc_sim *s, size_t i, rc_glue *out);
 /* Whether ball i's latest kink lies after the engine's time (per_ball frames; 0 in every
  * other frame): 0 no, rc_sim_get_ball gives its latest segment; 1 yes, rc_sim_get_ball
- * gives the line it is still on (the incoming one); 2 yes, but the ball has three or more
- * kinks ahead at once and the line it is on now was not recorded: rc_sim_get_ball then
+ * gives the line it is still on (the incoming one); 2 yes, but the ball has more kinks
+ * ahead at once than the engine records (six) and the line it is on now was not
+ * recorded: rc_sim_get_ball then
  * gives its latest segment taken back to now (position and proper time off by up to a
  * glue window's travel) -- flagged here so that it is not taken for the truth. A state
  * read while any ball's kink lies ahead does not carry the change still to come:
@@ -440,8 +441,8 @@ typedef struct rc_sim_slice_info {
 
 /* Ask for the slice at table time ts >= the engine's time; *id names it. RC_EINVAL for
  * NULL arguments, no balls, ts NaN, infinite or before the engine's time, or (per_ball
- * frames) a ball with three or more kinks after ts whose line at ts was not recorded
- * (rc_sim_kink_ahead = 2: ask for a later ts); RC_ENOMEM. */
+ * frames) a ball with more kinks after ts than the engine records (six) whose line at ts
+ * was therefore not recorded (rc_sim_kink_ahead = 2: ask for a later ts); RC_ENOMEM. */
 int rc_sim_slice_request(rc_sim *s, double ts, uint32_t *id);
 /* 1 if slice id is final, 0 if not yet; *info (may be NULL) filled. RC_EINVAL for a NULL
  * engine, RC_ENOSLICE for an id not held. */
