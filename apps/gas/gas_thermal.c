@@ -42,6 +42,11 @@ void gas_frame_warn(FILE *f, const char *prog, const rc_toi_frame *frame, double
         fprintf(f, "%s: warning: frame %s: Jüttner in the dilute limit only; its collisions "
                    "are non-local (centres d_T apart) and at packing %g it is not measured\n",
                 prog, frame->name, packing);
+    else if (t == 1 && frame->per_ball)
+        fprintf(f, "%s: warning: frame %s: Jüttner in the dilute limit only; at packing %g "
+                   "its two thermometers read apart by an amount that depends on the "
+                   "read-out (--readout) and on the rules inside glue windows "
+                   "(papers/finite-density.md, section 5.1)\n", prog, frame->name, packing);
     else if (t == 1)
         fprintf(f, "%s: warning: frame %s: Jüttner in the dilute limit only; at packing %g "
                    "its theta from <p.v> reads above theta from <gamma>, more as the packing "
