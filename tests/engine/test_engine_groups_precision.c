@@ -73,6 +73,21 @@ static int reference(int rule, double c, rc_particle *P, const rc_contact *C)
     return RC_OK;
 }
 
+/* The data rounded once (rc_quad.h's round_vec): the nb momenta P into pp, then the k_
+ * normals C into cc. */
+static void rounded(rc_test_rng *g, int nb, const rc_particle *P, rc_particle *pp, int k_,
+                    const rc_contact *C, rc_contact *cc)
+{
+    for (int i = 0; i < nb; i++) {
+        pp[i] = P[i];
+        round_vec(g, &pp[i].p);
+    }
+    for (int j = 0; j < k_; j++) {
+        cc[j] = C[j];
+        round_vec(g, &cc[j].n);
+    }
+}
+
 /* How far the reference outcome moves when the data move by one rounding: each component
  * of every momentum and normal scaled by 1 +- 2^-53 (signs from a fixed generator), the
  * largest change over 8 draws, in units of sum |p|. A group moving together at gamma
@@ -84,18 +99,9 @@ static double conditioning(int rule, double c, const rc_particle *P, const rc_co
     rc_test_rng g = {4242};
     double kmax = 0.0;
     for (int t = 0; t < 8; t++) {
-        rc_particle pp[3] = {P[0], P[1], P[2]};
-        rc_contact cc[2] = {C[0], C[1]};
-        for (int i = 0; i < 3; i++) {
-            pp[i].p.x *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-            pp[i].p.y *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-            pp[i].p.z *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-        }
-        for (int j = 0; j < 2; j++) {
-            cc[j].n.x *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-            cc[j].n.y *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-            cc[j].n.z *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-        }
+        rc_particle pp[3];
+        rc_contact cc[2];
+        rounded(&g, 3, P, pp, 2, C, cc);
         if (reference(rule, c, pp, cc) != RC_OK)
             continue;
         for (int i = 0; i < 3; i++)
@@ -409,18 +415,7 @@ static double ref_conditioning(int zmf, double c, int nb, const rc_particle *P, 
     for (int t = 0; t < 8; t++) {
         rc_particle pp[NBMAX];
         rc_contact cc[KMAX];
-        for (int i = 0; i < nb; i++) {
-            pp[i] = P[i];
-            pp[i].p.x *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-            pp[i].p.y *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-            pp[i].p.z *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-        }
-        for (int j = 0; j < k_; j++) {
-            cc[j] = C[j];
-            cc[j].n.x *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-            cc[j].n.y *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-            cc[j].n.z *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-        }
+        rounded(&g, nb, P, pp, k_, C, cc);
         q128 Jp[KMAX];
         if (ref_impulses(zmf, c, nb, pp, k_, cc, Jp) != 0)
             return INFINITY;
@@ -693,18 +688,7 @@ static double seq_conditioning(double c, int nb, const rc_particle *P, int k_,
     for (int t = 0; t < 8; t++) {
         rc_particle pp[NBMAX];
         rc_contact cc[KMAX];
-        for (int i = 0; i < nb; i++) {
-            pp[i] = P[i];
-            pp[i].p.x *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-            pp[i].p.y *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-            pp[i].p.z *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-        }
-        for (int j = 0; j < k_; j++) {
-            cc[j] = C[j];
-            cc[j].n.x *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-            cc[j].n.y *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-            cc[j].n.z *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-        }
+        rounded(&g, nb, P, pp, k_, C, cc);
         qv po[NBMAX];
         q128 mo[NBMAX];
         if (seq_quad(c, nb, pp, k_, cc, mo, po) != 0)
