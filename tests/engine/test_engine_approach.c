@@ -56,6 +56,19 @@ static void conditioning(q128 k, const rc_particle *a, const rc_particle *b, rc_
 /* ... else within this many times the move of the exact value under one rounding. */
 #define COND_TOL 16.0
 
+/* c (1 in half the draws, else log-uniform 0.1 .. 10; k = 1/c^2) and a pair's rest masses
+ * and radii; returns the radius sum. */
+static double pair_draw(rc_test_rng *r, double *c, q128 *k, double *m, double *rad)
+{
+    *c = rc_test_uniform(r) < 0.5 ? 1.0 : logu(r, 0.1, 10);
+    *k = rc_inv_c2_of(*c);
+    for (int i = 0; i < 2; i++) {
+        m[i] = logu(r, 0.2, 5);
+        rad[i] = rc_test_range(r, 0.2, 1.0);
+    }
+    return rad[0] + rad[1];
+}
+
 static void test_comoving_pairs(void)
 {
     rc_test_rng r = {2028};
@@ -63,18 +76,13 @@ static void test_comoving_pairs(void)
     int n = 0, napp = 0, wrong = 0, nill = 0, nflip = 0;
     double ww = 0.0, ratio = 0.0, aw = 0.0;
     for (int it = 0; it < 20000; it++) {
-        const double c = rc_test_uniform(&r) < 0.5 ? 1.0 : logu(&r, 0.1, 10);
-        const q128 k = rc_inv_c2_of(c);
+        double c, m[2], rad[2];
+        q128 k;
+        const double sig = pair_draw(&r, &c, &k, m, rad);
         /* In a frame R where the pair is slow: ball 0 at the origin, ball 1 touching it
          * along a random n, relative speed up to 0.9 c in a random direction; R moves at
          * Lorentz factor 10 .. 1e8 in the table, each state its worldline's event at table
          * time 0. */
-        double m[2], rad[2];
-        for (int i = 0; i < 2; i++) {
-            m[i] = logu(&r, 0.2, 5);
-            rad[i] = rc_test_range(&r, 0.2, 1.0);
-        }
-        const double sig = rad[0] + rad[1];
         qv vR[2], xR[2] = {{0, 0, 0}, {0, 0, 0}};
         /* R's motion in the table: along a coordinate axis in two draws of three (the
          * momenta across it are then small numbers, exact to their own size, and the
@@ -209,14 +217,9 @@ static void touching_pairs(int engine)
     const rc_sim_simd widths[3] = {RC_SIM_SIMD_SCALAR, RC_SIM_SIMD_AVX2, RC_SIM_SIMD_AUTO};
     int n = 0, napp = 0, wrong = 0, nflip = 0, differ = 0;
     for (int it = 0; it < 4000; it++) {
-        const double c = rc_test_uniform(&r) < 0.5 ? 1.0 : logu(&r, 0.1, 10);
-        const q128 k = rc_inv_c2_of(c);
-        double m[2], rad[2];
-        for (int i = 0; i < 2; i++) {
-            m[i] = logu(&r, 0.2, 5);
-            rad[i] = rc_test_range(&r, 0.2, 1.0);
-        }
-        const double sig = rad[0] + rad[1];
+        double c, m[2], rad[2];
+        q128 k;
+        const double sig = pair_draw(&r, &c, &k, m, rad);
         /* the pair slow in a frame R (relative speed up to 0.9 c), R moving at Lorentz
          * factor 10 .. 1e8 along a coordinate axis in two draws of three, else along a
          * random direction d */
