@@ -40,9 +40,9 @@ static void conditioning(q128 k, const rc_particle *a, const rc_particle *b, rc_
     for (int t = 0; t < 8; t++) {
         rc_particle A = *a, B = *b;
         rc_vec3 d = dx;
-        double *c[9] = {&A.p.x, &A.p.y, &A.p.z, &B.p.x, &B.p.y, &B.p.z, &d.x, &d.y, &d.z};
-        for (int i = 0; i < 9; i++)
-            *c[i] *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
+        round_vec(&g, &A.p);
+        round_vec(&g, &B.p);
+        round_vec(&g, &d);
         q128 w;
         *flips |= exact(k, &A, &B, d, sig, atol, &w) != verdict;
         *kw = fmax(*kw, (double)(fabsq(w - w2) / w2));
@@ -56,6 +56,19 @@ static void conditioning(q128 k, const rc_particle *a, const rc_particle *b, rc_
 /* ... else within this many times the move of the exact value under one rounding. */
 #define COND_TOL 16.0
 
+/* c (1 in half the draws, else log-uniform 0.1 .. 10; k = 1/c^2) and a pair's rest masses
+ * and radii; returns the radius sum. */
+static double pair_draw(rc_test_rng *r, double *c, q128 *k, double *m, double *rad)
+{
+    *c = rc_test_uniform(r) < 0.5 ? 1.0 : logu(r, 0.1, 10);
+    *k = rc_inv_c2_of(*c);
+    for (int i = 0; i < 2; i++) {
+        m[i] = logu(r, 0.2, 5);
+        rad[i] = rc_test_range(r, 0.2, 1.0);
+    }
+    return rad[0] + rad[1];
+}
+
 static void test_comoving_pairs(void)
 {
     rc_test_rng r = {2028};
@@ -63,31 +76,22 @@ static void test_comoving_pairs(void)
     int n = 0, napp = 0, wrong = 0, nill = 0, nflip = 0;
     double ww = 0.0, ratio = 0.0, aw = 0.0;
     for (int it = 0; it < 20000; it++) {
-        const double c = rc_test_uniform(&r) < 0.5 ? 1.0 : logu(&r, 0.1, 10);
-        const q128 k = rc_inv_c2_of(c);
+        double c, m[2], rad[2];
+        q128 k;
+        const double sig = pair_draw(&r, &c, &k, m, rad);
         /* In a frame R where the pair is slow: ball 0 at the origin, ball 1 touching it
          * along a random n, relative speed up to 0.9 c in a random direction; R moves at
          * Lorentz factor 10 .. 1e8 in the table, each state its worldline's event at table
          * time 0. */
-        double m[2], rad[2];
-        for (int i = 0; i < 2; i++) {
-            m[i] = logu(&r, 0.2, 5);
-            rad[i] = rc_test_range(&r, 0.2, 1.0);
-        }
-        const double sig = rad[0] + rad[1];
         qv vR[2], xR[2] = {{0, 0, 0}, {0, 0, 0}};
         /* R's motion in the table: along a coordinate axis in two draws of three (the
          * momenta across it are then small numbers, exact to their own size, and the
          * rounding of the data no longer hides the approach along the motion), else
          * random; the contact normal near that axis in half of the draws (the approach
          * then lies along the motion, where the table velocities differ by 1/gamma^2) */
-        const int axis = it % 3 != 0, ax = (int)(3 * rc_test_uniform(&r));
-        qv d = qv_of(rc_v3(rc_test_range(&r, -1, 1), rc_test_range(&r, -1, 1),
-                           rc_test_range(&r, -1, 1)));
-        if (axis)
-            d = (qv){ax == 0, ax == 1, ax == 2};
-        qv e = qv_of(rc_v3(rc_test_range(&r, -1, 1), rc_test_range(&r, -1, 1),
-                           rc_test_range(&r, -1, 1)));
+        const int axis = it % 3 != 0;
+        const qv d = qframe_dir(&r, axis);
+        qv e = qcube(&r);
         if (it % 2)
             e = qaxpy(qscale(rc_test_uniform(&r) < 0.5 ? -1 : 1, qscale(1 / qnorm(d), d)),
                       rc_test_range(&r, 0.0, 0.3) / qnorm(e), e);
@@ -99,8 +103,7 @@ static void test_comoving_pairs(void)
         if (line)
             xR[1] = qscale(sig * (rc_test_uniform(&r) < 0.5 ? -1 : 1), d);
         for (int i = 0; i < 2; i++) {
-            qv w = qv_of(rc_v3(rc_test_range(&r, -1, 1), rc_test_range(&r, -1, 1),
-                               rc_test_range(&r, -1, 1)));
+            qv w = qcube(&r);
             if (line)
                 w = qaxpy(qscale(rc_test_range(&r, -1, 1), d), tilt / qnorm(w), w);
             vR[i] = qscale(c * rc_test_range(&r, 0.0, 0.45) / qnorm(w), w);
@@ -110,15 +113,11 @@ static void test_comoving_pairs(void)
         rc_particle P[2];
         qv X[2];
         for (int i = 0; i < 2; i++) {
-            const q128 g = 1 / sqrtq(1 - qdot(vR[i], vR[i]) * k);
-            q128 E = m[i] * g;
-            qv p = qscale(m[i] * g, vR[i]);
-            qboost(back, G, k, &E, &p);
+            P[i] = qboosted(m[i], vR[i], back, G, k);
             const q128 tR = qdot(xR[i], back) * k / (1 - qdot(vR[i], back) * k);
             q128 t = tR;
             X[i] = qaxpy(xR[i], tR, vR[i]);
             qboost(back, G, k, &t, &X[i]);
-            P[i] = (rc_particle){m[i], dv_of(p)};
         }
         const rc_vec3 dx = dv_of(qaxpy(X[1], -1, X[0]));
         const rc_vec3 v0 = rc_v3_scale(1.0 / rc_mass_rel(P[0].m, P[0].p, (double)k), P[0].p);
@@ -154,6 +153,26 @@ static void test_comoving_pairs(void)
            n, napp, wrong, nflip, ww, nill, ratio, aw);
 }
 
+/* An engine (lane width simd) holding the two balls P at x0 and x1, or NULL where it
+ * refuses them. */
+static rc_sim *pair_sim(rc_sim_simd simd, double c, const rc_particle *P, const double *rad,
+                        rc_vec3 x0, rc_vec3 x1)
+{
+    rc_sim_def d = rc_sim_def_default();
+    d.dim = 3;
+    d.box = rc_v3(8, 8, 8);
+    d.c = c;
+    d.simd = simd;
+    rc_sim *s = NULL;
+    if (rc_sim_create(&d, &s) != RC_OK)
+        return NULL;
+    const rc_sim_ball b[2] = {{.x = x0, .p = P[0].p, .r = rad[0], .m = P[0].m},
+                              {.x = x1, .p = P[1].p, .r = rad[1], .m = P[1].m}};
+    if (rc_sim_set_balls(s, 2, b, NULL) != RC_OK)
+        rc_sim_free(&s);
+    return s;
+}
+
 /* The same question as the engine's lanes ask it: eng_predict_checked, after a resolved
  * contact, looks among the neighbours of a ball just collided for one in contact with it
  * (the spheres within sim_tol) and approaching its velocity before -- a simultaneous
@@ -162,52 +181,28 @@ static void test_comoving_pairs(void)
  * data's momenta, in an engine of each lane width (plain C, AVX2, AVX-512: the widths the
  * CPU lacks fall back to narrower ones, and that part is trivially met). The verdict must
  * be the exact one on the double data (__float128), except where one rounding of the data
- * flips it, and the same in every width. */
-static int predict_conflict(rc_sim_simd simd, double c, const rc_particle *P, const double *rad,
-                            rc_vec3 x0, rc_vec3 x1)
+ * flips it, and the same in every width.
+ * engine 1: the engine's first event, run to 1e-9 after the start: 1 if it was a collision
+ * (a touching pair is predicted at once by the lanes' sphere test, pair_lanes in
+ * lib/engine/kernels.h, when it approaches; the law then resolves it).
+ * -1 where the engine refuses the pair. */
+static int pair_verdict(int engine, rc_sim_simd simd, double c, const rc_particle *P,
+                        const double *rad, rc_vec3 x0, rc_vec3 x1)
 {
-    rc_sim_def d = rc_sim_def_default();
-    d.dim = 3;
-    d.box = rc_v3(8, 8, 8);
-    d.c = c;
-    d.simd = simd;
-    rc_sim *s = NULL;
-    if (rc_sim_create(&d, &s) != RC_OK)
+    rc_sim *s = pair_sim(simd, c, P, rad, x0, x1);
+    if (!s)
         return -1;
-    const rc_sim_ball b[2] = {{.x = x0, .p = P[0].p, .r = rad[0], .m = P[0].m},
-                              {.x = x1, .p = P[1].p, .r = rad[1], .m = P[1].m}};
     int v = -1;
-    if (rc_sim_set_balls(s, 2, b, NULL) == RC_OK) {
+    if (engine) {
+        rc_sim_diag dg;
+        if (rc_sim_advance(s, 1e-9, 16) >= 0 && rc_sim_diagnostics(s, &dg) == RC_OK)
+            v = dg.collisions > 0;
+    } else {
         /* (the engine's own index of ball 0: its cells may order them otherwise) */
         const int32_t i = s->b[0].x.x == x0.x && s->b[0].x.y == x0.y && s->b[0].x.z == x0.z ? 0 : 1;
         const eng_check chk = {{s->a[i].m, s->a[i].p}, s->b[i].v, ENG_NONE, NULL};
         v = eng_predict_checked(s, i, &chk, s->now);
     }
-    rc_sim_free(&s);
-    return v;
-}
-
-/* The engine's first event, run to 1e-9 after the start: 1 if it was a collision (a
- * touching pair is predicted at once by the lanes' sphere test, pair_lanes in
- * lib/engine/kernels.h, when it approaches; the law then resolves it). */
-static int first_collision(rc_sim_simd simd, double c, const rc_particle *P, const double *rad,
-                           rc_vec3 x0, rc_vec3 x1)
-{
-    rc_sim_def d = rc_sim_def_default();
-    d.dim = 3;
-    d.box = rc_v3(8, 8, 8);
-    d.c = c;
-    d.simd = simd;
-    rc_sim *s = NULL;
-    if (rc_sim_create(&d, &s) != RC_OK)
-        return -1;
-    const rc_sim_ball b[2] = {{.x = x0, .p = P[0].p, .r = rad[0], .m = P[0].m},
-                              {.x = x1, .p = P[1].p, .r = rad[1], .m = P[1].m}};
-    int v = -1;
-    rc_sim_diag dg;
-    if (rc_sim_set_balls(s, 2, b, NULL) == RC_OK && rc_sim_advance(s, 1e-9, 16) >= 0 &&
-        rc_sim_diagnostics(s, &dg) == RC_OK)
-        v = dg.collisions > 0;
     rc_sim_free(&s);
     return v;
 }
@@ -222,42 +217,24 @@ static void touching_pairs(int engine)
     const rc_sim_simd widths[3] = {RC_SIM_SIMD_SCALAR, RC_SIM_SIMD_AVX2, RC_SIM_SIMD_AUTO};
     int n = 0, napp = 0, wrong = 0, nflip = 0, differ = 0;
     for (int it = 0; it < 4000; it++) {
-        const double c = rc_test_uniform(&r) < 0.5 ? 1.0 : logu(&r, 0.1, 10);
-        const q128 k = rc_inv_c2_of(c);
-        double m[2], rad[2];
-        for (int i = 0; i < 2; i++) {
-            m[i] = logu(&r, 0.2, 5);
-            rad[i] = rc_test_range(&r, 0.2, 1.0);
-        }
-        const double sig = rad[0] + rad[1];
+        double c, m[2], rad[2];
+        q128 k;
+        const double sig = pair_draw(&r, &c, &k, m, rad);
         /* the pair slow in a frame R (relative speed up to 0.9 c), R moving at Lorentz
          * factor 10 .. 1e8 along a coordinate axis in two draws of three, else along a
          * random direction d */
-        const int axis = it % 3 != 0, ax = (int)(3 * rc_test_uniform(&r));
-        qv d = qv_of(rc_v3(rc_test_range(&r, -1, 1), rc_test_range(&r, -1, 1),
-                           rc_test_range(&r, -1, 1)));
-        if (axis)
-            d = (qv){ax == 0, ax == 1, ax == 2};
+        qv d = qframe_dir(&r, it % 3 != 0);
         d = qscale(1 / qnorm(d), d);
         qv vR[2];
-        for (int i = 0; i < 2; i++) {
-            const qv w = qv_of(rc_v3(rc_test_range(&r, -1, 1), rc_test_range(&r, -1, 1),
-                                     rc_test_range(&r, -1, 1)));
-            vR[i] = qscale(c * rc_test_range(&r, 0.0, 0.45) / qnorm(w), w);
-        }
+        for (int i = 0; i < 2; i++)
+            vR[i] = qslow_vel(&r, c, 0.45);
         const q128 G = logu(&r, 10, 1e8), V = sqrtq((1 - 1 / (G * G)) / k);
         rc_particle P[2];
-        for (int i = 0; i < 2; i++) {
-            const q128 g = 1 / sqrtq(1 - qdot(vR[i], vR[i]) * k);
-            q128 E = m[i] * g;
-            qv p = qscale(m[i] * g, vR[i]);
-            qboost(qscale(-V, d), G, k, &E, &p);
-            P[i] = (rc_particle){m[i], dv_of(p)};
-        }
+        for (int i = 0; i < 2; i++)
+            P[i] = qboosted(m[i], vR[i], qscale(-V, d), G, k);
         /* touching in the table along the motion (a row of balls), off it by a
          * log-uniform angle 1e-20 .. 1, or in a random direction */
-        const qv e = qv_of(rc_v3(rc_test_range(&r, -1, 1), rc_test_range(&r, -1, 1),
-                                 rc_test_range(&r, -1, 1)));
+        const qv e = qcube(&r);
         const int how = it % 4;
         qv dir = e;
         if (how != 3)
@@ -271,8 +248,7 @@ static void touching_pairs(int engine)
         const int want = exact(k, &P[0], &P[1], dx, sig, atol, &w2);
         int got[3];
         for (int l = 0; l < 3; l++)
-            got[l] = engine ? first_collision(widths[l], c, P, rad, x0, x1)
-                            : predict_conflict(widths[l], c, P, rad, x0, x1);
+            got[l] = pair_verdict(engine, widths[l], c, P, rad, x0, x1);
         ENSURE_MSG(got[0] >= 0, "gamma %.3g: the engine refused the pair", (double)G);
         if (got[0] < 0)
             continue;

@@ -51,9 +51,9 @@ static void conditioning(q128 k, double r, const rc_particle *in, const rc_parti
     for (int t = 0; t < 8; t++) {
         rc_particle A = *in, B = *out;
         rc_vec3 d = dx;
-        double *c[9] = {&A.p.x, &A.p.y, &A.p.z, &B.p.x, &B.p.y, &B.p.z, &d.x, &d.y, &d.z};
-        for (int i = 0; i < 9; i++)
-            *c[i] *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
+        round_vec(&g, &A.p);
+        round_vec(&g, &B.p);
+        round_vec(&g, &d);
         q128 t1, D1;
         exact(k, r, &A, &B, d, &t1, &D1);
         *kt = fmax(*kt, (double)fabsq((t1 - dt) / dt));
@@ -77,6 +77,16 @@ static int within(double e, double kappa, double *ratio, int *nill)
     return e <= COND_TOL * kappa;
 }
 
+/* The offset y from a ball's centre in its rest frame, contracted along the ball's motion
+ * in the table. */
+static rc_vec3 contracted(q128 k, const rc_particle *P, qv y)
+{
+    const q128 M = qenergy(P->m, qv_of(P->p), k);
+    const qv b = qscale(sqrtq(k) / M, qv_of(P->p));
+    const q128 g = M / P->m;
+    return dv_of(qaxpy(y, -(1 - 1 / g) * qdot(y, b) / qdot(b, b), b));
+}
+
 static void test_comoving_glue(void)
 {
     rc_test_rng r = {2034};
@@ -91,35 +101,18 @@ static void test_comoving_glue(void)
          * 10 .. 1e8 along a coordinate axis in two draws of three, else a random d */
         const double m0 = logu(&r, 0.2, 5);
         const double m1 = it % 2 ? m0 : m0 * rc_test_range(&r, 1.0, 1.3);
-        const int axis = it % 3 != 0, ax = (int)(3 * rc_test_uniform(&r));
-        qv d = qv_of(rc_v3(rc_test_range(&r, -1, 1), rc_test_range(&r, -1, 1),
-                           rc_test_range(&r, -1, 1)));
-        if (axis)
-            d = (qv){ax == 0, ax == 1, ax == 2};
+        qv d = qframe_dir(&r, it % 3 != 0);
         d = qscale(1 / qnorm(d), d);
         const q128 G = logu(&r, 10, 1e8), V = sqrtq((1 - 1 / (G * G)) / k);
         rc_particle P[2];
         const double m[2] = {m0, m1};
-        for (int i = 0; i < 2; i++) {
-            const qv w = qv_of(rc_v3(rc_test_range(&r, -1, 1), rc_test_range(&r, -1, 1),
-                                     rc_test_range(&r, -1, 1)));
-            const qv vR = qscale(c * rc_test_range(&r, 0.0, 0.9) / qnorm(w), w);
-            const q128 g = 1 / sqrtq(1 - qdot(vR, vR) * k);
-            q128 E = m[i] * g;
-            qv p = qscale(m[i] * g, vR);
-            qboost(qscale(-V, d), G, k, &E, &p);
-            P[i] = (rc_particle){m[i], dv_of(p)};
-        }
+        for (int i = 0; i < 2; i++)
+            P[i] = qboosted(m[i], qslow_vel(&r, c, 0.9), qscale(-V, d), G, k);
         /* X on the incoming ball: a point at rest-frame distance up to r from the centre,
          * contracted along the motion */
-        const q128 M0 = qenergy(P[0].m, qv_of(P[0].p), k);
-        const qv b = qscale(sqrtq(k) / M0, qv_of(P[0].p));
-        const q128 g0 = M0 / P[0].m;
-        const qv y0 = qv_of(rc_v3(rc_test_range(&r, -1, 1), rc_test_range(&r, -1, 1),
-                                  rc_test_range(&r, -1, 1)));
+        const qv y0 = qcube(&r);
         const qv y = qscale(rad * rc_test_uniform(&r) / qnorm(y0), y0);
-        const q128 b2 = qdot(b, b);
-        const rc_vec3 dx = dv_of(qaxpy(y, -(1 - 1 / g0) * qdot(y, b) / b2, b));
+        const rc_vec3 dx = contracted(k, &P[0], y);
         q128 dt, D;
         exact(k, rad, &P[0], &P[1], dx, &dt, &D);
         double kt = -1.0, kd = -1.0;
@@ -167,6 +160,29 @@ static void test_comoving_glue(void)
 
 /* ---- the crossing of two successive hyperplanes ------------------------------------ */
 
+/* A ball of rest radius rad through n - 1 kinks, its states S[0 .. n-1] all slow (speeds
+ * up to 0.9 c) in a frame R, its rest mass up by up to 30 % at each kink in even draws
+ * `it` (inelastic contacts); R moving at Lorentz factor 10 .. 1e8 (returned) along a
+ * coordinate axis in two draws of three, else a random direction; c 1 in half the draws,
+ * else log-uniform 0.1 .. 10 (k = 1/c^2). */
+static q128 kinked_ball(rc_test_rng *r, int it, int n, double *c, q128 *k, double *rad,
+                        rc_particle *S)
+{
+    *c = rc_test_uniform(r) < 0.5 ? 1.0 : logu(r, 0.1, 10);
+    *k = rc_inv_c2_of(*c);
+    *rad = rc_test_range(r, 0.2, 1.0);
+    qv d = qframe_dir(r, it % 3 != 0);
+    d = qscale(1 / qnorm(d), d);
+    const q128 G = logu(r, 10, 1e8), V = sqrtq((1 - 1 / (G * G)) / *k);
+    double m = logu(r, 0.2, 5);
+    for (int i = 0; i < n; i++) {
+        if (i > 0 && it % 2 == 0)
+            m *= rc_test_range(r, 1.0, 1.3);
+        S[i] = qboosted(m, qslow_vel(r, *c, 0.9), qscale(-V, d), G, *k);
+    }
+    return G;
+}
+
 /* H's normal kappa for a kink from a to b, in __float128 from the double data. */
 static qv qkappa(q128 k, const rc_particle *a, const rc_particle *b)
 {
@@ -200,30 +216,10 @@ static void test_kinks_cross(void)
     static eng_cov cv;
     static rc_glue gl;
     for (int it = 0; it < 20000; it++) {
-        const double c = rc_test_uniform(&r) < 0.5 ? 1.0 : logu(&r, 0.1, 10);
-        const q128 k = rc_inv_c2_of(c);
-        const double rad = rc_test_range(&r, 0.2, 1.0);
-        const int axis = it % 3 != 0, ax = (int)(3 * rc_test_uniform(&r));
-        qv d = qv_of(rc_v3(rc_test_range(&r, -1, 1), rc_test_range(&r, -1, 1),
-                           rc_test_range(&r, -1, 1)));
-        if (axis)
-            d = (qv){ax == 0, ax == 1, ax == 2};
-        d = qscale(1 / qnorm(d), d);
-        const q128 G = logu(&r, 10, 1e8), V = sqrtq((1 - 1 / (G * G)) / k);
+        double c, rad;
+        q128 k;
         rc_particle S[3];
-        double m = logu(&r, 0.2, 5);
-        for (int i = 0; i < 3; i++) {
-            if (i > 0 && it % 2 == 0)
-                m *= rc_test_range(&r, 1.0, 1.3);
-            const qv w = qv_of(rc_v3(rc_test_range(&r, -1, 1), rc_test_range(&r, -1, 1),
-                                     rc_test_range(&r, -1, 1)));
-            const qv vR = qscale(c * rc_test_range(&r, 0.0, 0.9) / qnorm(w), w);
-            const q128 g = 1 / sqrtq(1 - qdot(vR, vR) * k);
-            q128 E = m * g;
-            qv p = qscale(m * g, vR);
-            qboost(qscale(-V, d), G, k, &E, &p);
-            S[i] = (rc_particle){m, dv_of(p)};
-        }
+        const q128 G = kinked_ball(&r, it, 3, &c, &k, &rad, S);
         const q128 h = exact_cross(k, rad, S);
         const double te = (double)(h * logu(&r, 0.5, 2));
         const int want = te < h;
@@ -254,11 +250,8 @@ static void test_kinks_cross(void)
             rc_test_rng g = {4242};
             for (int t = 0; t < 8 && !ok; t++) {
                 rc_particle A[3] = {S[0], S[1], S[2]};
-                for (int i = 0; i < 3; i++) {
-                    A[i].p.x *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-                    A[i].p.y *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-                    A[i].p.z *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-                }
+                for (int i = 0; i < 3; i++)
+                    round_vec(&g, &A[i].p);
                 ok = (te < exact_cross(k, rad, A)) != want;
             }
             nflip += ok;
@@ -293,40 +286,15 @@ static void test_glue_side(void)
     static eng_cov cv;
     static rc_glue gl;
     for (int it = 0; it < 20000; it++) {
-        const double c = rc_test_uniform(&r) < 0.5 ? 1.0 : logu(&r, 0.1, 10);
-        const q128 k = rc_inv_c2_of(c);
-        const double rad = rc_test_range(&r, 0.2, 1.0);
-        const int axis = it % 3 != 0, ax = (int)(3 * rc_test_uniform(&r));
-        qv d = qv_of(rc_v3(rc_test_range(&r, -1, 1), rc_test_range(&r, -1, 1),
-                           rc_test_range(&r, -1, 1)));
-        if (axis)
-            d = (qv){ax == 0, ax == 1, ax == 2};
-        d = qscale(1 / qnorm(d), d);
-        const q128 G = logu(&r, 10, 1e8), V = sqrtq((1 - 1 / (G * G)) / k);
+        double c, rad;
+        q128 k;
         rc_particle S[2];
-        double m = logu(&r, 0.2, 5);
-        for (int i = 0; i < 2; i++) {
-            if (i > 0 && it % 2 == 0)
-                m *= rc_test_range(&r, 1.0, 1.3);
-            const qv w = qv_of(rc_v3(rc_test_range(&r, -1, 1), rc_test_range(&r, -1, 1),
-                                     rc_test_range(&r, -1, 1)));
-            const qv vR = qscale(c * rc_test_range(&r, 0.0, 0.9) / qnorm(w), w);
-            const q128 g = 1 / sqrtq(1 - qdot(vR, vR) * k);
-            q128 E = m * g;
-            qv p = qscale(m * g, vR);
-            qboost(qscale(-V, d), G, k, &E, &p);
-            S[i] = (rc_particle){m, dv_of(p)};
-        }
+        const q128 G = kinked_ball(&r, it, 2, &c, &k, &rad, S);
         /* dxb: a point of the outgoing ball's contracted surface */
-        const q128 M1 = qenergy(S[1].m, qv_of(S[1].p), k);
-        const qv b = qscale(sqrtq(k) / M1, qv_of(S[1].p));
-        const q128 g1 = M1 / S[1].m;
-        const qv y0 = qv_of(rc_v3(rc_test_range(&r, -1, 1), rc_test_range(&r, -1, 1),
-                                  rc_test_range(&r, -1, 1)));
-        const qv y = qscale(rad / qnorm(y0), y0);
-        const rc_vec3 dxb = dv_of(qaxpy(y, -(1 - 1 / g1) * qdot(y, b) / qdot(b, b), b));
+        const qv y0 = qcube(&r);
+        const rc_vec3 dxb = contracted(k, &S[1], qscale(rad / qnorm(y0), y0));
         const qv kap = qkappa(k, &S[0], &S[1]);
-        const qv v = qscale(1 / M1, qv_of(S[1].p));
+        const qv v = qscale(1 / qenergy(S[1].m, qv_of(S[1].p), k), qv_of(S[1].p));
         const q128 th = qdot(kap, qv_of(dxb)) / (1 - qdot(kap, v));
         const double tx = (double)(th * logu(&r, 0.5, 2) * (rc_test_uniform(&r) < 0.5 ? -1 : 1));
         const int want = exact_side(k, S, tx, dxb);
@@ -346,11 +314,8 @@ static void test_glue_side(void)
             rc_test_rng g = {4242};
             for (int t = 0; t < 8 && !ok; t++) {
                 rc_particle A[2] = {S[0], S[1]};
-                for (int i = 0; i < 2; i++) {
-                    A[i].p.x *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-                    A[i].p.y *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-                    A[i].p.z *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-                }
+                for (int i = 0; i < 2; i++)
+                    round_vec(&g, &A[i].p);
                 ok = exact_side(k, A, tx, dxb) != want;
             }
             nflip += ok;

@@ -73,6 +73,21 @@ static int reference(int rule, double c, rc_particle *P, const rc_contact *C)
     return RC_OK;
 }
 
+/* The data rounded once (rc_quad.h's round_vec): the nb momenta P into pp, then the k_
+ * normals C into cc. */
+static void rounded(rc_test_rng *g, int nb, const rc_particle *P, rc_particle *pp, int k_,
+                    const rc_contact *C, rc_contact *cc)
+{
+    for (int i = 0; i < nb; i++) {
+        pp[i] = P[i];
+        round_vec(g, &pp[i].p);
+    }
+    for (int j = 0; j < k_; j++) {
+        cc[j] = C[j];
+        round_vec(g, &cc[j].n);
+    }
+}
+
 /* How far the reference outcome moves when the data move by one rounding: each component
  * of every momentum and normal scaled by 1 +- 2^-53 (signs from a fixed generator), the
  * largest change over 8 draws, in units of sum |p|. A group moving together at gamma
@@ -84,18 +99,9 @@ static double conditioning(int rule, double c, const rc_particle *P, const rc_co
     rc_test_rng g = {4242};
     double kmax = 0.0;
     for (int t = 0; t < 8; t++) {
-        rc_particle pp[3] = {P[0], P[1], P[2]};
-        rc_contact cc[2] = {C[0], C[1]};
-        for (int i = 0; i < 3; i++) {
-            pp[i].p.x *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-            pp[i].p.y *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-            pp[i].p.z *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-        }
-        for (int j = 0; j < 2; j++) {
-            cc[j].n.x *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-            cc[j].n.y *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-            cc[j].n.z *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-        }
+        rc_particle pp[3];
+        rc_contact cc[2];
+        rounded(&g, 3, P, pp, 2, C, cc);
         if (reference(rule, c, pp, cc) != RC_OK)
             continue;
         for (int i = 0; i < 3; i++)
@@ -120,6 +126,20 @@ static double conditioning(int rule, double c, const rc_particle *P, const rc_co
  * (conditioning()), no double algorithm can promise REF_TOL: the error must then stay
  * within COND_TOL times that move (as tests/law/test_law_precision.c). */
 #define COND_TOL 16.0
+
+/* The table states of balls of rest masses m and momenta pR in R: boosted by `back`
+ * (Lorentz factor G) where `boost`, else R is the table. */
+static void table_states(q128 k, int nb, const double *m, const qv *pR, int boost, qv back,
+                         q128 G, rc_particle *P)
+{
+    for (int i = 0; i < nb; i++) {
+        q128 t = qenergy(m[i], pR[i], k);
+        qv x = pR[i];
+        if (boost)
+            qboost(back, G, k, &t, &x);
+        P[i] = (rc_particle){m[i], dv_of(x)};
+    }
+}
 
 static void test_comoving_groups(void)
 {
@@ -150,12 +170,7 @@ static void test_comoving_groups(void)
         const q128 G = logu(&r, 10, 1e8), V = sqrtq((1 - 1 / (G * G)) / k);
         const qv back = qscale(-V, dh);
         rc_particle P[3];
-        for (int i = 0; i < 3; i++) {
-            q128 t = qenergy(m[i], pR[i], k);
-            qv x = pR[i];
-            qboost(back, G, k, &t, &x);
-            P[i] = (rc_particle){m[i], dv_of(x)};
-        }
+        table_states(k, 3, m, pR, 1, back, G, P);
         rc_contact C[2];
         int approaching = 1;
         for (int j = 0; j < 2; j++) {
@@ -409,18 +424,7 @@ static double ref_conditioning(int zmf, double c, int nb, const rc_particle *P, 
     for (int t = 0; t < 8; t++) {
         rc_particle pp[NBMAX];
         rc_contact cc[KMAX];
-        for (int i = 0; i < nb; i++) {
-            pp[i] = P[i];
-            pp[i].p.x *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-            pp[i].p.y *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-            pp[i].p.z *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-        }
-        for (int j = 0; j < k_; j++) {
-            cc[j] = C[j];
-            cc[j].n.x *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-            cc[j].n.y *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-            cc[j].n.z *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-        }
+        rounded(&g, nb, P, pp, k_, C, cc);
         q128 Jp[KMAX];
         if (ref_impulses(zmf, c, nb, pp, k_, cc, Jp) != 0)
             return INFINITY;
@@ -430,6 +434,59 @@ static double ref_conditioning(int zmf, double c, int nb, const rc_particle *P, 
         kmax = fmax(kmax, impulse_error(k_, Jd, J));
     }
     return kmax;
+}
+
+/* The table normal of a contact with normal n in R between balls (ma, pa) and (mb, pb):
+ * the boost of n at the pair's ZMF time of the contact event (R time 0), where `boost`. */
+static rc_vec3 table_normal(q128 k, double ma, qv pa, double mb, qv pb, qv n, int boost,
+                            qv back, q128 G)
+{
+    const q128 Ma = qenergy(ma, pa, k), Mb = qenergy(mb, pb, k);
+    q128 qt = qdot(qaxpy(pa, 1, pb), n) / (Ma + Mb) * k;
+    qv qx = n;
+    if (boost)
+        qboost(back, G, k, &qt, &qx);
+    return dv_of(qscale(1 / qnorm(qx), qx));
+}
+
+/* The rest masses of nb balls (log-uniform 0.2 .. 5), then KMAX contact normals in R in the
+ * xy plane within 0.4 of +x. */
+static void group_masses(rc_test_rng *r, int nb, double *m, qv *nR)
+{
+    for (int i = 0; i < nb; i++)
+        m[i] = logu(r, 0.2, 5);
+    for (int j = 0; j < KMAX; j++) {
+        const double t = uniform(r, -0.4, 0.4);
+        nR[j] = (qv){cos(t), sin(t), 0};
+    }
+}
+
+/* Three balls slow in R (ball 0 along +x at up to 2 c times its mass, 1 and 2 slower);
+ * returns the boost that takes R, moving at Lorentz factor G along a random direction,
+ * to the table. */
+static qv slow_trio(rc_test_rng *r, double c, q128 k, q128 G, const double *m, qv *pR)
+{
+    pR[0] = (qv){m[0] * c * logu(r, 1e-2, 2), 0, 0};
+    for (int i = 1; i < 3; i++)
+        pR[i] = (qv){m[i] * c * uniform(r, -0.1, 0.1), m[i] * c * uniform(r, -0.1, 0.1),
+                     m[i] * c * uniform(r, -0.1, 0.1)};
+    const qv d = qv_of(rc_v3(uniform(r, -1, 1), uniform(r, -1, 1), uniform(r, -1, 1)));
+    return qscale(-sqrtq((1 - 1 / (G * G)) / k) / qnorm(d), d);
+}
+
+/* R is the table: 0 behind 1 along +x at gamma ~ G, its rapidity larger by 0.01 .. 1; 3
+ * behind 2 along -x likewise, at gamma ~ G times 0.5 .. 2; contacts 0-1, 3-2 and 1-2. */
+static void head_on_pairs(rc_test_rng *r, double c, q128 G, const double *m, qv *pR, qv *nR,
+                          int *ca, int *cb)
+{
+    const q128 y1 = asinhq(sqrtq(G * G - 1)), y0 = y1 + logu(r, 1e-2, 1);
+    const q128 y2 = y1 + logq(uniform(r, 0.5, 2)), y3 = y2 + logu(r, 1e-2, 1);
+    pR[0] = (qv){m[0] * c * sinhq(y0), m[0] * c * uniform(r, -1, 1), 0};
+    pR[1] = (qv){m[1] * c * sinhq(y1), m[1] * c * uniform(r, -1, 1), 0};
+    pR[2] = (qv){-m[2] * c * sinhq(y2), m[2] * c * uniform(r, -1, 1), 0};
+    pR[3] = (qv){-m[3] * c * sinhq(y3), m[3] * c * uniform(r, -1, 1), 0};
+    nR[1].x = -nR[1].x; /* (2 -> 3 along -x) */
+    ca[0] = 0, cb[0] = 1, ca[1] = 3, cb[1] = 2, ca[2] = 1, cb[2] = 2;
 }
 
 /* Groups in which the plain residual M_b p_a.n - M_a p_b.n cancels, at a Lorentz factor
@@ -457,54 +514,27 @@ static void test_impulses(void)
         const int nb = kind == 0 ? 3 : 4;
         int k_ = kind == 0 ? 2 : 2 + (rc_test_uniform(&r) < 0.5);
         double m[NBMAX];
-        for (int i = 0; i < nb; i++)
-            m[i] = logu(&r, 0.2, 5);
         qv pR[NBMAX], nR[KMAX];
         int ca[KMAX], cb[KMAX];
-        for (int j = 0; j < KMAX; j++) {
-            const double t = uniform(&r, -0.4, 0.4);
-            nR[j] = (qv){cos(t), sin(t), 0};
-        }
+        group_masses(&r, nb, m, nR);
         qv back = {0, 0, 0};
         if (kind == 0) {
             /* slow in R (ball 0 runs into 1, 2 slow), R moving at G along a random d */
-            pR[0] = (qv){m[0] * c * logu(&r, 1e-2, 2), 0, 0};
-            for (int i = 1; i < 3; i++)
-                pR[i] = (qv){m[i] * c * uniform(&r, -0.1, 0.1), m[i] * c * uniform(&r, -0.1, 0.1),
-                             m[i] * c * uniform(&r, -0.1, 0.1)};
-            const qv d = qv_of(rc_v3(uniform(&r, -1, 1), uniform(&r, -1, 1), uniform(&r, -1, 1)));
-            back = qscale(-sqrtq((1 - 1 / (G * G)) / k) / qnorm(d), d);
+            back = slow_trio(&r, c, k, G, m, pR);
             ca[0] = 0, cb[0] = 1, ca[1] = 1, cb[1] = 2;
         } else {
             /* R is the table: 0 behind 1 along +x at gamma ~ G, its rapidity larger by
              * 0.01 .. 1; 3 behind 2 along -x likewise, at gamma ~ G times 0.5 .. 2 */
-            const q128 y1 = asinhq(sqrtq(G * G - 1)), y0 = y1 + logu(&r, 1e-2, 1);
-            const q128 y2 = y1 + logq(uniform(&r, 0.5, 2)), y3 = y2 + logu(&r, 1e-2, 1);
-            pR[0] = (qv){m[0] * c * sinhq(y0), m[0] * c * uniform(&r, -1, 1), 0};
-            pR[1] = (qv){m[1] * c * sinhq(y1), m[1] * c * uniform(&r, -1, 1), 0};
-            pR[2] = (qv){-m[2] * c * sinhq(y2), m[2] * c * uniform(&r, -1, 1), 0};
-            pR[3] = (qv){-m[3] * c * sinhq(y3), m[3] * c * uniform(&r, -1, 1), 0};
-            nR[1].x = -nR[1].x; /* (2 -> 3 along -x) */
-            ca[0] = 0, cb[0] = 1, ca[1] = 3, cb[1] = 2, ca[2] = 1, cb[2] = 2;
+            head_on_pairs(&r, c, G, m, pR, nR, ca, cb);
         }
         rc_particle P[NBMAX];
-        for (int i = 0; i < nb; i++) {
-            q128 t = qenergy(m[i], pR[i], k);
-            qv x = pR[i];
-            if (kind == 0)
-                qboost(back, G, k, &t, &x);
-            P[i] = (rc_particle){m[i], dv_of(x)};
-        }
+        table_states(k, nb, m, pR, kind == 0, back, G, P);
         rc_contact C[KMAX], CR[KMAX];
         for (int j = 0; j < k_; j++) {
             const int a = ca[j], b = cb[j];
-            const q128 Ma = qenergy(m[a], pR[a], k), Mb = qenergy(m[b], pR[b], k);
-            q128 qt = qdot(qaxpy(pR[a], 1, pR[b]), nR[j]) / (Ma + Mb) * k;
-            qv qx = nR[j];
             CR[j] = (rc_contact){a, b, dv_of(nR[j]), eps, 0.0, rc_v3(0, 0, 0)};
-            if (kind == 0)
-                qboost(back, G, k, &qt, &qx);
-            C[j] = (rc_contact){a, b, dv_of(qscale(1 / qnorm(qx), qx)), eps, 0.0, rc_v3(0, 0, 0)};
+            const rc_vec3 nt = table_normal(k, m[a], pR[a], m[b], pR[b], nR[j], kind == 0, back, G);
+            C[j] = (rc_contact){a, b, nt, eps, 0.0, rc_v3(0, 0, 0)};
         }
         q128 Jr[KMAX];
         if (ref_impulses(zmf, c, nb, P, k_, C, Jr) != 0)
@@ -693,18 +723,7 @@ static double seq_conditioning(double c, int nb, const rc_particle *P, int k_,
     for (int t = 0; t < 8; t++) {
         rc_particle pp[NBMAX];
         rc_contact cc[KMAX];
-        for (int i = 0; i < nb; i++) {
-            pp[i] = P[i];
-            pp[i].p.x *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-            pp[i].p.y *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-            pp[i].p.z *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-        }
-        for (int j = 0; j < k_; j++) {
-            cc[j] = C[j];
-            cc[j].n.x *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-            cc[j].n.y *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-            cc[j].n.z *= 1 + (rc_test_uniform(&g) < 0.5 ? -1 : 1) * 0x1p-53;
-        }
+        rounded(&g, nb, P, pp, k_, C, cc);
         qv po[NBMAX];
         q128 mo[NBMAX];
         if (seq_quad(c, nb, pp, k_, cc, mo, po) != 0)
@@ -739,14 +758,9 @@ static void test_sequential(void)
         const int nb = kind == 1 ? 4 : kind == 3 ? 2 : 3;
         const int k_ = kind == 1 ? 2 + (rc_test_uniform(&r) < 0.5) : 2;
         double m[NBMAX];
-        for (int i = 0; i < nb; i++)
-            m[i] = logu(&r, 0.2, 5);
         qv pR[NBMAX], nR[KMAX];
         int ca[KMAX], cb[KMAX];
-        for (int j = 0; j < KMAX; j++) {
-            const double t = uniform(&r, -0.4, 0.4);
-            nR[j] = (qv){cos(t), sin(t), 0};
-        }
+        group_masses(&r, nb, m, nR);
         qv back = {0, 0, 0};
         if (kind == 3) {
             /* 0 behind 1 along +x at gamma ~ G (rapidity larger by 0.01 .. 1), 1 at the
@@ -757,12 +771,7 @@ static void test_sequential(void)
             nR[1] = (qv){1, 0, 0};
             ca[0] = 0, cb[0] = 1, ca[1] = 1, cb[1] = -2;
         } else if (kind != 1) {
-            pR[0] = (qv){m[0] * c * logu(&r, 1e-2, 2), 0, 0};
-            for (int i = 1; i < 3; i++)
-                pR[i] = (qv){m[i] * c * uniform(&r, -0.1, 0.1), m[i] * c * uniform(&r, -0.1, 0.1),
-                             m[i] * c * uniform(&r, -0.1, 0.1)};
-            const qv d = qv_of(rc_v3(uniform(&r, -1, 1), uniform(&r, -1, 1), uniform(&r, -1, 1)));
-            back = qscale(-sqrtq((1 - 1 / (G * G)) / k) / qnorm(d), d);
+            back = slow_trio(&r, c, k, G, m, pR);
             if (kind == 0) {
                 ca[0] = 0, cb[0] = 1, ca[1] = 1, cb[1] = 2;
             } else {
@@ -772,35 +781,19 @@ static void test_sequential(void)
                 ca[0] = 0, cb[0] = 1, ca[1] = 0, cb[1] = 2;
             }
         } else {
-            const q128 y1 = asinhq(sqrtq(G * G - 1)), y0 = y1 + logu(&r, 1e-2, 1);
-            const q128 y2 = y1 + logq(uniform(&r, 0.5, 2)), y3 = y2 + logu(&r, 1e-2, 1);
-            pR[0] = (qv){m[0] * c * sinhq(y0), m[0] * c * uniform(&r, -1, 1), 0};
-            pR[1] = (qv){m[1] * c * sinhq(y1), m[1] * c * uniform(&r, -1, 1), 0};
-            pR[2] = (qv){-m[2] * c * sinhq(y2), m[2] * c * uniform(&r, -1, 1), 0};
-            pR[3] = (qv){-m[3] * c * sinhq(y3), m[3] * c * uniform(&r, -1, 1), 0};
-            nR[1].x = -nR[1].x;
-            ca[0] = 0, cb[0] = 1, ca[1] = 3, cb[1] = 2, ca[2] = 1, cb[2] = 2;
+            head_on_pairs(&r, c, G, m, pR, nR, ca, cb);
         }
         rc_particle P[NBMAX];
-        for (int i = 0; i < nb; i++) {
-            q128 t = qenergy(m[i], pR[i], k);
-            qv x = pR[i];
-            if (kind != 1 && kind != 3)
-                qboost(back, G, k, &t, &x);
-            P[i] = (rc_particle){m[i], dv_of(x)};
-        }
+        table_states(k, nb, m, pR, kind != 1 && kind != 3, back, G, P);
         rc_contact C[KMAX];
         for (int j = 0; j < k_; j++) {
             const int a = ca[j], b = cb[j] < 0 ? ca[j] : cb[j];
-            const q128 Ma = qenergy(m[a], pR[a], k), Mb = qenergy(m[b], pR[b], k);
-            q128 qt = qdot(qaxpy(pR[a], 1, pR[b]), nR[j]) / (Ma + Mb) * k;
-            qv qx = nR[j];
-            if (kind != 1 && kind != 3)
-                qboost(back, G, k, &qt, &qx);
+            const rc_vec3 nt = table_normal(k, m[a], pR[a], m[b], pR[b], nR[j],
+                                            kind != 1 && kind != 3, back, G);
             const rc_vec3 x = rc_v3(uniform(&r, 0, 1), uniform(&r, 0, 1), uniform(&r, 0, 1));
             /* (with a wall the order is by table time: distinct times) */
             const double t = kind == 3 ? uniform(&r, -1, 1) : 0.0;
-            C[j] = (rc_contact){a, cb[j], dv_of(qscale(1 / qnorm(qx), qx)), eps, t, x};
+            C[j] = (rc_contact){a, cb[j], nt, eps, t, x};
         }
         qv pref[NBMAX];
         q128 mref[NBMAX];
