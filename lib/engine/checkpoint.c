@@ -275,8 +275,8 @@ static int check_ball(const rc_sim *s, size_t k)
                                isnan(r->tau_last) || r->tau_last == INFINITY)))
             return RC_ECORRUPT;
         for (int q = 0; q < r->depth; q++)
-            if (!isfinite(r->t[q]) || !rc_v3_isfinite(r->p[q]) || !(r->m[q] > 0.0) ||
-                !isfinite(r->m[q]))
+            if (!isfinite(r->l[q].t) || !rc_v3_isfinite(r->l[q].p) || !(r->l[q].m > 0.0) ||
+                !isfinite(r->l[q].m))
                 return RC_ECORRUPT;
     }
     /* v is derived from p and m, the same way every time the engine sets it */

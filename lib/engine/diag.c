@@ -20,24 +20,24 @@ static int before_kink(const rc_sim *s, size_t i, double now, rc_sim_ball *o,
         return 0;
     const eng_pend *r = &s->pend[i];
     int k = 0;
-    while (k < r->depth && !(now < r->t[k]))
+    while (k < r->depth && !(now < r->l[k].t))
         k++;
     if (k == r->depth)
         return 2;
     /* line k: from the first recorded kink (k = 0: back from it), else along the lines
      * between to kink k - 1 */
-    double t0 = r->t[0], tau0 = r->tau, tau_last = r->tau_last;
+    double t0 = r->l[0].t, tau0 = r->tau, tau_last = r->tau_last;
     rc_vec3 x0 = r->x;
     for (int q = 1; q < k; q++) {
-        const double M = eng_mass_rel(r->m[q], r->p[q], s->inv_c2), h = r->t[q] - t0;
-        x0 = rc_v3_axpy(x0, h, rc_v3_scale(1.0 / M, r->p[q]));
-        tau0 += h * (r->m[q] / M);
-        t0 = r->t[q];
+        const double M = eng_mass_rel(r->l[q].m, r->l[q].p, s->inv_c2), h = r->l[q].t - t0;
+        x0 = rc_v3_axpy(x0, h, rc_v3_scale(1.0 / M, r->l[q].p));
+        tau0 += h * (r->l[q].m / M);
+        t0 = r->l[q].t;
     }
     if (k >= 1)
         tau_last = tau0;
-    const rc_vec3 p = r->p[k];
-    const double m = r->m[k];
+    const rc_vec3 p = r->l[k].p;
+    const double m = r->l[k].m;
     const double h = now - t0, M = eng_mass_rel(m, p, s->inv_c2);
     o->x = rc_v3_axpy(x0, h, rc_v3_scale(1.0 / M, p));
     o->p = p;

@@ -23,17 +23,17 @@ void eng_pend_note(rc_sim *s, const eng_pend_snap *p)
         return; /* (no change: no kink) */
     eng_pend *r = &s->pend[b];
     const double te = s->cov[b].t_k, now = s->now;
-    while (r->depth >= 2 && r->t[0] <= now) {
+    while (r->depth >= 2 && r->l[0].t <= now) {
         /* the first recorded line has ended: the next is the one the ball is on, from
          * that kink (its centre and proper time there) */
-        const double M = eng_mass_rel(r->m[1], r->p[1], s->inv_c2), h = r->t[1] - r->t[0];
-        r->x = rc_v3_axpy(r->x, h, rc_v3_scale(1.0 / M, r->p[1]));
+        const double M = eng_mass_rel(r->l[1].m, r->l[1].p, s->inv_c2), h = r->l[1].t - r->l[0].t;
+        r->x = rc_v3_axpy(r->x, h, rc_v3_scale(1.0 / M, r->l[1].p));
         r->tau_last = r->tau;
-        r->tau += h * (r->m[1] / M);
+        r->tau += h * (r->l[1].m / M);
         for (int k = 1; k < r->depth; k++) {
-            r->t[k - 1] = r->t[k];
-            r->p[k - 1] = r->p[k];
-            r->m[k - 1] = r->m[k];
+            r->l[k - 1].t = r->l[k].t;
+            r->l[k - 1].p = r->l[k].p;
+            r->l[k - 1].m = r->l[k].m;
         }
         r->depth--;
     }
@@ -45,10 +45,10 @@ void eng_pend_note(rc_sim *s, const eng_pend_snap *p)
         const eng_ball *e = &s->b[b];
         const double h = te - e->t;
         r->depth = 1;
-        r->t[0] = te;
+        r->l[0].t = te;
         r->x = h == 0.0 ? e->x : rc_v3_axpy(e->x, h, e->v);
-        r->p[0] = p->in.p;
-        r->m[0] = p->in.m;
+        r->l[0].p = p->in.p;
+        r->l[0].m = p->in.m;
         r->tau = s->clk[b].tau;
         if (h != 0.0)
             r->tau += h * (s->a[b].m / eng_mass_rel(s->a[b].m, s->a[b].p, s->inv_c2));
@@ -61,10 +61,10 @@ void eng_pend_note(rc_sim *s, const eng_pend_snap *p)
      * event found, recorded if the record ends at that kink and has room (else the part
      * from there on is not recorded, and the read-out says so) */
     if (te > p->t_k && r->depth >= 1 && r->depth < ENG_PEND_LINES &&
-        r->t[r->depth - 1] == p->t_k) {
-        r->t[r->depth] = te;
-        r->p[r->depth] = p->in.p;
-        r->m[r->depth] = p->in.m;
+        r->l[r->depth - 1].t == p->t_k) {
+        r->l[r->depth].t = te;
+        r->l[r->depth].p = p->in.p;
+        r->l[r->depth].m = p->in.m;
         r->depth++;
     }
 }
@@ -74,7 +74,7 @@ void eng_pend_note(rc_sim *s, const eng_pend_snap *p)
  * does not end there is cleared (a kink still ahead then reads as not recorded). */
 void eng_pend_undo(eng_pend *r, double te)
 {
-    if (r->depth >= 2 && r->t[r->depth - 1] == te)
+    if (r->depth >= 2 && r->l[r->depth - 1].t == te)
         r->depth--;
     else
         r->depth = 0;

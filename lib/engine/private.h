@@ -94,25 +94,32 @@ typedef struct eng_undo {
  * event for its own balls (engine/pending.c, eng_pend_note), read only by the read-out
  * (engine/diag.c), so nothing here changes a run. depth 0: none (the ball's kinks were at
  * or before the event that made them). depth >= 1: the ball moves on the line with
- * momentum p[0] and rest mass m[0] until its kink at table time t[0], at centre x (in the
- * wrap coordinates img, periodic boxes), where its proper time is tau; its TC memory
- * before it is tau_last (-inf: no collision); then on line k (p[k], m[k]) from kink
- * t[k - 1] until kink t[k], k < depth. Where the latest kink (eng_cov.t_k) lies beyond
- * the last recorded end t[depth - 1], the lines in between were not recorded (more than
+ * momentum l[0].p and rest mass l[0].m until its kink at table time l[0].t, at centre x
+ * (in the wrap coordinates img, periodic boxes), where its proper time is tau; its TC
+ * memory before it is tau_last (-inf: no collision); then on line k (l[k].p, l[k].m)
+ * from kink l[k - 1].t until kink l[k].t, k < depth. Where the latest kink (eng_cov.t_k)
+ * lies beyond the last recorded end l[depth - 1].t, the lines in between were not recorded (more than
  * ENG_PEND_LINES kinks ahead of now at once, or a chain the record lost): the read-out
  * says so (rc_sim_kink_ahead = 2). Dense hot gases put several kinks ahead of a ball
  * within a glue window: two lines made the delayed slice at packing 0.2 fail. */
 #define ENG_PEND_LINES 6
+typedef struct eng_pend_line {
+    double t;  /* its kink's table time */
+    double m;  /* the line's rest mass ... */
+    rc_vec3 p; /* ... and momentum */
+} eng_pend_line;
 typedef struct eng_pend {
-    double t[ENG_PEND_LINES];
-    rc_vec3 p[ENG_PEND_LINES];
-    double m[ENG_PEND_LINES];
+    /* (what every event's note reads first, then the lines: a record of one line, the
+     * common case, lies in its first two cache lines, as the two-line record did) */
+    int32_t depth;
+    int32_t img[3];
     rc_vec3 x;
     double tau;
     double tau_last;
-    int32_t img[3];
-    int32_t depth;
+    eng_pend_line l[ENG_PEND_LINES];
+    double pad[3];
 } eng_pend;
+_Static_assert(sizeof(eng_pend) % 64 == 0, "whole cache lines per record");
 
 /* 1 - kappa.v for the hyperplane c that began a ball's segment and its velocity v on it:
  * for a ball fast before and after that kink the same way ~1/gamma^2, which the plain

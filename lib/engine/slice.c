@@ -106,7 +106,7 @@ static double gamma_now(const rc_sim *s)
         g = fmax(g, seg_gamma(s, (int32_t)k));
         const eng_pend *r = &s->pend[k];
         for (int q = 0; q < r->depth; q++)
-            g = fmax(g, gamma_of(s, r->m[q], r->p[q]));
+            g = fmax(g, gamma_of(s, r->l[q].m, r->l[q].p));
         if (s->und[k].partner != ENG_NONE)
             g = fmax(g, gamma_of(s, s->und[k].in.m, s->und[k].in.p));
     }
