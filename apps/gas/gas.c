@@ -99,8 +99,10 @@ static void usage(FILE *f)
 "  --readout R      a frame that changes each ball's velocity at its own kink\n"
 "                   (covariant): what a snapshot at table time t reads -- slice (the\n"
 "                   default): every ball's state at t on its worldline, read once the\n"
-"                   engine is far enough past t that no later collision can move a kink\n"
-"                   to or from before t (rc_sim_slice_get); latest: each ball's latest\n"
+"                   engine is a bound W past t, beyond which a collision or a tube\n"
+"                   conflict's undo cannot move a kink to or from before t\n"
+"                   (rc_sim_slice_get), held a further W and counted if it changed\n"
+"                   after the read (stdout, summary.json); latest: each ball's latest\n"
 "                   segment at t, every change at its contact event's table time\n"
 "                   (rc_sim_get_ball_latest); now: the state at t of the collisions\n"
 "                   processed by t (rc_sim_get_ball, which misses those whose contact\n"
@@ -332,6 +334,9 @@ typedef struct samples {
     uint64_t events, overlaps;
     rc_sim_diag end;     /* the diagnostics at the end (all of the run: app_rules_warn) */
     int have_end;
+    /* --readout slice: slices read, and changed after they were read (rc_sim_slice_info
+     * late, checked while each is held a further W after its read) */
+    uint64_t slices_read, slices_late;
     double box;          /* box edge */
     rc_vec3 boxv;        /* the box as the engine has it (2-D: z unused) */
     pb_acc pres;         /* pressure per block (apps/eos/pressure_blocks.h) */
@@ -445,8 +450,32 @@ static int sim_start(const options *o, samples *S, rc_sim **out, char *err)
     return 0;
 }
 
+/* --readout slice: a slice read is held a further W (its t_final - ts, as bounded now)
+ * before it is released, and whether it changed after the read is counted then: W bounds
+ * a single contact's reach and a tube conflict's undo, not an undo for an overlap the
+ * frame reported (relcol/sim.h), so a snapshot read final can still be off, and the run
+ * says how many were (rather than trusting W). Releases the held slices below *held that
+ * are due (all: everything), counting their late changes. */
+static int release_slices(rc_sim *s, samples *S, const uint32_t *sid, size_t *held,
+                          size_t next, int all)
+{
+    while (*held < next) {
+        rc_sim_slice_info in;
+        const int r = rc_sim_slice_ready(s, sid[*held], &in);
+        if (r < 0)
+            return r;
+        if (!all && !(rc_sim_time(s) >= in.t_final + (in.t_final - in.ts)))
+            break;
+        S->slices_late += in.late > 0;
+        rc_sim_slice_release(s, sid[*held]);
+        (*held)++;
+    }
+    return RC_OK;
+}
+
 /* --readout slice: read every slice asked for (snapshots up to last) that is final, in
- * order (snapshot j's u into row j - 1), releasing each; *next: the first not read yet. */
+ * order (snapshot j's u into row j - 1); *next: the first not read yet. Read slices stay
+ * held (release_slices). */
 static int read_slices(rc_sim *s, samples *S, const uint32_t *sid, size_t *next, size_t last,
                        double inv_c2)
 {
@@ -462,7 +491,7 @@ static int read_slices(rc_sim *s, samples *S, const uint32_t *sid, size_t *next,
                 return st;
             S->u[(*next - 1) * n + i] = rc_v3_norm2(q.p) * inv_c2 / (q.m * q.m);
         }
-        rc_sim_slice_release(s, sid[*next]);
+        S->slices_read++;
         (*next)++;
     }
     return RC_OK;
@@ -482,7 +511,7 @@ static int run_sim(const options *o, samples *S, char *err)
      * check still sums the latest segments, the conserved ones: a slice's sum is not) */
     const int readout = o->frame->per_ball ? o->readout : READ_LATEST;
     uint32_t *sid = readout == READ_SLICE ? malloc((S->ns + 1) * sizeof *sid) : NULL;
-    size_t next = 1;
+    size_t next = 1, held = 1;
     if (readout == READ_SLICE && !sid) {
         rc_sim_free(&s);
         app_errf(err, "out of memory");
@@ -527,6 +556,8 @@ static int run_sim(const options *o, samples *S, char *err)
         }
         if (sid && st == RC_OK && (st = read_slices(s, S, sid, &next, j, inv_c2)) > 0)
             st = RC_OK;
+        if (sid && st == RC_OK)
+            st = release_slices(s, S, sid, &held, next, 0);
         if (j == 0) /* the energy at the end of the equilibration (exact since t = 0) */
             e0 = e;
         rc_sim_diag dj;
@@ -555,6 +586,14 @@ static int run_sim(const options *o, samples *S, char *err)
         if (st == RC_OK && (st = read_slices(s, S, sid, &next, S->ns, inv_c2)) > 0)
             st = RC_OK;
     }
+    /* the last ones held their further W too, then every late change counted */
+    if (sid && st == RC_OK && held <= S->ns) {
+        rc_sim_slice_info in;
+        const int r = rc_sim_slice_ready(s, sid[S->ns], &in);
+        st = r < 0 ? r : rc_sim_advance(s, in.t_final + (in.t_final - in.ts), 0);
+    }
+    if (sid && st == RC_OK)
+        st = release_slices(s, S, sid, &held, next, 1);
     free(sid);
     rc_sim_free(&s);
     if (st != RC_OK) {
@@ -814,6 +853,8 @@ static void fill_summary(const options *o, const samples *S, int nspec,
     g->box = S->box;
     g->collisions = S->events;
     g->overlaps = S->overlaps;
+    g->slices_read = S->slices_read;
+    g->slices_late = S->slices_late;
     g->mass_drift = S->mass_drift;
     g->energy_drift = S->energy_drift;
     g->rate = rate;
@@ -1069,6 +1110,16 @@ int main(int argc, char **argv)
         printf(", %llu overlaps (shape change)\n", (unsigned long long)S.overlaps);
     if (o.dim != 1 && S.have_end)
         app_rules_warn(stderr, prog, &S.end, NULL);
+    if (S.slices_read > 0) {
+        printf("slices: %llu read final, %llu changed after the read (each held a further "
+               "W after it)\n", (unsigned long long)S.slices_read,
+               (unsigned long long)S.slices_late);
+        if (S.slices_late > 0)
+            fprintf(stderr, "%s: warning: %llu of the %llu slices changed after they were "
+                            "read (an undo reached back further than W, relcol/sim.h): those "
+                            "snapshots are off\n", prog, (unsigned long long)S.slices_late,
+                    (unsigned long long)S.slices_read);
+    }
     if (o.dim == 1)
         printf("kT of the gas's energy (canonical, both species; the light mass's theta) = "
                "%.5f\n", S.theta_energy);

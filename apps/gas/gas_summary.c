@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include <cjson/cJSON.h>
 
@@ -74,6 +75,10 @@ int gas_summary_write(const char *path, const gas_summary *s, char *err)
         cJSON_AddNullToObject(x, "frame");
     if (s->readout)
         cJSON_AddStringToObject(x, "readout", s->readout);
+    if (s->readout && strcmp(s->readout, "slice") == 0) {
+        add(x, "slices_read", (double)s->slices_read);
+        add(x, "slices_changed_after_read", (double)s->slices_late);
+    }
     add(x, "t_equil", s->t_equil);
     add(x, "t_sample", s->t_sample);
     add(x, "snapshots", (double)s->snapshots);

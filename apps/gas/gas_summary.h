@@ -31,6 +31,7 @@ typedef struct gas_summary {
     uint64_t seed;
     const char *frame;         /* NULL in 1-D */
     const char *readout;       /* per_ball frames: the snapshots' read-out; else NULL */
+    uint64_t slices_read, slices_late; /* --readout slice: read, changed after the read */
     int thermal;               /* gas_frame_thermal(), -1 in 1-D */
     const char *boundary;
     double gamma_start, box;

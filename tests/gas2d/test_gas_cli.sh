@@ -115,6 +115,13 @@ run '' --dim 2 --frame covariant --theta-start 0.75 --n 4000 --packing 0.2 \
     --boundary periodic --t-equil 50 --t-sample 200 --snapshots 100 --seed 7 --out "$T/gs2"
 [ "$st" -eq 0 ] && grep -q '^theta from <gamma> .*not fixed: a table-time read-out' "$T/out" \
     && ok || bad "2-D covariant gas, slice read-out: exit $st: $(grep -v warning "$T/err")"
+# every snapshot read from a final slice, each held a further W after the read, and none
+# changed after it (a change would mean an undo reached back beyond W: counted, and
+# summary.json says so too)
+grep -q '^slices: 100 read final, 0 changed after the read' "$T/out" \
+    && [ "$(jnum slices_changed_after_read "$T/gs2/summary.json")" = 0 ] \
+    && [ "$(jnum slices_read "$T/gs2/summary.json")" = 100 ] \
+    && ok || bad "slices: $(grep '^slices' "$T/out")"
 
 # 1-D mixture: two species in the CSV, one stdout block each
 run '' --dim 1 --n 200 --t-equil 200 --t-sample 800 --snapshots 40 --out "$T/g1"
