@@ -276,17 +276,26 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
 {
     ugroup G[2];
     size_t ng = 1;
-    if (!(G[0].nm = undo_members(s, w, G[0].sl)) || in_list(G[0].sl, G[0].nm, k))
+    if (!(G[0].nm = undo_members(s, w, G[0].sl)))
+        return 0;
+    /* k a member of w's group too (inner): the group's kinks, each through its own event,
+     * can leave two members that were not in contact overlapping nearby; undone, the
+     * frame is asked for their contact from both incoming lines and the group solved with
+     * it -- unless the two were already in contact in it (a second contact of one pair is
+     * not a contact the model has) */
+    const int inner = in_list(G[0].sl, G[0].nm, k);
+    if (inner && (both || s->und[w].partner == (int32_t)s->id[k] ||
+                  s->und[k].partner == (int32_t)s->id[w]))
         return 0;
     if (both) {
         if (!(G[1].nm = undo_members(s, k, G[1].sl)) || in_list(G[1].sl, G[1].nm, w))
             return 0;
         ng = 2;
     }
-    if (G[0].nm + (both ? G[1].nm : 1) > ENG_UNDO_NMAX)
+    if (G[0].nm + (both ? G[1].nm : !inner) > ENG_UNDO_NMAX)
         return 0;
     double te_w = s->cov[w].t_k, t_first = tx < te_w ? tx : te_w;
-    if (both && s->cov[k].t_k < t_first)
+    if ((both || inner) && s->cov[k].t_k < t_first)
         t_first = s->cov[k].t_k;
     for (size_t g = 0; g < ng; g++)
         lift(s, &G[g]);
@@ -338,7 +347,7 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
                 eng_pend_undo(&s->pend[G[g].sl[m]], G[g].te[m]);
                 ps[nps++] = eng_pend_take(s, G[g].sl[m]);
             }
-        if (!both)
+        if (!both && !inner)
             ps[nps++] = eng_pend_take(s, k);
     }
     for (size_t g = 0; g < ng; g++)
@@ -352,7 +361,7 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
         for (size_t m = 0; m < G[g].nm; m++)
             if (eng_member_of(s, &nm, G[g].sl[m], T) < 0)
                 return RC_ENOMEM;
-    if (!both && eng_member_of(s, &nm, k, T) < 0)
+    if (!both && !inner && eng_member_of(s, &nm, k, T) < 0)
         return RC_ENOMEM;
     if (wall_root >= 0) { /* (the wall's share taken back: p1 - p0, the original's negated) */
         const ugroup *Gw = in_list(G[0].sl, G[0].nm, wall_root) ? &G[0] : &G[1];
