@@ -189,12 +189,13 @@ static void test_zmf_agrees_cold(void)
  * changed at its own event of its glued world tube instead of both at one table time),
  * 2-D, theta = 0.75, packing 0.2, against (1) with the table-frame excluded area, s eta =
  * 0.00168. With the engine's present rule inside glue windows (collisions undone where
- * hyperplanes cross, and groups into larger ones: papers/shape-change.md sections 7-8)
- * papers/finite-density.md section 5.1 measures 1.04 +- 0.04 of it at N = 4000; with the
- * earlier rules 0.91 +- 0.02 and 1.05 +- 0.04; the zmf frame 1.95. The agreement here is
- * the rule's and the read-out's, not the model's: at packing 0.05 the rules give 0.86 to
- * 1.88, and the complete table-time slice reads -0.04 +- 0.04 at this packing (section
- * 5.1); this test reads the latest segments and does not claim more. N = 2000,
+ * hyperplanes cross, groups into larger ones, conflicts inside groups:
+ * papers/shape-change.md sections 7-8) papers/finite-density.md section 5.1 measures
+ * 0.89 +- 0.05 of it at N = 4000; with the earlier rules 1.04, 0.91 and 1.05; the zmf
+ * frame 1.95. The agreement here is the rule's and the read-out's, not the model's: at
+ * packing 0.05 the rules give 0.86 to 1.88, and the complete table-time slice reads
+ * -0.18 +- 0.04 at this packing (section 5.1); this test reads the latest segments and
+ * does not claim more. N = 2000,
  * ~150 collisions per ball sampled: block errors ~1e-4. 4 sigma: a fixed-seed check; and
  * the split must be below 1.5 s eta, which the zmf frame's is not, so the test tells the
  * two frames apart. */
