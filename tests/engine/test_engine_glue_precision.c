@@ -18,6 +18,8 @@
 #include "rc_test.h"
 #include "relcol/relcol.h"
 #include "../../lib/engine/resolve.h"
+#include "../../lib/glue_section.h"
+#include "../../lib/toi_private.h"
 
 /* The exact times on the double data: the centre's event on H from t_x (dt), the glue
  * window's half width (D), for a ball of rest radius r from `in` to `out`, its centre at
@@ -329,10 +331,197 @@ static void test_glue_side(void)
            nfut, wrong, nflip);
 }
 
+
+/* ---- the sections on H (rc_glue_toi's contacts on H) -------------------------------- */
+
+/* The section by H of a ball's world cylinder (rest radius r, rest mass m, momentum p, its
+ * centre at xa at table time 0), in z = y - X with H through X = 0 at t_x = 0 with normal
+ * kappa (exact, from the double momenta of the glued ball: qkappa): the form
+ * r^2 q(z) = |z|^2 - (a.z)^2 + gamma^2 (d.z)^2 about its centre, a = c kappa, d = a - beta,
+ * (the rest-frame distance from the cylinder's axis by Minkowski products; its quad
+ * rounding is ~1e-34 gamma^2). The centre: where H meets the axis, -(e + v kappa.e /
+ * (1 - kappa.v)), e = -xa. */
+typedef struct {
+    qv a, d, m;
+    q128 g2, r;
+} qsec;
+
+static qsec qsection(q128 k, qv kap, double r, const rc_particle *P, rc_vec3 xa)
+{
+    qsec s;
+    const qv p = qv_of(P->p);
+    const q128 M = qenergy(P->m, p, k), c = 1 / sqrtq(k);
+    const qv v = qscale(1 / M, p);
+    s.a = qscale(c, kap);
+    s.d = qaxpy(s.a, -sqrtq(k), v);
+    s.g2 = (M / P->m) * (M / P->m);
+    s.r = r;
+    const qv e = qscale(-1, qv_of(xa));
+    s.m = qscale(-1, qaxpy(e, qdot(kap, e) / (1 - qdot(kap, v)), v));
+    return s;
+}
+
+/* q at z, relative to the section's centre */
+static q128 qform(const qsec *s, qv z)
+{
+    const qv y = qaxpy(z, -1, s->m);
+    const q128 ay = qdot(s->a, y), dy = qdot(s->d, y);
+    return (qdot(y, y) - ay * ay + s->g2 * dy * dy) / (s->r * s->r);
+}
+
+/* the quadratic part alone along u (q at m + u) */
+static q128 qform_dir(const qsec *s, qv u) { return qform(s, qaxpy(s->m, 1, u)); }
+
+/* The section the library forms (glue_section.h, as rc_glue_toi: turned on a fast H) and
+ * its form at z; the plain form's too (old: the former section_on_h). */
+static double lib_form(const rc_glue *g, const rc_toi_shape *sh, rc_vec3 v, rc_vec3 ca, double ta,
+                       rc_vec3 z, int plain)
+{
+    rc_sym3 A;
+    rc_vec3 m;
+    rc_glue_frame fr;
+    if (!plain && rc_glue_frame_make(g, &fr)) {
+        rc_glue_section_fast(g, &fr, sh, v, ca, ta, &A, &m);
+        z = rc_glue_turn(&fr, z);
+    } else {
+        rc_glue_section_plain(g, sh, v, ca, ta, &A, &m);
+    }
+    const rc_vec3 y = rc_v3_sub(z, m);
+    return rc_v3_dot(y, rc_sym3_mul_(&A, y, 0));
+}
+
+/* A glued ball (from S[0] to S[1], rest radius rad, X = 0 at t_x = 0, its centre at -dx
+ * then) and a neighbour S[2] (radius rk, centre xk at t = 0), all slow in R at gamma G. */
+typedef struct {
+    double c, rad, rk;
+    q128 k, G;
+    rc_particle S[3];
+    rc_vec3 dx, xk;
+} gscene;
+
+static void draw_scene(rc_test_rng *r, int it, gscene *sc)
+{
+    sc->G = kinked_ball(r, it, 3, &sc->c, &sc->k, &sc->rad, sc->S);
+    sc->rk = rc_test_range(r, 0.2, 1.0);
+    /* X on the glued ball's incoming surface, the neighbour's centre at rest-frame
+     * distance up to twice the radii from X (contracted along its motion) */
+    const qv y0 = qcube(r);
+    sc->dx = contracted(sc->k, &sc->S[0], qscale(sc->rad / qnorm(y0), y0));
+    const qv y1 = qcube(r);
+    const double f = rc_test_range(r, 0.0, 2.0);
+    sc->xk = contracted(sc->k, &sc->S[2], qscale(f * (sc->rad + sc->rk) / qnorm(y1), y1));
+}
+
+/* the exact forms at z of the glued ball's and the neighbour's sections */
+static void qforms(const gscene *sc, rc_vec3 z, q128 *f0, q128 *fk)
+{
+    const qv kap = qkappa(sc->k, &sc->S[0], &sc->S[1]);
+    const qsec s0 = qsection(sc->k, kap, sc->rad, &sc->S[0], rc_v3_scale(-1.0, sc->dx));
+    const qsec sk = qsection(sc->k, kap, sc->rk, &sc->S[2], sc->xk);
+    *f0 = qform(&s0, qv_of(z));
+    *fk = qform(&sk, qv_of(z));
+}
+
+/* One rounding of the scene's data (momenta and positions, z among them: a point of H in
+ * table coordinates ~gamma r long is itself known to ~2^-53 gamma r across the ball's
+ * motion, where the section is r wide): the largest relative move of the two exact forms
+ * at z (8 draws, fixed signs). */
+static void form_conditioning(const gscene *sc, rc_vec3 z, q128 f0, q128 fk, double *c0,
+                              double *ck)
+{
+    rc_test_rng g = {4242};
+    *c0 = *ck = 0.0;
+    for (int t = 0; t < 8; t++) {
+        gscene s = *sc;
+        for (int i = 0; i < 3; i++)
+            round_vec(&g, &s.S[i].p);
+        round_vec(&g, &s.dx);
+        round_vec(&g, &s.xk);
+        rc_vec3 zr = z;
+        round_vec(&g, &zr);
+        q128 a, b;
+        qforms(&s, zr, &a, &b);
+        *c0 = fmax(*c0, (double)fabsq((a - f0) / f0));
+        *ck = fmax(*ck, (double)fabsq((b - fk) / fk));
+    }
+}
+
+/* The sections on H of rc_glue_toi (the glued ball's incoming cylinder, and a neighbour's)
+ * for balls slow in R at gamma 10 .. 1e8: their forms on points near each section's
+ * boundary (its centre plus its semi-axis along kappa, or along a random direction),
+ * against the exact ones on the same double data, to 1e-12 or 16 times their move under
+ * one rounding of the data. The plain form (the former section_on_h, kept below H's
+ * Lorentz factor 8) is measured beside them: it keeps only the rounding of ~gamma^4
+ * terms. */
+static void test_sections_on_h(void)
+{
+    rc_test_rng r = {2037};
+    static rc_glue gl;
+    double worst_plain[8] = {0}, worst_lib[8] = {0}, ratio = 0.0, wl = 0.0;
+    int n = 0, nill = 0;
+    for (int it = 0; it < 4000; it++) {
+        gscene sc;
+        draw_scene(&r, it, &sc);
+        if (rc_glue_make((double)sc.k, sc.rad, &sc.S[0], &sc.S[1], 0.0,
+                         rc_v3_scale(-1.0, sc.dx), rc_v3(0, 0, 0), &gl) != RC_OK) {
+            ENSURE_MSG(0, "gamma %.3g: rc_glue_make failed", (double)sc.G);
+            continue;
+        }
+        const qv kap = qkappa(sc.k, &sc.S[0], &sc.S[1]);
+        const double ic2 = (double)sc.k;
+        const rc_particle *Pk = &sc.S[2];
+        const double Mk = rc_mass_rel(Pk->m, Pk->p, ic2);
+        const rc_toi_shape shk = rc_toi_shape_M_(sc.rk, Pk->m, Pk->p, ic2, Mk);
+        const rc_vec3 vk = rc_v3_scale(1.0 / Mk, Pk->p);
+        for (int who = 0; who < 2; who++) {
+            const qsec s = who ? qsection(sc.k, kap, sc.rk, Pk, sc.xk)
+                               : qsection(sc.k, kap, sc.rad, &sc.S[0],
+                                          rc_v3_scale(-1.0, sc.dx));
+            const qv u0 = it % 2 ? qcube(&r) : kap;
+            const qv u = qscale(1 / sqrtq(qform_dir(&s, u0)), u0);
+            const rc_vec3 z = dv_of(qaxpy(s.m, 1, u));
+            q128 f0, fk;
+            qforms(&sc, z, &f0, &fk);
+            const q128 fq = who ? fk : f0;
+            double fl, fp;
+            if (who) {
+                fl = lib_form(&gl, &shk, vk, sc.xk, 0.0, z, 0);
+                fp = lib_form(&gl, &shk, vk, sc.xk, 0.0, z, 1);
+            } else {
+                fl = lib_form(&gl, &gl.in, gl.v_in, gl.x_c, gl.t_c, z, 0);
+                fp = lib_form(&gl, &gl.in, gl.v_in, gl.x_c, gl.t_c, z, 1);
+            }
+            const double el = (double)fabsq((fl - fq) / fq), ep = (double)fabsq((fp - fq) / fq);
+            const int dec = (int)fmin(7.0, floor(log10((double)sc.G)));
+            worst_plain[dec] = fmax(worst_plain[dec], ep);
+            worst_lib[dec] = fmax(worst_lib[dec], el);
+            double kk = -1.0;
+            if (el > REF_TOL) {
+                double c0, ck;
+                form_conditioning(&sc, z, f0, fk, &c0, &ck);
+                kk = who ? ck : c0;
+            } else {
+                wl = fmax(wl, el);
+            }
+            n++;
+            ENSURE_MSG(within(el, kk, &ratio, &nill), "gamma %.3g, c %g, draw %d: %s section's "
+                       "form %.3g off (conditioning %.2g)", (double)sc.G, sc.c, it,
+                       who ? "the neighbour's" : "the glued ball's", el, kk);
+        }
+    }
+    printf("  %d section forms on H, gamma 10 .. 1e8: within %.1e of the exact ones, or (%d "
+           "values) %.2f x their conditioning\n", n, wl, nill, ratio);
+    printf("  largest relative error per decade of gamma (1e1 .. 1e7+), library / plain "
+           "form:\n");
+    for (int d = 1; d < 8; d++)
+        printf("    1e%d: %.2g / %.2g\n", d, worst_lib[d], worst_plain[d]);
+}
+
 int main(void)
 {
     RUN_TEST(test_comoving_glue);
     RUN_TEST(test_kinks_cross);
     RUN_TEST(test_glue_side);
+    RUN_TEST(test_sections_on_h);
     RC_TEST_MAIN_END();
 }
