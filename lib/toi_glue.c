@@ -476,7 +476,7 @@ int rc_glue_toi(const rc_glue *g, const rc_toi_params *prm, rc_toi_workspace *ws
         rc_vec3 ma, mk, z, kh = g->kappa;
         /* on a fast H the sections in its turned frame, where they keep their digits
          * (glue_section.h); the minimiser turned back below */
-        rc_glue_frame fr;
+        rc_glue_frame fr = {0}; /* (read only when fast: -O3 cannot see it) */
         const int fast = rc_glue_frame_make(g, &fr);
         if (fast) {
             rc_glue_section_fast(g, &fr, &g->in, g->v_in, g->x_c, g->t_c, &Aa, &ma);
