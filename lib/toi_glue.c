@@ -8,6 +8,7 @@
 #include "relcol/status.h"
 #include "relcol/toi.h"
 #include "glue_kv.h"
+#include "glue_section.h"
 #include "toi_private.h"
 
 int rc_glue_make(double inv_c2, double r, const rc_particle *in, const rc_particle *out,
@@ -77,32 +78,6 @@ int rc_glue_inside(const rc_glue *g, double t, rc_vec3 y)
 }
 
 /* ---- first contact with the glued tube ------------------------------------------- */
-
-/* Rest-frame metric of a shape: d is inside iff d^T G d <= 1, G = (I + u u^T) / r^2 with
- * u = gamma beta (the shape's rest-frame length of d over r, squared). */
-static rc_sym3 shape_metric(const rc_toi_shape *s)
-{
-    const rc_vec3 u = rc_v3_scale(1.0 / s->g, s->beta);
-    const double f = 1.0 / (s->r * s->r);
-    const rc_sym3 G = {f * (1.0 + u.x * u.x), f * (1.0 + u.y * u.y), f * (1.0 + u.z * u.z),
-                       f * u.x * u.y,         f * u.x * u.z,         f * u.y * u.z};
-    return G;
-}
-
-/* L^T G L for L = I - v k^T: G - k (G v)^T - (G v) k^T + (v^T G v) k k^T. */
-static rc_sym3 pull_back(const rc_sym3 *G, rc_vec3 v, rc_vec3 k)
-{
-    const rc_vec3 w = rc_sym3_mul_(G, v, 0);
-    const double q = rc_v3_dot(v, w);
-    rc_sym3 A;
-    A.xx = G->xx - 2.0 * k.x * w.x + q * k.x * k.x;
-    A.yy = G->yy - 2.0 * k.y * w.y + q * k.y * k.y;
-    A.zz = G->zz - 2.0 * k.z * w.z + q * k.z * k.z;
-    A.xy = G->xy - k.x * w.y - w.x * k.y + q * k.x * k.y;
-    A.xz = G->xz - k.x * w.z - w.x * k.z + q * k.x * k.z;
-    A.yz = G->yz - k.y * w.z - w.y * k.z + q * k.y * k.z;
-    return A;
-}
 
 /* The dual value at lam of min k.z over {(z - m1)^T A1 (z - m1) <= 1} and the same for
  * 2: the minimum of k.z over the blended ellipsoid (1 - lam) q1 + lam q2 <= 1, a lower
@@ -387,20 +362,6 @@ static int not_before(double t_from, double lb, double bt)
     return t_from + lb * (1.0 - BOUND_REL) - TIME_REL * (fabs(t_from) + fabs(bt)) >= bt;
 }
 
-/* The section of ball a's world cylinder (shape s, velocity v, centre ca at time ta) by
- * H, in z = y - X: the ellipsoid (z - m)^T A (z - m) <= 1. On H, y's table time is
- * t_x + kappa.z, so the offset from the centre is L z + e with L = I - v kappa^T and
- * e = X - c(t_x); m = -L^-1 e = -(e + v (kappa.e) / (1 - kappa.v)) (Sherman-Morrison). */
-static void section_on_h(const rc_glue *g, const rc_toi_shape *s, rc_vec3 v, rc_vec3 ca, double ta,
-                         rc_sym3 *A, rc_vec3 *m)
-{
-    const rc_sym3 G = shape_metric(s);
-    *A = pull_back(&G, v, g->kappa);
-    const rc_vec3 e = rc_v3_sub(g->x, rc_v3_axpy(ca, g->t_x - ta, v));
-    const double ke = rc_v3_dot(g->kappa, e) / (1.0 - rc_v3_dot(g->kappa, v));
-    *m = rc_v3_scale(-1.0, rc_v3_axpy(e, ke, v));
-}
-
 /* A lower bound of the time from now at which shape a and shape k (centre separation d,
  * relative velocity w) can first meet: the time to close their gap across a plane normal
  * to u (their supports along u), INFINITY if that gap opens, 0 if u separates nothing
@@ -437,7 +398,7 @@ int rc_glue_toi(const rc_glue *g, const rc_toi_params *prm, rc_toi_workspace *ws
     const double Mk = rc_mass_rel(k->m, k->p, ic2);
     const rc_toi_shape sk = rc_toi_shape_M_(k->r, k->m, k->p, ic2, Mk);
     const rc_vec3 vk = rc_v3_scale(1.0 / Mk, k->p);
-    const rc_sym3 Gk = shape_metric(&sk);
+    const rc_sym3 Gk = rc_glue_shape_metric(&sk);
     /* which side of H a point is on: ell > 0 not yet reached (incoming), < 0 reached */
 #define ELL(Y, T) (rc_v3_dot(g->kappa, rc_v3_sub((Y), g->x)) - ((T) - g->t_x))
     double bt = INFINITY;
@@ -468,7 +429,7 @@ int rc_glue_toi(const rc_glue *g, const rc_toi_params *prm, rc_toi_workspace *ws
         if (st == RC_EOVERLAP) {
             /* overlapping whole shapes now: the piece overlaps k if the common part reaches
              * its side of H; else its first contact is on H */
-            const rc_sym3 Ga = shape_metric(sa);
+            const rc_sym3 Ga = rc_glue_shape_metric(sa);
             rc_vec3 z;
             const rc_vec3 dir = rc_v3_scale(pc ? 1.0 : -1.0, g->kappa);
             const rc_vec3 m1 = rc_v3_sub(ca, g->x), m2 = rc_v3_sub(k->x, g->x);
@@ -512,9 +473,19 @@ int rc_glue_toi(const rc_glue *g, const rc_toi_params *prm, rc_toi_workspace *ws
         /* on H: min of t_x + kappa.z over both cylinders' sections (the incoming and the
          * outgoing cylinder have the same one) */
         rc_sym3 Aa, Ak;
-        rc_vec3 ma, mk, z;
-        section_on_h(g, &g->in, g->v_in, g->x_c, g->t_c, &Aa, &ma);
-        section_on_h(g, &sk, vk, k->x, t_from, &Ak, &mk);
+        rc_vec3 ma, mk, z, kh = g->kappa;
+        /* on a fast H the sections in its turned frame, where they keep their digits
+         * (glue_section.h); the minimiser turned back below */
+        rc_glue_frame fr = {0}; /* (read only when fast: -O3 cannot see it) */
+        const int fast = rc_glue_frame_make(g, &fr);
+        if (fast) {
+            rc_glue_section_fast(g, &fr, &g->in, g->v_in, g->x_c, g->t_c, &Aa, &ma);
+            rc_glue_section_fast(g, &fr, &sk, vk, k->x, t_from, &Ak, &mk);
+            kh = rc_v3(fr.kq, 0.0, 0.0);
+        } else {
+            rc_glue_section_plain(g, &g->in, g->v_in, g->x_c, g->t_c, &Aa, &ma);
+            rc_glue_section_plain(g, &sk, vk, k->x, t_from, &Ak, &mk);
+        }
         /* Only a contact on H before bt would be taken. It is a contact of each cylinder
          * too (their sections on H coincide), so not before either's first contact: none
          * if that is at bt or later; else lin_below may certify the minimum not below bt.
@@ -524,15 +495,17 @@ int rc_glue_toi(const rc_glue *g, const rc_toi_params *prm, rc_toi_workspace *ws
             if (not_before(t_from, ta_max, bt)) {
                 later = 1;
             } else {
-                const dual_pb pb = dual_pb_make(&Aa, ma, &Ak, mk, g->kappa);
+                const dual_pb pb = dual_pb_make(&Aa, ma, &Ak, mk, kh);
                 const double theta = bt - g->t_x;
                 const double margin = below_margin(&pb, theta, fabs(bt) + fabs(g->t_x));
                 later = lin_below(&pb, theta, margin, 0) == 0;
             }
         }
-        const double lo = later ? INFINITY : lin_min2(&Aa, ma, &Ak, mk, g->kappa, &z);
+        const double lo = later ? INFINITY : lin_min2(&Aa, ma, &Ak, mk, kh, &z);
         if (isnan(lo))
             return RC_EINVAL;
+        if (fast && lo != INFINITY)
+            z = rc_glue_turn_back(&fr, z);
         const double th = g->t_x + lo;
         if (lo != INFINITY && th >= t_from && th < bt) {
             bt = th;
