@@ -413,6 +413,19 @@ static void draw_scene(rc_test_rng *r, int it, gscene *sc)
     sc->xk = contracted(sc->k, &sc->S[2], qscale(f * (sc->rad + sc->rk) / qnorm(y1), y1));
 }
 
+/* A scene and the library's glued tube of its ball (X at the origin, at t = 0); 0 (and a
+ * failed check) if rc_glue_make refused it. */
+static int scene_glue(rc_test_rng *r, int it, gscene *sc, rc_glue *gl)
+{
+    draw_scene(r, it, sc);
+    if (rc_glue_make((double)sc->k, sc->rad, &sc->S[0], &sc->S[1], 0.0,
+                     rc_v3_scale(-1.0, sc->dx), rc_v3(0, 0, 0), gl) != RC_OK) {
+        ENSURE_MSG(0, "gamma %.3g: rc_glue_make failed", (double)sc->G);
+        return 0;
+    }
+    return 1;
+}
+
 /* the exact forms at z of the glued ball's and the neighbour's sections */
 static void qforms(const gscene *sc, rc_vec3 z, q128 *f0, q128 *fk)
 {
@@ -462,12 +475,8 @@ static void test_sections_on_h(void)
     int n = 0, nill = 0;
     for (int it = 0; it < 4000; it++) {
         gscene sc;
-        draw_scene(&r, it, &sc);
-        if (rc_glue_make((double)sc.k, sc.rad, &sc.S[0], &sc.S[1], 0.0,
-                         rc_v3_scale(-1.0, sc.dx), rc_v3(0, 0, 0), &gl) != RC_OK) {
-            ENSURE_MSG(0, "gamma %.3g: rc_glue_make failed", (double)sc.G);
+        if (!scene_glue(&r, it, &sc, &gl))
             continue;
-        }
         const qv kap = qkappa(sc.k, &sc.S[0], &sc.S[1]);
         const double ic2 = (double)sc.k;
         const rc_particle *Pk = &sc.S[2];
@@ -637,12 +646,8 @@ static void test_glue_toi_on_h(void)
     double worst = 0.0, ratio = 0.0;
     for (int it = 0; it < 3000; it++) {
         gscene sc;
-        draw_scene(&r, it, &sc);
-        if (rc_glue_make((double)sc.k, sc.rad, &sc.S[0], &sc.S[1], 0.0,
-                         rc_v3_scale(-1.0, sc.dx), rc_v3(0, 0, 0), &gl) != RC_OK) {
-            ENSURE_MSG(0, "gamma %.3g: rc_glue_make failed", (double)sc.G);
+        if (!scene_glue(&r, it, &sc, &gl))
             continue;
-        }
         /* from a little before the window, the neighbour 1 .. 1.6 radii (contracted) from
          * the glued ball's centre then */
         const double D = gl.t_last - gl.t_c;
