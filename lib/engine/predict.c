@@ -161,6 +161,40 @@ static int glue_contact(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
     return st;
 }
 
+/* per_ball frames: the pair's contact when the frame reported an overlap from glue_contact's
+ * reference. The zmf search starts at the later of the two reference events in the pair's
+ * ZMF, which suits a stored state that begins its line (the zmf frame's); a per_ball
+ * ball's line is its tube wherever eng_glue_side says so, and the straight cylinders'
+ * first contact can lie on both balls' outgoing pieces ZMF-before that start while it is
+ * still ahead in the table (its X is not simultaneous there). So the frame is asked again
+ * from a reference far enough back that the cylinders are apart (4 (r_i + r_k) on the
+ * table's slice, the other side of every overlap of two straight cylinders, whose set of
+ * times is one interval), and its answer is the pair's contact if X lies on the future
+ * side of both balls' hyperplanes (glue_valid): the first contact of the two tubes' present
+ * pieces. Otherwise (X on an incoming side: a contact only an undo can place) the overlap
+ * stands. The reference moves by the same bits whichever ball asks (dx and the relative
+ * velocity change sign exactly). dx at tref; RC_OK with *out relative to them, or the
+ * overlap. */
+static int glue_back(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
+                     double tref, rc_toi_contact *out)
+{
+    const rc_vec3 dv = rc_v3_sub(bk->v, bi->v);
+    const double dvn = rc_v3_norm(dv);
+    if (!(dvn > 0.0))
+        return RC_EOVERLAP;
+    const double back = (rc_v3_norm(dx) + 4.0 * (bi->r + bk->r)) / dvn;
+    const rc_vec3 dxb = rc_v3_axpy(dx, -back, dv);
+    const double tb = tref - back;
+    rc_toi_contact o;
+    if (frame_call(s, bi, bk, dxb, &o) != RC_OK || !glue_valid(s, bi, bk, dxb, tb, o.t, o.x))
+        return RC_EOVERLAP;
+    /* (relative to the original reference, as the caller's dx) */
+    o.t -= back;
+    o.x = rc_v3_sub(o.x, rc_v3_scale(back, bi->v));
+    *out = o;
+    return RC_OK;
+}
+
 /* The same from the separation dx (and its square d2) at time tref. */
 __attribute__((always_inline)) static inline double pair_time_dx(
     const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx, double d2, double tref,
@@ -212,13 +246,14 @@ __attribute__((always_inline)) static inline double pair_time_dx(
             w->sc_dx = rc_v3_axpy(out.x, -out.t, bi->v);
             return ta;
         }
-        if (st == RC_EOVERLAP) {
+        if (st == RC_EOVERLAP && glue_back(s, bi, bk, dx, pref, &out) == RC_OK) {
+            tref = pref; /* (out is relative to dx's time) */
+        } else if (st == RC_EOVERLAP) {
             if (parting)
                 return INFINITY;
             *n = rc_v3(NAN, NAN, NAN);
             return s->now;
-        }
-        if (st != RC_OK)
+        } else if (st != RC_OK)
             return INFINITY;
         /* The frame decides approach in the pair's ZMF from the stored lines, one of
          * which may be an outgoing line taken back before its kink; the law decides it
@@ -870,7 +905,9 @@ int eng_pair_contact(rc_sim *s, int32_t a, int32_t b, double t0, double *tx, rc_
     const rc_vec3 d = eng_image(s, rc_v3_sub(rc_v3_axpy(bb->x, t0 - bb->t, bb->v),
                                              rc_v3_axpy(ba->x, t0 - ba->t, ba->v)));
     rc_toi_contact out;
-    const int st = frame_call(s, ba, bb, d, &out);
+    int st = frame_call(s, ba, bb, d, &out);
+    if (st == RC_EOVERLAP) /* (the straight cylinders met ZMF-before t0: glue_back) */
+        st = glue_back(s, ba, bb, d, t0, &out) == RC_OK ? RC_OK : RC_MISS;
     if (st != RC_OK)
         return st;
     if (!glue_valid(s, ba, bb, d, t0, out.t, out.x) ||

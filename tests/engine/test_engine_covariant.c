@@ -92,6 +92,36 @@ static void test_conservation(void)
     }
 }
 
+/* (a'') Issue 16's bound in dilute gases: the overlap policy decides at most 0.1 % of the
+ * collisions of a periodic gas at packing 0.01, rms 0.8c, in 2-D and 3-D (20 000
+ * collisions: ~12 decisions where the bound allows 20). Before the frame was asked again
+ * from further back where it reported an overlap (predict.c glue_back: the straight
+ * cylinders' first contact lies ZMF-before the reference yet on both balls' outgoing
+ * pieces) the two shares were 0.21 % and 0.22 %, most of them such contacts. */
+static void test_dilute_share(void)
+{
+    for (int dim = 2; dim <= 3; dim++) {
+        rc_sim_def d = rc_sim_def_default();
+        d.dim = dim;
+        d.c = 1.0;
+        d.frame = &rc_toi_frame_covariant;
+        for (int k = 0; k < 3; k++)
+            d.boundary[k] = RC_SIM_PERIODIC;
+        rc_sim *s = util_gas(d, 2000, 0.01, 0.8, 3);
+        if (!s)
+            return;
+        util_run_collisions(s, 20000);
+        rc_sim_diag dg;
+        rc_sim_diagnostics(s, &dg);
+        ENSURE_MSG(dg.collisions >= 20000 && dg.overlaps * 1000 <= dg.collisions,
+                   "%d-D: %llu of %llu collisions decided by the overlap policy", dim,
+                   (unsigned long long)dg.overlaps, (unsigned long long)dg.collisions);
+        printf("  %d-D periodic, packing 0.01, rms 0.8c: %llu of %llu collisions by the overlap "
+               "policy\n", dim, (unsigned long long)dg.overlaps, (unsigned long long)dg.collisions);
+        rc_sim_free(&s);
+    }
+}
+
 /* (a') A contact the frame (pair's ZMF, stored lines) calls approaching while the law
  * (velocities along the normal) calls parting -- seen with a ball stored on its outgoing
  * line before its kink -- once made a collision that changed nothing and came up again at
@@ -602,6 +632,7 @@ int main(void)
     RUN_TEST(test_set_c_kinks);
     RUN_TEST(test_conservation);
     RUN_TEST(test_no_stall);
+    RUN_TEST(test_dilute_share);
     RUN_TEST(test_cluster);
     RUN_TEST(test_undo_wall);
     RC_TEST_MAIN_END();

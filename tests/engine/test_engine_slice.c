@@ -157,7 +157,7 @@ static void test_covariant_run_unchanged(void)
         rc_sim_diagnostics(b, &db);
         ENSURE_MSG(rc_sim_hash(a) == rc_sim_hash(b) && memcmp(&da, &db, sizeof da) == 0,
                    "%d-D periodic %d: the run changed with slices asked for", dim, per % 2);
-        ENSURE_MSG(per % 2 || on_line > 50, "%ld on their latest segment", on_line);
+        ENSURE_MSG(per % 2 || on_line > 30, "%ld on their latest segment", on_line);
         ENSURE_MSG(reads > 20 && refused > 10 && da.collisions > 500 && da.rollbacks > 10,
                    "%d reads, %d refused, %llu collisions, %llu rollbacks", reads, refused,
                    (unsigned long long)da.collisions, (unsigned long long)da.rollbacks);
