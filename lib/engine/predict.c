@@ -171,10 +171,39 @@ static int glue_contact(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
  * table's slice, the other side of every overlap of two straight cylinders, whose set of
  * times is one interval), and its answer is the pair's contact if X lies on the future
  * side of both balls' hyperplanes (glue_valid): the first contact of the two tubes' present
- * pieces. Otherwise (X on an incoming side: a contact only an undo can place) the overlap
- * stands. The reference moves by the same bits whichever ball asks (dx and the relative
+ * pieces. Otherwise (X on an incoming side, or a ball in its window whose incoming piece
+ * the other meets first: a contact only an undo can place) the overlap stands. The reference moves by the same bits whichever ball asks (dx and the relative
  * velocity change sign exactly). dx at tref; RC_OK with *out relative to them, or the
  * overlap. */
+/* glue_back's guard for a ball whose glue window ends after the reference tb: inside the
+ * window its tube is partly the incoming cylinder before H, not the straight outgoing one
+ * the frame was asked about, so the contact X on the outgoing pieces is the tubes' only if
+ * the other ball, rigid on its stored line, does not reach the incoming piece first
+ * (rc_glue_toi from the window's start, the table's first contact with the pieces; before
+ * the window the whole ball was on its incoming line, which the engine's earlier
+ * predictions answered for; in a probe 1 in 10 of the answers with a ball in its window
+ * failed this). 1: it reaches it (or the question fails): an undo's case, not a contact
+ * on the outgoing pieces. bg glued (g), bo the other, d = bo - bg at tb on the stored
+ * lines. */
+static int incoming_first(const rc_sim *cs, const eng_ball *bg, const eng_ball *bo, rc_vec3 d,
+                          double tb, double tx)
+{
+    rc_sim *s = (rc_sim *)cs; /* (the workspace is scratch) */
+    const rc_glue *g = &s->glu[bg - s->b];
+    const eng_aux *ao = &s->a[bo - s->b];
+    const double t0 = tb > g->t_first ? tb : g->t_first;
+    const rc_vec3 cg = rc_v3_axpy(g->x_c, t0 - g->t_c, bg->v);
+    const rc_vec3 d0 = rc_v3_axpy(d, t0 - tb, rc_v3_sub(bo->v, bg->v));
+    const rc_toi_ball K = {rc_v3_add(cg, d0), bo->r, ao->m, ao->p};
+    double t;
+    rc_vec3 y, n;
+    int piece;
+    const int st = rc_glue_toi(g, &s->toi, s->ws, t0, &K, &t, &y, &n, &piece);
+    if (st == RC_MISS)
+        return 0;
+    return st != RC_OK || (piece == 0 && t < tx);
+}
+
 static int glue_back(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
                      double tref, rc_toi_contact *out)
 {
@@ -187,6 +216,12 @@ static int glue_back(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc
     const double tb = tref - back;
     rc_toi_contact o;
     if (frame_call(s, bi, bk, dxb, &o) != RC_OK || !glue_valid(s, bi, bk, dxb, tb, o.t, o.x))
+        return RC_EOVERLAP;
+    const rc_glue *gi = &s->glu[bi - s->b], *gk = &s->glu[bk - s->b];
+    const double tx = tb + o.t;
+    if ((gi->r > 0.0 && tb < gi->t_last && incoming_first(s, bi, bk, dxb, tb, tx)) ||
+        (gk->r > 0.0 && tb < gk->t_last &&
+         incoming_first(s, bk, bi, rc_v3_scale(-1.0, dxb), tb, tx)))
         return RC_EOVERLAP;
     /* (relative to the original reference, as the caller's dx) */
     o.t -= back;
