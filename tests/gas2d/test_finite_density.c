@@ -272,8 +272,8 @@ static void test_covariant_agrees(void)
            sec, s * eta, dc / (s * eta), dt, set);
     ENSURE(dc > 4.0 * sec && dc < 1.5 * s * eta);
     /* ... and read from the complete table-time slices the split is not (1)'s:
-     * papers/finite-density.md section 5.1 measures -0.35 +- 0.04 of s eta at N = 4000
-     * (-0.24 ... -0.43 at every packing), against 0.80 on the latest segments. Asserted: below half of (1), and below the latest segments' split by 4
+     * papers/finite-density.md section 5.1 measures -0.32 +- 0.04 of s eta at N = 4000
+     * (-0.13 ... -0.38 at every packing), against 0.82 on the latest segments. Asserted: below half of (1), and below the latest segments' split by 4
      * of the two errors combined (a read-out that fell back to the latest segments, or
      * a slice that missed kinks, would fail) */
     double dsl = NAN, sesl = NAN;
