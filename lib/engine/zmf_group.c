@@ -1,0 +1,200 @@
+/* engine/zmf_group.c — per_ball frames: a group of contacts formed by simultaneity in the
+ * group's zero-momentum frame rather than at one table time (papers/simultaneous-contacts.md,
+ * "Forming the group in its ZMF"). A further contact of a member joins the event's when
+ * the frame's contact event of that pair lies within sim_tol light-crossing times of the
+ * event's own contact event in the ZMF of the group's balls, the joining ball included;
+ * the group is then solved, each member kinked at its own event, by the undo's machinery
+ * (eng_solve_at_events). */
+#include <math.h>
+
+#include "resolve.h"
+#include "../toi_private.h"
+#include "relcol/status.h"
+
+/* A contact found: members a, b (local), normal from a to b, its event relative to ball
+ * i's centre at T: time t - T and offset x */
+typedef struct zcon {
+    int a, b;
+    rc_vec3 n;
+    double t;
+    rc_vec3 x;
+} zcon;
+
+/* The group formed so far: members (internal index), each one's centre at T relative to
+ * ball i's (nearest image), the contacts, and the members' total four-momentum (P, M =
+ * E / c^2). */
+typedef struct zgroup {
+    size_t nm, nc;
+    int32_t mem[ENG_EVGROUP_NMAX];
+    rc_vec3 rel[ENG_EVGROUP_NMAX];
+    zcon con[ENG_EVGROUP_NMAX + 1];
+    rc_vec3 P;
+    double M;
+} zgroup;
+
+static int local_of(const zgroup *g, int32_t k)
+{
+    for (size_t j = 0; j < g->nm; j++)
+        if (g->mem[j] == k)
+            return (int)j;
+    return -1;
+}
+
+static int have(const zgroup *g, int a, int b)
+{
+    for (size_t j = 0; j < g->nc; j++)
+        if ((g->con[j].a == a && g->con[j].b == b) || (g->con[j].a == b && g->con[j].b == a))
+            return 1;
+    return 0;
+}
+
+/* Does ball k (not member mi's partner in the group yet) have a contact with member mi
+ * that is simultaneous with the group's first one in the ZMF of the group and k? Then
+ * it is added (k too, if new): 1; else 0 (nothing changed). */
+static int try_join(rc_sim *s, zgroup *g, int mi, int32_t k, double T)
+{
+    const int32_t m = g->mem[mi];
+    const eng_ball *bm = &s->b[m], *bk = &s->b[k];
+    const int lk = local_of(g, k);
+    if (lk >= 0 ? have(g, mi, lk) : g->nm == ENG_EVGROUP_NMAX)
+        return 0;
+    if (g->nc == ENG_EVGROUP_NMAX + 1)
+        return 0;
+    const double ic2 = s->inv_c2, sig = bm->r + bk->r;
+    /* centres at T (stored lines), relative to m's; the bounding spheres must approach */
+    const rc_vec3 xm = rc_v3_axpy(bm->x, T - bm->t, bm->v);
+    const rc_vec3 dx = eng_image(s, rc_v3_sub(rc_v3_axpy(bk->x, T - bk->t, bk->v), xm));
+    const rc_vec3 dv = rc_v3_sub(bk->v, bm->v);
+    const double b = rc_v3_dot(dx, dv), d2 = rc_v3_norm2(dx), dd = d2 - sig * sig;
+    if (!(b < 0.0))
+        return 0;
+    /* the group with k: total momentum and relativistic mass */
+    const eng_aux *ak = &s->a[k];
+    rc_vec3 P = g->P;
+    double M = g->M;
+    if (lk < 0) {
+        P = rc_v3_add(P, ak->p);
+        M += eng_mass_rel(ak->m, ak->p, ic2);
+    }
+    /* Where must the contact event X lie in time for it to be simultaneous with the first,
+     * X0? X lies in m's table-frame shape at its time, so X = m's centre + e with |e| <=
+     * r_m; its ZMF time difference to X0 is then, times the group's rest mass,
+     *   M (t - t0) - P.(x - x0)/c^2 = (t - T) D - A - P.e/c^2,   D = M - P.v_m/c^2 > 0,
+     * and it vanishes no later than tau_max after T. The frame's contact comes no earlier
+     * than the bounding spheres' and, with the table-frame shapes meeting there, no
+     * earlier than the centre line allows; a pair that cannot meet by tau_max (with the
+     * tolerance below: a ZMF time difference sim_tol sig / c, which is at most
+     * sim_tol sig M / (c D) of table time) is not asked. */
+    const zcon *c0 = &g->con[0];
+    const rc_vec3 relm = g->rel[mi];
+    const double D = M - rc_v3_dot(P, bm->v) * ic2;
+    const double A = M * c0->t + rc_v3_dot(P, rc_v3_sub(relm, c0->x)) * ic2;
+    const double tol = s->def.sim_tol * sig * s->inv_c * M / D;
+    const double tau_max = (A + rc_v3_norm(P) * bm->r * ic2) / D + 2.0 * tol;
+    double ts = 0.0;
+    if (dd > 0.0) {
+        const double disc = b * b - rc_v3_norm2(dv) * dd;
+        if (!(disc > 0.0))
+            return 0;
+        ts = dd / (sqrt(disc) - b);
+    }
+    if (!(ts <= tau_max))
+        return 0;
+    const double dn = sqrt(d2);
+    if (dn > 0.0) {
+        const rc_vec3 ax = rc_v3_scale(1.0 / dn, dx);
+        const rc_toi_shape hm = rc_toi_shape_of(bm->r, s->a[m].m, s->a[m].p, ic2);
+        const rc_toi_shape hk = rc_toi_shape_of(bk->r, ak->m, ak->p, ic2);
+        const double hsum = rc_toi_support_(&hm, ax) + rc_toi_support_(&hk, ax);
+        /* (1e-12: the supports' and the centre line's rounding, far above it) */
+        if (dn + tau_max * (b / dn) > hsum * (1.0 + 1e-12))
+            return 0;
+    }
+    /* the frame's contact event from the stored lines, asked a light-crossing time early
+     * (as an undo asks: the pair's ZMF simultaneity tilts by up to that across the pair) */
+    double tk;
+    rc_vec3 dxk, nk;
+    if (eng_pair_contact(s, m, k, T - sig * s->inv_c, &tk, &dxk, &nk) != RC_OK)
+        return 0;
+    /* X relative to i's centre at T, and its ZMF time difference to X0 */
+    const rc_vec3 xk = rc_v3_add(rc_v3_axpy(relm, tk - T, bm->v), dxk);
+    const double dt = (tk - T) - c0->t;
+    const rc_vec3 dX = rc_v3_sub(xk, c0->x);
+    const double minv2 = M * M - rc_v3_norm2(P) * ic2;
+    if (!(minv2 > 0.0))
+        return 0;
+    const double dtp = (M * dt - rc_v3_dot(P, dX) * ic2) / sqrt(minv2);
+    if (!(fabs(dtp) <= s->def.sim_tol * sig * s->inv_c))
+        return 0;
+    int b_loc = lk;
+    if (lk < 0) {
+        b_loc = (int)g->nm;
+        g->mem[g->nm] = k;
+        g->rel[g->nm] = rc_v3_add(relm, dx);
+        g->nm++;
+        g->P = P;
+        g->M = M;
+    }
+    g->con[g->nc++] = (zcon){mi, b_loc, nk, tk - T, xk};
+    return 1;
+}
+
+/* At ball i's event with ball bp at table time T, contact event X0 = (tx0, dX0 from i's
+ * centre then on its stored line): both members (grp_ball[0], [1]) are at T, the event's
+ * contact is grp_con[0]. Grow the group through shared balls by try_join; with a further
+ * contact, form it in the engine's group arrays and solve it (1, or the law's failure);
+ * else 0, nothing changed. */
+int eng_zmf_group(rc_sim *s, int32_t i, int32_t bp, double T, double tx0, rc_vec3 dX0)
+{
+    zgroup g;
+    g.nm = 2;
+    g.mem[0] = i;
+    g.mem[1] = bp;
+    g.rel[0] = rc_v3(0.0, 0.0, 0.0);
+    g.rel[1] = eng_image(s, rc_v3_sub(s->b[bp].x, s->b[i].x));
+    g.P = rc_v3_add(s->a[i].p, s->a[bp].p);
+    g.M = eng_mass_rel(s->a[i].m, s->a[i].p, s->inv_c2) +
+          eng_mass_rel(s->a[bp].m, s->a[bp].p, s->inv_c2);
+    g.nc = 1;
+    g.con[0] = (zcon){0, 1, s->grp_con[0].n, tx0 - T, rc_v3_axpy(dX0, tx0 - T, s->b[i].v)};
+    const eng_cells *cg = &s->g;
+    for (size_t mi = 0; mi < g.nm; mi++) {
+        const int32_t m = g.mem[mi];
+        int c[3];
+        cell_coords(cg, s->a[m].cell, c);
+        for (int z = -1; z <= 1; z++)
+            for (int y = -1; y <= 1; y++)
+                for (int x = -1; x <= 1; x++) {
+                    const int32_t cell = cell_at(cg, c, x, y, z);
+                    if (cell < 0)
+                        continue;
+                    eng_cell_it it;
+                    for (int32_t k = cell_first(cg, cell, &it); k >= 0; k = cell_next(cg, &it))
+                        if (k != m)
+                            try_join(s, &g, (int)mi, k, T);
+                }
+    }
+    if (g.nc == 1)
+        return 0;
+    /* the group in the engine's arrays: members at T on their stored (incoming) lines,
+     * contacts with their events in i's coordinates; the read-out's records of the members
+     * the event did not name, noted after it (the caller notes i's and bp's) */
+    eng_pend_snap ps[ENG_EVGROUP_NMAX];
+    size_t nps = 0, nm = 2, nc = 1;
+    for (size_t q = 2; q < g.nm; q++) {
+        if (s->pend)
+            ps[nps++] = eng_pend_take(s, g.mem[q]);
+        if (eng_member_of(s, &nm, g.mem[q], T) < 0)
+            return RC_ENOMEM;
+    }
+    const rc_vec3 xi = s->b[i].x;
+    s->grp_con[0].t = T + g.con[0].t;
+    s->grp_con[0].x = rc_v3_add(xi, g.con[0].x);
+    for (size_t j = 1; j < g.nc; j++) {
+        if (eng_add_contact(s, &nc, g.con[j].a, g.con[j].b, g.con[j].n) != RC_OK)
+            return RC_ENOMEM;
+        s->grp_con[j].t = T + g.con[j].t;
+        s->grp_con[j].x = rc_v3_add(xi, g.con[j].x);
+    }
+    return eng_solve_at_events(s, nm, nc, ps, nps);
+}
