@@ -8,6 +8,7 @@
 #include <math.h>
 
 #include "resolve.h"
+#include "walk.h"
 #include "../toi_private.h"
 #include "relcol/status.h"
 
@@ -48,26 +49,67 @@ static int have(const zgroup *g, int a, int b)
     return 0;
 }
 
-/* Does ball k (not member mi's partner in the group yet) have a contact with member mi
- * that is simultaneous with the group's first one in the ZMF of the group and k? Then
- * it is added (k too, if new): 1; else 0 (nothing changed). */
-static int try_join(rc_sim *s, zgroup *g, int mi, int32_t k, double T)
+/* What every neighbour of member mi is tested with: its centre at T (stored line) and
+ * velocity; for try_join's bound on how late after T a contact event of it can be
+ * simultaneous with the first contact event, the parts that do not depend on the
+ * neighbour: |t0 - T|, the reach |x_m - x0| + r_m, the group's speed so far. */
+typedef struct zmem {
+    int mi;
+    rc_vec3 x, v;
+    double r, beta_m, t0, reach, beta_g;
+} zmem;
+
+static zmem member_ctx(const rc_sim *s, const zgroup *g, size_t mi, double T)
 {
-    const int32_t m = g->mem[mi];
-    const eng_ball *bm = &s->b[m], *bk = &s->b[k];
+    const eng_ball *bm = &s->b[g->mem[mi]];
+    zmem z;
+    z.mi = (int)mi;
+    z.x = rc_v3_axpy(bm->x, T - bm->t, bm->v);
+    z.v = bm->v;
+    z.r = bm->r;
+    z.beta_m = rc_v3_norm(bm->v) * s->inv_c;
+    z.t0 = fabs(g->con[0].t);
+    z.reach = rc_v3_norm(rc_v3_sub(g->rel[mi], g->con[0].x)) + bm->r;
+    z.beta_g = rc_v3_norm(g->P) / g->M * s->inv_c;
+    return z;
+}
+
+/* Does ball k have a contact with member z.mi, not yet in the group, simultaneous with the
+ * group's first one in the ZMF of the group and k? Then it is added (k too, if new): 1;
+ * else 0 (nothing changed). */
+static int try_join(rc_sim *s, zgroup *g, const zmem *z, int32_t k, double T)
+{
+    const eng_ball *bk = &s->b[k];
+    const double ic2 = s->inv_c2, sig = z->r + bk->r;
+    /* centres at T (stored lines), relative to m's; the bounding spheres must approach and
+     * touch by tb, a bound of tau_max below from the group's velocity with k, |u| <= beta
+     * c, beta the larger of the group's so far and k's (|dx + t dv|^2 = sig^2 at some t <=
+     * tb: at tb itself, or its vertex before with a real root) -- the cheap test most
+     * neighbours fail */
+    const rc_vec3 dx = eng_image(s, rc_v3_sub(rc_v3_axpy(bk->x, T - bk->t, bk->v), z->x));
+    const rc_vec3 dv = rc_v3_sub(bk->v, z->v);
+    const double b = rc_v3_dot(dx, dv), d2 = rc_v3_norm2(dx), dd = d2 - sig * sig;
+    if (!(b < 0.0))
+        return 0;
+    const double dv2 = rc_v3_norm2(dv), disc = b * b - dv2 * dd;
+    if (dd > 0.0) {
+        if (!(disc > 0.0))
+            return 0;
+        const double bk2 = rc_v3_norm2(bk->v) * ic2;
+        const double beta = bk2 > z->beta_g * z->beta_g ? sqrt(bk2) : z->beta_g;
+        const double den = 1.0 - beta * z->beta_m;
+        const double tb = (z->t0 + beta * z->reach * s->inv_c + 2.0 * s->def.sim_tol * sig *
+                           s->inv_c) / den * (1.0 + 1e-12);
+        if (!(dd + tb * (2.0 * b + tb * dv2) <= 0.0 || -b <= tb * dv2))
+            return 0;
+    }
+    const int mi = z->mi;
     const int lk = local_of(g, k);
     if (lk >= 0 ? have(g, mi, lk) : g->nm == ENG_EVGROUP_NMAX)
         return 0;
     if (g->nc == ENG_EVGROUP_NMAX + 1)
         return 0;
-    const double ic2 = s->inv_c2, sig = bm->r + bk->r;
-    /* centres at T (stored lines), relative to m's; the bounding spheres must approach */
-    const rc_vec3 xm = rc_v3_axpy(bm->x, T - bm->t, bm->v);
-    const rc_vec3 dx = eng_image(s, rc_v3_sub(rc_v3_axpy(bk->x, T - bk->t, bk->v), xm));
-    const rc_vec3 dv = rc_v3_sub(bk->v, bm->v);
-    const double b = rc_v3_dot(dx, dv), d2 = rc_v3_norm2(dx), dd = d2 - sig * sig;
-    if (!(b < 0.0))
-        return 0;
+    const int32_t m = g->mem[mi];
     /* the group with k: total momentum and relativistic mass */
     const eng_aux *ak = &s->a[k];
     rc_vec3 P = g->P;
@@ -87,23 +129,17 @@ static int try_join(rc_sim *s, zgroup *g, int mi, int32_t k, double T)
      * sim_tol sig M / (c D) of table time) is not asked. */
     const zcon *c0 = &g->con[0];
     const rc_vec3 relm = g->rel[mi];
-    const double D = M - rc_v3_dot(P, bm->v) * ic2;
+    const double D = M - rc_v3_dot(P, z->v) * ic2;
     const double A = M * c0->t + rc_v3_dot(P, rc_v3_sub(relm, c0->x)) * ic2;
     const double tol = s->def.sim_tol * sig * s->inv_c * M / D;
-    const double tau_max = (A + rc_v3_norm(P) * bm->r * ic2) / D + 2.0 * tol;
-    double ts = 0.0;
-    if (dd > 0.0) {
-        const double disc = b * b - rc_v3_norm2(dv) * dd;
-        if (!(disc > 0.0))
-            return 0;
-        ts = dd / (sqrt(disc) - b);
-    }
+    const double tau_max = (A + rc_v3_norm(P) * z->r * ic2) / D + 2.0 * tol;
+    const double ts = dd > 0.0 ? dd / (sqrt(disc) - b) : 0.0;
     if (!(ts <= tau_max))
         return 0;
     const double dn = sqrt(d2);
     if (dn > 0.0) {
         const rc_vec3 ax = rc_v3_scale(1.0 / dn, dx);
-        const rc_toi_shape hm = rc_toi_shape_of(bm->r, s->a[m].m, s->a[m].p, ic2);
+        const rc_toi_shape hm = rc_toi_shape_of(z->r, s->a[m].m, s->a[m].p, ic2);
         const rc_toi_shape hk = rc_toi_shape_of(bk->r, ak->m, ak->p, ic2);
         const double hsum = rc_toi_support_(&hm, ax) + rc_toi_support_(&hk, ax);
         /* (1e-12: the supports' and the centre line's rounding, far above it) */
@@ -117,7 +153,7 @@ static int try_join(rc_sim *s, zgroup *g, int mi, int32_t k, double T)
     if (eng_pair_contact(s, m, k, T - sig * s->inv_c, &tk, &dxk, &nk) != RC_OK)
         return 0;
     /* X relative to i's centre at T, and its ZMF time difference to X0 */
-    const rc_vec3 xk = rc_v3_add(rc_v3_axpy(relm, tk - T, bm->v), dxk);
+    const rc_vec3 xk = rc_v3_add(rc_v3_axpy(relm, tk - T, z->v), dxk);
     const double dt = (tk - T) - c0->t;
     const rc_vec3 dX = rc_v3_sub(xk, c0->x);
     const double minv2 = M * M - rc_v3_norm2(P) * ic2;
@@ -157,22 +193,21 @@ int eng_zmf_group(rc_sim *s, int32_t i, int32_t bp, double T, double tx0, rc_vec
           eng_mass_rel(s->a[bp].m, s->a[bp].p, s->inv_c2);
     g.nc = 1;
     g.con[0] = (zcon){0, 1, s->grp_con[0].n, tx0 - T, rc_v3_axpy(dX0, tx0 - T, s->b[i].v)};
-    const eng_cells *cg = &s->g;
+    /* (the engine's neighbour walk: rows of cells read together, records fetched ahead) */
+    static const int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
     for (size_t mi = 0; mi < g.nm; mi++) {
         const int32_t m = g.mem[mi];
+        const zmem zc = member_ctx(s, &g, mi, T);
         int c[3];
-        cell_coords(cg, s->a[m].cell, c);
-        for (int z = -1; z <= 1; z++)
-            for (int y = -1; y <= 1; y++)
-                for (int x = -1; x <= 1; x++) {
-                    const int32_t cell = cell_at(cg, c, x, y, z);
-                    if (cell < 0)
-                        continue;
-                    eng_cell_it it;
-                    for (int32_t k = cell_first(cg, cell, &it); k >= 0; k = cell_next(cg, &it))
-                        if (k != m)
-                            try_join(s, &g, (int)mi, k, T);
-                }
+        cell_coords(&s->g, s->a[m].cell, c);
+        eng_walk w;
+        walk_init(&w, s, m, c, lo, hi);
+        int32_t nb[NB_CAP];
+        while (!w.done) {
+            const size_t n = walk_gather(&w, nb);
+            for (size_t j = 0; j < n; j++)
+                try_join(s, &g, &zc, nb[j], T);
+        }
     }
     if (g.nc == 1)
         return 0;
