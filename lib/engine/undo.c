@@ -268,7 +268,8 @@ static void write_group(rc_sim *s, size_t nm, size_t nc, const rc_particle *B,
  * contacts' events (so that all lie on its incoming piece, whose state the impulses act
  * on). Records for a later undo when the contacts form a tree; books, predictions; the
  * read-out's records ps[0 .. nps) noted. 1 (done), or the law's failure. */
-int eng_solve_at_events(rc_sim *s, size_t nm, size_t nc, const eng_pend_snap *ps, size_t nps)
+int eng_solve_at_events(rc_sim *s, size_t nm, size_t nc, const eng_pend_snap *ps, size_t nps,
+                        int tied)
 {
     rc_particle *P = s->grp_part;
     rc_particle B[2 * ENG_UNDO_NMAX];
@@ -284,8 +285,24 @@ int eng_solve_at_events(rc_sim *s, size_t nm, size_t nc, const eng_pend_snap *ps
     for (size_t c = 0; c < nc; c++)
         s->grp_con[c].eps = eng_contact_eps(s, &s->grp_con[c]);
     const double *J = NULL;
+    /* tied: the group's contacts are simultaneous by how it was formed, so a rule that
+     * orders them by their events (sequential) sees them all at the first one's -- their
+     * own differ by the events' rounding, which would decide the order -- while the kinks
+     * and the records below keep each contact's own */
+    double ev_t[2 * ENG_UNDO_NMAX + 1];
+    rc_vec3 ev_x[2 * ENG_UNDO_NMAX + 1];
+    for (size_t c = 0; c < nc && tied; c++) {
+        ev_t[c] = s->grp_con[c].t;
+        ev_x[c] = s->grp_con[c].x;
+        s->grp_con[c].t = s->grp_con[0].t;
+        s->grp_con[c].x = s->grp_con[0].x;
+    }
     int st = s->def.law->group ? s->def.law->group(&s->prm, nm, P, nc, s->grp_con, s->grp_j)
                                : RC_EINVAL;
+    for (size_t c = 0; c < nc && tied; c++) {
+        s->grp_con[c].t = ev_t[c];
+        s->grp_con[c].x = ev_x[c];
+    }
     if (st == RC_OK) {
         J = s->grp_j;
     } else {
@@ -496,7 +513,7 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
         s->grp_con[nc - 1].t = t2;
         s->grp_con[nc - 1].x = rc_v3_add(rc_v3_axpy(bw->x, t2 - bw->t, bw->v), dX2);
     }
-    return eng_solve_at_events(s, nm, nc, ps, nps);
+    return eng_solve_at_events(s, nm, nc, ps, nps, 0);
 }
 
 int eng_rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx)

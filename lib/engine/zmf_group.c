@@ -231,5 +231,5 @@ int eng_zmf_group(rc_sim *s, int32_t i, int32_t bp, double T, double tx0, rc_vec
         s->grp_con[j].t = T + g.con[j].t;
         s->grp_con[j].x = rc_v3_add(xi, g.con[j].x);
     }
-    return eng_solve_at_events(s, nm, nc, ps, nps);
+    return eng_solve_at_events(s, nm, nc, ps, nps, 1);
 }
