@@ -57,6 +57,7 @@ typedef struct zmem {
     int mi;
     rc_vec3 x, v;
     double r, beta_m, t0, reach, beta_g;
+    rc_toi_shape h; /* its table-frame shape */
 } zmem;
 
 static zmem member_ctx(const rc_sim *s, const zgroup *g, size_t mi, double T)
@@ -71,6 +72,8 @@ static zmem member_ctx(const rc_sim *s, const zgroup *g, size_t mi, double T)
     z.t0 = fabs(g->con[0].t);
     z.reach = rc_v3_norm(rc_v3_sub(g->rel[mi], g->con[0].x)) + bm->r;
     z.beta_g = rc_v3_norm(g->P) / g->M * s->inv_c;
+    const eng_aux *am = &s->a[g->mem[mi]];
+    z.h = rc_toi_shape_of(bm->r, am->m, am->p, s->inv_c2);
     return z;
 }
 
@@ -119,8 +122,9 @@ static int try_join(rc_sim *s, zgroup *g, const zmem *z, int32_t k, double T)
         M += eng_mass_rel(ak->m, ak->p, ic2);
     }
     /* Where must the contact event X lie in time for it to be simultaneous with the first,
-     * X0? X lies in m's table-frame shape at its time, so X = m's centre + e with |e| <=
-     * r_m; its ZMF time difference to X0 is then, times the group's rest mass,
+     * X0? X lies in m's table-frame shape at its time, so X = m's centre + e with P.e <=
+     * |P| h_m(P/|P|), its support along P; its ZMF time difference to X0 is then, times
+     * the group's rest mass,
      *   M (t - t0) - P.(x - x0)/c^2 = (t - T) D - A - P.e/c^2,   D = M - P.v_m/c^2 > 0,
      * and it vanishes no later than tau_max after T. The frame's contact comes no earlier
      * than the bounding spheres' and, with the table-frame shapes meeting there, no
@@ -132,16 +136,18 @@ static int try_join(rc_sim *s, zgroup *g, const zmem *z, int32_t k, double T)
     const double D = M - rc_v3_dot(P, z->v) * ic2;
     const double A = M * c0->t + rc_v3_dot(P, rc_v3_sub(relm, c0->x)) * ic2;
     const double tol = s->def.sim_tol * sig * s->inv_c * M / D;
-    const double tau_max = (A + rc_v3_norm(P) * z->r * ic2) / D + 2.0 * tol;
+    const double pn = rc_v3_norm(P);
+    const double hP = pn > 0.0 ? rc_toi_support_(&z->h, rc_v3_scale(1.0 / pn, P)) : 0.0;
+    /* (1e-12: the support's rounding, far above it) */
+    const double tau_max = (A + pn * hP * (1.0 + 1e-12) * ic2) / D + 2.0 * tol;
     const double ts = dd > 0.0 ? dd / (sqrt(disc) - b) : 0.0;
     if (!(ts <= tau_max))
         return 0;
     const double dn = sqrt(d2);
     if (dn > 0.0) {
         const rc_vec3 ax = rc_v3_scale(1.0 / dn, dx);
-        const rc_toi_shape hm = rc_toi_shape_of(z->r, s->a[m].m, s->a[m].p, ic2);
         const rc_toi_shape hk = rc_toi_shape_of(bk->r, ak->m, ak->p, ic2);
-        const double hsum = rc_toi_support_(&hm, ax) + rc_toi_support_(&hk, ax);
+        const double hsum = rc_toi_support_(&z->h, ax) + rc_toi_support_(&hk, ax);
         /* (1e-12: the supports' and the centre line's rounding, far above it) */
         if (dn + tau_max * (b / dn) > hsum * (1.0 + 1e-12))
             return 0;
