@@ -57,6 +57,7 @@ typedef struct zmem {
     int mi;
     rc_vec3 x, v;
     double r, beta_m, t0, reach, beta_g;
+    double tb1; /* the same for any group velocity below c: the neighbours' broad phase */
     rc_toi_shape h; /* its table-frame shape */
 } zmem;
 
@@ -72,6 +73,9 @@ static zmem member_ctx(const rc_sim *s, const zgroup *g, size_t mi, double T)
     z.t0 = fabs(g->con[0].t);
     z.reach = rc_v3_norm(rc_v3_sub(g->rel[mi], g->con[0].x)) + bm->r;
     z.beta_g = rc_v3_norm(g->P) / g->M * s->inv_c;
+    /* (a cell is at least the largest diameter wide: r_k < its edge) */
+    z.tb1 = (z.t0 + (z.reach + 2.0 * s->def.sim_tol * (bm->r + s->g.w[0])) * s->inv_c) /
+            (1.0 - z.beta_m) * (1.0 + 1e-12);
     const eng_aux *am = &s->a[g->mem[mi]];
     z.h = rc_toi_shape_of(bm->r, am->m, am->p, s->inv_c2);
     return z;
@@ -209,10 +213,16 @@ int eng_zmf_group(rc_sim *s, int32_t i, int32_t bp, double T, double tx0, rc_vec
         eng_walk w;
         walk_init(&w, s, m, c, lo, hi);
         int32_t nb[NB_CAP];
+        double tn[NB_CAP];
         while (!w.done) {
+            /* the neighbours whose bounding spheres overlap or meet by tb1, in the engine's
+             * lanes (the predictions' broad phase), then try_join's own tests */
             const size_t n = walk_gather(&w, nb);
-            for (size_t j = 0; j < n; j++)
-                try_join(s, &g, &zc, nb[j], T);
+            uint64_t hit[2], nearb[2];
+            eng_lanes_of(s->simd)->sphere_times(s, m, nb, n, T + zc.tb1, tn, hit, nearb);
+            for (size_t lw = 0; lw < 2; lw++)
+                for (uint64_t bits = hit[lw] | nearb[lw]; bits; bits &= bits - 1u)
+                    try_join(s, &g, &zc, nb[64 * lw + (size_t)__builtin_ctzll(bits)], T);
         }
     }
     if (g.nc == 1)
