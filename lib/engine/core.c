@@ -186,7 +186,7 @@ static int grow_group(rc_sim *s, size_t *nm, size_t *nc, double T)
                         if (s->narrow) {
                             /* contracted shapes: the same contact test as the
                              * single-contact path's, on the states as they are */
-                            const eng_check now = {{s->a[i].m, s->a[i].p}, bi->v, ENG_NONE, NULL};
+                            const eng_check now = {{s->a[i].m, s->a[i].p}, bi->v, ENG_NONE, NULL, 0};
                             if (!eng_narrow_conflict(s, bi, bk, dx, d2, &now, &n))
                                 continue;
                         }
@@ -354,7 +354,8 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T, const double *
     for (size_t j = 0; j < nm && !conflict; j++) {
         int32_t b = s->grp_ball[j];
         int32_t partner = nm > 1 ? s->grp_ball[1 - j] : bp;
-        const eng_check chk = {P[j], vold[j], partner, s->glue ? &bat[j] : NULL};
+        const eng_check chk = {P[j], vold[j], partner, s->glue ? &bat[j] : NULL,
+                               s->glue && model && bp >= 0};
         conflict = s->narrow ? eng_predict_checked_narrow(s, b, &chk)
                              : eng_predict_checked(s, b, &chk, T);
     }
@@ -489,6 +490,14 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
             s->bk.overlaps++;
             s->bk.overlap_kind[1]++;
         }
+    }
+    /* per_ball frames, a contact of the model between two balls: the group is formed by
+     * simultaneity in its own ZMF, with each member kinked at its own event (a wall's
+     * contacts keep the table's: the wall's rest frame) */
+    if (have_x && bp >= 0 && s->def.sim_tol > 0.0) {
+        const int st = eng_zmf_group(s, i, bp, T, tx[0], dX[0]);
+        if (st != 0)
+            return st > 0 ? RC_OK : st;
     }
     int single = try_single(s, nm, bp, T, tx, dX, have_x, 1);
     if (single >= 2) { /* (an order conflict that undoing w's last collision resolves) */

@@ -532,7 +532,7 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
             const size_t j = 64 * lw + (size_t)__builtin_ctzll(bits);
             const int near = (int)(nearb[lw] >> (j % 64) & 1u);
             const int32_t kk = nb[j];
-            if (chk && near && kk != chk->partner) {
+            if (chk && near && kk != chk->partner && !chk->zmf) {
                 double tref;
                 const eng_ball *bc = chk->at ? chk->at : bi; /* (at T, before the kink) */
                 const rc_vec3 dx = pair_sep(s, bc, &s->b[kk], &tref);

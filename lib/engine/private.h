@@ -561,6 +561,10 @@ typedef struct eng_check {
     /* the ball's record at T before the collision when its stored one has moved to its
      * own kink (per_ball frames), else NULL: the stored one is at T */
     const eng_ball *at;
+    /* per_ball frames at a contact of the model: the ball contacts simultaneous with it
+     * are those of the group's ZMF, already looked for (eng_zmf_group), so only a wall
+     * contact (the wall's frame is the table) is checked here */
+    int zmf;
 } eng_check;
 
 /* Prediction for ball i just resolved at T (uncontracted frames / contracted ones), that

@@ -142,4 +142,17 @@ eng_pend_snap eng_pend_take(const rc_sim *s, int32_t b);
 void eng_pend_note(rc_sim *s, const eng_pend_snap *p);
 void eng_pend_undo(eng_pend *r, double te);
 
+/* engine/undo.c: a group whose contacts have events of their own (members at one table
+ * time on their incoming lines, at most 2 ENG_UNDO_NMAX; contacts at most that + 1, each
+ * with its event t, x), solved and each member kinked at its own event; ps: the
+ * read-out's records to note after it; tied: the contacts are simultaneous by the group's
+ * formation (an ordering rule sees them at one event). 1, or the law's failure. */
+#define ENG_EVGROUP_NMAX (2 * ENG_UNDO_NMAX)
+int eng_solve_at_events(rc_sim *s, size_t nm, size_t nc, const eng_pend_snap *ps, size_t nps,
+                        int tied);
+/* engine/zmf_group.c: per_ball frames, at ball i's event with ball bp (members 0, 1 at T,
+ * contact 0 theirs, X0 its event): the contacts simultaneous with it in the group's ZMF,
+ * formed and solved (1, or the law's failure); 0: none, nothing changed. */
+int eng_zmf_group(rc_sim *s, int32_t i, int32_t bp, double T, double tx0, rc_vec3 dX0);
+
 #endif

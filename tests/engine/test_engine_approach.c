@@ -200,7 +200,7 @@ static int pair_verdict(int engine, rc_sim_simd simd, double c, const rc_particl
     } else {
         /* (the engine's own index of ball 0: its cells may order them otherwise) */
         const int32_t i = s->b[0].x.x == x0.x && s->b[0].x.y == x0.y && s->b[0].x.z == x0.z ? 0 : 1;
-        const eng_check chk = {{s->a[i].m, s->a[i].p}, s->b[i].v, ENG_NONE, NULL};
+        const eng_check chk = {{s->a[i].m, s->a[i].p}, s->b[i].v, ENG_NONE, NULL, 0};
         v = eng_predict_checked(s, i, &chk, s->now);
     }
     rc_sim_free(&s);

@@ -37,7 +37,8 @@ typedef struct rc_collision_params {
 } rc_collision_params;
 
 /* Rules for a group of contacts that the engine found simultaneous (touching and
- * approaching at one table time; papers/simultaneous-contacts.md). Multiple impacts have
+ * approaching at one table time, or, the covariant frame's, simultaneous in the group's
+ * ZMF; papers/simultaneous-contacts.md). Multiple impacts have
  * no unique answer, even classically: these are named models, compared with the soft
  * model's limit there. */
 typedef enum rc_group_rule {

@@ -98,12 +98,16 @@ typedef struct rc_sim_def {
     /* Simultaneous contacts: at an event, every other contact whose surface gap is at
      * most sim_tol * (ri + rj) (walls: sim_tol * r) and which is approaching is resolved
      * together with it (relative, dimensionless; default 1e-9: far above the 1e-16
-     * round-off of a computed contact, far below any physical gap). */
+     * round-off of a computed contact, far below any physical gap). A per_ball frame
+     * (covariant) at a ball-ball contact of the model instead groups the approaching
+     * contacts whose contact events lie within sim_tol * (ri + rj) / c of the first one's
+     * in the ZMF of the group's balls (papers/simultaneous-contacts.md). */
     double sim_tol;
     /* How such a group is resolved by a law with a group solver (rc_group_rule in
      * relcol/law.h: RC_GROUPS_SIMULTANEOUS, the default, RC_GROUPS_SEQUENTIAL or
-     * RC_GROUPS_DROP; RC_EINVAL otherwise). The group itself is found in the table frame,
-     * at one table time; the sequential rule orders it in the group's ZMF. */
+     * RC_GROUPS_DROP; RC_EINVAL otherwise). The group itself is found at one table time
+     * (the covariant frame's ball contacts: in the group's ZMF, sim_tol above); the
+     * sequential rule orders it in the group's ZMF. */
     int groups;
     /* A touching pair whose normal approach speed is below approach_tol times its relative
      * speed scale counts as not approaching (dimensionless, default 1e-10): this stops the
@@ -245,8 +249,11 @@ typedef struct rc_sim_diag {
      * order_conflicts: kinks whose hyperplane crosses the ball's previous one inside it
      * (collisions less than a glue window apart, where the glued tube of the two is not
      * defined), not undone: counted; one that would come before the previous kink along
-     * the worldline, a model rule, is put at the previous kink instead. Groups of simultaneous contacts are resolved at
-     * one table time as in the other frames, each member's kink through its centre then.
+     * the worldline, a model rule, is put at the previous kink instead. At a ball-ball
+     * contact of the model a group is formed by simultaneity in its own ZMF (sim_tol
+     * below), solved by the group rule, each member's kink at its own event (the latest
+     * along its worldline of its contacts' events); a group met at a wall contact or by
+     * the overlap policy is formed and kinked at one table time as in the other frames.
      * rc_sim_get_ball gives the table-time picture of the collisions processed so far: a
      * ball whose kink lies after the engine's time on the line it is still on
      * (rc_sim_kink_ahead; rc_sim_get_ball_latest for the other read-out); the diagnostics'

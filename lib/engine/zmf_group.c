@@ -1,0 +1,251 @@
+/* engine/zmf_group.c — per_ball frames: a group of contacts formed by simultaneity in the
+ * group's zero-momentum frame rather than at one table time (papers/simultaneous-contacts.md,
+ * "Forming the group in its ZMF"). A further contact of a member joins the event's when
+ * the frame's contact event of that pair lies within sim_tol light-crossing times of the
+ * event's own contact event in the ZMF of the group's balls, the joining ball included;
+ * the group is then solved, each member kinked at its own event, by the undo's machinery
+ * (eng_solve_at_events). */
+#include <math.h>
+
+#include "resolve.h"
+#include "walk.h"
+#include "../toi_private.h"
+#include "relcol/status.h"
+
+/* A contact found: members a, b (local), normal from a to b, its event relative to ball
+ * i's centre at T: time t - T and offset x */
+typedef struct zcon {
+    int a, b;
+    rc_vec3 n;
+    double t;
+    rc_vec3 x;
+} zcon;
+
+/* The group formed so far: members (internal index), each one's centre at T relative to
+ * ball i's (nearest image), the contacts, and the members' total four-momentum (P, M =
+ * E / c^2). */
+typedef struct zgroup {
+    size_t nm, nc;
+    int32_t mem[ENG_EVGROUP_NMAX];
+    rc_vec3 rel[ENG_EVGROUP_NMAX];
+    zcon con[ENG_EVGROUP_NMAX + 1];
+    rc_vec3 P;
+    double M;
+} zgroup;
+
+static int local_of(const zgroup *g, int32_t k)
+{
+    for (size_t j = 0; j < g->nm; j++)
+        if (g->mem[j] == k)
+            return (int)j;
+    return -1;
+}
+
+static int have(const zgroup *g, int a, int b)
+{
+    for (size_t j = 0; j < g->nc; j++)
+        if ((g->con[j].a == a && g->con[j].b == b) || (g->con[j].a == b && g->con[j].b == a))
+            return 1;
+    return 0;
+}
+
+/* What every neighbour of member mi is tested with: its centre at T (stored line) and
+ * velocity; for try_join's bound on how late after T a contact event of it can be
+ * simultaneous with the first contact event, the parts that do not depend on the
+ * neighbour: |t0 - T|, the reach |x_m - x0| + r_m, the group's speed so far. */
+typedef struct zmem {
+    int mi;
+    rc_vec3 x, v;
+    double r, beta_m, t0, reach, beta_g;
+    double tb1; /* the same for any group velocity below c: the neighbours' broad phase */
+    rc_toi_shape h; /* its table-frame shape */
+} zmem;
+
+static zmem member_ctx(const rc_sim *s, const zgroup *g, size_t mi, double T)
+{
+    const eng_ball *bm = &s->b[g->mem[mi]];
+    zmem z;
+    z.mi = (int)mi;
+    z.x = rc_v3_axpy(bm->x, T - bm->t, bm->v);
+    z.v = bm->v;
+    z.r = bm->r;
+    z.beta_m = rc_v3_norm(bm->v) * s->inv_c;
+    z.t0 = fabs(g->con[0].t);
+    z.reach = rc_v3_norm(rc_v3_sub(g->rel[mi], g->con[0].x)) + bm->r;
+    z.beta_g = rc_v3_norm(g->P) / g->M * s->inv_c;
+    /* (a cell is at least the largest diameter wide: r_k < its edge) */
+    z.tb1 = (z.t0 + (z.reach + 2.0 * s->def.sim_tol * (bm->r + s->g.w[0])) * s->inv_c) /
+            (1.0 - z.beta_m) * (1.0 + 1e-12);
+    const eng_aux *am = &s->a[g->mem[mi]];
+    z.h = rc_toi_shape_of(bm->r, am->m, am->p, s->inv_c2);
+    return z;
+}
+
+/* Does ball k have a contact with member z.mi, not yet in the group, simultaneous with the
+ * group's first one in the ZMF of the group and k? Then it is added (k too, if new): 1;
+ * else 0 (nothing changed). */
+static int try_join(rc_sim *s, zgroup *g, const zmem *z, int32_t k, double T)
+{
+    const eng_ball *bk = &s->b[k];
+    const double ic2 = s->inv_c2, sig = z->r + bk->r;
+    /* centres at T (stored lines), relative to m's; the bounding spheres must approach and
+     * touch by tb, a bound of tau_max below from the group's velocity with k, |u| <= beta
+     * c, beta the larger of the group's so far and k's (|dx + t dv|^2 = sig^2 at some t <=
+     * tb: at tb itself, or its vertex before with a real root) -- the cheap test most
+     * neighbours fail */
+    const rc_vec3 dx = eng_image(s, rc_v3_sub(rc_v3_axpy(bk->x, T - bk->t, bk->v), z->x));
+    const rc_vec3 dv = rc_v3_sub(bk->v, z->v);
+    const double b = rc_v3_dot(dx, dv), d2 = rc_v3_norm2(dx), dd = d2 - sig * sig;
+    if (!(b < 0.0))
+        return 0;
+    const double dv2 = rc_v3_norm2(dv), disc = b * b - dv2 * dd;
+    if (dd > 0.0) {
+        if (!(disc > 0.0))
+            return 0;
+        const double bk2 = rc_v3_norm2(bk->v) * ic2;
+        const double beta = bk2 > z->beta_g * z->beta_g ? sqrt(bk2) : z->beta_g;
+        const double den = 1.0 - beta * z->beta_m;
+        const double tb = (z->t0 + beta * z->reach * s->inv_c + 2.0 * s->def.sim_tol * sig *
+                           s->inv_c) / den * (1.0 + 1e-12);
+        if (!(dd + tb * (2.0 * b + tb * dv2) <= 0.0 || -b <= tb * dv2))
+            return 0;
+    }
+    const int mi = z->mi;
+    const int lk = local_of(g, k);
+    if (lk >= 0 ? have(g, mi, lk) : g->nm == ENG_EVGROUP_NMAX)
+        return 0;
+    if (g->nc == ENG_EVGROUP_NMAX + 1)
+        return 0;
+    const int32_t m = g->mem[mi];
+    /* the group with k: total momentum and relativistic mass */
+    const eng_aux *ak = &s->a[k];
+    rc_vec3 P = g->P;
+    double M = g->M;
+    if (lk < 0) {
+        P = rc_v3_add(P, ak->p);
+        M += eng_mass_rel(ak->m, ak->p, ic2);
+    }
+    /* Where must the contact event X lie in time for it to be simultaneous with the first,
+     * X0? X lies in m's table-frame shape at its time, so X = m's centre + e with P.e <=
+     * |P| h_m(P/|P|), its support along P; its ZMF time difference to X0 is then, times
+     * the group's rest mass,
+     *   M (t - t0) - P.(x - x0)/c^2 = (t - T) D - A - P.e/c^2,   D = M - P.v_m/c^2 > 0,
+     * and it vanishes no later than tau_max after T. The frame's contact comes no earlier
+     * than the bounding spheres' and, with the table-frame shapes meeting there, no
+     * earlier than the centre line allows; a pair that cannot meet by tau_max (with the
+     * tolerance below: a ZMF time difference sim_tol sig / c, which is at most
+     * sim_tol sig M / (c D) of table time) is not asked. */
+    const zcon *c0 = &g->con[0];
+    const rc_vec3 relm = g->rel[mi];
+    const double D = M - rc_v3_dot(P, z->v) * ic2;
+    const double A = M * c0->t + rc_v3_dot(P, rc_v3_sub(relm, c0->x)) * ic2;
+    const double tol = s->def.sim_tol * sig * s->inv_c * M / D;
+    const double pn = rc_v3_norm(P);
+    const double hP = pn > 0.0 ? rc_toi_support_(&z->h, rc_v3_scale(1.0 / pn, P)) : 0.0;
+    /* (1e-12: the support's rounding, far above it) */
+    const double tau_max = (A + pn * hP * (1.0 + 1e-12) * ic2) / D + 2.0 * tol;
+    const double ts = dd > 0.0 ? dd / (sqrt(disc) - b) : 0.0;
+    if (!(ts <= tau_max))
+        return 0;
+    const double dn = sqrt(d2);
+    if (dn > 0.0) {
+        const rc_vec3 ax = rc_v3_scale(1.0 / dn, dx);
+        const rc_toi_shape hk = rc_toi_shape_of(bk->r, ak->m, ak->p, ic2);
+        const double hsum = rc_toi_support_(&z->h, ax) + rc_toi_support_(&hk, ax);
+        /* (1e-12: the supports' and the centre line's rounding, far above it) */
+        if (dn + tau_max * (b / dn) > hsum * (1.0 + 1e-12))
+            return 0;
+    }
+    /* the frame's contact event from the stored lines, asked a light-crossing time early
+     * (as an undo asks: the pair's ZMF simultaneity tilts by up to that across the pair) */
+    double tk;
+    rc_vec3 dxk, nk;
+    if (eng_pair_contact(s, m, k, T - sig * s->inv_c, &tk, &dxk, &nk) != RC_OK)
+        return 0;
+    /* X relative to i's centre at T, and its ZMF time difference to X0 */
+    const rc_vec3 xk = rc_v3_add(rc_v3_axpy(relm, tk - T, z->v), dxk);
+    const double dt = (tk - T) - c0->t;
+    const rc_vec3 dX = rc_v3_sub(xk, c0->x);
+    const double minv2 = M * M - rc_v3_norm2(P) * ic2;
+    if (!(minv2 > 0.0))
+        return 0;
+    const double dtp = (M * dt - rc_v3_dot(P, dX) * ic2) / sqrt(minv2);
+    if (!(fabs(dtp) <= s->def.sim_tol * sig * s->inv_c))
+        return 0;
+    int b_loc = lk;
+    if (lk < 0) {
+        b_loc = (int)g->nm;
+        g->mem[g->nm] = k;
+        g->rel[g->nm] = rc_v3_add(relm, dx);
+        g->nm++;
+        g->P = P;
+        g->M = M;
+    }
+    g->con[g->nc++] = (zcon){mi, b_loc, nk, tk - T, xk};
+    return 1;
+}
+
+/* At ball i's event with ball bp at table time T, contact event X0 = (tx0, dX0 from i's
+ * centre then on its stored line): both members (grp_ball[0], [1]) are at T, the event's
+ * contact is grp_con[0]. Grow the group through shared balls by try_join; with a further
+ * contact, form it in the engine's group arrays and solve it (1, or the law's failure);
+ * else 0, nothing changed. */
+int eng_zmf_group(rc_sim *s, int32_t i, int32_t bp, double T, double tx0, rc_vec3 dX0)
+{
+    zgroup g;
+    g.nm = 2;
+    g.mem[0] = i;
+    g.mem[1] = bp;
+    g.rel[0] = rc_v3(0.0, 0.0, 0.0);
+    g.rel[1] = eng_image(s, rc_v3_sub(s->b[bp].x, s->b[i].x));
+    g.P = rc_v3_add(s->a[i].p, s->a[bp].p);
+    g.M = eng_mass_rel(s->a[i].m, s->a[i].p, s->inv_c2) +
+          eng_mass_rel(s->a[bp].m, s->a[bp].p, s->inv_c2);
+    g.nc = 1;
+    g.con[0] = (zcon){0, 1, s->grp_con[0].n, tx0 - T, rc_v3_axpy(dX0, tx0 - T, s->b[i].v)};
+    /* (the engine's neighbour walk: rows of cells read together, records fetched ahead) */
+    static const int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
+    for (size_t mi = 0; mi < g.nm; mi++) {
+        const int32_t m = g.mem[mi];
+        const zmem zc = member_ctx(s, &g, mi, T);
+        int c[3];
+        cell_coords(&s->g, s->a[m].cell, c);
+        eng_walk w;
+        walk_init(&w, s, m, c, lo, hi);
+        int32_t nb[NB_CAP];
+        double tn[NB_CAP];
+        while (!w.done) {
+            /* the neighbours whose bounding spheres overlap or meet by tb1, in the engine's
+             * lanes (the predictions' broad phase), then try_join's own tests */
+            const size_t n = walk_gather(&w, nb);
+            uint64_t hit[2], nearb[2];
+            eng_lanes_of(s->simd)->sphere_times(s, m, nb, n, T + zc.tb1, tn, hit, nearb);
+            for (size_t lw = 0; lw < 2; lw++)
+                for (uint64_t bits = hit[lw] | nearb[lw]; bits; bits &= bits - 1u)
+                    try_join(s, &g, &zc, nb[64 * lw + (size_t)__builtin_ctzll(bits)], T);
+        }
+    }
+    if (g.nc == 1)
+        return 0;
+    /* the group in the engine's arrays: members at T on their stored (incoming) lines,
+     * contacts with their events in i's coordinates; the read-out's records of the members
+     * the event did not name, noted after it (the caller notes i's and bp's) */
+    eng_pend_snap ps[ENG_EVGROUP_NMAX];
+    size_t nps = 0, nm = 2, nc = 1;
+    for (size_t q = 2; q < g.nm; q++) {
+        if (s->pend)
+            ps[nps++] = eng_pend_take(s, g.mem[q]);
+        if (eng_member_of(s, &nm, g.mem[q], T) < 0)
+            return RC_ENOMEM;
+    }
+    const rc_vec3 xi = s->b[i].x;
+    s->grp_con[0].t = T + g.con[0].t;
+    s->grp_con[0].x = rc_v3_add(xi, g.con[0].x);
+    for (size_t j = 1; j < g.nc; j++) {
+        if (eng_add_contact(s, &nc, g.con[j].a, g.con[j].b, g.con[j].n) != RC_OK)
+            return RC_ENOMEM;
+        s->grp_con[j].t = T + g.con[j].t;
+        s->grp_con[j].x = rc_v3_add(xi, g.con[j].x);
+    }
+    return eng_solve_at_events(s, nm, nc, ps, nps, 1);
+}
