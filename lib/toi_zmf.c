@@ -87,12 +87,6 @@ int rc_toi_zmf_(const rc_toi_params *prm, const rc_toi_ball *a, const rc_toi_bal
     rc_four q0 = {M0, a->p}, q1 = {M1, b->p};
     rc_boost_g_(u, gu, k, &q0);
     rc_boost_g_(u, gu, k, &q1);
-    /* (rc_toi_shape_of's shapes, inline, 1/c taken once) */
-    const double ic = sqrt(k);
-    const rc_toi_shape s0 = rc_toi_shape_Mc_(a->r, a->m, q0.x, ic,
-                                             sqrt(a->m * a->m + rc_v3_norm2(q0.x) * k));
-    const rc_toi_shape s1 = rc_toi_shape_Mc_(b->r, b->m, q1.x, ic,
-                                             sqrt(b->m * b->m + rc_v3_norm2(q1.x) * k));
     const rc_vec3 v0z = rc_v3_scale(1.0 / q0.t, q0.x), v1z = rc_v3_scale(1.0 / q1.t, q1.x);
 
     /* The given states are the events (0, x_i); in the ZMF they are not simultaneous.
@@ -108,9 +102,22 @@ int rc_toi_zmf_(const rc_toi_params *prm, const rc_toi_ball *a, const rc_toi_bal
     const rc_vec3 wz = rc_v3_add(
         rc_v3_sub(v1, v0), rc_v3_sub(boost_velocity_correction(v1, u, gu, k),
                                      boost_velocity_correction(v0, u, gu, k)));
+    const rc_vec3 dz = rc_v3_sub(x1z, x0z);
+    /* bounding spheres apart and not approaching in the ZMF: rc_toi_shapes_rel's answer
+     * is RC_MISS whatever the shapes (its broad phase, or the sphere problem of exact
+     * spheres, decides it by these very tests), so they are not made */
+    if (!(rc_v3_dot(dz, wz) < 0.0) &&
+        !(rc_v3_norm(dz) <= (a->r + b->r) * (1.0 + prm->touch_tol)))
+        return RC_MISS;
+    /* (rc_toi_shape_of's shapes, inline, 1/c taken once) */
+    const double ic = sqrt(k);
+    const rc_toi_shape s0 = rc_toi_shape_Mc_(a->r, a->m, q0.x, ic,
+                                             sqrt(a->m * a->m + rc_v3_norm2(q0.x) * k));
+    const rc_toi_shape s1 = rc_toi_shape_Mc_(b->r, b->m, q1.x, ic,
+                                             sqrt(b->m * b->m + rc_v3_norm2(q1.x) * k));
     double tz;
     rc_vec3 y0z, nz;
-    st = rc_toi_shapes_rel(&s0, &s1, rc_v3_sub(x1z, x0z), wz, prm, ws, &tz, &y0z, &nz);
+    st = rc_toi_shapes_rel(&s0, &s1, dz, wz, prm, ws, &tz, &y0z, &nz);
     if (st != RC_OK)
         return st;
 
