@@ -74,15 +74,7 @@ int rc_momentum_from_velocity(double m, rc_vec3 v, double inv_c2, rc_vec3 *p)
     return RC_OK;
 }
 
-void rc_boost_g(rc_vec3 w, double g, double inv_c2, rc_four *a)
-{
-    /* (g - 1)/w^2 = g^2 inv_c2 / (g + 1): exact at w = 0 and for inv_c2 = 0 */
-    double k = g * g * inv_c2 / (g + 1.0);
-    double xw = rc_v3_dot(a->x, w);
-    double t = a->t;
-    a->t = g * (t - xw * inv_c2);
-    a->x = rc_v3_axpy(a->x, k * xw - g * t, w);
-}
+void rc_boost_g(rc_vec3 w, double g, double inv_c2, rc_four *a) { rc_boost_g_(w, g, inv_c2, a); }
 
 int rc_boost(rc_vec3 w, double inv_c2, rc_four *a)
 {
