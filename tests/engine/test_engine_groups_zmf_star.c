@@ -16,7 +16,6 @@
  * a diagonal they are 0.1 apart in that frame's time: only forming the group in its ZMF
  * makes it one there. */
 #include <math.h>
-#include <stdio.h>
 #include <string.h>
 
 #include "engine_util.h"
@@ -274,10 +273,87 @@ static void test_star_periodic(void)
     same_outcome("periodic corner vs middle", fe, fm, pscale(mid));
 }
 
+/* Has the engine resolved a collision of b by t (open box)? */
+static int collided_by(const rc_sim_ball b[NB], double t)
+{
+    rc_sim_def d = rc_sim_def_default();
+    d.dim = 3;
+    d.box = OPEN.box;
+    d.c = C;
+    d.frame = &rc_toi_frame_covariant;
+    rc_sim *s = NULL;
+    rc_sim_diag g = {0};
+    if (rc_sim_create(&d, &s) == RC_OK && rc_sim_set_balls(s, NB, b, NULL) == RC_OK &&
+        rc_sim_advance(s, t, 0) == RC_OK)
+        rc_sim_diagnostics(s, &g);
+    rc_sim_free(&s);
+    return g.collisions > 0;
+}
+
+/* The table time of the engine's first collision event of b (bisection to the last bit) */
+static double first_event(const rc_sim_ball b[NB])
+{
+    double lo = 0.0, hi = 40.0;
+    ENSURE(collided_by(b, hi) && !collided_by(b, lo));
+    for (int k = 0; k < 200; k++) {
+        const double mid = 0.5 * (lo + hi);
+        if (mid == lo || mid == hi)
+            break;
+        if (collided_by(b, mid))
+            hi = mid;
+        else
+            lo = mid;
+    }
+    return hi;
+}
+
+/* (c) with a wall: ball 0 at +c/6 along x, the strikers catching it up, the far x wall
+ * placed so that ball 0's contracted shape (half length r / gamma along x) is `gap' from
+ * it at the table time T of the group's first event (found from the engine, to the last
+ * bit). A wall keeps the table's criterion (gap <= sim_tol r, moving into it): with gap
+ * -0.4, 0 and +0.4 of sim_tol r the wall contact is in the group, 4 contacts -- formed in
+ * the ZMF pass with the wall added at T when the ball contact comes first, by undoing the
+ * wall's event when the wall comes first -- and the outcomes agree to 1e-12 of sum |p|
+ * (the three runs differ by sim_tol r in a wall's place, ~1e-10 of the scale). Beyond
+ * the tolerance (gap = 2 sim_tol r) the wall is an event of its own after the group. */
+static void test_star_wall(void)
+{
+    rc_sim_ball b[NB], o[NB];
+    const double w0 = C / 6.0, tol = 1e-9 * R; /* (sim_tol's default) */
+    star(NULL, w0, b);
+    const double T = first_event(b);
+    const double g0 = 1.0 / sqrt(1.0 - w0 * w0 / (C * C));
+    const double gap[4] = {-0.4 * tol, 0.0, 0.4 * tol, 2.0 * tol};
+    rc_four out[4][NB];
+    for (int r = 0; r < 4; r++) {
+        const runopt ro = {{b[0].x.x + w0 * T + R / g0 + gap[r], 1000.0, 1000.0}, 0, 40.0, 0.0};
+        rc_sim_diag g;
+        if (run(b, &ro, &g, o) != RC_OK)
+            return;
+        for (int i = 0; i < NB; i++)
+            out[r][i] = (rc_four){mass_rel(&o[i]), o[i].p};
+        if (r == 3) {
+            ENSURE_MSG(g.max_group == 3, "gap %g sim_tol r: largest group %zu", gap[r] / tol,
+                       g.max_group);
+            continue;
+        }
+        ENSURE_MSG(g.max_group == 4 && g.events[RC_SIM_EV_MULTI] == 1 && g.overlaps == 0,
+                   "gap %g sim_tol r: largest group %zu, groups %llu, undone %llu, overlaps %llu",
+                   gap[r] / tol, g.max_group, (unsigned long long)g.events[RC_SIM_EV_MULTI],
+                   (unsigned long long)g.rollbacks, (unsigned long long)g.overlaps);
+        /* (symmetric: ball 0's y, z parts cancel to the offsets' rounding) */
+        ENSURE_MSG(hypot(o[0].p.y, o[0].p.z) < 1e-12 * pscale(b), "gap %g sim_tol r: ball 0 "
+                   "(%g, %g, %g)", gap[r] / tol, o[0].p.x, o[0].p.y, o[0].p.z);
+        if (r > 0)
+            same_outcome("wall", out[r], out[0], pscale(b));
+    }
+}
+
 int main(void)
 {
     RUN_TEST(test_star_frames);
     RUN_TEST(test_star_frames_sequential);
     RUN_TEST(test_star_periodic);
+    RUN_TEST(test_star_wall);
     RC_TEST_MAIN_END();
 }
