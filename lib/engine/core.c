@@ -120,6 +120,46 @@ static int add_contact(rc_sim *s, size_t *nc, int a, int b, rc_vec3 n)
     return RC_OK;
 }
 
+/* Member mi's wall contacts (it is at the group's time): touching within sim_tol of its
+ * radius and moving into the wall -- the table's criterion, the wall's rest frame --
+ * while fewer than nc_max contacts are held. at_support != 0: each one's event is the
+ * point of the ball's shape on the wall, not the point at its rest radius (a per_ball
+ * frame's kinks are placed through their contacts' events). */
+static int add_walls(rc_sim *s, size_t mi, size_t *nc, size_t nc_max, int at_support)
+{
+    const int32_t i = s->grp_ball[mi];
+    for (int d = 0; d < s->def.dim && *nc < nc_max; d++) {
+        if (!(s->walled >> d & 1u))
+            continue; /* (a periodic axis) */
+        const eng_ball *bi = &s->b[i];
+        double v = rc_v3_get(bi->v, d), x = rc_v3_get(bi->x, d);
+        if (v == 0.0)
+            continue;
+        double h = eng_wall_support(s, i, d);
+        double gap = v > 0.0 ? s->L[d] - h - x : x - h;
+        if (!(gap <= s->def.sim_tol * bi->r))
+            continue;
+        int w = 2 * d + (v > 0.0);
+        if (have_contact(s, *nc, (int)mi, ENG_WALL(w)))
+            continue;
+        rc_vec3 n = rc_v3(0, 0, 0);
+        rc_v3_set(&n, d, v > 0.0 ? 1.0 : -1.0);
+        if (add_contact(s, nc, (int)mi, ENG_WALL(w), n) != RC_OK)
+            return RC_ENOMEM;
+        if (at_support)
+            s->grp_con[*nc - 1].x = rc_v3_axpy(bi->x, h, n);
+    }
+    return RC_OK;
+}
+
+int eng_group_walls(rc_sim *s, size_t nm, size_t *nc, size_t nc_max)
+{
+    for (size_t mi = 0; mi < nm; mi++)
+        if (add_walls(s, mi, nc, nc_max, 1) != RC_OK)
+            return RC_ENOMEM;
+    return RC_OK;
+}
+
 /* Find every contact simultaneous with the group's so far (gap <= sim_tol, approaching),
  * growing the group through shared balls. Members are at time T. */
 static int grow_group(rc_sim *s, size_t *nm, size_t *nc, double T)
@@ -127,26 +167,8 @@ static int grow_group(rc_sim *s, size_t *nm, size_t *nc, double T)
     const double stol = s->def.sim_tol, atol = s->def.approach_tol;
     for (size_t mi = 0; mi < *nm; mi++) {
         const int32_t i = s->grp_ball[mi];
-        /* walls */
-        for (int d = 0; d < s->def.dim; d++) {
-            if (!(s->walled >> d & 1u))
-                continue; /* (a periodic axis) */
-            const eng_ball *bi = &s->b[i];
-            double v = rc_v3_get(bi->v, d), x = rc_v3_get(bi->x, d);
-            if (v == 0.0)
-                continue;
-            double h = eng_wall_support(s, i, d);
-            double gap = v > 0.0 ? s->L[d] - h - x : x - h;
-            if (!(gap <= stol * bi->r))
-                continue;
-            int w = 2 * d + (v > 0.0);
-            if (have_contact(s, *nc, (int)mi, ENG_WALL(w)))
-                continue;
-            rc_vec3 n = rc_v3(0, 0, 0);
-            rc_v3_set(&n, d, v > 0.0 ? 1.0 : -1.0);
-            if (add_contact(s, nc, (int)mi, ENG_WALL(w), n) != RC_OK)
-                return RC_ENOMEM;
-        }
+        if (add_walls(s, mi, nc, SIZE_MAX, 0) != RC_OK)
+            return RC_ENOMEM;
         int c[3];
         cell_coords(&s->g, s->a[i].cell, c);
         const eng_cells *g = &s->g;

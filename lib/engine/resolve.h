@@ -154,5 +154,9 @@ int eng_solve_at_events(rc_sim *s, size_t nm, size_t nc, const eng_pend_snap *ps
  * contact 0 theirs, X0 its event): the contacts simultaneous with it in the group's ZMF,
  * formed and solved (1, or the law's failure); 0: none, nothing changed. */
 int eng_zmf_group(rc_sim *s, int32_t i, int32_t bp, double T, double tx0, rc_vec3 dX0);
+/* The wall contacts of members 0 .. nm (at the group's time) by the table's criterion, the
+ * wall's rest frame (core.c's grow_group's), each with its event where the ball's shape
+ * meets the wall, while fewer than nc_max contacts are held; RC_ENOMEM. */
+int eng_group_walls(rc_sim *s, size_t nm, size_t *nc, size_t nc_max);
 
 #endif

@@ -247,5 +247,11 @@ int eng_zmf_group(rc_sim *s, int32_t i, int32_t bp, double T, double tx0, rc_vec
         s->grp_con[j].t = T + g.con[j].t;
         s->grp_con[j].x = rc_v3_add(xi, g.con[j].x);
     }
+    /* the members' walls, by the table's criterion at T as any group's (the wall's rest
+     * frame is the table, where a group with a wall is solved): left out, a member pushed
+     * into a wall it touches would meet it as a next event at once, one contact after the
+     * other (up to the contacts the undo's arrays hold: the rest are events of their own) */
+    if (eng_group_walls(s, nm, &nc, ENG_EVGROUP_NMAX + 1) != RC_OK)
+        return RC_ENOMEM;
     return eng_solve_at_events(s, nm, nc, ps, nps, 1);
 }

@@ -100,8 +100,9 @@ typedef struct rc_sim_def {
      * together with it (relative, dimensionless; default 1e-9: far above the 1e-16
      * round-off of a computed contact, far below any physical gap). A per_ball frame
      * (covariant) at a ball-ball contact of the model instead groups the approaching
-     * contacts whose contact events lie within sim_tol * (ri + rj) / c of the first one's
-     * in the ZMF of the group's balls (papers/simultaneous-contacts.md). */
+     * ball contacts whose contact events lie within sim_tol * (ri + rj) / c of the first
+     * one's in the ZMF of the group's balls, and its members' walls by the gap rule at
+     * the event's table time (papers/simultaneous-contacts.md). */
     double sim_tol;
     /* How such a group is resolved by a law with a group solver (rc_group_rule in
      * relcol/law.h: RC_GROUPS_SIMULTANEOUS, the default, RC_GROUPS_SEQUENTIAL or
