@@ -738,12 +738,13 @@ static void reorder(rc_sim *s)
         rc_vec3 cn = s->ev_n ? s->ev_n[i] : zero;
         eng_cov cg;
         rc_glue cu;
-        eng_undo cz;
+        eng_undo cz, czp;
         eng_pend cp;
         if (s->cov) {
             cg = s->cov[i];
             cu = s->glu[i];
             cz = s->und[i];
+            czp = s->undp[i];
             cp = s->pend[i];
         }
         eng_ball cb = s->b[i];
@@ -780,6 +781,9 @@ static void reorder(rc_sim *s)
                 const eng_undo tz = s->und[to]; /* (partners by caller's index: unchanged) */
                 s->und[to] = cz;
                 cz = tz;
+                const eng_undo tzp = s->undp[to];
+                s->undp[to] = czp;
+                czp = tzp;
                 const eng_pend tp = s->pend[to];
                 s->pend[to] = cp;
                 cp = tp;

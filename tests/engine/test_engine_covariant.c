@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "engine_util.h"
+#include "../../lib/engine/private.h" /* (the chain undos' count, not in rc_sim_diag) */
 #include "cluster.h"
 
 /* (a) a gas run for >= target contacts: energy (kinetic + heat) and momentum (+ wall
@@ -76,6 +77,15 @@ static void conserve(int dim, int periodic, double eps, double v, double packing
      * the sums above hold through them */
     ENSURE_MSG(d1.max_group >= 3, "%dD per %d eps %g: largest group %llu", dim, periodic, eps,
                (unsigned long long)d1.max_group);
+    /* and chains were undone (papers/shape-change.md section 8): a member's later
+     * collision first, then the ball's -- so the sums above hold through two collisions
+     * taken back in one undo, and the previous records are kept and used */
+    ENSURE_MSG(s->bk.chain_rollbacks > 0, "%dD per %d eps %g: no chain undone", dim, periodic,
+               eps);
+    printf("  %d-D periodic %d eps %g: %llu collisions, %llu undone, %llu of them chains, "
+           "%llu by the overlap policy\n", dim, periodic, eps,
+           (unsigned long long)d1.collisions, (unsigned long long)d1.rollbacks,
+           (unsigned long long)s->bk.chain_rollbacks, (unsigned long long)d1.overlaps);
     if (!periodic)
         ENSURE(d1.events[RC_SIM_EV_WALL] > 0);
     free(m0);
