@@ -827,6 +827,12 @@ __attribute__((always_inline)) static inline void glue_prefetch(const rc_sim *s,
     for (size_t o = 0; o < sizeof(rc_glue); o += 64)
         __builtin_prefetch(g + o);
     __builtin_prefetch(&s->und[b].partner);
+    /* (the record a new one shifts into the previous one: whole, written at once) */
+    const char *u = (const char *)&s->und[b], *up = (const char *)&s->undp[b];
+    for (size_t o = 0; o < sizeof(eng_undo); o += 64) {
+        __builtin_prefetch(u + o);
+        __builtin_prefetch(up + o, 1);
+    }
     __builtin_prefetch(&s->pend[b].depth);
 }
 
