@@ -19,12 +19,13 @@
 #include "relcol/status.h"
 
 #define CK_MAGIC "relcolck"
-#define CK_VERSION 7u /* 2: the bookkeeping as one record (eng_books); 3: with pinned and the
+#define CK_VERSION 8u /* 2: the bookkeeping as one record (eng_books); 3: with pinned and the
                          transfer moments; 4: with the per_ball counters and hyperplanes;
                          5: with the per_ball undo records and rollbacks;
                          6: with the per_ball lines before kinks ahead (eng_pend);
                          7: undo records of groups (members, kind, TC count),
-                         up to ENG_PEND_LINES lines before kinks ahead */
+                         up to ENG_PEND_LINES lines before kinks ahead;
+                         8: each ball's previous undo record too */
 #define CK_ORDER 0x01020304u
 
 typedef struct ck_header {
@@ -171,6 +172,7 @@ static void write_all(const rc_sim *s, ck_cursor *c, const int32_t *next)
         put(c, s->cov, n * sizeof *s->cov);
         put(c, s->glu, n * sizeof *s->glu);
         put(c, s->und, n * sizeof *s->und);
+        put(c, s->undp, n * sizeof *s->undp);
         put(c, s->pend, n * sizeof *s->pend);
     }
     if (n) {
@@ -205,6 +207,49 @@ int rc_sim_checkpoint_write(const rc_sim *s, void *buf, size_t bytes)
     return RC_OK;
 }
 
+/* An undo record (the last or the previous one) names a ball other than this one or a
+ * wall of the box, from a state the law could have left (the rollback trusts it: it is
+ * the ball's state again). */
+static int undo_ok(const rc_sim *s, size_t k, const eng_undo *u)
+{
+    const eng_ball *b = &s->b[k];
+    const int dim = s->def.dim;
+    const int32_t q = u->partner;
+    if (!(q == ENG_NONE || q == ENG_ROOT ||
+          (q >= 0 && (size_t)q < s->n && (uint32_t)q != s->id[k]) ||
+          (q < 0 && ENG_WALL_INDEX(q) < 2 * dim && (s->walled >> ENG_WALL_INDEX(q) / 2 & 1u))))
+        return 0;
+    /* its collision's members: balls of this engine, this one among them; a kind of
+     * event a collision is */
+    if (q != ENG_NONE) {
+        int self = 0;
+        if (!(u->nm >= 1 && u->nm <= ENG_UNDO_NMAX) ||
+            !(u->kind == RC_SIM_EV_BALL || u->kind == RC_SIM_EV_WALL ||
+              u->kind == RC_SIM_EV_MULTI))
+            return 0;
+        for (uint32_t m = 0; m < u->nm; m++) {
+            if (!(u->mem[m] >= 0 && (size_t)u->mem[m] < s->n))
+                return 0;
+            self |= (uint32_t)u->mem[m] == s->id[k];
+        }
+        if (!self)
+            return 0;
+    }
+    if (q != ENG_NONE &&
+        (!(u->in.m > 0.0) || !isfinite(u->in.m) || !rc_v3_isfinite(u->in.p) ||
+         !rc_v3_isfinite(u->n) || !isfinite(u->dt) || !rc_v3_isfinite(u->dx) ||
+         isnan(u->tau_last) || u->tau_last == INFINITY || isnan(u->cov.t_k) ||
+         u->cov.t_k == INFINITY || !rc_v3_isfinite(u->cov.kappa) ||
+         !(rc_v3_norm2(u->cov.kappa) * s->def.c * s->def.c < 1.0 || isinf(s->def.c)) ||
+         (u->glu.r != 0.0 &&
+          (u->glu.r != b->r || !isfinite(u->glu.t_c) || !isfinite(u->glu.t_first) ||
+           !isfinite(u->glu.t_last) || !rc_v3_isfinite(u->glu.x_c) ||
+           !rc_v3_isfinite(u->glu.kappa) || !(u->glu.inv_c2 == s->inv_c2))) ||
+         (dim == 2 && u->in.p.z != 0.0)))
+        return 0;
+    return 1;
+}
+
 /* Every scheduled event and clock as the engine itself could have left it. */
 static int check_ball(const rc_sim *s, size_t k)
 {
@@ -230,44 +275,8 @@ static int check_ball(const rc_sim *s, size_t k)
          !isfinite(s->glu[k].t_last) || !rc_v3_isfinite(s->glu[k].x_c) ||
          !rc_v3_isfinite(s->glu[k].kappa) || !(s->glu[k].inv_c2 == s->inv_c2)))
         return RC_ECORRUPT;
-    /* an undo record names a ball other than this one or a wall of the box, from a state
-     * the law could have left (the rollback trusts it: it is the ball's state again) */
-    if (s->und) {
-        const eng_undo *u = &s->und[k];
-        const int32_t q = u->partner;
-        if (!(q == ENG_NONE || q == ENG_ROOT ||
-              (q >= 0 && (size_t)q < s->n && (uint32_t)q != s->id[k]) ||
-              (q < 0 && ENG_WALL_INDEX(q) < 2 * dim && (s->walled >> ENG_WALL_INDEX(q) / 2 & 1u))))
-            return RC_ECORRUPT;
-        /* its collision's members: balls of this engine, this one among them; a kind of
-         * event a collision is */
-        if (q != ENG_NONE) {
-            int self = 0;
-            if (!(u->nm >= 1 && u->nm <= ENG_UNDO_NMAX) ||
-                !(u->kind == RC_SIM_EV_BALL || u->kind == RC_SIM_EV_WALL ||
-                  u->kind == RC_SIM_EV_MULTI))
-                return RC_ECORRUPT;
-            for (uint32_t m = 0; m < u->nm; m++) {
-                if (!(u->mem[m] >= 0 && (size_t)u->mem[m] < s->n))
-                    return RC_ECORRUPT;
-                self |= (uint32_t)u->mem[m] == s->id[k];
-            }
-            if (!self)
-                return RC_ECORRUPT;
-        }
-        if (q != ENG_NONE &&
-            (!(u->in.m > 0.0) || !isfinite(u->in.m) || !rc_v3_isfinite(u->in.p) ||
-             !rc_v3_isfinite(u->n) || !isfinite(u->dt) || !rc_v3_isfinite(u->dx) ||
-             isnan(u->tau_last) || u->tau_last == INFINITY || isnan(u->cov.t_k) ||
-             u->cov.t_k == INFINITY || !rc_v3_isfinite(u->cov.kappa) ||
-             !(rc_v3_norm2(u->cov.kappa) * s->def.c * s->def.c < 1.0 || isinf(s->def.c)) ||
-             (u->glu.r != 0.0 &&
-              (u->glu.r != b->r || !isfinite(u->glu.t_c) || !isfinite(u->glu.t_first) ||
-               !isfinite(u->glu.t_last) || !rc_v3_isfinite(u->glu.x_c) ||
-               !rc_v3_isfinite(u->glu.kappa) || !(u->glu.inv_c2 == s->inv_c2))) ||
-             (dim == 2 && u->in.p.z != 0.0)))
-            return RC_ECORRUPT;
-    }
+    if (s->und && (!undo_ok(s, k, &s->und[k]) || !undo_ok(s, k, &s->undp[k])))
+        return RC_ECORRUPT;
     if (s->pend) { /* (read only by the read-out, but it must be a state it can read) */
         const eng_pend *r = &s->pend[k];
         if (r->depth < 0 || r->depth > ENG_PEND_LINES ||
@@ -406,6 +415,7 @@ static int read_all(rc_sim *s, ck_cursor *c)
         (s->img && get(c, s->img, 3 * n * sizeof *s->img)) ||
         (s->cov && (get(c, s->cov, n * sizeof *s->cov) || get(c, s->glu, n * sizeof *s->glu) ||
                      get(c, s->und, n * sizeof *s->und) ||
+                     get(c, s->undp, n * sizeof *s->undp) ||
                      get(c, s->pend, n * sizeof *s->pend))))
         return RC_ECORRUPT;
     if (n && (get(c, s->g.slot, s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot) ||

@@ -760,12 +760,13 @@ static void reorder(rc_sim *s)
         rc_vec3 cn = s->ev_n ? s->ev_n[i] : zero;
         eng_cov cg;
         rc_glue cu;
-        eng_undo cz;
+        eng_undo cz, czp;
         eng_pend cp;
         if (s->cov) {
             cg = s->cov[i];
             cu = s->glu[i];
             cz = s->und[i];
+            czp = s->undp[i];
             cp = s->pend[i];
         }
         eng_ball cb = s->b[i];
@@ -802,6 +803,9 @@ static void reorder(rc_sim *s)
                 const eng_undo tz = s->und[to]; /* (partners by caller's index: unchanged) */
                 s->und[to] = cz;
                 cz = tz;
+                const eng_undo tzp = s->undp[to];
+                s->undp[to] = czp;
+                czp = tzp;
                 const eng_pend tp = s->pend[to];
                 s->pend[to] = cp;
                 cp = tp;
@@ -845,6 +849,12 @@ __attribute__((always_inline)) static inline void glue_prefetch(const rc_sim *s,
     for (size_t o = 0; o < sizeof(rc_glue); o += 64)
         __builtin_prefetch(g + o);
     __builtin_prefetch(&s->und[b].partner);
+    /* (the record a new one shifts into the previous one: whole, written at once) */
+    const char *u = (const char *)&s->und[b], *up = (const char *)&s->undp[b];
+    for (size_t o = 0; o < sizeof(eng_undo); o += 64) {
+        __builtin_prefetch(u + o);
+        __builtin_prefetch(up + o, 1);
+    }
     __builtin_prefetch(&s->pend[b].depth);
 }
 

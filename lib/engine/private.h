@@ -322,6 +322,9 @@ typedef struct eng_books {
     /* tube conflicts resolved by undoing a ball's last collision and solving the two
      * contacts together (eng_undo), not by the overlap policy (not in tube_conflicts) */
     uint64_t rollbacks;
+    /* ... of which undid a chain: a member's later collision first (engine/undo.c;
+     * read by the tests, not in rc_sim_diag) */
+    uint64_t chain_rollbacks;
     /* progress: the time of the last event and how many events in a row came at it; when
      * that count passes eng_stall_limit the run stops (RC_ESTALL), naming the event's
      * balls (caller's index; a wall w as -1 - w; -2^62 none) */
@@ -329,7 +332,7 @@ typedef struct eng_books {
     uint64_t still_count;
     int64_t stall_ball, stall_partner;
 } eng_books;
-_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 24 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 2 + 1 + 4),
+_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 24 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 2 + 2 + 4),
                "no padding in the bookkeeping");
 
 struct rc_sim {
@@ -369,8 +372,12 @@ struct rc_sim {
      * contact while the ball is in its window; r = 0: none (no kink yet, or one put at
      * the previous kink by the order rule) */
     rc_glue *glu;
-    /* per_ball frames only (else NULL): per ball, how to undo its last collision */
+    /* per_ball frames only (else NULL): per ball, how to undo its last collision ... */
     eng_undo *und;
+    /* ... and the one before (the record und held before the last was written), so that a
+     * collision whose member has collided once since can be undone after that later one
+     * (a chain, engine/undo.c) */
+    eng_undo *undp;
     /* per_ball frames only (else NULL): per ball, the lines before its kinks ahead of now */
     eng_pend *pend;
     /* delayed table-time slices asked for (engine/slice.c; none: slc_n = 0, and no hook

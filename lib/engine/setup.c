@@ -187,6 +187,8 @@ static void release_balls(rc_sim *s)
     s->glu = NULL;
     free(s->und);
     s->und = NULL;
+    free(s->undp);
+    s->undp = NULL;
     free(s->pend);
     s->pend = NULL;
     free(s->img);
@@ -415,16 +417,19 @@ int eng_alloc_state(rc_sim *s, size_t n, double rmax)
         if (!(s->cov = eng_alloc(n * sizeof *s->cov)) ||
             !(s->glu = eng_alloc(n * sizeof *s->glu)) ||
             !(s->und = eng_alloc(n * sizeof *s->und)) ||
+            !(s->undp = eng_alloc(n * sizeof *s->undp)) ||
             !(s->pend = eng_alloc(n * sizeof *s->pend))) {
             st = RC_ENOMEM;
             goto fail;
         }
         memset(s->glu, 0, n * sizeof *s->glu);
         memset(s->und, 0, n * sizeof *s->und);
+        memset(s->undp, 0, n * sizeof *s->undp);
         memset(s->pend, 0, n * sizeof *s->pend);
         for (size_t k = 0; k < n; k++) {
             s->cov[k] = (eng_cov){-INFINITY, {0.0, 0.0, 0.0}, 0.0, {0.0, 0.0, 0.0}};
             s->und[k].partner = ENG_NONE; /* (nothing to undo) */
+            s->undp[k].partner = ENG_NONE;
         }
     }
     if (s->periodic && !(s->img = eng_alloc(3 * n * sizeof *s->img))) {

@@ -98,7 +98,7 @@ static struct eng_slice *find(const rc_sim *s, uint32_t id)
 }
 
 /* The largest Lorentz factor of the segments later events can start from: every ball's
- * stored one, the lines before its kinks ahead and the incoming line an undo restores. */
+ * stored one, the lines before its kinks ahead and the incoming lines an undo restores. */
 static double gamma_now(const rc_sim *s)
 {
     double g = 1.0;
@@ -109,6 +109,8 @@ static double gamma_now(const rc_sim *s)
             g = fmax(g, gamma_of(s, r->l[q].m, r->l[q].p));
         if (s->und[k].partner != ENG_NONE)
             g = fmax(g, gamma_of(s, s->und[k].in.m, s->und[k].in.p));
+        if (s->undp[k].partner != ENG_NONE) /* (a chain undo's, engine/undo.c) */
+            g = fmax(g, gamma_of(s, s->undp[k].in.m, s->undp[k].in.p));
     }
     return g;
 }

@@ -13,6 +13,18 @@
 /* per_ball frames: after a single contact of the model (model != 0) every member whose
  * line kinked cleanly gets the record that undoes it (eng_undo); any other collision
  * leaves the members' records stale (their counters moved) or clears them. */
+/* A ball's record about to be written: the one it holds becomes its previous one (a chain
+ * undo's, chain_members). */
+static inline void undo_shift(rc_sim *s, int32_t b)
+{
+    if (s->und[b].partner != ENG_NONE) {
+        s->undp[b] = s->und[b];
+    } else {
+        s->undp[b].partner = ENG_NONE;
+        s->undp[b].nm = 0;
+    }
+}
+
 void eng_write_undo(rc_sim *s, size_t nm, int32_t bp, int model, const rc_particle *P,
                     const rc_vec3 *vold, const eng_clock *cat, const eng_cov *gat,
                     const rc_glue *uat, const double *tx, const rc_vec3 *dX,
@@ -25,6 +37,7 @@ void eng_write_undo(rc_sim *s, size_t nm, int32_t bp, int model, const rc_partic
     for (size_t j = 0; j < nm; j++) {
         const int32_t b = s->grp_ball[j];
         eng_undo *u = &s->und[b];
+        undo_shift(s, b);
         if (!ok) {
             u->partner = ENG_NONE;
             u->nm = 0;
@@ -76,13 +89,60 @@ static int in_list(const int32_t *sl, size_t n, int32_t b)
     return 0;
 }
 
+static int32_t chain_members(const rc_sim *s, int32_t w, int32_t k, size_t *n0, int32_t *sl0,
+                             size_t *n1, int32_t *sl1);
+
 /* Can ball w's last collision be undone for a contact with ball k (not one of its
- * members). */
+ * members), alone or after a member's later collision (a chain). */
 int eng_undoable(const rc_sim *s, int32_t w, int32_t k)
 {
-    int32_t sl[ENG_UNDO_NMAX];
+    int32_t sl[ENG_UNDO_NMAX], sl1[ENG_UNDO_NMAX];
+    size_t n0, n1;
     const size_t n = undo_members(s, w, sl);
-    return n > 0 && !in_list(sl, n, k);
+    if (n > 0)
+        return !in_list(sl, n, k);
+    return chain_members(s, w, k, &n0, sl, &n1, sl1) >= 0;
+}
+
+/* A chain: ball w's last collision G0 cannot be undone because one of its members, p, has
+ * collided once since, in G1 (p's last collision), which can itself be undone (none of its
+ * members has collided since) and shares no other member with G0; p's previous record is
+ * G0's. Undoing G1 first puts p back where G0 left it, and G0 can then be undone as any
+ * other (rollback). k must be in neither, G1 must have no wall contact (the wall's share
+ * is taken back for one wall, G0's), and the two with k no more than ENG_UNDO_NMAX
+ * members. p's slot, with both collisions' members (G0's in its books' order, p's slot
+ * among them); -1 if it does not apply. */
+static int32_t chain_members(const rc_sim *s, int32_t w, int32_t k, size_t *n0, int32_t *sl0,
+                             size_t *n1, int32_t *sl1)
+{
+    const eng_undo *u = &s->und[w];
+    if (u->partner == ENG_NONE || u->nm == 0 || u->nm > ENG_UNDO_NMAX)
+        return -1;
+    int32_t p = -1;
+    for (size_t m = 0; m < u->nm; m++) {
+        const int32_t b = (int32_t)s->slot[u->mem[m]];
+        const int dirty = s->cnt[b] != u->mcnt[m];
+        /* (the same collision: member 0's counter after it names it) */
+        const eng_undo *v = dirty ? &s->undp[b] : &s->und[b];
+        if ((dirty && (p >= 0 || b == w || s->cnt[b] != u->mcnt[m] + 1u)) ||
+            v->partner == ENG_NONE || v->nm != u->nm || v->mem[0] != u->mem[0] ||
+            v->mcnt[0] != u->mcnt[0])
+            return -1;
+        if (dirty)
+            p = b;
+        sl0[m] = b;
+    }
+    if (p < 0 || in_list(sl0, u->nm, k) || !(*n1 = undo_members(s, p, sl1)) ||
+        u->nm + *n1 > ENG_UNDO_NMAX || in_list(sl1, *n1, k))
+        return -1;
+    for (size_t m = 0; m < *n1; m++) {
+        const int32_t q = s->und[sl1[m]].partner;
+        if ((sl1[m] != p && in_list(sl0, u->nm, sl1[m])) ||
+            (q < 0 && q != ENG_ROOT && q != ENG_NONE))
+            return -1;
+    }
+    *n0 = u->nm;
+    return p;
 }
 
 /* One collision being undone: its members, their states as they were (to put back if the
@@ -103,7 +163,7 @@ typedef struct ugroup {
 /* Every member back on its incoming line: stored at its kink E (where the collision's
  * moments were taken), with the momentum, hyperplane, glued tube and clock it had
  * before. */
-static void lift(rc_sim *s, ugroup *G)
+static void lift(rc_sim *s, ugroup *G, int slices)
 {
     for (size_t m = 0; m < G->nm; m++) {
         const int32_t b = G->sl[m];
@@ -123,7 +183,8 @@ static void lift(rc_sim *s, ugroup *G)
         s->cov[b] = u->cov;
         s->glu[b] = u->glu;
         s->clk[b].tau_last = u->tau_last;
-        if (s->slc_n) /* (a delayed slice at or after the undone kink: the incoming line) */
+        if (slices && s->slc_n) /* (a delayed slice at or after the undone kink: the
+                                   incoming line) */
             eng_slice_undo(s, b);
     }
 }
@@ -219,6 +280,7 @@ static void write_group(rc_sim *s, size_t nm, size_t nc, const rc_particle *B,
     for (size_t m = 0; m < nm; m++) {
         const int32_t b = s->grp_ball[m];
         eng_undo *u = &s->und[b];
+        undo_shift(s, b);
         if (!ok) {
             u->partner = ENG_NONE;
             u->nm = 0;
@@ -392,14 +454,21 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
 {
     ugroup G[2];
     size_t ng = 1;
-    if (!(G[0].nm = undo_members(s, w, G[0].sl)))
-        return 0;
+    /* a chain (chain_members): cp, the member of w's collision G[0] that has collided
+     * since, in G[1], which is undone first; r1 its record of G[1] */
+    int32_t cp = -1;
+    eng_undo r1;
+    if (!(G[0].nm = undo_members(s, w, G[0].sl))) {
+        if (both || (cp = chain_members(s, w, k, &G[0].nm, G[0].sl, &G[1].nm, G[1].sl)) < 0)
+            return 0;
+        ng = 2;
+    }
     /* k a member of w's group too (inner): the group's kinks, each through its own event,
      * can leave two members that were not in contact overlapping nearby; undone, the
      * frame is asked for their contact from both incoming lines and the group solved with
      * it -- unless the two were already in contact in it (a second contact of one pair is
      * not a contact the model has) */
-    const int inner = in_list(G[0].sl, G[0].nm, k);
+    const int inner = cp < 0 && in_list(G[0].sl, G[0].nm, k);
     if (inner && (both || s->und[w].partner == (int32_t)s->id[k] ||
                   s->und[k].partner == (int32_t)s->id[w]))
         return 0;
@@ -408,13 +477,23 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
             return 0;
         ng = 2;
     }
-    if (G[0].nm + (both ? G[1].nm : !inner) > ENG_UNDO_NMAX)
+    if (cp < 0 && G[0].nm + (both ? G[1].nm : !inner) > ENG_UNDO_NMAX)
         return 0;
     double te_w = s->cov[w].t_k, t_first = tx < te_w ? tx : te_w;
     if ((both || inner) && s->cov[k].t_k < t_first)
         t_first = s->cov[k].t_k;
-    for (size_t g = 0; g < ng; g++)
-        lift(s, &G[g]);
+    if (cp >= 0) {
+        /* G[1] first: cp back where G[0] left it, with G[0]'s record. (The delayed
+         * slices only once the frame has found the contact: the flush that restores them
+         * where it does not would leave cp's between its two kinks on its first line) */
+        lift(s, &G[1], 0);
+        r1 = s->und[cp];
+        s->und[cp] = s->undp[cp];
+        lift(s, &G[0], 0);
+    } else {
+        for (size_t g = 0; g < ng; g++)
+            lift(s, &G[g], 1);
+    }
     /* the frame is asked from a pair's light-crossing time before the conflict's X and the
      * undone kinks: from t_first itself the pair's ZMF, whose simultaneity tilts by up to
      * that much across the pair, often found the two already overlapping
@@ -423,13 +502,26 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
     rc_vec3 dX2, n2;
     const double t0 = t_first - (s->b[w].r + s->b[k].r) * s->inv_c;
     if (eng_pair_contact(s, w, k, t0, &t2, &dX2, &n2) != RC_OK) {
-        for (size_t g = ng; g-- > 0;)
-            put_back(s, &G[g]);
+        if (cp >= 0) {
+            put_back(s, &G[0]);
+            s->und[cp] = r1;
+            put_back(s, &G[1]);
+        } else {
+            for (size_t g = ng; g-- > 0;)
+                put_back(s, &G[g]);
+        }
         if (s->slc_nd) /* (slices lift moved: back on the members' lines) */
             eng_slice_flush(s);
         return 0;
     }
     s->bk.rollbacks++;
+    s->bk.chain_rollbacks += cp >= 0;
+    /* (each member stored at its earliest undone kink, on the line before it: a slice at
+     * or after that kink is on that line) */
+    for (size_t g = 0; cp >= 0 && s->slc_n && g < ng; g++)
+        for (size_t m = 0; m < G[g].nm; m++)
+            if (g == 0 || G[g].sl[m] != cp)
+                eng_slice_undo(s, G[g].sl[m]);
     /* the contacts of the undone collisions (member slot, partner slot or wall, normal,
      * event), read from their records before these are cleared */
     typedef struct { int32_t a, b; rc_vec3 n; double t; rc_vec3 x; } ucon;
@@ -437,9 +529,13 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
     size_t ncon = 0;
     int32_t wall_root = -1, wall_code = 0;
     rc_vec3 wall_n = rc_v3(0, 0, 0);
-    for (size_t g = 0; g < ng; g++) {
+    for (size_t gi = 0; gi < ng; gi++) {
+        const size_t g = cp >= 0 ? ng - 1 - gi : gi; /* (a chain's books: the later first) */
+        size_t mp = 0;
         for (size_t m = 0; m < G[g].nm; m++) {
-            const eng_undo *u = &s->und[G[g].sl[m]];
+            const int later = cp >= 0 && g == 1 && G[g].sl[m] == cp;
+            const eng_undo *u = later ? &r1 : &s->und[G[g].sl[m]];
+            mp = later ? m : mp;
             if (u->partner == ENG_ROOT)
                 continue;
             con[ncon] = (ucon){G[g].sl[m], u->partner >= 0 ? (int32_t)s->slot[u->partner] : u->partner,
@@ -451,13 +547,35 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
             }
             ncon++;
         }
-        unbook(s, &G[g]);
+        if (cp >= 0 && g == 1) {
+            /* (G[1]'s moments at its kinks: cp's, where lift put it before G[0]'s) */
+            const rc_vec3 x0 = s->b[cp].x;
+            const eng_undo r0 = s->und[cp];
+            s->b[cp].x = G[1].xe[mp];
+            s->und[cp] = r1;
+            unbook(s, &G[1]);
+            s->b[cp].x = x0;
+            s->und[cp] = r0;
+        } else {
+            unbook(s, &G[g]);
+        }
     }
     /* the read-out's records of the undone members (eng_pend) back to before the undone
      * kinks, then noted for the group's kinks like any event's balls */
     eng_pend_snap ps[ENG_UNDO_NMAX + 1];
     size_t nps = 0;
-    if (s->pend) {
+    if (s->pend && cp >= 0) { /* (cp's two kinks, the later first; its record once) */
+        for (size_t m = 0; m < G[1].nm; m++)
+            eng_pend_undo(&s->pend[G[1].sl[m]], G[1].te[m]);
+        for (size_t m = 0; m < G[0].nm; m++) {
+            eng_pend_undo(&s->pend[G[0].sl[m]], G[0].te[m]);
+            ps[nps++] = eng_pend_take(s, G[0].sl[m]);
+        }
+        for (size_t m = 0; m < G[1].nm; m++)
+            if (G[1].sl[m] != cp)
+                ps[nps++] = eng_pend_take(s, G[1].sl[m]);
+        ps[nps++] = eng_pend_take(s, k);
+    } else if (s->pend) {
         for (size_t g = 0; g < ng; g++)
             for (size_t m = 0; m < G[g].nm; m++) {
                 eng_pend_undo(&s->pend[G[g].sl[m]], G[g].te[m]);

@@ -447,12 +447,18 @@ static void audit(size_t n, double packing, double v_rms, double eps, long event
             l.und_lo = 1.0; /* (empty) */
             /* a collision undone (papers/shape-change.md section 7): the new kink's
              * incoming line is the one before the last (the same momentum, so the same
-             * velocity to round-off), whose kink is gone */
+             * velocity to round-off), whose kink is gone -- or, a chain undone (section 8),
+             * the one before the last two */
             if (g.r > 0.0 && !same_glue(&g, &G[i]) && H[i].n >= 2 &&
-                rc_v3_norm(rc_v3_sub(g.v_in, H[i].l[H[i].n - 2].v)) <= 1e-14 &&
                 rc_v3_norm(rc_v3_sub(g.v_in, H[i].l[H[i].n - 1].v)) > 1e-14) {
-                H[i].n--;
-                res->undone++;
+                if (rc_v3_norm(rc_v3_sub(g.v_in, H[i].l[H[i].n - 2].v)) <= 1e-14) {
+                    H[i].n--;
+                    res->undone++;
+                } else if (H[i].n >= 3 &&
+                           rc_v3_norm(rc_v3_sub(g.v_in, H[i].l[H[i].n - 3].v)) <= 1e-14) {
+                    H[i].n -= 2;
+                    res->undone += 2;
+                }
             }
             if (g.r > 0.0 && !same_glue(&g, &G[i])) { /* a kink on its glued tube */
                 l.ts = l.tr = g.t_c;

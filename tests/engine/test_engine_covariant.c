@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "engine_util.h"
+#include "../../lib/engine/private.h" /* (the chain undos' count, not in rc_sim_diag) */
 #include "cluster.h"
 
 /* (a) a gas run for >= target contacts: energy (kinetic + heat) and momentum (+ wall
@@ -76,6 +77,15 @@ static void conserve(int dim, int periodic, double eps, double v, double packing
      * the sums above hold through them */
     ENSURE_MSG(d1.max_group >= 3, "%dD per %d eps %g: largest group %llu", dim, periodic, eps,
                (unsigned long long)d1.max_group);
+    /* and chains were undone (papers/shape-change.md section 8): a member's later
+     * collision first, then the ball's -- so the sums above hold through two collisions
+     * taken back in one undo, and the previous records are kept and used */
+    ENSURE_MSG(s->bk.chain_rollbacks > 0, "%dD per %d eps %g: no chain undone", dim, periodic,
+               eps);
+    printf("  %d-D periodic %d eps %g: %llu collisions, %llu undone, %llu of them chains, "
+           "%llu by the overlap policy\n", dim, periodic, eps,
+           (unsigned long long)d1.collisions, (unsigned long long)d1.rollbacks,
+           (unsigned long long)s->bk.chain_rollbacks, (unsigned long long)d1.overlaps);
     if (!periodic)
         ENSURE(d1.events[RC_SIM_EV_WALL] > 0);
     free(m0);
@@ -120,6 +130,91 @@ static void test_dilute_share(void)
                "policy\n", dim, (unsigned long long)dg.overlaps, (unsigned long long)dg.collisions);
         rc_sim_free(&s);
     }
+    /* ... and in the 3-D gas at packing 0.05, rms 0.5c (40 000 collisions, 30 decisions
+     * where the bound allows 40), since chains are undone (papers/shape-change.md section 8:
+     * a member of the ball's last collision that has collided since has that collision
+     * undone first); 54 before, most of them that member's */
+    rc_sim_def d = rc_sim_def_default();
+    d.dim = 3;
+    d.c = 1.0;
+    d.frame = &rc_toi_frame_covariant;
+    for (int k = 0; k < 3; k++)
+        d.boundary[k] = RC_SIM_PERIODIC;
+    rc_sim *s = util_gas(d, 2000, 0.05, 0.5, 3);
+    if (!s)
+        return;
+    util_run_collisions(s, 40000);
+    rc_sim_diag dg;
+    rc_sim_diagnostics(s, &dg);
+    ENSURE_MSG(dg.collisions >= 40000 && dg.overlaps * 1000 <= dg.collisions,
+               "3-D 0.05: %llu of %llu collisions decided by the overlap policy",
+               (unsigned long long)dg.overlaps, (unsigned long long)dg.collisions);
+    printf("  3-D periodic, packing 0.05, rms 0.5c: %llu of %llu collisions by the overlap "
+           "policy, %llu chains undone\n", (unsigned long long)dg.overlaps,
+           (unsigned long long)dg.collisions, (unsigned long long)s->bk.chain_rollbacks);
+    rc_sim_free(&s);
+}
+
+/* (a''') A chain undone in a scene of four balls (cut from the 3-D periodic gas above at
+ * packing 0.05, rms 0.5c, seed 3, 0.5 before its first chain undo, so the same collisions
+ * happen): two balls collide (G0), one of them collides with a third (G1), then the
+ * fourth meets the first of G0's balls before its kink along its tube. G0's other member
+ * has collided since, so G0 alone cannot be undone: the code before this rule left the
+ * conflict to the overlap policy (1 overlap, no collision undone); now G1 and then G0 are
+ * undone and the three contacts solved together -- no overlap, energy and momentum to
+ * 1e-12 relative (round-off of a few collisions) and rest masses to 1e-13 (elastic). */
+static void test_chain_scene(void)
+{
+    rc_sim_def d = rc_sim_def_default();
+    d.dim = 3;
+    d.c = 1.0;
+    d.frame = &rc_toi_frame_covariant;
+    const double L = 27.564674676045307;
+    d.box = rc_v3(L, L, L);
+    for (int k = 0; k < 3; k++)
+        d.boundary[k] = RC_SIM_PERIODIC;
+    const rc_sim_ball b0[4] = {
+        {.x = {3.6387089282727363, 1.0004241224050796, 19.788013444958032},
+         .p = {0.068481043772561284, -0.057899896053813814, 0.046874045733176946},
+         .r = 0.5, .m = 0.125, .tau = 4.7066476191645386},
+        {.x = {4.5390850130498839, 1.6905263964294504, 19.882363116373167},
+         .p = {-0.023984687370493661, -0.063965921570685286, 0.054647186065816186},
+         .r = 0.5, .m = 0.125, .tau = 5.3177278048813719, .tau_last = 2.2870239262949434,
+         .collided = 1},
+        {.x = {5.387573029697454, 0.47224751853699931, 20.670366263584864},
+         .p = {-0.015372363695770056, 0.0059652530031975431, 0.021932132884782969},
+         .r = 0.5, .m = 0.125, .tau = 5.5919111570568081, .tau_last = 2.5376287547829706,
+         .collided = 1},
+        {.x = {4.321739701350185, 0.36831355171801339, 20.49413557500716},
+         .p = {0.025960083738176064, 0.032495440456529238, -0.040255864985398022},
+         .r = 0.5, .m = 0.125, .tau = 5.4949760908053085},
+    };
+    rc_sim *s = NULL;
+    ENSURE(rc_sim_create(&d, &s) == RC_OK);
+    if (!s)
+        return;
+    ENSURE(rc_sim_set_time(s, 6.0555197805654402) == RC_OK);
+    ENSURE(rc_sim_set_balls(s, 4, b0, NULL) == RC_OK);
+    rc_sim_diag d0, d1;
+    rc_sim_diagnostics(s, &d0);
+    ENSURE(rc_sim_advance(s, 7.5555197805654402, 0) == RC_OK);
+    rc_sim_diagnostics(s, &d1);
+    ENSURE_MSG(d1.overlaps == 0 && d1.rollbacks == 1 && s->bk.chain_rollbacks == 1 &&
+                   d1.collisions == 3,
+               "overlaps %llu rollbacks %llu chains %llu collisions %llu",
+               (unsigned long long)d1.overlaps, (unsigned long long)d1.rollbacks,
+               (unsigned long long)s->bk.chain_rollbacks, (unsigned long long)d1.collisions);
+    ENSURE(d1.max_group >= 3); /* (the three contacts together) */
+    ENSURE_REL(d1.energy, d0.energy, 1e-12);
+    ENSURE_CLOSE(d1.momentum.x, d0.momentum.x, 1e-12, d0.momentum_scale);
+    ENSURE_CLOSE(d1.momentum.y, d0.momentum.y, 1e-12, d0.momentum_scale);
+    ENSURE_CLOSE(d1.momentum.z, d0.momentum.z, 1e-12, d0.momentum_scale);
+    for (size_t i = 0; i < 4; i++) {
+        rc_sim_ball b;
+        rc_sim_get_ball(s, i, &b);
+        ENSURE_REL(b.m, b0[i].m, 1e-13);
+    }
+    rc_sim_free(&s);
 }
 
 /* (a') A contact the frame (pair's ZMF, stored lines) calls approaching while the law
@@ -633,6 +728,7 @@ int main(void)
     RUN_TEST(test_conservation);
     RUN_TEST(test_no_stall);
     RUN_TEST(test_dilute_share);
+    RUN_TEST(test_chain_scene);
     RUN_TEST(test_cluster);
     RUN_TEST(test_undo_wall);
     RC_TEST_MAIN_END();
