@@ -2,6 +2,7 @@
 #ifndef ENGINE_UTIL_H
 #define ENGINE_UTIL_H
 
+#include <math.h>
 #include <stdlib.h>
 
 #include "rc_test.h"
@@ -28,6 +29,25 @@ static inline rc_sim *util_gas(rc_sim_def d, size_t n, double packing, double v_
     }
     free(b);
     return s;
+}
+
+/* Balls in[0 .. n-1] (centres at table time 0) seen from a frame moving at U, cut at its
+ * t' = 0 by free flight (the caller's scene has no contact before that cut in either
+ * frame), positions relative to o kept relative to o; c the speed of light. */
+static inline void util_to_frame(double c, rc_vec3 o, rc_vec3 U, size_t n, const rc_sim_ball *in,
+                                 rc_sim_ball *out)
+{
+    for (size_t i = 0; i < n; i++) {
+        const double M = sqrt(in[i].m * in[i].m + rc_v3_norm2(in[i].p) / (c * c));
+        const rc_vec3 v = rc_v3_scale(1.0 / M, in[i].p), x = rc_v3_sub(in[i].x, o);
+        const double ti = rc_v3_dot(U, x) / (c * c - rc_v3_dot(U, v));
+        rc_four e = {ti, rc_v3_axpy(x, ti, v)};
+        rc_four f = {M, in[i].p};
+        ENSURE(rc_boost(U, 1.0 / (c * c), &e) == RC_OK && rc_boost(U, 1.0 / (c * c), &f) == RC_OK);
+        out[i] = in[i];
+        out[i].p = f.x;
+        out[i].x = rc_v3_add(o, rc_v3_axpy(e.x, -e.t, rc_v3_scale(1.0 / f.t, f.x)));
+    }
 }
 
 /* One ball of rest radius and mass 1 at x with momentum p, alone on a 2-D table box,

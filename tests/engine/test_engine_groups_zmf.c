@@ -97,19 +97,7 @@ static double place(const rc_toi_frame *f, int zmf, double target)
  * there: no contact happens before that cut in either frame) */
 static void to_frame(rc_vec3 U, const rc_sim_ball in[3], rc_sim_ball out[3])
 {
-    const rc_vec3 o = rc_v3(C0, C0, 0.0);
-    for (int i = 0; i < 3; i++) {
-        const double M = mass_rel(&in[i]);
-        const rc_vec3 v = rc_v3_scale(1.0 / M, in[i].p), x = rc_v3_sub(in[i].x, o);
-        const double ti = rc_v3_dot(U, x) / (C * C - rc_v3_dot(U, v));
-        rc_four e = {ti, rc_v3_axpy(x, ti, v)};
-        rc_four f = {M, in[i].p};
-        ENSURE(rc_boost(U, 1.0 / (C * C), &e) == RC_OK &&
-               rc_boost(U, 1.0 / (C * C), &f) == RC_OK);
-        out[i] = in[i];
-        out[i].p = f.x;
-        out[i].x = rc_v3_add(o, rc_v3_axpy(e.x, -e.t, rc_v3_scale(1.0 / f.t, f.x)));
-    }
+    util_to_frame(C, rc_v3(C0, C0, 0.0), U, 3, in, out);
 }
 
 /* the group rule of the runs (relcol/law.h) */

@@ -56,19 +56,7 @@ static void star(const double dx[NB], double w0, rc_sim_ball b[NB])
  * there: no contact happens before that cut in any frame used) */
 static void to_frame(rc_vec3 U, const rc_sim_ball in[NB], rc_sim_ball out[NB])
 {
-    const rc_vec3 o = rc_v3(C0, C0, C0);
-    for (int i = 0; i < NB; i++) {
-        const double M = mass_rel(&in[i]);
-        const rc_vec3 v = rc_v3_scale(1.0 / M, in[i].p), x = rc_v3_sub(in[i].x, o);
-        const double ti = rc_v3_dot(U, x) / (C * C - rc_v3_dot(U, v));
-        rc_four e = {ti, rc_v3_axpy(x, ti, v)};
-        rc_four f = {M, in[i].p};
-        ENSURE(rc_boost(U, 1.0 / (C * C), &e) == RC_OK &&
-               rc_boost(U, 1.0 / (C * C), &f) == RC_OK);
-        out[i] = in[i];
-        out[i].p = f.x;
-        out[i].x = rc_v3_add(o, rc_v3_axpy(e.x, -e.t, rc_v3_scale(1.0 / f.t, f.x)));
-    }
+    util_to_frame(C, rc_v3(C0, C0, C0), U, NB, in, out);
 }
 
 /* The group's ZMF velocity */
