@@ -182,6 +182,10 @@ void eng_queue_free(eng_queue *q);
 void eng_queue_build(eng_queue *q, const double *keys, double now);
 /* The same with the keys already in q->e[i].key. */
 void eng_queue_rebuild(eng_queue *q, double now);
+/* engine/reorder.c: the balls renumbered in cell order, every per-ball array with them
+ * (the event loop calls it every ENG_REORDER_EVERY x N collisions and cell crossings) */
+#define ENG_REORDER_EVERY 4
+void eng_reorder(rc_sim *s);
 /* Change ball's key (>= the time last popped). */
 void eng_queue_update(eng_queue *q, uint32_t ball, double t);
 /* The earliest entry (time, ball); 0 if the queue is empty. */

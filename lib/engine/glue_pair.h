@@ -1,0 +1,206 @@
+/* engine/glue_pair.h — per_ball frames: the contact of two balls on their glued world
+ * tubes, as the prediction asks it (engine/predict.c only): the frame's contact of the
+ * straight cylinders from the stored states and its side of both balls' hyperplanes, the
+ * tube inside a glue window (rc_glue_toi), and the frame asked again from further back
+ * where it reported an overlap (papers/shape-change.md sections 6-8). Static functions in
+ * a header so that the prediction's hot path keeps them inline. */
+#ifndef RELCOL_ENGINE_GLUE_PAIR_H
+#define RELCOL_ENGINE_GLUE_PAIR_H
+
+#include <math.h>
+
+#include "pairs.h"
+#include "private.h"
+#include "relcol/status.h"
+
+/* per_ball frames: is the contact event X, found t after tref, on the future side of
+ * both balls' last hyperplanes (eng_glue_side)? y = X - (bi's centre at tref), dx = bk -
+ * bi at tref (nearest image). */
+static int glue_valid(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
+                      double tref, double t, rc_vec3 y)
+{
+    const double tx = tref + t;
+    const rc_vec3 dxi = rc_v3_axpy(y, -t, bi->v);
+    const rc_vec3 dxk = rc_v3_sub(y, rc_v3_axpy(dx, t, bk->v));
+    const eng_cov *ci = &s->cov[bi - s->b], *ck = &s->cov[bk - s->b];
+    return eng_glue_side(ci, &s->glu[bi - s->b], bi->v, tx, dxi) &&
+           eng_glue_side(ck, &s->glu[bk - s->b], bk->v, tx, dxk);
+}
+
+/* per_ball frames: a ball whose kink lies ahead of now is stored at it, on its outgoing
+ * line; that line's cylinder is the ball's tube on the future side of its hyperplane,
+ * which can meet a neighbour before the kink's time. So the frame is asked from the
+ * earlier clock, not before now (a contact there is on the extension beyond the tube
+ * unless glue_valid says otherwise), rather than from the later one, from which a
+ * contact in between would look like an overlap. A function of the two stored states
+ * and now; the same bits whichever ball asks (dx, and the shift, change sign exactly). */
+static inline void glue_reference(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
+                                  rc_vec3 *dx, double *tref)
+{
+    if (!(*tref > s->now))
+        return;
+    double t0 = bi->t < bk->t ? bi->t : bk->t;
+    t0 = t0 > s->now ? t0 : s->now;
+    *dx = rc_v3_axpy(*dx, t0 - *tref, rc_v3_sub(bk->v, bi->v));
+    *tref = t0;
+}
+
+/* The frame's contact of bi and bk from separation dx at time tref, in pair_time_dx's
+ * orientation: out->n from bi to bk, out->x = X - (bi's centre at tref). */
+static int frame_call(const rc_sim *cs, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
+                      rc_toi_contact *out)
+{
+    rc_sim *s = (rc_sim *)cs; /* (the workspace is scratch) */
+    const int flip = dx.x < 0.0 || (dx.x == 0.0 && (dx.y < 0.0 || (dx.y == 0.0 && dx.z < 0.0)));
+    const eng_ball *b0 = flip ? bk : bi, *b1 = flip ? bi : bk;
+    const eng_aux *a0 = &s->a[b0 - s->b], *a1 = &s->a[b1 - s->b];
+    const rc_toi_ball A = {rc_v3(0, 0, 0), b0->r, a0->m, a0->p};
+    const rc_toi_ball B = {flip ? rc_v3_scale(-1.0, dx) : dx, b1->r, a1->m, a1->p};
+    const int st = s->def.frame->toi(&s->toi, &A, &B, s->ws, out);
+    if (st == RC_OK && flip) {
+        out->n = rc_v3_scale(-1.0, out->n);
+        out->x = rc_v3_add(out->x, dx);
+    }
+    return st;
+}
+
+/* per_ball frames: the contact of bi and bk (separation dx at t1) when exactly one of
+ * them is inside its glue window at t1 (H has not swept all of it): the first contact of
+ * the other, a rigid ball, with that one's glued tube (rc_glue_toi: the tube's incoming
+ * piece before H, the outgoing one after it), where the straight cylinder of the stored
+ * (outgoing) line overlapped or met the other on the incoming side of H. Its time is the
+ * first table time of contact, the table frame's criterion for the pieces (a ZMF version
+ * is not built). RC_OK (out as frame_call's, *valid: on the outgoing piece or on H, and
+ * on the future side of the other ball's H), RC_MISS (the tube is not met), RC_EOVERLAP,
+ * or -1: neither or both balls in a window. */
+static int window_contact(const rc_sim *cs, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
+                          double t1, rc_toi_contact *out, int *valid)
+{
+    rc_sim *s = (rc_sim *)cs; /* (the workspace is scratch) */
+    const size_t i = (size_t)(bi - s->b), k = (size_t)(bk - s->b);
+    const rc_glue *gi = &s->glu[i], *gk = &s->glu[k];
+    const int wi = gi->r > 0.0 && t1 < gi->t_last, wk = gk->r > 0.0 && t1 < gk->t_last;
+    if (wi == wk)
+        return -1;
+    const rc_glue *g = wi ? gi : gk;
+    const eng_ball *bg = wi ? bi : bk, *bo = wi ? bk : bi;
+    const eng_aux *ao = &s->a[bo - s->b];
+    /* the glued ball's centre at t1 on its outgoing line, in the tube's coordinates */
+    const rc_vec3 cg = rc_v3_axpy(g->x_c, t1 - g->t_c, bg->v);
+    const rc_vec3 ci = wi ? cg : rc_v3_sub(cg, dx); /* bi's, there */
+    const rc_toi_ball K = {wi ? rc_v3_add(cg, dx) : ci, bo->r, ao->m, ao->p};
+    double t;
+    rc_vec3 y, n;
+    int piece;
+    const int st = rc_glue_toi(g, &s->toi, s->ws, t1, &K, &t, &y, &n, &piece);
+    if (st != RC_OK)
+        return st;
+    out->t = t - t1;
+    out->x = rc_v3_sub(y, ci);
+    out->n = wi ? n : rc_v3_scale(-1.0, n);
+    /* the other ball's side: X - its centre at t */
+    const eng_cov *co = &s->cov[bo - s->b];
+    const rc_vec3 dxo = rc_v3_sub(rc_v3_axpy(out->x, -out->t, bi->v),
+                                  wi ? rc_v3_axpy(dx, out->t, rc_v3_sub(bk->v, bi->v))
+                                     : rc_v3(0.0, 0.0, 0.0));
+    *valid = piece != 0 && eng_glue_side(co, &s->glu[bo - s->b], bo->v, t, dxo);
+    return RC_OK;
+}
+
+/* per_ball frames: the pair's contact from its stored states (dx, *tref: pair_sep's),
+ * asked from glue_reference's time (returned in *tref, the time the answer is relative
+ * to); *valid: glue_valid's verdict. (Asked again from the later clock, where the stored
+ * states are the balls' own, a contact found on the incoming side of a hyperplane or an
+ * overlap gave in a dense gas no contact of the model either: the contact is then with
+ * the part of the ball that H has not reached yet.) */
+static int glue_contact(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
+                        double *tref, rc_toi_contact *out, int *valid)
+{
+    glue_reference(s, bi, bk, &dx, tref);
+    const int st = frame_call(s, bi, bk, dx, out);
+    *valid = st == RC_OK && glue_valid(s, bi, bk, dx, *tref, out->t, out->x);
+    if (st == RC_EOVERLAP || (st == RC_OK && !*valid)) {
+        /* the straight cylinder is not the tube inside a window: ask the tube */
+        rc_toi_contact o2;
+        int v2 = 0;
+        const int w = window_contact(s, bi, bk, dx, *tref, &o2, &v2);
+        if (w == RC_OK) {
+            *out = o2;
+            *valid = v2;
+        }
+        if (w == RC_OK || w == RC_MISS || w == RC_EOVERLAP)
+            return w;
+    }
+    return st;
+}
+
+/* per_ball frames: the pair's contact when the frame reported an overlap from glue_contact's
+ * reference. The zmf search starts at the later of the two reference events in the pair's
+ * ZMF, which suits a stored state that begins its line (the zmf frame's); a per_ball
+ * ball's line is its tube wherever eng_glue_side says so, and the straight cylinders'
+ * first contact can lie on both balls' outgoing pieces ZMF-before that start while it is
+ * still ahead in the table (its X is not simultaneous there). So the frame is asked again
+ * from a reference far enough back that the cylinders are apart (4 (r_i + r_k) on the
+ * table's slice, the other side of every overlap of two straight cylinders, whose set of
+ * times is one interval), and its answer is the pair's contact if X lies on the future
+ * side of both balls' hyperplanes (glue_valid): the first contact of the two tubes' present
+ * pieces. Otherwise (X on an incoming side, or a ball in its window whose incoming piece
+ * the other meets first: a contact only an undo can place) the overlap stands. The reference moves by the same bits whichever ball asks (dx and the relative
+ * velocity change sign exactly). dx at tref; RC_OK with *out relative to them, or the
+ * overlap. */
+/* glue_back's guard for a ball whose glue window ends after the reference tb: inside the
+ * window its tube is partly the incoming cylinder before H, not the straight outgoing one
+ * the frame was asked about, so the contact X on the outgoing pieces is the tubes' only if
+ * the other ball, rigid on its stored line, does not reach the incoming piece first
+ * (rc_glue_toi from the window's start, the table's first contact with the pieces; before
+ * the window the whole ball was on its incoming line, which the engine's earlier
+ * predictions answered for; in a probe 1 in 10 of the answers with a ball in its window
+ * failed this). 1: it reaches it (or the question fails): an undo's case, not a contact
+ * on the outgoing pieces. bg glued (g), bo the other, d = bo - bg at tb on the stored
+ * lines. */
+static int incoming_first(const rc_sim *cs, const eng_ball *bg, const eng_ball *bo, rc_vec3 d,
+                          double tb, double tx)
+{
+    rc_sim *s = (rc_sim *)cs; /* (the workspace is scratch) */
+    const rc_glue *g = &s->glu[bg - s->b];
+    const eng_aux *ao = &s->a[bo - s->b];
+    const double t0 = tb > g->t_first ? tb : g->t_first;
+    const rc_vec3 cg = rc_v3_axpy(g->x_c, t0 - g->t_c, bg->v);
+    const rc_vec3 d0 = rc_v3_axpy(d, t0 - tb, rc_v3_sub(bo->v, bg->v));
+    const rc_toi_ball K = {rc_v3_add(cg, d0), bo->r, ao->m, ao->p};
+    double t;
+    rc_vec3 y, n;
+    int piece;
+    const int st = rc_glue_toi(g, &s->toi, s->ws, t0, &K, &t, &y, &n, &piece);
+    if (st == RC_MISS)
+        return 0;
+    return st != RC_OK || (piece == 0 && t < tx);
+}
+
+static int glue_back(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
+                     double tref, rc_toi_contact *out)
+{
+    const rc_vec3 dv = rc_v3_sub(bk->v, bi->v);
+    const double dvn = rc_v3_norm(dv);
+    if (!(dvn > 0.0))
+        return RC_EOVERLAP;
+    const double back = (rc_v3_norm(dx) + 4.0 * (bi->r + bk->r)) / dvn;
+    const rc_vec3 dxb = rc_v3_axpy(dx, -back, dv);
+    const double tb = tref - back;
+    rc_toi_contact o;
+    if (frame_call(s, bi, bk, dxb, &o) != RC_OK || !glue_valid(s, bi, bk, dxb, tb, o.t, o.x))
+        return RC_EOVERLAP;
+    const rc_glue *gi = &s->glu[bi - s->b], *gk = &s->glu[bk - s->b];
+    const double tx = tb + o.t;
+    if ((gi->r > 0.0 && tb < gi->t_last && incoming_first(s, bi, bk, dxb, tb, tx)) ||
+        (gk->r > 0.0 && tb < gk->t_last &&
+         incoming_first(s, bk, bi, rc_v3_scale(-1.0, dxb), tb, tx)))
+        return RC_EOVERLAP;
+    /* (relative to the original reference, as the caller's dx) */
+    o.t -= back;
+    o.x = rc_v3_sub(o.x, rc_v3_scale(back, bi->v));
+    *out = o;
+    return RC_OK;
+}
+
+#endif
