@@ -10,9 +10,6 @@
 #include "resolve.h"
 #include "relcol/status.h"
 
-/* per_ball frames: after a single contact of the model (model != 0) every member whose
- * line kinked cleanly gets the record that undoes it (eng_undo); any other collision
- * leaves the members' records stale (their counters moved) or clears them. */
 /* A ball's record about to be written: the one it holds becomes its previous one (a chain
  * undo's, chain_members). */
 static inline void undo_shift(rc_sim *s, int32_t b)
@@ -25,6 +22,35 @@ static inline void undo_shift(rc_sim *s, int32_t b)
     }
 }
 
+/* Ball b's record for the collision being written (its previous one shifted back): its
+ * state, hyperplane, tube and clock before the collision, and the collision's members by
+ * caller's index with their counters after it; NULL, the record cleared, if the collision
+ * leaves none (ok == 0). The caller fills in the contact and the books. */
+static eng_undo *undo_open(rc_sim *s, int32_t b, int ok, size_t nm, const rc_particle *in,
+                           const eng_cov *cov, const rc_glue *glu, double tau_last)
+{
+    eng_undo *u = &s->und[b];
+    undo_shift(s, b);
+    if (!ok) {
+        u->partner = ENG_NONE;
+        u->nm = 0;
+        return NULL;
+    }
+    u->in = *in;
+    u->cov = *cov;
+    u->glu = *glu;
+    u->tau_last = tau_last;
+    u->nm = (uint32_t)nm;
+    for (size_t q = 0; q < nm; q++) {
+        u->mem[q] = (int32_t)s->id[s->grp_ball[q]];
+        u->mcnt[q] = s->cnt[s->grp_ball[q]];
+    }
+    return u;
+}
+
+/* per_ball frames: after a single contact of the model (model != 0) every member whose
+ * line kinked cleanly gets the record that undoes it (eng_undo); any other collision
+ * leaves the members' records stale (their counters moved) or clears them. */
 void eng_write_undo(rc_sim *s, size_t nm, int32_t bp, int model, const rc_particle *P,
                     const rc_vec3 *vold, const eng_clock *cat, const eng_cov *gat,
                     const rc_glue *uat, const double *tx, const rc_vec3 *dX,
@@ -36,27 +62,14 @@ void eng_write_undo(rc_sim *s, size_t nm, int32_t bp, int model, const rc_partic
         ok = ok && kinked[j];
     for (size_t j = 0; j < nm; j++) {
         const int32_t b = s->grp_ball[j];
-        eng_undo *u = &s->und[b];
-        undo_shift(s, b);
-        if (!ok) {
-            u->partner = ENG_NONE;
-            u->nm = 0;
+        eng_undo *u = undo_open(s, b, ok, nm, &P[j], &gat[j], &uat[j], cat[j].tau_last);
+        if (!u)
             continue;
-        }
         const double te = s->cov[b].t_k; /* (its kink E: X - E, the same on both lines) */
-        u->in = P[j];
-        u->cov = gat[j];
-        u->glu = uat[j];
-        u->tau_last = cat[j].tau_last;
         u->n = j == 0 ? n0 : rc_v3_scale(-1.0, n0);
         u->dt = tx[j] - te;
         u->dx = rc_v3_axpy(dX[j], tx[j] - te, vold[j]);
         u->partner = j == 0 ? (nm > 1 ? ENG_ROOT : bp) : (int32_t)s->id[s->grp_ball[0]];
-        u->nm = (uint32_t)nm;
-        for (size_t q = 0; q < nm; q++) {
-            u->mem[q] = (int32_t)s->id[s->grp_ball[q]];
-            u->mcnt[q] = s->cnt[s->grp_ball[q]];
-        }
         u->kind = nm > 1 ? RC_SIM_EV_BALL : RC_SIM_EV_WALL;
         u->ntc = tc ? 1u : 0u;
     }
@@ -279,17 +292,9 @@ static void write_group(rc_sim *s, size_t nm, size_t nc, const rc_particle *B,
     }
     for (size_t m = 0; m < nm; m++) {
         const int32_t b = s->grp_ball[m];
-        eng_undo *u = &s->und[b];
-        undo_shift(s, b);
-        if (!ok) {
-            u->partner = ENG_NONE;
-            u->nm = 0;
+        eng_undo *u = undo_open(s, b, ok, nm, &B[m], &gat[m], &uat[m], tau0[m]);
+        if (!u)
             continue;
-        }
-        u->in = B[m];
-        u->cov = gat[m];
-        u->glu = uat[m];
-        u->tau_last = tau0[m];
         const rc_contact *ct = NULL;
         if (m != root) {
             ct = &s->grp_con[pc[m]];
@@ -311,11 +316,6 @@ static void write_group(rc_sim *s, size_t nm, size_t nc, const rc_particle *B,
             u->n = rc_v3(0, 0, 0);
             u->dt = 0.0;
             u->dx = rc_v3(0, 0, 0);
-        }
-        u->nm = (uint32_t)nm;
-        for (size_t q = 0; q < nm; q++) {
-            u->mem[q] = (int32_t)s->id[s->grp_ball[q]];
-            u->mcnt[q] = s->cnt[s->grp_ball[q]];
         }
         u->kind = RC_SIM_EV_MULTI;
         u->ntc = ntc;
