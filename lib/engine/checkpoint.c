@@ -19,13 +19,14 @@
 #include "relcol/status.h"
 
 #define CK_MAGIC "relcolck"
-#define CK_VERSION 8u /* 2: the bookkeeping as one record (eng_books); 3: with pinned and the
+#define CK_VERSION 9u /* 2: the bookkeeping as one record (eng_books); 3: with pinned and the
                          transfer moments; 4: with the per_ball counters and hyperplanes;
                          5: with the per_ball undo records and rollbacks;
                          6: with the per_ball lines before kinks ahead (eng_pend);
                          7: undo records of groups (members, kind, TC count),
                          up to ENG_PEND_LINES lines before kinks ahead;
-                         8: each ball's previous undo record too */
+                         8: each ball's previous undo record too;
+                         9: undo records of overlap-policy decisions (npol) */
 #define CK_ORDER 0x01020304u
 
 typedef struct ck_header {
@@ -225,7 +226,8 @@ static int undo_ok(const rc_sim *s, size_t k, const eng_undo *u)
         int self = 0;
         if (!(u->nm >= 1 && u->nm <= ENG_UNDO_NMAX) ||
             !(u->kind == RC_SIM_EV_BALL || u->kind == RC_SIM_EV_WALL ||
-              u->kind == RC_SIM_EV_MULTI))
+              u->kind == RC_SIM_EV_MULTI) ||
+            u->npol > 2 * ENG_UNDO_NMAX) /* (contacts of a tree of nm, one wall) */
             return 0;
         for (uint32_t m = 0; m < u->nm; m++) {
             if (!(u->mem[m] >= 0 && (size_t)u->mem[m] < s->n))

@@ -400,9 +400,25 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T, const double *
         return 0;
     }
     eng_moments_add(s, nm, s->grp_ball, P, Q);
-    if (s->glue)
-        eng_write_undo(s, nm, bp, model, P, vold, cat, gat, uat, tx, dX, kinked,
-                   s->bk.events[RC_SIM_EV_TC] != tc_before);
+    if (s->glue) {
+        /* An overlap-policy decision between two balls leaves a record too, so that a
+         * later conflict with either ball's tube before its kink undoes it and solves it
+         * with the new contact (one decision, still counted once) instead of handing that
+         * conflict to the policy as well (papers/shape-change.md section 8). Its contact
+         * event, for the undo's group: one event for both, on the centre line at T where
+         * spheres of the rest radii would touch. */
+        const int policy_pair = !model && nm == 2;
+        rc_vec3 dXp[2];
+        if (policy_pair) {
+            const int32_t b0 = s->grp_ball[0], b1 = s->grp_ball[1];
+            const rc_vec3 d = eng_image(s, rc_v3_sub(bat[1].x, bat[0].x));
+            dXp[0] = rc_v3_scale(s->b[b0].r / (s->b[b0].r + s->b[b1].r), d);
+            dXp[1] = rc_v3_sub(dXp[0], d);
+        }
+        eng_write_undo(s, nm, bp, model || policy_pair, policy_pair, P, vold, cat, gat, uat,
+                       tx, policy_pair ? dXp : dX, kinked,
+                       s->bk.events[RC_SIM_EV_TC] != tc_before);
+    }
     for (size_t j = 0; j < nm; j++)
         P[j] = Q[j];
     finish(s, nm, 1, k0, p0, bp >= 0 ? RC_SIM_EV_BALL : RC_SIM_EV_WALL, 1, NULL);

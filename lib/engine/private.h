@@ -87,6 +87,8 @@ typedef struct eng_undo {
     uint32_t mcnt[ENG_UNDO_NMAX]; /* their counters after it */
     uint32_t kind;      /* its event kind (RC_SIM_EV_BALL, _WALL or _MULTI) ... */
     uint32_t ntc;       /* ... and the TC contacts it counted (rc_sim_diag) */
+    uint32_t npol;      /* its contacts the overlap policy decided (counted once, when
+                           decided: undone and solved again they stay counted) */
 } eng_undo;
 /* per_ball frames: where a ball's kinks lie after the engine's time. The engine stores a
  * ball at its latest kink on its outgoing line, which may lie ahead of now; the table-time
@@ -329,6 +331,8 @@ typedef struct eng_books {
     /* ... of which undid a chain: a member's later collision first (engine/undo.c;
      * read by the tests, not in rc_sim_diag) */
     uint64_t chain_rollbacks;
+    /* ... and that undid an overlap-policy decision (engine/undo.c; read by the tests) */
+    uint64_t policy_rollbacks;
     /* progress: the time of the last event and how many events in a row came at it; when
      * that count passes eng_stall_limit the run stops (RC_ESTALL), naming the event's
      * balls (caller's index; a wall w as -1 - w; -2^62 none) */
@@ -336,7 +340,7 @@ typedef struct eng_books {
     uint64_t still_count;
     int64_t stall_ball, stall_partner;
 } eng_books;
-_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 24 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 2 + 2 + 4),
+_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 24 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 2 + 2 + 5),
                "no padding in the bookkeeping");
 
 struct rc_sim {

@@ -121,7 +121,8 @@ void eng_finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int kind
 void eng_account_walls(rc_sim *s, size_t nc, rc_vec3 p0, rc_vec3 p1, const double *J);
 
 /* engine/undo.c */
-void eng_write_undo(rc_sim *s, size_t nm, int32_t bp, int model, const rc_particle *P,
+void eng_write_undo(rc_sim *s, size_t nm, int32_t bp, int record, int policy,
+                    const rc_particle *P,
                     const rc_vec3 *vold, const eng_clock *cat, const eng_cov *gat,
                     const rc_glue *uat, const double *tx, const rc_vec3 *dX,
                     const int *kinked, int tc);
@@ -146,10 +147,11 @@ void eng_pend_undo(eng_pend *r, double te);
  * time on their incoming lines, at most 2 ENG_UNDO_NMAX; contacts at most that + 1, each
  * with its event t, x), solved and each member kinked at its own event; ps: the
  * read-out's records to note after it; tied: the contacts are simultaneous by the group's
- * formation (an ordering rule sees them at one event). 1, or the law's failure. */
+ * formation (an ordering rule sees them at one event); npol: of the contacts, the overlap
+ * policy's (an undone decision's). 1, or the law's failure. */
 #define ENG_EVGROUP_NMAX (2 * ENG_UNDO_NMAX)
 int eng_solve_at_events(rc_sim *s, size_t nm, size_t nc, const eng_pend_snap *ps, size_t nps,
-                        int tied);
+                        int tied, uint32_t npol);
 /* engine/zmf_group.c: per_ball frames, at ball i's event with ball bp (members 0, 1 at T,
  * contact 0 theirs, X0 its event): the contacts simultaneous with it in the group's ZMF,
  * formed and solved (1, or the law's failure); 0: none, nothing changed. */

@@ -48,16 +48,19 @@ static eng_undo *undo_open(rc_sim *s, int32_t b, int ok, size_t nm, const rc_par
     return u;
 }
 
-/* per_ball frames: after a single contact of the model (model != 0) every member whose
- * line kinked cleanly gets the record that undoes it (eng_undo); any other collision
- * leaves the members' records stale (their counters moved) or clears them. */
-void eng_write_undo(rc_sim *s, size_t nm, int32_t bp, int model, const rc_particle *P,
+/* per_ball frames: after a single contact (record != 0: the model's, or -- policy != 0 --
+ * the overlap policy's between two balls, dX then its caller's event on the centre line)
+ * every member whose line kinked cleanly gets the record that undoes it (eng_undo); any
+ * other collision leaves the members' records stale (their counters moved) or clears
+ * them. */
+void eng_write_undo(rc_sim *s, size_t nm, int32_t bp, int record, int policy,
+                    const rc_particle *P,
                     const rc_vec3 *vold, const eng_clock *cat, const eng_cov *gat,
                     const rc_glue *uat, const double *tx, const rc_vec3 *dX,
                     const int *kinked, int tc)
 {
     const rc_vec3 n0 = s->grp_con[0].n;
-    int ok = model;
+    int ok = record;
     for (size_t j = 0; j < nm; j++)
         ok = ok && kinked[j];
     for (size_t j = 0; j < nm; j++) {
@@ -72,6 +75,7 @@ void eng_write_undo(rc_sim *s, size_t nm, int32_t bp, int model, const rc_partic
         u->partner = j == 0 ? (nm > 1 ? ENG_ROOT : bp) : (int32_t)s->id[s->grp_ball[0]];
         u->kind = nm > 1 ? RC_SIM_EV_BALL : RC_SIM_EV_WALL;
         u->ntc = tc ? 1u : 0u;
+        u->npol = policy ? 1u : 0u;
     }
 }
 
@@ -251,10 +255,11 @@ static void unbook(rc_sim *s, const ugroup *G)
  * ball contact joining a member to the rest, at most one wall contact, at the first
  * member then) and every member kinked cleanly; otherwise every record is cleared. B: the
  * states before, xk[m]: member m's kink E's position (te its time: cov t_k), gat, uat,
- * tau0: its hyperplane, tube and TC memory before, ntc: the TC contacts counted. */
+ * tau0: its hyperplane, tube and TC memory before, ntc: the TC contacts counted, npol: its
+ * overlap-policy contacts. */
 static void write_group(rc_sim *s, size_t nm, size_t nc, const rc_particle *B,
                         const eng_cov *gat, const rc_glue *uat, const double *tau0,
-                        const int *kinked, uint32_t ntc)
+                        const int *kinked, uint32_t ntc, uint32_t npol)
 {
     int ok = nm <= ENG_UNDO_NMAX;
     size_t walls = 0, root = 0;
@@ -319,6 +324,7 @@ static void write_group(rc_sim *s, size_t nm, size_t nc, const rc_particle *B,
         }
         u->kind = RC_SIM_EV_MULTI;
         u->ntc = ntc;
+        u->npol = npol;
     }
 }
 
@@ -329,9 +335,10 @@ static void write_group(rc_sim *s, size_t nm, size_t nc, const rc_particle *B,
  * its own kink: through its contact's event, or the latest along its worldline of its
  * contacts' events (so that all lie on its incoming piece, whose state the impulses act
  * on). Records for a later undo when the contacts form a tree; books, predictions; the
- * read-out's records ps[0 .. nps) noted. 1 (done), or the law's failure. */
+ * read-out's records ps[0 .. nps) noted; npol of the contacts were the overlap policy's
+ * (an undone decision's, solved again). 1 (done), or the law's failure. */
 int eng_solve_at_events(rc_sim *s, size_t nm, size_t nc, const eng_pend_snap *ps, size_t nps,
-                        int tied)
+                        int tied, uint32_t npol)
 {
     rc_particle *P = s->grp_part;
     rc_particle B[2 * ENG_UNDO_NMAX];
@@ -429,7 +436,7 @@ int eng_solve_at_events(rc_sim *s, size_t nm, size_t nc, const eng_pend_snap *ps
     }
     eng_moments_add(s, nm, s->grp_ball, B, P);
     write_group(s, nm, nc, B, gat, uat, tau0, kinked,
-                (uint32_t)(s->bk.events[RC_SIM_EV_TC] - tc_before));
+                (uint32_t)(s->bk.events[RC_SIM_EV_TC] - tc_before), npol);
     for (size_t m = 0; m < nm; m++)
         eng_predict(s, s->grp_ball[m], 0);
     eng_finish(s, nm, nc, k0, p0, RC_SIM_EV_MULTI, 1, J);
@@ -516,6 +523,12 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
     }
     s->bk.rollbacks++;
     s->bk.chain_rollbacks += cp >= 0;
+    /* the undone collisions' policy decisions: solved again with the rest, still counted
+     * once (rc_sim_diag.overlaps keeps them) */
+    uint32_t npol = 0;
+    for (size_t g = 0; g < ng; g++)
+        npol += cp >= 0 && g == 1 ? r1.npol : s->und[G[g].sl[0]].npol;
+    s->bk.policy_rollbacks += npol > 0;
     /* (each member stored at its earliest undone kink, on the line before it: a slice at
      * or after that kink is on that line) */
     for (size_t g = 0; cp >= 0 && s->slc_n && g < ng; g++)
@@ -631,7 +644,7 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
         s->grp_con[nc - 1].t = t2;
         s->grp_con[nc - 1].x = rc_v3_add(rc_v3_axpy(bw->x, t2 - bw->t, bw->v), dX2);
     }
-    return eng_solve_at_events(s, nm, nc, ps, nps, 0);
+    return eng_solve_at_events(s, nm, nc, ps, nps, 0, npol);
 }
 
 int eng_rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx)

@@ -253,5 +253,5 @@ int eng_zmf_group(rc_sim *s, int32_t i, int32_t bp, double T, double tx0, rc_vec
      * other (up to the contacts the undo's arrays hold: the rest are events of their own) */
     if (eng_group_walls(s, nm, &nc, ENG_EVGROUP_NMAX + 1) != RC_OK)
         return RC_ENOMEM;
-    return eng_solve_at_events(s, nm, nc, ps, nps, 1);
+    return eng_solve_at_events(s, nm, nc, ps, nps, 1, 0);
 }
