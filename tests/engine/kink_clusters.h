@@ -56,7 +56,6 @@ typedef struct kc_state {
     uint32_t *parent, *size; /* union-find over nodes */
     size_t nodes, cap;
     uint32_t (*link)[2];     /* joined nodes: crossing kinks, or an undo's */
-    uint8_t *undo_link;
     size_t links, lcap;
     uint64_t pairs, crossing, undone;
     uint64_t pairs_model, crossing_model; /* both kinks the model's (no policy decision) */
@@ -94,7 +93,7 @@ static inline int kc_same_v(rc_vec3 a, rc_vec3 b)
     return d <= 1e-12 * (s > 1e-300 ? s : 1.0);
 }
 
-static inline int kc_link(kc_state *k, uint32_t a, uint32_t b, int undo)
+static inline int kc_link(kc_state *k, uint32_t a, uint32_t b)
 {
     if (k->links == k->lcap) {
         const size_t nc = k->lcap ? 2 * k->lcap : 1024;
@@ -102,15 +101,10 @@ static inline int kc_link(kc_state *k, uint32_t a, uint32_t b, int undo)
         if (!l)
             return -1;
         k->link = l;
-        uint8_t *u = realloc(k->undo_link, nc);
-        if (!u)
-            return -1;
-        k->undo_link = u;
         k->lcap = nc;
     }
     k->link[k->links][0] = a;
-    k->link[k->links][1] = b;
-    k->undo_link[k->links++] = (uint8_t)undo;
+    k->link[k->links++][1] = b;
     return 0;
 }
 
@@ -128,7 +122,6 @@ static inline void kc_free(kc_state *k)
     free(k->size);
     free(k->policy);
     free(k->link);
-    free(k->undo_link);
     memset(k, 0, sizeof *k);
 }
 
@@ -192,7 +185,7 @@ static inline int kc_step(kc_state *k, const rc_sim *s, int policy)
         /* the kink this one follows: pop those an undo took back (their out-velocity is not
          * this kink's in-velocity) */
         while (k->hn[i] > 0 && !kc_same_v(k->hk[i][k->hn[i] - 1].v_out, vin)) {
-            if (kc_link(k, node, k->hk[i][k->hn[i] - 1].node, 1) != 0)
+            if (kc_link(k, node, k->hk[i][k->hn[i] - 1].node) != 0)
                 return -1;
             k->hn[i]--;
             k->undone++;
@@ -209,7 +202,7 @@ static inline int kc_step(kc_state *k, const rc_sim *s, int policy)
             k->pairs_model += (uint64_t)model;
             k->crossing += (uint64_t)cross;
             k->crossing_model += (uint64_t)(cross && model);
-            if (cross && kc_link(k, node, p->node, 0) != 0)
+            if (cross && kc_link(k, node, p->node) != 0)
                 return -1;
         }
         if (k->hn[i] == k->hcap[i]) {
@@ -236,8 +229,9 @@ typedef struct kc_result {
     uint64_t undone;
 } kc_result;
 
-/* The clusters; model_only: joined only through kinks neither of whose collisions the
- * overlap policy decided (and undos), so that the policy's own kinks do not make them. */
+/* The clusters; model_only: joined only where neither collision was an overlap-policy
+ * decision (through crossing kinks or an undo), so that the policy's own kinks do not
+ * make them. */
 static inline kc_result kc_measure(kc_state *k, int model_only)
 {
     const uint64_t np = model_only ? k->pairs_model : k->pairs;
@@ -249,7 +243,7 @@ static inline kc_result kc_measure(kc_state *k, int model_only)
     }
     for (size_t l = 0; l < k->links; l++) {
         const uint32_t a = k->link[l][0], b = k->link[l][1];
-        if (model_only && !k->undo_link[l] && (k->policy[a] || k->policy[b]))
+        if (model_only && (k->policy[a] || k->policy[b]))
             continue;
         kc_union(k, a, b);
     }
