@@ -113,8 +113,9 @@ static void test_dilute(void)
 }
 
 /* issue 16's densest 3-D row (measured: p 0.75, largest 0.994 at N 1000): p well above 1/3
- * and one cluster holding most collisions; joined only where neither collision was an
- * overlap-policy decision, no cluster holds more than a few per cent (1.4 % at N 1000) */
+ * and one cluster holding most collisions. (Joined only where neither collision was an
+ * overlap-policy decision the largest is printed, not checked: 1.4 % at N 1000 now, and it
+ * grows as the policy decides less -- papers/shape-change.md section 8.) */
 static void test_dense(void)
 {
     kc_result a, m;
@@ -125,7 +126,6 @@ static void test_dense(void)
     ENSURE_MSG(a.nodes >= 1500, "dense: %zu collisions read", a.nodes);
     ENSURE_MSG(a.p > 0.5, "dense: crossing share %.4f", a.p);
     ENSURE_MSG(a.largest > 0.5, "dense: largest cluster %.4f", a.largest);
-    ENSURE_MSG(m.largest < 0.05, "dense, model's kinks: largest cluster %.4f", m.largest);
 }
 
 int main(void)
