@@ -26,7 +26,8 @@
                          7: undo records of groups (members, kind, TC count),
                          up to ENG_PEND_LINES lines before kinks ahead;
                          8: each ball's previous undo record too;
-                         9: undo records of overlap-policy decisions (npol) */
+                         9: undo records of overlap-policy decisions (npol), the
+                         count of walls' tube conflicts undone */
 #define CK_ORDER 0x01020304u
 
 typedef struct ck_header {

@@ -431,7 +431,7 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T, const double *
  * clamped to now), *dx = X - (centre at *tx): the support point of its shape along the
  * wall normal n, P n / h(n) with P = r^2 (I - beta beta^T). 1 if X is on the future side
  * of the ball's last hyperplane (a contact of the model), else 0. */
-static int wall_event_point(rc_sim *s, int32_t i, int w, double *tx, rc_vec3 *dx)
+int eng_wall_event_point(const rc_sim *s, int32_t i, int w, double *tx, rc_vec3 *dx)
 {
     const eng_ball *b = &s->b[i];
     const int d = w / 2, up = w & 1;
@@ -473,9 +473,15 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
                     s->bk.tube_conflicts++;
             }
         } else {
-            have_x = wall_event_point(s, i, ENG_WALL_INDEX(bp), &tx[0], &dX[0]);
+            have_x = eng_wall_event_point(s, i, ENG_WALL_INDEX(bp), &tx[0], &dX[0]);
             wall_tube = !have_x;
             if (wall_tube) {
+                /* the shape met the wall on the incoming side of the ball's hyperplane:
+                 * its last collision undone and solved with the wall's contact, as a
+                 * ball's (engine/undo.c), else the overlap policy */
+                const int st = eng_undo_wall(s, i, bp, T, tx[0]);
+                if (st != 0)
+                    return st > 0 ? RC_OK : st;
                 s->bk.tube_conflicts++;
                 tx[0] = T;
                 dX[0] = rc_v3(0, 0, 0);

@@ -128,6 +128,14 @@ void eng_write_undo(rc_sim *s, size_t nm, int32_t bp, int record, int policy,
                     const int *kinked, int tc);
 int eng_undoable(const rc_sim *s, int32_t w, int32_t k);
 int eng_rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx);
+/* ball i's shape met wall (code) at T on the incoming side of its hyperplane (tx: the
+ * outgoing shape's contact time): its last collision undone and solved with the wall
+ * contact from its incoming line. 1 done, 0 does not apply, or the law's failure. */
+int eng_undo_wall(rc_sim *s, int32_t i, int32_t wall, double T, double tx);
+/* per_ball frames: ball i's contact with wall w from its stored state (engine/core.c):
+ * *tx its time, *dx = X - (centre at *tx); 1 if X is on the future side of the ball's
+ * last hyperplane (a contact of the model), else 0. */
+int eng_wall_event_point(const rc_sim *s, int32_t i, int w, double *tx, rc_vec3 *dx);
 int eng_undo_conflict(rc_sim *s, int32_t i, int32_t bp, double T, int tube);
 
 /* engine/pending.c */

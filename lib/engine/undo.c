@@ -455,18 +455,25 @@ int eng_solve_at_events(rc_sim *s, size_t nm, size_t nc, const eng_pend_snap *ps
  * all lie on its incoming piece, whose state the impulses act on). The group's members
  * get records of their own when its contacts form a tree, so a later conflict can undo
  * it into a larger group, up to ENG_UNDO_NMAX members (a choice: it bounds the work; a
- * conflict beyond goes to the overlap policy). 1 when done; 0 when it does not apply
- * (nothing changed); the law's failure (negative). */
+ * conflict beyond goes to the overlap policy). k < 0: a wall (its code, ENG_WALL), which
+ * w's shape met on the incoming side of its hyperplane: w's last collision is undone
+ * (not a chain) and solved with w's contact with that wall from its incoming line, the
+ * wall's event of the model there (eng_wall_event_point). 1 when done; 0 when it does not
+ * apply (nothing changed); the law's failure (negative). */
 static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int both)
 {
     ugroup G[2];
     size_t ng = 1;
+    const int wall = k < 0;
+    if (wall && both)
+        return 0;
     /* a chain (chain_members): cp, the member of w's collision G[0] that has collided
      * since, in G[1], which is undone first; r1 its record of G[1] */
     int32_t cp = -1;
     eng_undo r1;
     if (!(G[0].nm = undo_members(s, w, G[0].sl))) {
-        if (both || (cp = chain_members(s, w, k, &G[0].nm, G[0].sl, &G[1].nm, G[1].sl)) < 0)
+        if (both || wall ||
+            (cp = chain_members(s, w, k, &G[0].nm, G[0].sl, &G[1].nm, G[1].sl)) < 0)
             return 0;
         ng = 2;
     }
@@ -475,7 +482,7 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
      * frame is asked for their contact from both incoming lines and the group solved with
      * it -- unless the two were already in contact in it (a second contact of one pair is
      * not a contact the model has) */
-    const int inner = cp < 0 && in_list(G[0].sl, G[0].nm, k);
+    const int inner = !wall && cp < 0 && in_list(G[0].sl, G[0].nm, k);
     if (inner && (both || s->und[w].partner == (int32_t)s->id[k] ||
                   s->und[k].partner == (int32_t)s->id[w]))
         return 0;
@@ -484,7 +491,7 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
             return 0;
         ng = 2;
     }
-    if (cp < 0 && G[0].nm + (both ? G[1].nm : !inner) > ENG_UNDO_NMAX)
+    if (cp < 0 && G[0].nm + (both ? G[1].nm : !inner && !wall) > ENG_UNDO_NMAX)
         return 0;
     double te_w = s->cov[w].t_k, t_first = tx < te_w ? tx : te_w;
     if ((both || inner) && s->cov[k].t_k < t_first)
@@ -507,8 +514,20 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
      * (papers/shape-change.md, section 7) */
     double t2;
     rc_vec3 dX2, n2;
-    const double t0 = t_first - (s->b[w].r + s->b[k].r) * s->inv_c;
-    if (eng_pair_contact(s, w, k, t0, &t2, &dX2, &n2) != RC_OK) {
+    int found;
+    if (wall) {
+        /* (the wall's normal, out of the box; the event where w's incoming shape meets it,
+         * on the future side of w's hyperplane before the undone collision) */
+        const int wi = ENG_WALL_INDEX(k), d = wi / 2;
+        n2 = rc_v3(0, 0, 0);
+        rc_v3_set(&n2, d, (wi & 1) ? 1.0 : -1.0);
+        found = rc_v3_get(s->b[w].v, d) * ((wi & 1) ? 1.0 : -1.0) > 0.0 &&
+                eng_wall_event_point(s, w, wi, &t2, &dX2) && t2 > -INFINITY && t2 < INFINITY;
+    } else {
+        const double t0 = t_first - (s->b[w].r + s->b[k].r) * s->inv_c;
+        found = eng_pair_contact(s, w, k, t0, &t2, &dX2, &n2) == RC_OK;
+    }
+    if (!found) {
         if (cp >= 0) {
             put_back(s, &G[0]);
             s->und[cp] = r1;
@@ -529,6 +548,7 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
     for (size_t g = 0; g < ng; g++)
         npol += cp >= 0 && g == 1 ? r1.npol : s->und[G[g].sl[0]].npol;
     s->bk.policy_rollbacks += npol > 0;
+    s->bk.wall_rollbacks += wall;
     /* (each member stored at its earliest undone kink, on the line before it: a slice at
      * or after that kink is on that line) */
     for (size_t g = 0; cp >= 0 && s->slc_n && g < ng; g++)
@@ -594,7 +614,7 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
                 eng_pend_undo(&s->pend[G[g].sl[m]], G[g].te[m]);
                 ps[nps++] = eng_pend_take(s, G[g].sl[m]);
             }
-        if (!both && !inner)
+        if (!both && !inner && !wall)
             ps[nps++] = eng_pend_take(s, k);
     }
     for (size_t g = 0; g < ng; g++)
@@ -608,7 +628,7 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
         for (size_t m = 0; m < G[g].nm; m++)
             if (eng_member_of(s, &nm, G[g].sl[m], T) < 0)
                 return RC_ENOMEM;
-    if (!both && !inner && eng_member_of(s, &nm, k, T) < 0)
+    if (!both && !inner && !wall && eng_member_of(s, &nm, k, T) < 0)
         return RC_ENOMEM;
     if (wall_root >= 0) { /* (the wall's share taken back: p1 - p0, the original's negated) */
         const ugroup *Gw = in_list(G[0].sl, G[0].nm, wall_root) ? &G[0] : &G[1];
@@ -626,8 +646,8 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
     }
     /* the contacts: the undone ones, then w's with k (events in the first ball's
      * coordinates) */
-    const int mw = eng_member_of(s, &nm, w, T), mk = eng_member_of(s, &nm, k, T);
-    if (mw < 0 || mk < 0)
+    const int mw = eng_member_of(s, &nm, w, T), mk = wall ? k : eng_member_of(s, &nm, k, T);
+    if (mw < 0 || (!wall && mk < 0))
         return RC_ENOMEM;
     for (size_t c = 0; c < ncon; c++) {
         const int a = eng_member_of(s, &nm, con[c].a, T);
@@ -650,6 +670,11 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
 int eng_rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx)
 {
     return rollback(s, w, k, T, tx, 0);
+}
+
+int eng_undo_wall(rc_sim *s, int32_t i, int32_t wall, double T, double tx)
+{
+    return rollback(s, i, wall, T, tx, 0);
 }
 
 /* Which collisions a conflict at ball i's event with partner bp can undo: a tube

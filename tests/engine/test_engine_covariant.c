@@ -87,11 +87,15 @@ static void conserve(int dim, int periodic, double eps, double v, double packing
      * hold through a decision's record too */
     ENSURE_MSG(s->bk.policy_rollbacks > 0, "%dD per %d eps %g: no policy decision undone", dim,
                periodic, eps);
+    /* and, with walls, collisions undone for a wall met on the incoming side of a ball's
+     * hyperplane and solved with that wall's contact */
+    ENSURE_MSG(periodic || s->bk.wall_rollbacks > 0, "%dD walls eps %g: no wall conflict undone",
+               dim, eps);
     printf("  %d-D periodic %d eps %g: %llu collisions, %llu undone, %llu of them chains, "
-           "%llu overlap-policy decisions; %llu by the overlap policy\n", dim, periodic, eps,
-           (unsigned long long)d1.collisions, (unsigned long long)d1.rollbacks,
+           "%llu overlap-policy decisions, %llu for a wall; %llu by the overlap policy\n", dim,
+           periodic, eps, (unsigned long long)d1.collisions, (unsigned long long)d1.rollbacks,
            (unsigned long long)s->bk.chain_rollbacks, (unsigned long long)s->bk.policy_rollbacks,
-           (unsigned long long)d1.overlaps);
+           (unsigned long long)s->bk.wall_rollbacks, (unsigned long long)d1.overlaps);
     if (!periodic)
         ENSURE(d1.events[RC_SIM_EV_WALL] > 0);
     free(m0);
