@@ -31,6 +31,19 @@ static inline rc_sim *util_gas(rc_sim_def d, size_t n, double packing, double v_
     return s;
 }
 
+/* The covariant frame in a periodic box of dim dimensions at c = 1: the engine of the
+ * tests that measure the overlap policy's share and the kinks (other fields default). */
+static inline rc_sim_def util_covariant_periodic(int dim)
+{
+    rc_sim_def d = rc_sim_def_default();
+    d.dim = dim;
+    d.c = 1.0;
+    d.frame = &rc_toi_frame_covariant;
+    for (int k = 0; k < 3; k++)
+        d.boundary[k] = RC_SIM_PERIODIC;
+    return d;
+}
+
 /* Balls in[0 .. n-1] (centres at table time 0) seen from a frame moving at U, cut at its
  * t' = 0 by free flight (the caller's scene has no contact before that cut in either
  * frame), positions relative to o kept relative to o; c the speed of light. */

@@ -23,14 +23,9 @@
 static int run(int dim, double packing, double v, size_t n, double per_ball, uint64_t seed,
                double eps)
 {
-    rc_sim_def d = rc_sim_def_default();
-    d.dim = dim;
-    d.c = 1.0;
-    d.frame = &rc_toi_frame_covariant;
+    rc_sim_def d = util_covariant_periodic(dim);
     d.eps_ball = eps;
     d.t_c = eps < 1.0 ? 0.05 : 0.0; /* (overlap_share's TC) */
-    for (int k = 0; k < 3; k++)
-        d.boundary[k] = RC_SIM_PERIODIC;
     rc_sim *s = util_gas(d, n, packing, v, seed);
     if (!s)
         return 1;

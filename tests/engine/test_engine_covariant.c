@@ -110,13 +110,7 @@ static void conserve(int dim, int periodic, double eps, double v, double packing
  * lies between. Conservation to round-off through those undos, as in test_conservation. */
 static void test_dense_policy(void)
 {
-    rc_sim_def d = rc_sim_def_default();
-    d.dim = 2;
-    d.c = 1.0;
-    d.frame = &rc_toi_frame_covariant;
-    for (int k = 0; k < 3; k++)
-        d.boundary[k] = RC_SIM_PERIODIC;
-    rc_sim *s = util_gas(d, 400, 0.7, 0.9, 1);
+    rc_sim *s = util_gas(util_covariant_periodic(2), 400, 0.7, 0.9, 1);
     if (!s)
         return;
     rc_sim_diag d0, d1;
@@ -158,13 +152,7 @@ static void test_conservation(void)
 static void test_dilute_share(void)
 {
     for (int dim = 2; dim <= 3; dim++) {
-        rc_sim_def d = rc_sim_def_default();
-        d.dim = dim;
-        d.c = 1.0;
-        d.frame = &rc_toi_frame_covariant;
-        for (int k = 0; k < 3; k++)
-            d.boundary[k] = RC_SIM_PERIODIC;
-        rc_sim *s = util_gas(d, 2000, 0.01, 0.8, 3);
+        rc_sim *s = util_gas(util_covariant_periodic(dim), 2000, 0.01, 0.8, 3);
         if (!s)
             return;
         util_run_collisions(s, 20000);
@@ -181,13 +169,7 @@ static void test_dilute_share(void)
      * where the bound allows 40), since chains are undone (papers/shape-change.md section 8:
      * a member of the ball's last collision that has collided since has that collision
      * undone first); 54 before, most of them that member's */
-    rc_sim_def d = rc_sim_def_default();
-    d.dim = 3;
-    d.c = 1.0;
-    d.frame = &rc_toi_frame_covariant;
-    for (int k = 0; k < 3; k++)
-        d.boundary[k] = RC_SIM_PERIODIC;
-    rc_sim *s = util_gas(d, 2000, 0.05, 0.5, 3);
+    rc_sim *s = util_gas(util_covariant_periodic(3), 2000, 0.05, 0.5, 3);
     if (!s)
         return;
     util_run_collisions(s, 40000);

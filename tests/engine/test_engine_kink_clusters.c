@@ -64,13 +64,7 @@ static void test_cross_tau(void)
 static int clusters(int dim, double packing, double v, size_t n, double per_ball,
                     kc_result *all, kc_result *model)
 {
-    rc_sim_def d = rc_sim_def_default();
-    d.dim = dim;
-    d.c = 1.0;
-    d.frame = &rc_toi_frame_covariant;
-    for (int k = 0; k < 3; k++)
-        d.boundary[k] = RC_SIM_PERIODIC;
-    rc_sim *s = util_gas(d, n, packing, v, 3);
+    rc_sim *s = util_gas(util_covariant_periodic(dim), n, packing, v, 3);
     if (!s)
         return -1;
     util_run_collisions(s, (uint64_t)(2 * n));
