@@ -9,6 +9,7 @@
 
 #include <math.h>
 
+#include "pair_zmf.h"
 #include "pairs.h"
 #include "private.h"
 #include "relcol/status.h"
@@ -179,80 +180,46 @@ static int incoming_first(const rc_sim *cs, const eng_ball *bg, const eng_ball *
 
 /* glue_back's answer known to be refused before the frame is asked (in a dense gas most
  * of its answers lie on an incoming side of a hyperplane). Why this never refuses an
- * answer glue_back would take: asked from a reference where the straight cylinders C_i,
- * C_k are apart, the frame's X (if it finds one) is the point of their intersection S
- * that comes first in the pair's ZMF, and glue_valid takes it only if it lies on the
- * future side F of both balls' hyperplanes. Let T = t - u.y / c^2 (ZMF time over gamma_u,
- * here from bi's centre at tref). (a) Along a cylinder's generators T and the side
- * function both grow, so T over C_i and F_i is least on the section H_i cuts from C_i,
- * whose points are E_i + (kappa.d / den, d) for d in the table shape: T = T(E_i) + w.d,
- * w = kappa (1 - u.v) / den - u / c^2, least T(E_i) - h(w) (h the shape's support).
- * (b) In the ZMF stretched along the relative velocity by ball i's Lorentz factor there,
- * ball i is a sphere r_i and ball k lies between spheres r_k and r_k min(1, gi / gk); the
- * inner spheres' first contact Y is a point of S, so T(X) <= T(Y), and T(Y) below a
- * ball's least T on F puts X on its incoming side. (c) With equal Lorentz factors (equal
- * rest masses) both are spheres and X is Y, whose side of each hyperplane is then told
- * directly; factors that differ by delta <= 1e-13 (rest masses a few ulps apart) move X
- * by at most ~ R sqrt(2 delta) even at grazing incidence, which the margin covers with
- * gamma_u for the boost back. The margin's floor, 1e-6 of the pair's time scale, covers
- * the frame's tolerance on X and this arithmetic's rounding with gamma_u below 100.
- * dx at tref (nearest image); 1: refused for sure. */
+ * answer glue_back would take: the frame's X, asked from where the cylinders are apart,
+ * is bounded as engine/pair_zmf.h says, and glue_valid takes it only if it lies on the
+ * future side F of both balls' hyperplanes. (a) Along a cylinder's generators the ZMF
+ * time T and the side function both grow, so T over C_i and F_i is least on the section
+ * H_i cuts from C_i, whose points are E_i + (kappa.d / den, d) for d in the table shape:
+ * T = T(E_i) + w.d, w = kappa (1 - u.v) / den - u / c^2, least T(E_i) - h(w) (h the
+ * shape's support); T(X) <= T(Y) below it puts X on the incoming side. (b) With equal
+ * ZMF Lorentz factors X is Y, whose side of each hyperplane is told directly; factors
+ * that differ by delta <= 1e-13 (rest masses a few ulps apart) move X by at most
+ * ~ R sqrt(2 delta) even at grazing incidence, which the margin covers with gamma_u for
+ * the boost back. The margin's floor, 1e-6 of the pair's time scale, covers the frame's
+ * tolerance on X and this arithmetic's rounding (ENG_ZPAIR_U2_MAX). dx at tref (nearest
+ * image); 1: refused for sure. */
 static int back_refused(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
                         double tref)
 {
     const eng_cov *ci = &s->cov[bi - s->b], *ck = &s->cov[bk - s->b];
     const int hi = ci->t_k > -INFINITY, hk = ck->t_k > -INFINITY;
-    if (!hi && !hk)
+    eng_zpair z;
+    if ((!hi && !hk) || !eng_zpair_make(s, bi, bk, dx, &z))
         return 0;
-    const double k2 = s->inv_c2;
-    const eng_aux *ai = &s->a[bi - s->b], *ak = &s->a[bk - s->b];
-    const double Mi = eng_mass_rel(ai->m, ai->p, k2), Mk = eng_mass_rel(ak->m, ak->p, k2);
-    const rc_vec3 u = rc_v3_scale(1.0 / (Mi + Mk), rc_v3_add(ai->p, ak->p));
-    const double u2k = rc_v3_norm2(u) * k2;
-    if (!(u2k < 0.9999))
+    /* the inner spheres' first contact Y */
+    const double R = bi->r + bk->r * (z.gk > z.gi ? z.gi / z.gk : 1.0);
+    double tau;
+    if (!eng_zpair_entry(&z, R, &tau))
         return 0;
-    const double gu = 1.0 / sqrt(1.0 - u2k), G = gu * gu * k2 / (gu + 1.0);
-    /* ZMF momenta, energies (as masses), velocities, Lorentz factors */
-    const double upi = rc_v3_dot(u, ai->p), upk = rc_v3_dot(u, ak->p);
-    const double Mzi = gu * (Mi - k2 * upi), Mzk = gu * (Mk - k2 * upk);
-    const rc_vec3 vzi = rc_v3_scale(1.0 / Mzi, rc_v3_axpy(ai->p, G * upi - gu * Mi, u));
-    const rc_vec3 vzk = rc_v3_scale(1.0 / Mzk, rc_v3_axpy(ak->p, G * upk - gu * Mk, u));
-    const double gi = Mzi / ai->m, gk = Mzk / ak->m;
-    /* bk's centre relative to bi's at ZMF time tau: D0 + w tau (bi's centre at tref is the
-     * ZMF origin) */
-    const double udx = rc_v3_dot(u, dx), tk0 = -gu * k2 * udx;
-    const rc_vec3 w = rc_v3_sub(vzk, vzi);
-    const rc_vec3 D0 = rc_v3_axpy(rc_v3_axpy(dx, G * udx, u), -tk0, vzk);
-    const double wn = rc_v3_norm(w);
-    if (!(wn > 0.0) || !(gi > 0.0) || !(gk > 0.0))
-        return 0;
-    const rc_vec3 e = rc_v3_scale(1.0 / wn, w);
-    /* stretched by gi along e: ball i a sphere r_i, ball k within r_k min(1, gi/gk) */
-    const rc_vec3 Ds = rc_v3_axpy(D0, (gi - 1.0) * rc_v3_dot(e, D0), e);
-    const rc_vec3 ws = rc_v3_scale(gi, w);
-    const double R = bi->r + bk->r * (gk > gi ? gi / gk : 1.0);
-    const double A = rc_v3_norm2(ws), B = rc_v3_dot(Ds, ws);
-    const double disc = B * B - A * (rc_v3_norm2(Ds) - R * R);
-    if (!(disc > 0.0))
-        return 0;
-    const double tau = (-B - sqrt(disc)) / A;
+    const double k2 = z.k2;
     const double di = ci->t_k - tref, dk = ck->t_k - tref;
-    const double delta = fabs(gk - gi) / gi;
+    const double delta = fabs(z.gk - z.gi) / z.gi;
     const int equal = delta <= 1e-13;
-    const double margin = (1e-6 + (equal ? 8.0 * gu * sqrt(delta) : 0.0)) * (bi->r + bk->r) *
-                              (1.0 / wn + s->inv_c) +
+    const double margin = (1e-6 + (equal ? 8.0 * z.gu * sqrt(delta) : 0.0)) *
+                              (bi->r + bk->r) * (1.0 / z.wn + s->inv_c) +
                           1e-12 * (fabs(tref) + fabs(tau) + (hi ? fabs(di) : 0.0) +
                                    (hk ? fabs(dk) : 0.0));
     const double den_i = hi ? eng_seg_den(ci, &s->glu[bi - s->b], bi->v) : 1.0;
     const double den_k = hk ? eng_seg_den(ck, &s->glu[bk - s->b], bk->v) : 1.0;
-    if (equal) {
-        /* X = Y: the contact point, unstretched, boosted back to the table */
-        const rc_vec3 eh = rc_v3_scale(1.0 / R, rc_v3_axpy(Ds, tau, ws));
-        const rc_vec3 off = rc_v3_axpy(eh, (1.0 / gi - 1.0) * rc_v3_dot(e, eh), e);
-        const rc_vec3 yz = rc_v3_axpy(rc_v3_scale(tau, vzi), bi->r, off);
-        const double uy = rc_v3_dot(u, yz);
-        const double t = gu * (tau + k2 * uy);
-        const rc_vec3 y = rc_v3_axpy(yz, G * uy + gu * tau, u);
+    if (equal) { /* X = Y */
+        double t;
+        rc_vec3 y;
+        eng_zpair_point(&z, bi->r, R, tau, &t, &y);
         if (hi && (t - di) * den_i - rc_v3_dot(ci->kappa, rc_v3_axpy(y, -t, bi->v)) < -margin)
             return 1;
         if (hk && (t - dk) * den_k -
@@ -262,17 +229,17 @@ static int back_refused(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
         return 0;
     }
     /* T(X) <= T(Y) = tau / gu against each ball's least T on its future side */
-    const double TY = tau / gu + margin;
+    const double TY = tau / z.gu + margin, udx = rc_v3_dot(z.u, dx);
     if (hi) {
-        const double q = 1.0 - k2 * rc_v3_dot(u, bi->v);
-        const rc_vec3 wi = rc_v3_axpy(rc_v3_scale(-k2, u), q / den_i, ci->kappa);
+        const double q = 1.0 - k2 * rc_v3_dot(z.u, bi->v);
+        const rc_vec3 wi = rc_v3_axpy(rc_v3_scale(-k2, z.u), q / den_i, ci->kappa);
         const double vw = rc_v3_dot(bi->v, wi);
         if (TY < di * q - bi->r * sqrt(fmax(0.0, rc_v3_norm2(wi) - k2 * vw * vw)))
             return 1;
     }
     if (hk) {
-        const double q = 1.0 - k2 * rc_v3_dot(u, bk->v);
-        const rc_vec3 wk = rc_v3_axpy(rc_v3_scale(-k2, u), q / den_k, ck->kappa);
+        const double q = 1.0 - k2 * rc_v3_dot(z.u, bk->v);
+        const rc_vec3 wk = rc_v3_axpy(rc_v3_scale(-k2, z.u), q / den_k, ck->kappa);
         const double vw = rc_v3_dot(bk->v, wk);
         if (TY < dk * q - k2 * udx - bk->r * sqrt(fmax(0.0, rc_v3_norm2(wk) - k2 * vw * vw)))
             return 1;
