@@ -108,33 +108,41 @@ static int window_contact(const rc_sim *cs, const eng_ball *bi, const eng_ball *
     return RC_OK;
 }
 
-/* Will the frame, asked from separation dx (at its reference), certainly find no contact?
- * Its search starts at the later of the two centre events in the pair's ZMF and finds the
- * first contact of the straight cylinders after it, so it reports RC_MISS wherever their
- * intersection S lies wholly before that start. By engine/pair_zmf.h S lies within the
- * time the outer spheres (stretched ZMF) overlap: their exit before the start, or their
- * closest approach apart, by a margin (1e-6 of the pair's time scale or radius: far above
- * this arithmetic's rounding, even for the exit time of a grazing pair, and the frame's
- * touch tolerance) proves it. Asked only where the bounding spheres overlap at the
- * reference, where most such answers lie (neighbours parting after a collision): elsewhere
- * the frame's own first test is as cheap. */
-static int frame_misses(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx)
+/* The frame's answer where it is certain without asking, from separation dx at its
+ * reference: RC_MISS, RC_EOVERLAP, or RC_OK (not certain: ask). Its search starts at the
+ * later of the two centre events in the pair's ZMF; it reports RC_EOVERLAP where the
+ * shapes overlap there (beyond its touch tolerance), else the first contact of the
+ * straight cylinders after it, RC_MISS where their intersection S lies wholly before it.
+ * By engine/pair_zmf.h (ZMF stretched by ball i's factor) the shapes overlap where the
+ * inner spheres do, and S lies within the time the outer spheres overlap: the inner
+ * spheres overlapping at the start, or the outer ones' exit before it or closest approach
+ * apart, each by a margin (1e-6 of the radii or of the pair's time scale: far above this
+ * arithmetic's rounding, even for the exit time of a grazing pair, and the frame's touch
+ * tolerance), proves the answer. Asked only where the bounding spheres overlap at the
+ * reference, where such answers gather (neighbours parting after a collision, or already
+ * overlapping in the ZMF): elsewhere the frame's own first test is as cheap. */
+static int frame_certain(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx)
 {
     const double sig = bi->r + bk->r;
     eng_zpair z;
     if (!(rc_v3_norm2(dx) <= sig * sig) || !eng_zpair_make(s, bi, bk, dx, &z))
-        return 0;
-    const double R = bi->r + bk->r * (z.gk > z.gi ? 1.0 : z.gi / z.gk);
-    const double A = rc_v3_norm2(z.ws), B = rc_v3_dot(z.Ds, z.ws);
-    if (rc_v3_norm(rc_v3_axpy(z.Ds, -B / A, z.ws)) > R * (1.0 + 1e-6))
-        return 1;
-    const double disc = B * B - A * (rc_v3_norm2(z.Ds) - R * R);
-    if (!(disc > 0.0))
-        return 0;
-    const double t_exit = (-B + sqrt(disc)) / A;
+        return RC_OK;
+    const double f = z.gi / z.gk;
+    const double Ro = bi->r + bk->r * (f < 1.0 ? 1.0 : f), Ri = bi->r + bk->r * (f < 1.0 ? f : 1.0);
     const double tk0 = -z.gu * z.k2 * rc_v3_dot(z.u, dx), t_start = tk0 > 0.0 ? tk0 : 0.0;
+    if (rc_v3_norm(rc_v3_axpy(z.Ds, t_start, z.ws)) < Ri * (1.0 - 1e-6))
+        return RC_EOVERLAP;
+    const double A = rc_v3_norm2(z.ws), B = rc_v3_dot(z.Ds, z.ws);
+    if (rc_v3_norm(rc_v3_axpy(z.Ds, -B / A, z.ws)) > Ro * (1.0 + 1e-6))
+        return RC_MISS;
+    const double disc = B * B - A * (rc_v3_norm2(z.Ds) - Ro * Ro);
+    if (!(disc > 0.0))
+        return RC_OK;
+    const double t_exit = (-B + sqrt(disc)) / A;
     return t_exit < t_start - (1e-6 * sig * (1.0 / z.wn + s->inv_c) +
-                               1e-12 * (fabs(t_exit) + fabs(t_start)));
+                               1e-12 * (fabs(t_exit) + fabs(t_start)))
+               ? RC_MISS
+               : RC_OK;
 }
 
 /* per_ball frames: the pair's contact from its stored states (dx, *tref: pair_sep's),
@@ -147,11 +155,8 @@ static int glue_contact(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
                         double *tref, rc_toi_contact *out, int *valid)
 {
     glue_reference(s, bi, bk, &dx, tref);
-    if (frame_misses(s, bi, bk, dx)) {
-        *valid = 0;
-        return RC_MISS;
-    }
-    const int st = frame_call(s, bi, bk, dx, out);
+    const int sure = frame_certain(s, bi, bk, dx);
+    const int st = sure != RC_OK ? sure : frame_call(s, bi, bk, dx, out);
     *valid = st == RC_OK && glue_valid(s, bi, bk, dx, *tref, out->t, out->x);
     if (st == RC_EOVERLAP || (st == RC_OK && !*valid)) {
         /* the straight cylinder is not the tube inside a window: ask the tube */
