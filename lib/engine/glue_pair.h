@@ -2,8 +2,9 @@
  * tubes, as the prediction asks it (engine/predict.c only): the frame's contact of the
  * straight cylinders from the stored states and its side of both balls' hyperplanes, the
  * tube inside a glue window (rc_glue_toi), and the frame asked again from further back
- * where it reported an overlap (papers/shape-change.md sections 6-8). Static functions in
- * a header so that the prediction's hot path keeps them inline. */
+ * where it reported an overlap (papers/shape-change.md sections 6-8); answers that
+ * engine/pair_zmf.h proves are not asked. Static functions in a header so that the
+ * prediction's hot path keeps them inline. */
 #ifndef RELCOL_ENGINE_GLUE_PAIR_H
 #define RELCOL_ENGINE_GLUE_PAIR_H
 
