@@ -2,13 +2,15 @@
  * tubes, as the prediction asks it (engine/predict.c only): the frame's contact of the
  * straight cylinders from the stored states and its side of both balls' hyperplanes, the
  * tube inside a glue window (rc_glue_toi), and the frame asked again from further back
- * where it reported an overlap (papers/shape-change.md sections 6-8). Static functions in
- * a header so that the prediction's hot path keeps them inline. */
+ * where it reported an overlap (papers/shape-change.md sections 6-8); answers that
+ * engine/pair_zmf.h proves are not asked. Static functions in a header so that the
+ * prediction's hot path keeps them inline. */
 #ifndef RELCOL_ENGINE_GLUE_PAIR_H
 #define RELCOL_ENGINE_GLUE_PAIR_H
 
 #include <math.h>
 
+#include "pair_zmf.h"
 #include "pairs.h"
 #include "private.h"
 #include "relcol/status.h"
@@ -107,6 +109,43 @@ static int window_contact(const rc_sim *cs, const eng_ball *bi, const eng_ball *
     return RC_OK;
 }
 
+/* The frame's answer where it is certain without asking, from separation dx at its
+ * reference: RC_MISS, RC_EOVERLAP, or RC_OK (not certain: ask). Its search starts at the
+ * later of the two centre events in the pair's ZMF; it reports RC_EOVERLAP where the
+ * shapes overlap there (beyond its touch tolerance), else the first contact of the
+ * straight cylinders after it, RC_MISS where their intersection S lies wholly before it.
+ * By engine/pair_zmf.h (ZMF stretched by ball i's factor) the shapes overlap where the
+ * inner spheres do, and S lies within the time the outer spheres overlap: the inner
+ * spheres overlapping at the start, or the outer ones' exit before it or closest approach
+ * apart, each by a margin (1e-6 of the radii or of the pair's time scale: far above this
+ * arithmetic's rounding, even for the exit time of a grazing pair, and the frame's touch
+ * tolerance), proves the answer. Asked only where the bounding spheres overlap at the
+ * reference, where such answers gather (neighbours parting after a collision, or already
+ * overlapping in the ZMF): elsewhere the frame's own first test is as cheap. */
+static int frame_certain(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx)
+{
+    const double sig = bi->r + bk->r;
+    eng_zpair z;
+    if (!(rc_v3_norm2(dx) <= sig * sig) || !eng_zpair_make(s, bi, bk, dx, &z))
+        return RC_OK;
+    const double f = z.gi / z.gk;
+    const double Ro = bi->r + bk->r * (f < 1.0 ? 1.0 : f), Ri = bi->r + bk->r * (f < 1.0 ? f : 1.0);
+    const double tk0 = -z.gu * z.k2 * rc_v3_dot(z.u, dx), t_start = tk0 > 0.0 ? tk0 : 0.0;
+    if (rc_v3_norm(rc_v3_axpy(z.Ds, t_start, z.ws)) < Ri * (1.0 - 1e-6))
+        return RC_EOVERLAP;
+    const double A = rc_v3_norm2(z.ws), B = rc_v3_dot(z.Ds, z.ws);
+    if (rc_v3_norm(rc_v3_axpy(z.Ds, -B / A, z.ws)) > Ro * (1.0 + 1e-6))
+        return RC_MISS;
+    const double disc = B * B - A * (rc_v3_norm2(z.Ds) - Ro * Ro);
+    if (!(disc > 0.0))
+        return RC_OK;
+    const double t_exit = (-B + sqrt(disc)) / A;
+    return t_exit < t_start - (1e-6 * sig * (1.0 / z.wn + s->inv_c) +
+                               1e-12 * (fabs(t_exit) + fabs(t_start)))
+               ? RC_MISS
+               : RC_OK;
+}
+
 /* per_ball frames: the pair's contact from its stored states (dx, *tref: pair_sep's),
  * asked from glue_reference's time (returned in *tref, the time the answer is relative
  * to); *valid: glue_valid's verdict. (Asked again from the later clock, where the stored
@@ -117,7 +156,8 @@ static int glue_contact(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
                         double *tref, rc_toi_contact *out, int *valid)
 {
     glue_reference(s, bi, bk, &dx, tref);
-    const int st = frame_call(s, bi, bk, dx, out);
+    const int sure = frame_certain(s, bi, bk, dx);
+    const int st = sure != RC_OK ? sure : frame_call(s, bi, bk, dx, out);
     *valid = st == RC_OK && glue_valid(s, bi, bk, dx, *tref, out->t, out->x);
     if (st == RC_EOVERLAP || (st == RC_OK && !*valid)) {
         /* the straight cylinder is not the tube inside a window: ask the tube */
@@ -177,12 +217,83 @@ static int incoming_first(const rc_sim *cs, const eng_ball *bg, const eng_ball *
     return st != RC_OK || (piece == 0 && t < tx);
 }
 
+/* glue_back's answer known to be refused before the frame is asked (in a dense gas most
+ * of its answers lie on an incoming side of a hyperplane). Why this never refuses an
+ * answer glue_back would take: the frame's X, asked from where the cylinders are apart,
+ * is bounded as engine/pair_zmf.h says, and glue_valid takes it only if it lies on the
+ * future side F of both balls' hyperplanes. (a) Along a cylinder's generators the ZMF
+ * time T and the side function both grow, so T over C_i and F_i is least on the section
+ * H_i cuts from C_i, whose points are E_i + (kappa.d / den, d) for d in the table shape:
+ * T = T(E_i) + w.d, w = kappa (1 - u.v) / den - u / c^2, least T(E_i) - h(w) (h the
+ * shape's support); T(X) <= T(Y) below it puts X on the incoming side. (b) With equal
+ * ZMF Lorentz factors X is Y, whose side of each hyperplane is told directly; factors
+ * that differ by delta <= 1e-13 (rest masses a few ulps apart) move X by at most
+ * ~ R sqrt(2 delta) even at grazing incidence, which the margin covers with gamma_u for
+ * the boost back. The margin's floor, 1e-6 of the pair's time scale, covers the frame's
+ * tolerance on X and this arithmetic's rounding (ENG_ZPAIR_U2_MAX). dx at tref (nearest
+ * image); 1: refused for sure. */
+static int back_refused(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
+                        double tref)
+{
+    const eng_cov *ci = &s->cov[bi - s->b], *ck = &s->cov[bk - s->b];
+    const int hi = ci->t_k > -INFINITY, hk = ck->t_k > -INFINITY;
+    eng_zpair z;
+    if ((!hi && !hk) || !eng_zpair_make(s, bi, bk, dx, &z))
+        return 0;
+    /* the inner spheres' first contact Y */
+    const double R = bi->r + bk->r * (z.gk > z.gi ? z.gi / z.gk : 1.0);
+    double tau;
+    if (!eng_zpair_entry(&z, R, &tau))
+        return 0;
+    const double k2 = z.k2;
+    const double di = ci->t_k - tref, dk = ck->t_k - tref;
+    const double delta = fabs(z.gk - z.gi) / z.gi;
+    const int equal = delta <= 1e-13;
+    const double margin = (1e-6 + (equal ? 8.0 * z.gu * sqrt(delta) : 0.0)) *
+                              (bi->r + bk->r) * (1.0 / z.wn + s->inv_c) +
+                          1e-12 * (fabs(tref) + fabs(tau) + (hi ? fabs(di) : 0.0) +
+                                   (hk ? fabs(dk) : 0.0));
+    const double den_i = hi ? eng_seg_den(ci, &s->glu[bi - s->b], bi->v) : 1.0;
+    const double den_k = hk ? eng_seg_den(ck, &s->glu[bk - s->b], bk->v) : 1.0;
+    if (equal) { /* X = Y */
+        double t;
+        rc_vec3 y;
+        eng_zpair_point(&z, bi->r, R, tau, &t, &y);
+        if (hi && (t - di) * den_i - rc_v3_dot(ci->kappa, rc_v3_axpy(y, -t, bi->v)) < -margin)
+            return 1;
+        if (hk && (t - dk) * den_k -
+                          rc_v3_dot(ck->kappa, rc_v3_sub(rc_v3_axpy(y, -t, bk->v), dx)) <
+                      -margin)
+            return 1;
+        return 0;
+    }
+    /* T(X) <= T(Y) = tau / gu against each ball's least T on its future side */
+    const double TY = tau / z.gu + margin, udx = rc_v3_dot(z.u, dx);
+    if (hi) {
+        const double q = 1.0 - k2 * rc_v3_dot(z.u, bi->v);
+        const rc_vec3 wi = rc_v3_axpy(rc_v3_scale(-k2, z.u), q / den_i, ci->kappa);
+        const double vw = rc_v3_dot(bi->v, wi);
+        if (TY < di * q - bi->r * sqrt(fmax(0.0, rc_v3_norm2(wi) - k2 * vw * vw)))
+            return 1;
+    }
+    if (hk) {
+        const double q = 1.0 - k2 * rc_v3_dot(z.u, bk->v);
+        const rc_vec3 wk = rc_v3_axpy(rc_v3_scale(-k2, z.u), q / den_k, ck->kappa);
+        const double vw = rc_v3_dot(bk->v, wk);
+        if (TY < dk * q - k2 * udx - bk->r * sqrt(fmax(0.0, rc_v3_norm2(wk) - k2 * vw * vw)))
+            return 1;
+    }
+    return 0;
+}
+
 static int glue_back(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
                      double tref, rc_toi_contact *out)
 {
     const rc_vec3 dv = rc_v3_sub(bk->v, bi->v);
     const double dvn = rc_v3_norm(dv);
     if (!(dvn > 0.0))
+        return RC_EOVERLAP;
+    if (back_refused(s, bi, bk, dx, tref))
         return RC_EOVERLAP;
     const double back = (rc_v3_norm(dx) + 4.0 * (bi->r + bk->r)) / dvn;
     const rc_vec3 dxb = rc_v3_axpy(dx, -back, dv);

@@ -7,6 +7,7 @@
  * (eng_solve_at_events). */
 #include <math.h>
 
+#include "pair_zmf.h"
 #include "resolve.h"
 #include "walk.h"
 #include "../toi_private.h"
@@ -79,6 +80,59 @@ static zmem member_ctx(const rc_sim *s, const zgroup *g, size_t mi, double T)
     const eng_aux *am = &s->a[g->mem[mi]];
     z.h = rc_toi_shape_of(bm->r, am->m, am->p, s->inv_c2);
     return z;
+}
+
+/* Can the frame's contact event X of member z (ball m) and ball k (dx: k - m at T) be
+ * simultaneous with the first one? try_join's condition |F| <= tol_f, with
+ * F = (t - T) D - A - P.e / c^2 for X = m's centre at t + e, decided before the frame is
+ * asked from what engine/pair_zmf.h proves of X. With equal ZMF Lorentz factors X is the
+ * inner spheres' contact point, F follows; factors delta <= 1e-13 apart move it by at most
+ * ~ R sqrt(2 delta) (glue_pair.h back_refused). Otherwise X's ZMF time T_X lies between the
+ * outer and inner spheres' first contacts and (t - T) q = T_X + u.e / c^2
+ * (q = 1 - u.v_m / c^2 > 0) with e in m's shape: t - T within [(T_lo - h_u) / q,
+ * (T_hi + h_u) / q], h_u its support along u over c^2, and P.e / c^2 within +-hPc. 0 only
+ * where F misses [-tol_f, tol_f] by more than a margin: 1e-6 of the pair's time scale (as
+ * back_refused's, which covers the frame's tolerance on X and this rounding) times 2M for
+ * F's units, plus rounding of absolute times. No outer contact is no verdict (near
+ * grazing its sign is round-off). */
+static int can_join(const rc_sim *s, const zmem *z, int32_t m, const eng_ball *bk,
+                    rc_vec3 dx, rc_vec3 P, double D, double A, double hPc, double tol_f,
+                    double M, double T)
+{
+    eng_zpair zp;
+    if (!eng_zpair_make(s, &s->b[m], bk, dx, &zp))
+        return 1;
+    const double k2 = zp.k2, delta = fabs(zp.gk - zp.gi) / zp.gi;
+    const double ro = bk->r * (zp.gk > zp.gi ? 1.0 : zp.gi / zp.gk);
+    const double ri = bk->r * (zp.gk > zp.gi ? zp.gi / zp.gk : 1.0);
+    const double scale = (z->r + bk->r) * (1.0 / zp.wn + s->inv_c);
+    double tau_lo, tau_hi = INFINITY;
+    if (delta <= 1e-13) {
+        if (!eng_zpair_entry(&zp, z->r + ri, &tau_hi))
+            return 1;
+        double t;
+        rc_vec3 y;
+        eng_zpair_point(&zp, z->r, z->r + ri, tau_hi, &t, &y);
+        const double F = t * D - A - k2 * rc_v3_dot(P, rc_v3_axpy(y, -t, z->v));
+        const double margin = M * (2.0 * (1e-6 + 8.0 * zp.gu * sqrt(delta)) * scale +
+                                    1e-12 * (fabs(T) + fabs(tau_hi))) +
+                              1e-12 * fabs(A);
+        return fabs(F) <= tol_f + margin;
+    }
+    if (!eng_zpair_entry(&zp, z->r + ro, &tau_lo))
+        return 1;
+    if (!eng_zpair_entry(&zp, z->r + ri, &tau_hi))
+        tau_hi = INFINITY;
+    const double un = rc_v3_norm(zp.u);
+    const double hu = un > 0.0 ? k2 * un * rc_toi_support_(&z->h, rc_v3_scale(1.0 / un, zp.u))
+                               : 0.0;
+    const double q = 1.0 - k2 * rc_v3_dot(zp.u, z->v);
+    const double t_lo = (tau_lo / zp.gu - hu) / q, t_hi = (tau_hi / zp.gu + hu) / q;
+    const double margin =
+        M * (2e-6 * scale +
+             1e-12 * (fabs(T) + fabs(tau_lo) + (tau_hi < INFINITY ? fabs(tau_hi) : 0.0))) +
+        1e-12 * fabs(A);
+    return !(t_lo * D - A - hPc > tol_f + margin || t_hi * D - A + hPc < -tol_f - margin);
 }
 
 /* Does ball k have a contact with member z.mi, not yet in the group, simultaneous with the
@@ -156,6 +210,12 @@ static int try_join(rc_sim *s, zgroup *g, const zmem *z, int32_t k, double T)
         if (dn + tau_max * (b / dn) > hsum * (1.0 + 1e-12))
             return 0;
     }
+    const double minv2 = M * M - rc_v3_norm2(P) * ic2;
+    if (!(minv2 > 0.0))
+        return 0;
+    const double tol_f = s->def.sim_tol * sig * s->inv_c * sqrt(minv2);
+    if (!can_join(s, z, m, bk, dx, P, D, A, pn * hP * ic2, tol_f, M, T))
+        return 0;
     /* the frame's contact event from the stored lines, asked a light-crossing time early
      * (as an undo asks: the pair's ZMF simultaneity tilts by up to that across the pair) */
     double tk;
@@ -166,9 +226,6 @@ static int try_join(rc_sim *s, zgroup *g, const zmem *z, int32_t k, double T)
     const rc_vec3 xk = rc_v3_add(rc_v3_axpy(relm, tk - T, z->v), dxk);
     const double dt = (tk - T) - c0->t;
     const rc_vec3 dX = rc_v3_sub(xk, c0->x);
-    const double minv2 = M * M - rc_v3_norm2(P) * ic2;
-    if (!(minv2 > 0.0))
-        return 0;
     const double dtp = (M * dt - rc_v3_dot(P, dX) * ic2) / sqrt(minv2);
     if (!(fabs(dtp) <= s->def.sim_tol * sig * s->inv_c))
         return 0;
