@@ -523,6 +523,12 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
         rc_v3_set(&n2, d, (wi & 1) ? 1.0 : -1.0);
         found = rc_v3_get(s->b[w].v, d) * ((wi & 1) ? 1.0 : -1.0) > 0.0 &&
                 eng_wall_event_point(s, w, wi, &t2, &dX2) && t2 > -INFINITY && t2 < INFINITY;
+        /* ... and not on the future side of the undone kink's hyperplane, where the
+         * incoming piece is not the tube (its first contact would lie on that section,
+         * not built for walls) */
+        for (size_t m = 0; m < G[0].nm && found; m++)
+            if (G[0].sl[m] == w)
+                found = !eng_glue_side(&G[0].g[m], &G[0].u[m], s->b[w].v, t2, dX2);
     } else {
         const double t0 = t_first - (s->b[w].r + s->b[k].r) * s->inv_c;
         found = eng_pair_contact(s, w, k, t0, &t2, &dX2, &n2) == RC_OK;
