@@ -334,6 +334,10 @@ typedef struct eng_books {
     /* ... and that undid an overlap-policy decision, or were a wall's tube conflict
      * (engine/undo.c; read by the tests) */
     uint64_t policy_rollbacks, wall_rollbacks;
+    /* the chains (chain_rollbacks) that took back more than a chain of two: several
+     * members' later collisions, a later member's later one, or the other ball's own
+     * (engine/undo.c; read by the tests) */
+    uint64_t wide_chains;
     /* progress: the time of the last event and how many events in a row came at it; when
      * that count passes eng_stall_limit the run stops (RC_ESTALL), naming the event's
      * balls (caller's index; a wall w as -1 - w; -2^62 none) */
@@ -341,7 +345,7 @@ typedef struct eng_books {
     uint64_t still_count;
     int64_t stall_ball, stall_partner;
 } eng_books;
-_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 24 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 2 + 2 + 6),
+_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 24 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 2 + 2 + 7),
                "no padding in the bookkeeping");
 
 struct rc_sim {

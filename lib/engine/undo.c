@@ -11,7 +11,7 @@
 #include "relcol/status.h"
 
 /* A ball's record about to be written: the one it holds becomes its previous one (a chain
- * undo's, chain_members). */
+ * undo's, chain_set). */
 static inline void undo_shift(rc_sim *s, int32_t b)
 {
     if (s->und[b].partner != ENG_NONE) {
@@ -106,60 +106,133 @@ static int in_list(const int32_t *sl, size_t n, int32_t b)
     return 0;
 }
 
-static int32_t chain_members(const rc_sim *s, int32_t w, int32_t k, size_t *n0, int32_t *sl0,
-                             size_t *n1, int32_t *sl1);
+/* The collisions a chain undo takes back: ball w's last one, and for each member that has
+ * collided once since, that member's later collision (found the same way), at most one
+ * per ball beyond w's (each ball keeps two records), in the order found; ord: the order
+ * of undoing them, a collision only after every later one of its members. */
+#define UNDO_NG (ENG_UNDO_NMAX + 1)
+typedef struct uchain {
+    size_t ng;
+    const eng_undo *key[UNDO_NG]; /* a record of it (member 0 and its counter name it) */
+    size_t nm[UNDO_NG];
+    int32_t sl[UNDO_NG][ENG_UNDO_NMAX];
+    int later[UNDO_NG][ENG_UNDO_NMAX]; /* the member's later collision in the set; -1 */
+    size_t nb;                         /* the balls, each once, in the order found */
+    int32_t ball[ENG_UNDO_NMAX];
+    size_t ord[UNDO_NG];
+    int two; /* a chain of two the earlier rule took (one member's later collision, k
+                and walls outside it, no other ball shared): counted apart */
+} uchain;
 
-/* Can ball w's last collision be undone for a contact with ball k (not one of its
- * members), alone or after a member's later collision (a chain). */
-int eng_undoable(const rc_sim *s, int32_t w, int32_t k)
+static int same_coll(const eng_undo *a, const eng_undo *b)
 {
-    int32_t sl[ENG_UNDO_NMAX], sl1[ENG_UNDO_NMAX];
-    size_t n0, n1;
-    const size_t n = undo_members(s, w, sl);
-    if (n > 0)
-        return !in_list(sl, n, k);
-    return chain_members(s, w, k, &n0, sl, &n1, sl1) >= 0;
+    return a->partner != ENG_NONE && a->nm == b->nm && a->mem[0] == b->mem[0] &&
+           a->mcnt[0] == b->mcnt[0];
 }
 
-/* A chain: ball w's last collision G0 cannot be undone because one of its members, p, has
- * collided once since, in G1 (p's last collision), which can itself be undone (none of its
- * members has collided since) and shares no other member with G0; p's previous record is
- * G0's. Undoing G1 first puts p back where G0 left it, and G0 can then be undone as any
- * other (rollback). k must be in neither, G1 must have no wall contact (the wall's share
- * is taken back for one wall, G0's), and the two with k no more than ENG_UNDO_NMAX
- * members. p's slot, with both collisions' members (G0's in its books' order, p's slot
- * among them); -1 if it does not apply. */
-static int32_t chain_members(const rc_sim *s, int32_t w, int32_t k, size_t *n0, int32_t *sl0,
-                             size_t *n1, int32_t *sl1)
+/* A chain: ball w's last collision G0 cannot be undone because members have collided
+ * since. Each such member b has collided exactly once since, in a collision of which its
+ * record is kept (its previous record is then G0's, or the collision's that led to it);
+ * those are undone first, and their members' later collisions before them, the same way.
+ * Undone latest first, every ball goes back to its line before the earliest (a ball's
+ * two records bound the depth: a member that has collided twice since, or whose later
+ * collision left no record, stops it). The set takes at most one wall contact (its share
+ * is taken back for one wall), no pair of balls in contact twice, nor w and k in contact
+ * already (a second contact of one pair is not a contact the model has), and with k no
+ * more than ENG_UNDO_NMAX balls; k may be in it (then undone too, and w's contact with
+ * it solved with the rest). 1 and the set if it applies, else 0. */
+static int chain_set(const rc_sim *s, int32_t w, int32_t k, uchain *C)
 {
     const eng_undo *u = &s->und[w];
     if (u->partner == ENG_NONE || u->nm == 0 || u->nm > ENG_UNDO_NMAX)
-        return -1;
-    int32_t p = -1;
-    for (size_t m = 0; m < u->nm; m++) {
-        const int32_t b = (int32_t)s->slot[u->mem[m]];
-        const int dirty = s->cnt[b] != u->mcnt[m];
-        /* (the same collision: member 0's counter after it names it) */
-        const eng_undo *v = dirty ? &s->undp[b] : &s->und[b];
-        if ((dirty && (p >= 0 || b == w || s->cnt[b] != u->mcnt[m] + 1u)) ||
-            v->partner == ENG_NONE || v->nm != u->nm || v->mem[0] != u->mem[0] ||
-            v->mcnt[0] != u->mcnt[0])
-            return -1;
-        if (dirty)
-            p = b;
-        sl0[m] = b;
+        return 0;
+    C->ng = 1;
+    C->key[0] = u;
+    C->nb = 0;
+    size_t walls = 0, np = 0, peeled = 0, walls_later = 0;
+    int32_t pa[2 * ENG_UNDO_NMAX], pb[2 * ENG_UNDO_NMAX];
+    for (size_t g = 0; g < C->ng; g++) {
+        const eng_undo *cu = C->key[g];
+        C->nm[g] = cu->nm;
+        for (size_t m = 0; m < cu->nm; m++) {
+            const int32_t b = (int32_t)s->slot[cu->mem[m]];
+            const eng_undo *v = &s->und[b], *r = v; /* r: b's record of collision g */
+            int later = -1;
+            if (s->cnt[b] != cu->mcnt[m]) {
+                r = &s->undp[b];
+                if (s->cnt[b] != cu->mcnt[m] + 1u || v->partner == ENG_NONE || v->nm == 0 ||
+                    v->nm > ENG_UNDO_NMAX)
+                    return 0;
+                size_t h = 0;
+                while (h < C->ng && !same_coll(C->key[h], v))
+                    h++;
+                if (h == C->ng) {
+                    if (h == UNDO_NG)
+                        return 0;
+                    C->key[C->ng++] = v;
+                }
+                later = (int)h;
+                peeled++;
+            }
+            if (!same_coll(r, cu))
+                return 0;
+            C->sl[g][m] = b;
+            C->later[g][m] = later;
+            if (!in_list(C->ball, C->nb, b)) {
+                if (C->nb == ENG_UNDO_NMAX)
+                    return 0;
+                C->ball[C->nb++] = b;
+            }
+            const int32_t q = r->partner;
+            if (q < 0 && q != ENG_ROOT) {
+                walls++;
+                walls_later += g > 0;
+            } else if (q >= 0) {
+                const int32_t c = (int32_t)s->slot[q];
+                if ((b == w && c == k) || (b == k && c == w))
+                    return 0;
+                for (size_t e = 0; e < np; e++)
+                    if ((pa[e] == b && pb[e] == c) || (pa[e] == c && pb[e] == b))
+                        return 0;
+                pa[np] = b;
+                pb[np++] = c;
+            }
+        }
     }
-    if (p < 0 || in_list(sl0, u->nm, k) || !(*n1 = undo_members(s, p, sl1)) ||
-        u->nm + *n1 > ENG_UNDO_NMAX || in_list(sl1, *n1, k))
-        return -1;
-    for (size_t m = 0; m < *n1; m++) {
-        const int32_t q = s->und[sl1[m]].partner;
-        if ((sl1[m] != p && in_list(sl0, u->nm, sl1[m])) ||
-            (q < 0 && q != ENG_ROOT && q != ENG_NONE))
-            return -1;
+    const int k_in = in_list(C->ball, C->nb, k);
+    if (C->ng < 2 || walls > 1 || C->nb + !k_in > ENG_UNDO_NMAX)
+        return 0;
+    /* latest first: a collision once every later one of its members is undone (of those
+     * ready, the last found) */
+    int done[UNDO_NG] = {0};
+    for (size_t i = 0; i < C->ng; i++) {
+        size_t g = C->ng;
+        for (size_t h = C->ng; h-- > 0 && g == C->ng;) {
+            int ready = !done[h];
+            for (size_t m = 0; m < C->nm[h] && ready; m++)
+                ready = C->later[h][m] < 0 || done[C->later[h][m]];
+            g = ready ? h : g;
+        }
+        if (g == C->ng)
+            return 0;
+        done[g] = 1;
+        C->ord[i] = g;
     }
-    *n0 = u->nm;
-    return p;
+    C->two = C->ng == 2 && peeled == 1 && !k_in && walls_later == 0 &&
+             C->nb == C->nm[0] + C->nm[1] - 1;
+    return 1;
+}
+
+/* Can ball w's last collision be undone for a contact with ball k (not one of its
+ * members), alone or after its members' later collisions (a chain). */
+int eng_undoable(const rc_sim *s, int32_t w, int32_t k)
+{
+    int32_t sl[ENG_UNDO_NMAX];
+    const size_t n = undo_members(s, w, sl);
+    if (n > 0)
+        return !in_list(sl, n, k);
+    uchain C;
+    return chain_set(s, w, k, &C);
 }
 
 /* One collision being undone: its members, their states as they were (to put back if the
@@ -220,13 +293,13 @@ static void put_back(rc_sim *s, const ugroup *G)
 
 /* The collision's books, taken back: its moments at the kinks it was taken at, in its
  * members' order; heat and momentum with the same operations, negated; its counts. (The
- * members are at their kinks, lift.) The per-wall share is the caller's (it needs the
- * group's contact list). */
-static void unbook(rc_sim *s, const ugroup *G)
+ * members are at their kinks, lift; rec: their records of it.) The per-wall share is the
+ * caller's (it needs the group's contact list). */
+static void unbook(rc_sim *s, const ugroup *G, const eng_undo *const *rec)
 {
     rc_particle in[ENG_UNDO_NMAX];
     for (size_t m = 0; m < G->nm; m++)
-        in[m] = s->und[G->sl[m]].in;
+        in[m] = rec[m]->in;
     eng_moments_add(s, G->nm, G->sl, G->out, in);
     double k0 = 0.0, k1 = 0.0;
     rc_vec3 p0 = rc_v3(0, 0, 0), p1 = rc_v3(0, 0, 0);
@@ -240,10 +313,10 @@ static void unbook(rc_sim *s, const ugroup *G)
     eng_kahan(&s->bk.wall[0], &s->bk.wall_c[0], -(p0.x - p1.x));
     eng_kahan(&s->bk.wall[1], &s->bk.wall_c[1], -(p0.y - p1.y));
     eng_kahan(&s->bk.wall[2], &s->bk.wall_c[2], -(p0.z - p1.z));
-    const eng_undo *u = &s->und[G->sl[0]];
+    const eng_undo *u = rec[0];
     size_t walls = 0;
     for (size_t m = 0; m < G->nm; m++) {
-        const int32_t q = s->und[G->sl[m]].partner;
+        const int32_t q = rec[m]->partner;
         walls += q < 0 && q != ENG_ROOT && q != ENG_NONE;
     }
     s->bk.events[u->kind]--;
@@ -462,27 +535,43 @@ int eng_solve_at_events(rc_sim *s, size_t nm, size_t nc, const eng_pend_snap *ps
  * apply (nothing changed); the law's failure (negative). */
 static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int both)
 {
-    ugroup G[2];
+    ugroup G[UNDO_NG];
     size_t ng = 1;
     const int wall = k < 0;
     if (wall && both)
         return 0;
-    /* a chain (chain_members): cp, the member of w's collision G[0] that has collided
-     * since, in G[1], which is undone first; r1 its record of G[1] */
-    int32_t cp = -1;
-    eng_undo r1;
+    /* a chain (chain_set): the collisions C.ord undone in that order, each member's record
+     * of its collision rec[g][m] -- a ball whose later collision is undone first has its
+     * previous record (undp) put in place then, its last one kept in keep[] */
+    uchain C;
+    int chain = 0;
+    const eng_undo *rec[UNDO_NG][ENG_UNDO_NMAX];
+    eng_undo keep[ENG_UNDO_NMAX];
+    int32_t kb[ENG_UNDO_NMAX];
+    size_t nk = 0;
     if (!(G[0].nm = undo_members(s, w, G[0].sl))) {
-        if (both || wall ||
-            (cp = chain_members(s, w, k, &G[0].nm, G[0].sl, &G[1].nm, G[1].sl)) < 0)
+        if (both || wall || !chain_set(s, w, k, &C))
             return 0;
-        ng = 2;
+        chain = 1;
+        ng = C.ng;
+        for (size_t g = 0; g < ng; g++) {
+            G[g].nm = C.nm[g];
+            for (size_t m = 0; m < G[g].nm; m++) {
+                const int32_t b = C.sl[g][m];
+                G[g].sl[m] = b;
+                if (C.later[g][m] >= 0 && !in_list(kb, nk, b)) {
+                    keep[nk] = s->und[b];
+                    kb[nk++] = b;
+                }
+            }
+        }
     }
     /* k a member of w's group too (inner): the group's kinks, each through its own event,
      * can leave two members that were not in contact overlapping nearby; undone, the
      * frame is asked for their contact from both incoming lines and the group solved with
      * it -- unless the two were already in contact in it (a second contact of one pair is
      * not a contact the model has) */
-    const int inner = !wall && cp < 0 && in_list(G[0].sl, G[0].nm, k);
+    const int inner = !wall && !chain && in_list(G[0].sl, G[0].nm, k);
     if (inner && (both || s->und[w].partner == (int32_t)s->id[k] ||
                   s->und[k].partner == (int32_t)s->id[w]))
         return 0;
@@ -491,27 +580,47 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
             return 0;
         ng = 2;
     }
-    if (cp < 0 && G[0].nm + (both ? G[1].nm : !inner && !wall) > ENG_UNDO_NMAX)
+    if (!chain && G[0].nm + (both ? G[1].nm : !inner && !wall) > ENG_UNDO_NMAX)
         return 0;
-    double te_w = s->cov[w].t_k, t_first = tx < te_w ? tx : te_w;
-    if ((both || inner) && s->cov[k].t_k < t_first)
-        t_first = s->cov[k].t_k;
-    if (cp >= 0) {
-        /* G[1] first: cp back where G[0] left it, with G[0]'s record. (The delayed
-         * slices only once the frame has found the contact: the flush that restores them
-         * where it does not would leave cp's between its two kinks on its first line) */
-        lift(s, &G[1], 0);
-        r1 = s->und[cp];
-        s->und[cp] = s->undp[cp];
-        lift(s, &G[0], 0);
+    const int k_in = chain ? in_list(C.ball, C.nb, k) : both || inner;
+    size_t ord[UNDO_NG];
+    for (size_t i = 0; i < ng; i++) {
+        ord[i] = chain ? C.ord[i] : i;
+        for (size_t m = 0; m < G[i].nm; m++) {
+            const int32_t b = G[i].sl[m];
+            size_t j = 0;
+            while (chain && j < nk && kb[j] != b)
+                j++;
+            rec[i][m] = chain && C.later[i][m] >= 0 ? &s->undp[b]
+                        : chain && j < nk           ? &keep[j]
+                                                    : &s->und[b];
+        }
+    }
+    if (chain) {
+        /* latest first: each ball's previous record in place once its later collision is
+         * undone. (The delayed slices only once the frame has found the contact: the
+         * flush that restores them where it does not would leave a ball's between its
+         * two kinks on its first line) */
+        for (size_t i = 0; i < ng; i++) {
+            const size_t g = ord[i];
+            for (size_t m = 0; m < G[g].nm; m++)
+                if (C.later[g][m] >= 0)
+                    s->und[G[g].sl[m]] = s->undp[G[g].sl[m]];
+            lift(s, &G[g], 0);
+        }
     } else {
         for (size_t g = 0; g < ng; g++)
             lift(s, &G[g], 1);
     }
     /* the frame is asked from a pair's light-crossing time before the conflict's X and the
-     * undone kinks: from t_first itself the pair's ZMF, whose simultaneity tilts by up to
-     * that much across the pair, often found the two already overlapping
-     * (papers/shape-change.md, section 7) */
+     * undone kinks of w and (undone too) k: from t_first itself the pair's ZMF, whose
+     * simultaneity tilts by up to that much across the pair, often found the two already
+     * overlapping (papers/shape-change.md, section 7) */
+    double t_first = tx;
+    for (size_t g = 0; g < ng; g++)
+        for (size_t m = 0; m < G[g].nm; m++)
+            if ((G[g].sl[m] == w || (k_in && G[g].sl[m] == k)) && G[g].te[m] < t_first)
+                t_first = G[g].te[m];
     double t2;
     rc_vec3 dX2, n2;
     int found;
@@ -534,47 +643,40 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
         found = eng_pair_contact(s, w, k, t0, &t2, &dX2, &n2) == RC_OK;
     }
     if (!found) {
-        if (cp >= 0) {
-            put_back(s, &G[0]);
-            s->und[cp] = r1;
-            put_back(s, &G[1]);
-        } else {
-            for (size_t g = ng; g-- > 0;)
-                put_back(s, &G[g]);
-        }
+        for (size_t i = ng; i-- > 0;)
+            put_back(s, &G[ord[i]]);
+        for (size_t j = 0; j < nk; j++)
+            s->und[kb[j]] = keep[j];
         if (s->slc_nd) /* (slices lift moved: back on the members' lines) */
             eng_slice_flush(s);
         return 0;
     }
     s->bk.rollbacks++;
-    s->bk.chain_rollbacks += cp >= 0;
+    s->bk.chain_rollbacks += chain;
+    s->bk.wide_chains += chain && !C.two;
     /* the undone collisions' policy decisions: solved again with the rest, still counted
      * once (rc_sim_diag.overlaps keeps them) */
     uint32_t npol = 0;
     for (size_t g = 0; g < ng; g++)
-        npol += cp >= 0 && g == 1 ? r1.npol : s->und[G[g].sl[0]].npol;
+        npol += rec[g][0]->npol;
     s->bk.policy_rollbacks += npol > 0;
     s->bk.wall_rollbacks += wall;
     /* (each member stored at its earliest undone kink, on the line before it: a slice at
      * or after that kink is on that line) */
-    for (size_t g = 0; cp >= 0 && s->slc_n && g < ng; g++)
-        for (size_t m = 0; m < G[g].nm; m++)
-            if (g == 0 || G[g].sl[m] != cp)
-                eng_slice_undo(s, G[g].sl[m]);
+    for (size_t j = 0; chain && s->slc_n && j < C.nb; j++)
+        eng_slice_undo(s, C.ball[j]);
     /* the contacts of the undone collisions (member slot, partner slot or wall, normal,
-     * event), read from their records before these are cleared */
+     * event), read from their records before these are cleared; their books, latest
+     * first (each collision's moments at its own kinks) */
     typedef struct { int32_t a, b; rc_vec3 n; double t; rc_vec3 x; } ucon;
     ucon con[2 * ENG_UNDO_NMAX];
-    size_t ncon = 0;
+    size_t ncon = 0, wall_g = 0;
     int32_t wall_root = -1, wall_code = 0;
     rc_vec3 wall_n = rc_v3(0, 0, 0);
-    for (size_t gi = 0; gi < ng; gi++) {
-        const size_t g = cp >= 0 ? ng - 1 - gi : gi; /* (a chain's books: the later first) */
-        size_t mp = 0;
+    for (size_t i = 0; i < ng; i++) {
+        const size_t g = ord[i];
         for (size_t m = 0; m < G[g].nm; m++) {
-            const int later = cp >= 0 && g == 1 && G[g].sl[m] == cp;
-            const eng_undo *u = later ? &r1 : &s->und[G[g].sl[m]];
-            mp = later ? m : mp;
+            const eng_undo *u = rec[g][m];
             if (u->partner == ENG_ROOT)
                 continue;
             con[ncon] = (ucon){G[g].sl[m], u->partner >= 0 ? (int32_t)s->slot[u->partner] : u->partner,
@@ -583,44 +685,41 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
                 wall_root = G[g].sl[m];
                 wall_code = u->partner;
                 wall_n = u->n;
+                wall_g = g;
             }
             ncon++;
         }
-        if (cp >= 0 && g == 1) {
-            /* (G[1]'s moments at its kinks: cp's, where lift put it before G[0]'s) */
-            const rc_vec3 x0 = s->b[cp].x;
-            const eng_undo r0 = s->und[cp];
-            s->b[cp].x = G[1].xe[mp];
-            s->und[cp] = r1;
-            unbook(s, &G[1]);
-            s->b[cp].x = x0;
-            s->und[cp] = r0;
+        if (chain) {
+            /* (a ball undone twice is at its earlier kink: at this one for these books) */
+            rc_vec3 x0[ENG_UNDO_NMAX];
+            for (size_t m = 0; m < G[g].nm; m++) {
+                x0[m] = s->b[G[g].sl[m]].x;
+                s->b[G[g].sl[m]].x = G[g].xe[m];
+            }
+            unbook(s, &G[g], rec[g]);
+            for (size_t m = 0; m < G[g].nm; m++)
+                s->b[G[g].sl[m]].x = x0[m];
         } else {
-            unbook(s, &G[g]);
+            unbook(s, &G[g], rec[g]);
         }
     }
     /* the read-out's records of the undone members (eng_pend) back to before the undone
-     * kinks, then noted for the group's kinks like any event's balls */
+     * kinks, latest first, then noted for the group's kinks like any event's balls */
     eng_pend_snap ps[ENG_UNDO_NMAX + 1];
     size_t nps = 0;
-    if (s->pend && cp >= 0) { /* (cp's two kinks, the later first; its record once) */
-        for (size_t m = 0; m < G[1].nm; m++)
-            eng_pend_undo(&s->pend[G[1].sl[m]], G[1].te[m]);
-        for (size_t m = 0; m < G[0].nm; m++) {
-            eng_pend_undo(&s->pend[G[0].sl[m]], G[0].te[m]);
-            ps[nps++] = eng_pend_take(s, G[0].sl[m]);
+    if (s->pend) {
+        for (size_t i = 0; i < ng; i++)
+            for (size_t m = 0; m < G[ord[i]].nm; m++)
+                eng_pend_undo(&s->pend[G[ord[i]].sl[m]], G[ord[i]].te[m]);
+        if (chain) {
+            for (size_t j = 0; j < C.nb; j++)
+                ps[nps++] = eng_pend_take(s, C.ball[j]);
+        } else {
+            for (size_t g = 0; g < ng; g++)
+                for (size_t m = 0; m < G[g].nm; m++)
+                    ps[nps++] = eng_pend_take(s, G[g].sl[m]);
         }
-        for (size_t m = 0; m < G[1].nm; m++)
-            if (G[1].sl[m] != cp)
-                ps[nps++] = eng_pend_take(s, G[1].sl[m]);
-        ps[nps++] = eng_pend_take(s, k);
-    } else if (s->pend) {
-        for (size_t g = 0; g < ng; g++)
-            for (size_t m = 0; m < G[g].nm; m++) {
-                eng_pend_undo(&s->pend[G[g].sl[m]], G[g].te[m]);
-                ps[nps++] = eng_pend_take(s, G[g].sl[m]);
-            }
-        if (!both && !inner && !wall)
+        if (!k_in && !wall)
             ps[nps++] = eng_pend_take(s, k);
     }
     for (size_t g = 0; g < ng; g++)
@@ -634,14 +733,13 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
         for (size_t m = 0; m < G[g].nm; m++)
             if (eng_member_of(s, &nm, G[g].sl[m], T) < 0)
                 return RC_ENOMEM;
-    if (!both && !inner && !wall && eng_member_of(s, &nm, k, T) < 0)
+    if (!k_in && !wall && eng_member_of(s, &nm, k, T) < 0)
         return RC_ENOMEM;
     if (wall_root >= 0) { /* (the wall's share taken back: p1 - p0, the original's negated) */
-        const ugroup *Gw = in_list(G[0].sl, G[0].nm, wall_root) ? &G[0] : &G[1];
-        const int32_t *sl = Gw->sl;
+        const ugroup *Gw = &G[wall_g];
         rc_vec3 p0 = rc_v3(0, 0, 0), p1 = rc_v3(0, 0, 0);
         for (size_t m = 0; m < Gw->nm; m++) {
-            p0 = rc_v3_add(p0, s->und[sl[m]].in.p);
+            p0 = rc_v3_add(p0, rec[wall_g][m]->in.p);
             p1 = rc_v3_add(p1, Gw->out[m].p);
         }
         const int mw = eng_member_of(s, &nm, wall_root, T);

@@ -91,10 +91,11 @@ static void conserve(int dim, int periodic, double eps, double v, double packing
      * hyperplane and solved with that wall's contact */
     ENSURE_MSG(periodic || s->bk.wall_rollbacks > 0, "%dD walls eps %g: no wall conflict undone",
                dim, eps);
-    printf("  %d-D periodic %d eps %g: %llu collisions, %llu undone, %llu of them chains, "
-           "%llu overlap-policy decisions, %llu for a wall; %llu by the overlap policy\n", dim,
-           periodic, eps, (unsigned long long)d1.collisions, (unsigned long long)d1.rollbacks,
-           (unsigned long long)s->bk.chain_rollbacks, (unsigned long long)s->bk.policy_rollbacks,
+    printf("  %d-D periodic %d eps %g: %llu collisions, %llu undone, %llu of them chains "
+           "(%llu wider than two), %llu overlap-policy decisions, %llu for a wall; %llu by the "
+           "overlap policy\n", dim, periodic, eps, (unsigned long long)d1.collisions,
+           (unsigned long long)d1.rollbacks, (unsigned long long)s->bk.chain_rollbacks,
+           (unsigned long long)s->bk.wide_chains, (unsigned long long)s->bk.policy_rollbacks,
            (unsigned long long)s->bk.wall_rollbacks, (unsigned long long)d1.overlaps);
     if (!periodic)
         ENSURE(d1.events[RC_SIM_EV_WALL] > 0);
@@ -239,6 +240,76 @@ static void test_chain_scene(void)
     ENSURE_CLOSE(d1.momentum.y, d0.momentum.y, 1e-12, d0.momentum_scale);
     ENSURE_CLOSE(d1.momentum.z, d0.momentum.z, 1e-12, d0.momentum_scale);
     for (size_t i = 0; i < 4; i++) {
+        rc_sim_ball b;
+        rc_sim_get_ball(s, i, &b);
+        ENSURE_REL(b.m, b0[i].m, 1e-13);
+    }
+    rc_sim_free(&s);
+}
+
+/* (a'''') A chain of three undone in a scene of five balls, cut 0.16 before the first kink
+ * involved from the gas test_chain_scene's comes from, as the code before this rule ran
+ * it (the same way to t = 47.76): w collides with p (G0), p with q (G1), q with r (G2),
+ * then k meets w before its kink along its tube. p and q have each collided once since
+ * their collision with w and p, so G2, G1 and G0 are undone in that order, with the two
+ * records each ball keeps. The code before took back one member's later collision only
+ * if none of that one's members had collided since: it left the conflict to the overlap
+ * policy (1 overlap, nothing undone). Now the three collisions are undone and their
+ * contacts solved with w-k as one group of five balls -- no overlap, energy and momentum
+ * to 1e-12 relative (round-off of a few collisions), rest masses to 1e-13 (elastic). */
+static void test_wide_chain_scene(void)
+{
+    rc_sim_def d = rc_sim_def_default();
+    d.dim = 3;
+    d.c = 1.0;
+    d.frame = &rc_toi_frame_covariant;
+    const double L = 27.564674676045307;
+    d.box = rc_v3(L, L, L);
+    for (int k = 0; k < 3; k++)
+        d.boundary[k] = RC_SIM_PERIODIC;
+    const rc_sim_ball b0[5] = { /* w, p, q, r, k: the gas's balls 1903, 1364, 21, 37, 500 */
+        {.x = {4.3533978372650379, 20.791626844673893, 17.231842372509622},
+         .p = {-0.0007521378008453275, 0.010528166209876032, 0.062050808675460006},
+         .r = 0.5, .m = 0.125, .tau = 40.135613378884834, .tau_last = 38.95000152663151,
+         .collided = 1},
+        {.x = {4.7675314156004927, 20.165723820135231, 16.612368261345161},
+         .p = {-0.022608288888326916, 0.024749067857173138, 0.10250433942252428},
+         .r = 0.5, .m = 0.125, .tau = 41.574966174735835, .tau_last = 37.800409998873477,
+         .collided = 1},
+        {.x = {5.1321834835711844, 19.73156989547407, 17.808665082826643},
+         .p = {-0.028193743261256645, -0.0026938699930631298, -0.034159529896873514},
+         .r = 0.5, .m = 0.125, .tau = 41.880791210953035, .tau_last = 35.914214647639525,
+         .collided = 1},
+        {.x = {4.7366945660606818, 20.126659709761366, 18.925132877542303},
+         .p = {-0.0078451040901521135, -0.042595456249924737, -0.10379771311913522},
+         .r = 0.5, .m = 0.125, .tau = 39.374662073135106, .tau_last = 36.595136996564115,
+         .collided = 1},
+        {.x = {3.9982756323141309, 21.119642304680443, 18.32639816193829},
+         .p = {-0.022427702789401011, -0.038962627605913319, 0.011759293386175727},
+         .r = 0.5, .m = 0.125, .tau = 39.141587863433031, .tau_last = 33.777346199831889,
+         .collided = 1},
+    };
+    rc_sim *s = NULL;
+    ENSURE(rc_sim_create(&d, &s) == RC_OK);
+    if (!s)
+        return;
+    ENSURE(rc_sim_set_time(s, 47.0) == RC_OK);
+    ENSURE(rc_sim_set_balls(s, 5, b0, NULL) == RC_OK);
+    rc_sim_diag d0, d1;
+    rc_sim_diagnostics(s, &d0);
+    ENSURE(rc_sim_advance(s, 48.5, 0) == RC_OK);
+    rc_sim_diagnostics(s, &d1);
+    ENSURE_MSG(d1.overlaps == 0 && d1.rollbacks == 1 && s->bk.chain_rollbacks == 1 &&
+                   s->bk.wide_chains == 1,
+               "overlaps %llu rollbacks %llu chains %llu (wider than two %llu)",
+               (unsigned long long)d1.overlaps, (unsigned long long)d1.rollbacks,
+               (unsigned long long)s->bk.chain_rollbacks, (unsigned long long)s->bk.wide_chains);
+    ENSURE(d1.max_group >= 4); /* (the four contacts together) */
+    ENSURE_REL(d1.energy, d0.energy, 1e-12);
+    ENSURE_CLOSE(d1.momentum.x, d0.momentum.x, 1e-12, d0.momentum_scale);
+    ENSURE_CLOSE(d1.momentum.y, d0.momentum.y, 1e-12, d0.momentum_scale);
+    ENSURE_CLOSE(d1.momentum.z, d0.momentum.z, 1e-12, d0.momentum_scale);
+    for (size_t i = 0; i < 5; i++) {
         rc_sim_ball b;
         rc_sim_get_ball(s, i, &b);
         ENSURE_REL(b.m, b0[i].m, 1e-13);
@@ -759,6 +830,7 @@ int main(void)
     RUN_TEST(test_dilute_share);
     RUN_TEST(test_dense_policy);
     RUN_TEST(test_chain_scene);
+    RUN_TEST(test_wide_chain_scene);
     RUN_TEST(test_cluster);
     RUN_TEST(test_undo_wall);
     RC_TEST_MAIN_END();
