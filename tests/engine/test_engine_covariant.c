@@ -107,8 +107,8 @@ static void conserve(int dim, int periodic, double eps, double v, double packing
  * conflict with either ball's tube before its kink undoes it and is solved with it (the
  * decision still counted once) rather than decided by the policy too. In issue 16's dense
  * 2-D row (packing 0.7, rms 0.9c; periodic, N 400) this run's share was 53.3 % before and
- * is 43.1 % now; over five seeds (kink_clusters, N 400) 55-57 % before, 45-48 % now: 50 %
- * lies between. Conservation to round-off through those undos, as in test_conservation. */
+ * 43.1 % after (43.9 % with wider chains undone too); over five seeds (kink_clusters,
+ * N 400) 55-57 % before, 45-48 % after: 50 % lies between. Conservation to round-off through those undos, as in test_conservation. */
 static void test_dense_policy(void)
 {
     rc_sim *s = util_gas(util_covariant_periodic(2), 400, 0.7, 0.9, 1);
