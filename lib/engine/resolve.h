@@ -99,12 +99,17 @@ static inline double eng_kinetic(const rc_particle *b, double inv_c2)
 }
 
 
-/* engine/core.c */
+/* engine/kink.c */
 /* per_ball frames: ball b's velocity changes from `in` to `out` through the contact event
  * (tx, dx = X - its centre then on its stored line): its kink, moved to and kept
  * (at_event: a kink at the event's time through the centre, which overtakes a pending one) */
 void eng_glue_kink(rc_sim *s, int32_t b, const rc_particle *in, const rc_particle *out,
                    double tx, rc_vec3 dx, int at_event);
+/* ... with its time te and H's normal kappa already found (eng_kink_time) */
+void eng_glue_kink_at(rc_sim *s, int32_t b, const rc_particle *in, const rc_particle *out,
+                      double tx, rc_vec3 dx, double te, rc_vec3 kappa, int at_event);
+
+/* engine/core.c */
 /* Group member index of ball k, adding it (advanced to T) if new; -1 on ENOMEM. */
 int eng_member_of(rc_sim *s, size_t *nm, int32_t k, double T);
 /* Contact a-b (member indices; b < 0 a wall code) with normal n from a to b. */
@@ -132,7 +137,7 @@ int eng_rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx);
  * outgoing shape's contact time): its last collision undone and solved with the wall
  * contact from its incoming line. 1 done, 0 does not apply, or the law's failure. */
 int eng_undo_wall(rc_sim *s, int32_t i, int32_t wall, double T, double tx);
-/* per_ball frames: ball i's contact with wall w from its stored state (engine/core.c):
+/* per_ball frames: ball i's contact with wall w from its stored state (engine/kink.c):
  * *tx its time, *dx = X - (centre at *tx); 1 if X is on the future side of the ball's
  * last hyperplane (a contact of the model), else 0. */
 int eng_wall_event_point(const rc_sim *s, int32_t i, int w, double *tx, rc_vec3 *dx);
