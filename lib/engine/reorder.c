@@ -8,6 +8,72 @@
 #include "private.h"
 #include "relcol/status.h"
 
+/* One ball's elements of every per-ball array, as a cycle of the permutation carries
+ * them (the per_ball frames' records only where the frame keeps them). */
+typedef struct carry_set {
+    eng_ball b;
+    eng_aux a;
+    eng_clock c;
+    uint32_t id, cnt;
+    rc_vec3 n;
+    int32_t img[3];
+    eng_cov g;
+    rc_glue u;
+    eng_undo z, zp;
+    eng_pend p;
+} carry_set;
+
+/* *slot and *cur exchanged (size bytes, at most a carry_set's member) */
+static void swap_bytes(void *slot, void *cur, size_t size)
+{
+    unsigned char t[sizeof(carry_set)];
+    memcpy(t, slot, size);
+    memcpy(slot, cur, size);
+    memcpy(cur, t, size);
+}
+
+/* ball i's elements into c */
+static void take(const rc_sim *s, size_t i, carry_set *c)
+{
+    c->b = s->b[i];
+    c->a = s->a[i];
+    c->c = s->clk[i];
+    c->id = s->id[i];
+    c->cnt = s->cnt[i];
+    c->n = s->ev_n ? s->ev_n[i] : rc_v3(0, 0, 0);
+    memset(c->img, 0, sizeof c->img);
+    if (s->img) /* (periodic boxes: the wrap counters travel with the ball) */
+        memcpy(c->img, s->img + 3 * i, sizeof c->img);
+    if (s->cov) {
+        c->g = s->cov[i];
+        c->u = s->glu[i];
+        c->z = s->und[i]; /* (partners by caller's index: unchanged) */
+        c->zp = s->undp[i];
+        c->p = s->pend[i];
+    }
+}
+
+/* c put at slot `to`, and what was there into c */
+static void swap_in(rc_sim *s, size_t to, carry_set *c)
+{
+    swap_bytes(&s->b[to], &c->b, sizeof c->b);
+    swap_bytes(&s->a[to], &c->a, sizeof c->a);
+    swap_bytes(&s->clk[to], &c->c, sizeof c->c);
+    swap_bytes(&s->id[to], &c->id, sizeof c->id);
+    swap_bytes(&s->cnt[to], &c->cnt, sizeof c->cnt);
+    if (s->ev_n)
+        swap_bytes(&s->ev_n[to], &c->n, sizeof c->n);
+    if (s->img)
+        swap_bytes(s->img + 3 * to, c->img, sizeof c->img);
+    if (s->cov) {
+        swap_bytes(&s->cov[to], &c->g, sizeof c->g);
+        swap_bytes(&s->glu[to], &c->u, sizeof c->u);
+        swap_bytes(&s->und[to], &c->z, sizeof c->z);
+        swap_bytes(&s->undp[to], &c->zp, sizeof c->zp);
+        swap_bytes(&s->pend[to], &c->p, sizeof c->p);
+    }
+}
+
 /* Every ENG_REORDER_EVERY x N collisions and cell crossings the balls are renumbered in cell
  * order again: they diffuse away from the order set_balls gave them, and neighbours that
  * share cache lines are what keeps a pair test from being a cache miss. O(N), in place,
@@ -42,70 +108,13 @@ void eng_reorder(rc_sim *s)
     for (size_t i = 0; i < n; i++) {
         if (done[i])
             continue;
-        const rc_vec3 zero = rc_v3(0, 0, 0);
-        rc_vec3 cn = s->ev_n ? s->ev_n[i] : zero;
-        eng_cov cg;
-        rc_glue cu;
-        eng_undo cz, czp;
-        eng_pend cp;
-        if (s->cov) {
-            cg = s->cov[i];
-            cu = s->glu[i];
-            cz = s->und[i];
-            czp = s->undp[i];
-            cp = s->pend[i];
-        }
-        eng_ball cb = s->b[i];
-        eng_aux ca = s->a[i];
-        eng_clock cc = s->clk[i];
-        uint32_t cid = s->id[i], ccnt = s->cnt[i];
-        int32_t cim[3] = {0, 0, 0};
-        if (s->img)
-            memcpy(cim, s->img + 3 * i, sizeof cim);
+        /* the element carried along the cycle, one per per-ball array */
+        carry_set c;
+        take(s, i, &c);
         size_t o = i;
         do {
-            size_t to = np[o];
-            if (s->img) { /* (periodic boxes: the wrap counters travel with the ball) */
-                int32_t tim[3];
-                memcpy(tim, s->img + 3 * to, sizeof tim);
-                memcpy(s->img + 3 * to, cim, sizeof cim);
-                memcpy(cim, tim, sizeof cim);
-            }
-            eng_ball tb = s->b[to];
-            eng_aux ta = s->a[to];
-            eng_clock tcl = s->clk[to];
-            uint32_t tid = s->id[to], tcnt = s->cnt[to];
-            const rc_vec3 tn = s->ev_n ? s->ev_n[to] : zero;
-            if (s->ev_n)
-                s->ev_n[to] = cn;
-            cn = tn;
-            if (s->cov) {
-                const eng_cov tg = s->cov[to];
-                s->cov[to] = cg;
-                cg = tg;
-                const rc_glue tu = s->glu[to];
-                s->glu[to] = cu;
-                cu = tu;
-                const eng_undo tz = s->und[to]; /* (partners by caller's index: unchanged) */
-                s->und[to] = cz;
-                cz = tz;
-                const eng_undo tzp = s->undp[to];
-                s->undp[to] = czp;
-                czp = tzp;
-                const eng_pend tp = s->pend[to];
-                s->pend[to] = cp;
-                cp = tp;
-            }
-            s->b[to] = cb;
-            s->a[to] = ca;
-            s->clk[to] = cc;
-            s->id[to] = cid;
-            s->cnt[to] = ccnt;
-            cb = tb;
-            ca = ta;
-            cc = tcl;
-            cid = tid;
-            ccnt = tcnt;
+            const size_t to = np[o];
+            swap_in(s, to, &c);
             done[o] = 1;
             o = to;
         } while (o != i);
