@@ -185,6 +185,16 @@ static void test_dilute_share(void)
     rc_sim_free(&s);
 }
 
+/* The engine of the 3-D periodic gas (packing 0.05, rms 0.5c, N 2000, seed 3) the chain
+ * scenes are cut from: its box, the covariant frame, c = 1. */
+static rc_sim_def chain_gas_def(void)
+{
+    rc_sim_def d = util_covariant_periodic(3);
+    const double L = 27.564674676045307;
+    d.box = rc_v3(L, L, L);
+    return d;
+}
+
 /* A scene: balls b[0 .. n) at table time t0 in an engine made from d, run to t1; d0, d1 its
  * diagnostics before and after; then energy and momentum checked kept to 1e-12 relative
  * (round-off of a few collisions) and, if elastic, each rest mass to 1e-13. Returns the
@@ -223,14 +233,7 @@ static rc_sim *scene_run(const rc_sim_def *d, double t0, size_t n, const rc_sim_
  * 1e-12 relative (round-off of a few collisions) and rest masses to 1e-13 (elastic). */
 static void test_chain_scene(void)
 {
-    rc_sim_def d = rc_sim_def_default();
-    d.dim = 3;
-    d.c = 1.0;
-    d.frame = &rc_toi_frame_covariant;
-    const double L = 27.564674676045307;
-    d.box = rc_v3(L, L, L);
-    for (int k = 0; k < 3; k++)
-        d.boundary[k] = RC_SIM_PERIODIC;
+    const rc_sim_def d = chain_gas_def();
     const rc_sim_ball b0[4] = {
         {.x = {3.6387089282727363, 1.0004241224050796, 19.788013444958032},
          .p = {0.068481043772561284, -0.057899896053813814, 0.046874045733176946},
@@ -272,14 +275,7 @@ static void test_chain_scene(void)
  * to 1e-12 relative (round-off of a few collisions), rest masses to 1e-13 (elastic). */
 static void test_wide_chain_scene(void)
 {
-    rc_sim_def d = rc_sim_def_default();
-    d.dim = 3;
-    d.c = 1.0;
-    d.frame = &rc_toi_frame_covariant;
-    const double L = 27.564674676045307;
-    d.box = rc_v3(L, L, L);
-    for (int k = 0; k < 3; k++)
-        d.boundary[k] = RC_SIM_PERIODIC;
+    const rc_sim_def d = chain_gas_def();
     const rc_sim_ball b0[5] = { /* w, p, q, r, k: the gas's balls 1903, 1364, 21, 37, 500 */
         {.x = {4.3533978372650379, 20.791626844673893, 17.231842372509622},
          .p = {-0.0007521378008453275, 0.010528166209876032, 0.062050808675460006},
