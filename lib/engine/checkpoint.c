@@ -19,7 +19,7 @@
 #include "relcol/status.h"
 
 #define CK_MAGIC "relcolck"
-#define CK_VERSION 10u /* 2: the bookkeeping as one record (eng_books); 3: with pinned and the
+#define CK_VERSION 11u /* 2: the bookkeeping as one record (eng_books); 3: with pinned and the
                          transfer moments; 4: with the per_ball counters and hyperplanes;
                          5: with the per_ball undo records and rollbacks;
                          6: with the per_ball lines before kinks ahead (eng_pend);
@@ -28,7 +28,9 @@
                          8: each ball's previous undo record too;
                          9: undo records of overlap-policy decisions (npol), the
                          count of walls' tube conflicts undone;
-                         10: the wider chain undos' count */
+                         10: the wider chain undos' count;
+                         11: the count of undos that took back a ball's own two
+                         collisions (deep_rollbacks) */
 #define CK_ORDER 0x01020304u
 
 typedef struct ck_header {

@@ -338,6 +338,10 @@ typedef struct eng_books {
      * members' later collisions, a later member's later one, or the other ball's own
      * (engine/undo.c; read by the tests) */
     uint64_t wide_chains;
+    /* the undos that took back the ball's own previous collision too: the contact from
+     * the line before its last kink lay before its previous kink as well (engine/undo.c;
+     * read by the tests) */
+    uint64_t deep_rollbacks;
     /* progress: the time of the last event and how many events in a row came at it; when
      * that count passes eng_stall_limit the run stops (RC_ESTALL), naming the event's
      * balls (caller's index; a wall w as -1 - w; -2^62 none) */
@@ -345,7 +349,7 @@ typedef struct eng_books {
     uint64_t still_count;
     int64_t stall_ball, stall_partner;
 } eng_books;
-_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 24 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 2 + 2 + 7),
+_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 24 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 2 + 2 + 8),
                "no padding in the bookkeeping");
 
 struct rc_sim {

@@ -311,6 +311,97 @@ static void test_wide_chain_scene(void)
     rc_sim_free(&s);
 }
 
+/* (a''''') The ball's own previous collision undone too, in a scene of sixteen balls (the
+ * 3-D periodic gas of test_chain_scene, seed 3: its first such undo, at t = 41.45, with the
+ * balls within 3.5 of ball w then, cut at t = 40.07 where no kink of theirs lies ahead):
+ * w collides (Q), collides again (L), then k meets w before its kink at L along its tube,
+ * and the frame's contact from w's line before L lies before its kink at Q as well -- on
+ * the incoming side of Q's hyperplane, where w's tube is its line before Q. The code
+ * before this rule undid L alone, found that contact on the wrong side of w's hyperplane
+ * and left the conflict to the overlap policy (1 decision in this scene). Now L and then
+ * Q are undone, as a chain, and their contacts solved with w-k as one group -- no
+ * decision, energy and momentum to 1e-12 relative (round-off of a few collisions), rest
+ * masses to 1e-13 (elastic). */
+static void test_deep_scene(void)
+{
+    const rc_sim_def d = chain_gas_def();
+    const rc_sim_ball b0[16] = {
+        {.x = {0.73412076098657963, 7.0084199784500534, 5.8870649526647494},
+         .p = {-0.11392655782052374, 0.13291150089279427, 0.048013533796007229},
+         .r = 0.5, .m = 0.125, .tau = 33.894569012369658, .tau_last = 33.808150551546859,
+         .collided = 1},
+        {.x = {0.20151986001127414, 8.1056633748124209, 4.9604332592771687},
+         .p = {-0.020275058099269189, -0.024089128079718858, 0.012279273551172622},
+         .r = 0.5, .m = 0.125, .tau = 35.172330613983554, .tau_last = 30.232221248714712,
+         .collided = 1},
+        {.x = {27.027902551209387, 6.5154317184683004, 5.4478864239957749},
+         .p = {0.08602803021902064, 0.015158756464427034, -0.039202278686417014},
+         .r = 0.5, .m = 0.125, .tau = 34.842033397691964, .tau_last = 33.318733568125595,
+         .collided = 1},
+        {.x = {27.20913785915614, 7.5101873757000313, 4.2624848075173372},
+         .p = {0.016941681610243162, 0.00038927824855364279, -0.011394710860154478},
+         .r = 0.5, .m = 0.125, .tau = 34.38932945326939, .tau_last = 31.290566295850855,
+         .collided = 1},
+        {.x = {0.60208302172817008, 7.8215296698869814, 7.2782567001967218},
+         .p = {0.058807124828117965, 0.021684876712637136, 0.01686338480008092},
+         .r = 0.5, .m = 0.125, .tau = 31.45118122291516, .tau_last = 31.401635426005921,
+         .collided = 1},
+        {.x = {26.160940325061279, 8.4865179038649359, 6.857970896397422},
+         .p = {0.0061074396828948996, -0.057526747930097301, 0.037916478600471981},
+         .r = 0.5, .m = 0.125, .tau = 32.375506972617607, .tau_last = 29.58244218705714,
+         .collided = 1},
+        {.x = {1.4893350730927277, 5.9911438856157222, 5.7155919129912878},
+         .p = {0.011895792601075331, -0.044600771052639931, -0.12666362507979906},
+         .r = 0.5, .m = 0.125, .tau = 32.130126375388542, .tau_last = 31.76783512437105,
+         .collided = 1},
+        {.x = {27.421230922968128, 7.552140748169978, 6.6779505872650233},
+         .p = {-0.042181733459122933, -0.031019929221700483, -0.0071794898725332928},
+         .r = 0.5, .m = 0.125, .tau = 31.893840269869877, .tau_last = 31.792691233347593,
+         .collided = 1},
+        {.x = {25.246288566038459, 5.5952718008887246, 6.6622392871132696},
+         .p = {0.051186314536755484, 0.0066086822428811851, -0.0061597858450433522},
+         .r = 0.5, .m = 0.125, .tau = 36.054314889771476, .tau_last = 35.628635120719977,
+         .collided = 1},
+        {.x = {26.952250466605136, 8.93375562823657, 4.888418092757866},
+         .p = {0.086145190759475743, -0.066676834323402476, 0.03442128545067033},
+         .r = 0.5, .m = 0.125, .tau = 34.982539273962871, .tau_last = 34.027326213154545,
+         .collided = 1},
+        {.x = {3.4345233119608385, 6.8339560518056519, 5.4215713123908964},
+         .p = {-0.0091809124700916421, 0.047337440102492787, -0.021802238002352443},
+         .r = 0.5, .m = 0.125, .tau = 35.241807092042116, .tau_last = 23.745939054549577,
+         .collided = 1},
+        {.x = {26.830428040110785, 9.8884622080915179, 3.7316031746578369},
+         .p = {-0.022535474529461065, -0.066881099962210463, -0.064413343979635371},
+         .r = 0.5, .m = 0.125, .tau = 33.926285811782407, .tau_last = 31.95441243597482,
+         .collided = 1},
+        {.x = {24.76590866750637, 9.9396381072783946, 6.9975004404119652},
+         .p = {0.017674084216692545, -0.045363262723675454, -0.034041972736940554},
+         .r = 0.5, .m = 0.125, .tau = 37.105990695484863, .tau_last = 32.783874212186092,
+         .collided = 1},
+        {.x = {25.84601112928884, 9.9830383347611669, 5.9503000585311838},
+         .p = {-0.032033980998665119, 0.0063918798791603934, 0.061987749351209508},
+         .r = 0.5, .m = 0.125, .tau = 32.698751398228637, .tau_last = 31.680216663718735,
+         .collided = 1},
+        {.x = {26.872588099178344, 7.4020026562936483, 8.9715139112890157},
+         .p = {-0.0046581192511489372, 0.03116030637754208, -0.0068669078826540872},
+         .r = 0.5, .m = 0.125, .tau = 31.630167199103589, .tau_last = 27.173083911698559,
+         .collided = 1},
+        {.x = {1.9416801877754564, 5.6166318034492475, 6.6033745811844344},
+         .p = {-0.030441991953176033, 0.044456647620413306, -0.03631593013201375},
+         .r = 0.5, .m = 0.125, .tau = 33.274956501771065, .tau_last = 28.929262074921098,
+         .collided = 1},
+    };
+    rc_sim_diag d0, d1;
+    rc_sim *s = scene_run(&d, 40.07, 16, b0, 41.95, &d0, &d1);
+    if (!s)
+        return;
+    ENSURE_MSG(d1.overlaps == 0 && s->bk.deep_rollbacks == 1 && s->bk.chain_rollbacks >= 1,
+               "overlaps %llu rollbacks %llu deep %llu", (unsigned long long)d1.overlaps,
+               (unsigned long long)d1.rollbacks, (unsigned long long)s->bk.deep_rollbacks);
+    ENSURE(d1.max_group >= 3); /* (the contacts of Q, L and w-k together) */
+    rc_sim_free(&s);
+}
+
 /* (a') A contact the frame (pair's ZMF, stored lines) calls approaching while the law
  * (velocities along the normal) calls parting -- seen with a ball stored on its outgoing
  * line before its kink -- once made a collision that changed nothing and came up again at
@@ -825,6 +916,7 @@ int main(void)
     RUN_TEST(test_dense_policy);
     RUN_TEST(test_chain_scene);
     RUN_TEST(test_wide_chain_scene);
+    RUN_TEST(test_deep_scene);
     RUN_TEST(test_cluster);
     RUN_TEST(test_undo_wall);
     RC_TEST_MAIN_END();
