@@ -19,7 +19,7 @@
 #include "relcol/status.h"
 
 #define CK_MAGIC "relcolck"
-#define CK_VERSION 11u /* 2: the bookkeeping as one record (eng_books); 3: with pinned and the
+#define CK_VERSION 12u /* 2: the bookkeeping as one record (eng_books); 3: with pinned and the
                          transfer moments; 4: with the per_ball counters and hyperplanes;
                          5: with the per_ball undo records and rollbacks;
                          6: with the per_ball lines before kinks ahead (eng_pend);
@@ -30,7 +30,9 @@
                          count of walls' tube conflicts undone;
                          10: the wider chain undos' count;
                          11: the count of undos that took back a ball's own two
-                         collisions (deep_rollbacks) */
+                         collisions (deep_rollbacks);
+                         12: undo records of groups with one cycle of contacts,
+                         and the count of those undone (cycle_rollbacks) */
 #define CK_ORDER 0x01020304u
 
 typedef struct ck_header {

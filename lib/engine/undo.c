@@ -317,19 +317,21 @@ static void unbook(rc_sim *s, const ugroup *G, const eng_undo *const *rec)
     eng_kahan(&s->bk.wall[1], &s->bk.wall_c[1], -(p0.y - p1.y));
     eng_kahan(&s->bk.wall[2], &s->bk.wall_c[2], -(p0.z - p1.z));
     const eng_undo *u = rec[0];
-    size_t walls = 0;
+    /* its contacts: one a record, but the root's without a wall or a cycle's contact */
+    size_t ncon = 0;
     for (size_t m = 0; m < G->nm; m++) {
         const int32_t q = rec[m]->partner;
-        walls += q < 0 && q != ENG_ROOT && q != ENG_NONE;
+        ncon += q != ENG_ROOT && q != ENG_NONE;
     }
     s->bk.events[u->kind]--;
-    s->bk.collisions -= G->nm - 1 + walls;
+    s->bk.collisions -= ncon;
     s->bk.events[RC_SIM_EV_TC] -= u->ntc;
 }
 
 /* The records of a group made here, when its contacts form a tree over its members (each
  * ball contact joining a member to the rest, at most one wall contact, at the first
- * member then) and every member kinked cleanly; otherwise every record is cleared. B: the
+ * member then) or, without a wall, one cycle (a tree and one contact more, held by the
+ * root's record), and every member kinked cleanly; otherwise every record is cleared. B: the
  * states before, xk[m]: member m's kink E's position (te its time: cov t_k), gat, uat,
  * tau0: its hyperplane, tube and TC memory before, ntc: the TC contacts counted, npol: its
  * overlap-policy contacts. */
@@ -344,13 +346,24 @@ static void write_group(rc_sim *s, size_t nm, size_t nc, const rc_particle *B,
             walls++;
             root = (size_t)s->grp_con[c].a;
         }
-    ok = ok && walls <= 1 && nc - walls == nm - 1;
+    /* a tree of contacts, or -- no wall -- one cycle: a tree and one contact more, which
+     * the root's record holds (its partner that contact's other ball) */
+    const int cycle = walls == 0 && nc == nm && nm >= 3;
+    ok = ok && walls <= 1 && (nc - walls == nm - 1 || cycle);
     for (size_t m = 0; m < nm && ok; m++)
         ok = kinked[m];
-    /* each member's parent, from the root outwards; a member no contact reaches: no tree */
+    /* each member's parent, from the root outwards, leaving out the contact extra (the
+     * cycle's: one whose two balls the other contacts still join, the root one of them);
+     * a member no contact reaches: no tree */
     int32_t parent[ENG_UNDO_NMAX];
-    size_t pc[ENG_UNDO_NMAX], order[ENG_UNDO_NMAX], head = 0, tail = 0;
-    if (ok) {
+    size_t pc[ENG_UNDO_NMAX], extra = nc, tail = 0;
+    for (size_t x = 0; ok && x < (cycle ? nc : 1); x++) {
+        size_t order[ENG_UNDO_NMAX], head = 0;
+        if (cycle) {
+            extra = x;
+            root = (size_t)s->grp_con[x].a;
+        }
+        tail = 0;
         for (size_t m = 0; m < nm; m++)
             parent[m] = -1;
         parent[root] = (int32_t)root;
@@ -359,7 +372,7 @@ static void write_group(rc_sim *s, size_t nm, size_t nc, const rc_particle *B,
             const int a = (int)order[head++];
             for (size_t c = 0; c < nc; c++) {
                 const rc_contact *ct = &s->grp_con[c];
-                if (ct->b < 0 || (ct->a != a && ct->b != a))
+                if (c == extra || ct->b < 0 || (ct->a != a && ct->b != a))
                     continue;
                 const int o = ct->a == a ? ct->b : ct->a;
                 if (parent[o] < 0) {
@@ -369,8 +382,10 @@ static void write_group(rc_sim *s, size_t nm, size_t nc, const rc_particle *B,
                 }
             }
         }
-        ok = tail == nm;
+        if (tail == nm)
+            break;
     }
+    ok = ok && tail == nm;
     for (size_t m = 0; m < nm; m++) {
         const int32_t b = s->grp_ball[m];
         eng_undo *u = undo_open(s, b, ok, nm, &B[m], &gat[m], &uat[m], tau0[m]);
@@ -380,6 +395,9 @@ static void write_group(rc_sim *s, size_t nm, size_t nc, const rc_particle *B,
         if (m != root) {
             ct = &s->grp_con[pc[m]];
             u->partner = (int32_t)s->id[s->grp_ball[parent[m]]];
+        } else if (extra < nc) {
+            ct = &s->grp_con[extra];
+            u->partner = (int32_t)s->id[s->grp_ball[ct->a == (int)m ? ct->b : ct->a]];
         } else {
             u->partner = ENG_ROOT;
             for (size_t c = 0; c < nc; c++)
@@ -661,6 +679,13 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
     s->bk.chain_rollbacks += chain;
     s->bk.wide_chains += chain && !C.two;
     s->bk.deep_rollbacks += deep;
+    /* (a group with a cycle: as many ball contacts as members) */
+    for (size_t g = 0; g < ng; g++) {
+        size_t nb = 0;
+        for (size_t m = 0; m < G[g].nm; m++)
+            nb += rec[g][m]->partner >= 0;
+        s->bk.cycle_rollbacks += G[g].nm >= 3 && nb == G[g].nm;
+    }
     /* the undone collisions' policy decisions: solved again with the rest, still counted
      * once (rc_sim_diag.overlaps keeps them) */
     uint32_t npol = 0;

@@ -402,6 +402,91 @@ static void test_deep_scene(void)
     rc_sim_free(&s);
 }
 
+/* (a) A group whose contacts close a cycle undone, in a scene of 15 balls (the 3-D
+ * periodic gas of test_chain_scene, seed 3: its third undo of such a group, at t = 129.39,
+ * with the balls within 3 of ball w then, cut at t = 129.05 where no kink of theirs lies
+ * ahead): balls collide as one group whose contacts close a cycle (as many contacts as
+ * members), and a ball later meets one of them before its kink along its tube. The code before wrote no
+ * undo records for a group beyond a tree, so the conflict went to the overlap policy
+ * (1 decision in this scene); now the root's record holds the contact beyond the tree,
+ * the group is undone and solved again with the new contact -- no decision, energy and
+ * momentum to 1e-12 relative, rest masses to 1e-13 (elastic). */
+static void test_cycle_scene(void)
+{
+    const rc_sim_def d = chain_gas_def();
+    const rc_sim_ball b0[15] = {
+        {.x = {9.6930552868385931, 23.340861988942084, 24.666163385569714},
+         .p = {0.0081867556102751884, 0.043007515259309015, 0.010821631056205382},
+         .r = 0.5, .m = 0.125, .tau = 113.92677697528829, .tau_last = 111.48851471320795,
+         .collided = 1},
+        {.x = {9.9583200716971589, 24.083695457094429, 25.238446275239191},
+         .p = {-0.0034914651486655721, -0.0026161084303515172, -0.084283828471180863},
+         .r = 0.5, .m = 0.125, .tau = 111.10800620707701, .tau_last = 110.96930199661449,
+         .collided = 1},
+        {.x = {10.007527320319278, 24.298180719796761, 24.256490011907122},
+         .p = {-0.10378801420427154, -0.033715855970747631, -0.011838945390227965},
+         .r = 0.5, .m = 0.125, .tau = 106.94850222548209, .tau_last = 106.70912543289782,
+         .collided = 1},
+        {.x = {9.4194218661509588, 23.097039990216317, 25.620134625299549},
+         .p = {-0.044417102955522647, 0.069622137557591224, -0.10434615140514863},
+         .r = 0.5, .m = 0.125, .tau = 114.1218618819135, .tau_last = 112.47683479249575,
+         .collided = 1},
+        {.x = {10.372565264466196, 24.456326294389143, 26.162813858063668},
+         .p = {0.036925391430532792, 0.0057764856360919756, 0.041992388187496656},
+         .r = 0.5, .m = 0.125, .tau = 110.6511659719643, .tau_last = 110.4372201225238,
+         .collided = 1},
+        {.x = {10.980296466877215, 23.712475325434752, 22.689727415092467},
+         .p = {-0.029535140366863576, -0.0013235091665106339, 0.053510123346883577},
+         .r = 0.5, .m = 0.125, .tau = 111.07046010490835, .tau_last = 110.76625331779042,
+         .collided = 1},
+        {.x = {10.98283413661164, 24.510690942539828, 23.587556780591591},
+         .p = {0.011289196167720741, 0.038088783996535286, -0.099461433633994178},
+         .r = 0.5, .m = 0.125, .tau = 107.1286463505316, .tau_last = 106.84740335712677,
+         .collided = 1},
+        {.x = {10.711547391615561, 21.086456965295945, 23.449486798908382},
+         .p = {-0.031848624800795172, 0.011854227177589466, 0.077198156059808981},
+         .r = 0.5, .m = 0.125, .tau = 116.29038051817317, .tau_last = 113.60765342673116,
+         .collided = 1},
+        {.x = {9.5804461011253021, 25.432703195352889, 24.188149690224723},
+         .p = {0.036757387546466999, 0.0025364407183445341, 0.024705045761167173},
+         .r = 0.5, .m = 0.125, .tau = 113.01534442428368, .tau_last = 109.36572772325438,
+         .collided = 1},
+        {.x = {11.869457028677372, 24.493759213452975, 26.758269866280312},
+         .p = {-0.043038205711233055, 0.0025997729869017584, -0.12569702097868662},
+         .r = 0.5, .m = 0.125, .tau = 109.99631679262046, .tau_last = 106.16721727136483,
+         .collided = 1},
+        {.x = {7.4020381799875636, 22.380818897315148, 24.994234238455793},
+         .p = {-0.099586533811119426, -0.0080722567632128435, -0.02470395196971863},
+         .r = 0.5, .m = 0.125, .tau = 101.6626450245969, .tau_last = 100.16676341110565,
+         .collided = 1},
+        {.x = {7.0373118897352054, 23.579193548518415, 24.43988689348188},
+         .p = {0.014841757002761996, 0.00315421327531221, -0.021174342166968334},
+         .r = 0.5, .m = 0.125, .tau = 111.19996556970564, .tau_last = 102.97652263514651,
+         .collided = 1},
+        {.x = {10.82908055835043, 22.810594272656285, 25.652875018517403},
+         .p = {-0.0049595188023414567, 0.047242165857862298, 0.0021359023474349509},
+         .r = 0.5, .m = 0.125, .tau = 108.01668807430103, .tau_last = 98.105484776198267,
+         .collided = 1},
+        {.x = {8.2066422719424956, 24.928875117957944, 25.918776871795217},
+         .p = {-0.081952826076380686, 0.0097267379074648386, -0.056713638814374051},
+         .r = 0.5, .m = 0.125, .tau = 109.87863676426933, .tau_last = 104.50742916287948,
+         .collided = 1},
+        {.x = {9.4675320949681137, 20.940945389815301, 25.510520619717088},
+         .p = {8.869808392124312e-05, -0.0088276212362979768, -0.037897052155445754},
+         .r = 0.5, .m = 0.125, .tau = 116.40418312187379, .tau_last = 98.004178458051072,
+         .collided = 1},
+    };
+    rc_sim_diag d0, d1;
+    rc_sim *s = scene_run(&d, 129.05, 15, b0, 129.89, &d0, &d1);
+    if (!s)
+        return;
+    ENSURE_MSG(d1.overlaps == 0 && s->bk.cycle_rollbacks == 1,
+               "overlaps %llu rollbacks %llu cycles undone %llu", (unsigned long long)d1.overlaps,
+               (unsigned long long)d1.rollbacks, (unsigned long long)s->bk.cycle_rollbacks);
+    ENSURE(d1.max_group >= 4); /* (the cycle's contacts and the new one) */
+    rc_sim_free(&s);
+}
+
 /* (a') A contact the frame (pair's ZMF, stored lines) calls approaching while the law
  * (velocities along the normal) calls parting -- seen with a ball stored on its outgoing
  * line before its kink -- once made a collision that changed nothing and came up again at
@@ -917,6 +1002,7 @@ int main(void)
     RUN_TEST(test_chain_scene);
     RUN_TEST(test_wide_chain_scene);
     RUN_TEST(test_deep_scene);
+    RUN_TEST(test_cycle_scene);
     RUN_TEST(test_cluster);
     RUN_TEST(test_undo_wall);
     RC_TEST_MAIN_END();
