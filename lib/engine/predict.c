@@ -743,7 +743,8 @@ int eng_narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_ve
  * time t0 (not clamped to now, so a contact already behind the schedule is found): RC_OK
  * with the event (*tx; *dx = X - a's centre at *tx on its stored line) and the normal *n
  * from a to b, when X lies on the future side of both balls' hyperplanes and the law sees
- * the pair approach along n; RC_MISS when it does not; the frame's code otherwise. */
+ * the pair approach along n; ENG_BEFORE_A when X lies on the incoming side of a's;
+ * RC_MISS when it is not a contact of the model otherwise; the frame's code else. */
 int eng_pair_contact(rc_sim *s, int32_t a, int32_t b, double t0, double *tx, rc_vec3 *dx,
                      rc_vec3 *n)
 {
@@ -756,8 +757,13 @@ int eng_pair_contact(rc_sim *s, int32_t a, int32_t b, double t0, double *tx, rc_
         st = glue_back(s, ba, bb, d, t0, &out) == RC_OK ? RC_OK : RC_MISS;
     if (st != RC_OK)
         return st;
-    if (!glue_valid(s, ba, bb, d, t0, out.t, out.x) ||
-        !(rc_v3_dot(rc_v3_sub(ba->v, bb->v), out.n) > 0.0))
+    if (!glue_valid(s, ba, bb, d, t0, out.t, out.x)) {
+        /* (X on the incoming side of a's hyperplane: before a's last kink too) */
+        const int before_a = !eng_glue_side(&s->cov[a], &s->glu[a], ba->v, t0 + out.t,
+                                            rc_v3_axpy(out.x, -out.t, ba->v));
+        return before_a ? ENG_BEFORE_A : RC_MISS;
+    }
+    if (!(rc_v3_dot(rc_v3_sub(ba->v, bb->v), out.n) > 0.0))
         return RC_MISS;
     *tx = t0 + out.t;
     *dx = rc_v3_axpy(out.x, -out.t, ba->v);

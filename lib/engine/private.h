@@ -398,6 +398,9 @@ struct rc_sim {
      * collision whose member has collided once since can be undone after that later one
      * (a chain, engine/undo.c) */
     eng_undo *undp;
+    /* scratch of one conflict's undo attempts (engine/undo.c): the ball whose contact from
+     * its line before its last kink was found before its previous kink too, or -1 */
+    int32_t undo_before;
     /* per_ball frames only (else NULL): per ball, the lines before its kinks ahead of now */
     eng_pend *pend;
     /* delayed table-time slices asked for (engine/slice.c; none: slc_n = 0, and no hook
@@ -602,7 +605,9 @@ int eng_predict_checked_narrow(rc_sim *s, int32_t i, const eng_check *chk);
 /* Ball i crosses into its next cell (events updated, queue too). */
 void eng_cross(rc_sim *s, int32_t i);
 /* per_ball frames: the frame's contact of a and b from their stored lines at t0, if one
- * of the model (engine/predict.c). */
+ * of the model (engine/predict.c); ENG_BEFORE_A (not an RC_ code) when the frame's
+ * contact lies on the incoming side of a's last hyperplane. */
+#define ENG_BEFORE_A 100 /* (above every informational rc_status) */
 int eng_pair_contact(rc_sim *s, int32_t a, int32_t b, double t0, double *tx, rc_vec3 *dx,
                      rc_vec3 *n);
 /* The contracted contact test of a simultaneity check (engine/predict.c). */

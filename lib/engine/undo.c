@@ -664,7 +664,10 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
                 found = !eng_glue_side(&G[0].g[m], &G[0].u[m], s->b[w].v, t2, dX2);
     } else {
         const double t0 = t_first - (s->b[w].r + s->b[k].r) * s->inv_c;
-        found = eng_pair_contact(s, w, k, t0, &t2, &dX2, &n2) == RC_OK;
+        const int pst = eng_pair_contact(s, w, k, t0, &t2, &dX2, &n2);
+        found = pst == RC_OK;
+        if (pst == ENG_BEFORE_A)
+            s->undo_before = w;
     }
     if (!found) {
         for (size_t i = ng; i-- > 0;)
@@ -818,12 +821,14 @@ int eng_undo_wall(rc_sim *s, int32_t i, int32_t wall, double T, double tx)
  * that ball's last collision, then both balls' if the frame finds no contact from that
  * ball's incoming line alone; on the incoming side of both, both. An overlap the frame
  * reported (no X) tries the ball with the later kink, then the other, then both. Last,
- * the named ball's two last collisions (deep: the contact from its incoming line can lie
- * before its previous kink too; in the 3-D gas at packing 0.1, rms 0.5c, a quarter of the
- * conflicts left to the policy did). 1 done, 0 none applies, or the law's failure. */
+ * where an attempt found the contact from a ball's incoming line before its previous kink
+ * too, that ball's two last collisions (deep; in the 3-D gas at packing 0.1, rms 0.5c, a
+ * quarter of the conflicts left to the policy were such). 1 done, 0 none applies, or the
+ * law's failure. */
 int eng_undo_conflict(rc_sim *s, int32_t i, int32_t bp, double T, int tube)
 {
     int st;
+    s->undo_before = -1;
     if (tube) {
         const double tx = s->cov[i].ev_tx;
         const rc_vec3 dXi = s->cov[i].ev_dx;
@@ -841,14 +846,16 @@ int eng_undo_conflict(rc_sim *s, int32_t i, int32_t bp, double T, int tube)
         if ((st = rollback(s, w, k, T, tx, 0, 0)) != 0 ||
             (st = rollback(s, w, k, T, tx, 1, 0)) != 0)
             return st;
-        return rollback(s, w, k, T, tx, 0, 1);
+        return s->undo_before == w ? rollback(s, w, k, T, tx, 0, 1) : 0;
     }
     const int later = s->cov[bp].t_k > s->cov[i].t_k;
     const int32_t w0 = later ? bp : i, w1 = later ? i : bp;
     if ((st = rollback(s, w0, w1, T, INFINITY, 0, 0)) != 0 ||
         (st = rollback(s, w1, w0, T, INFINITY, 0, 0)) != 0 ||
-        (st = rollback(s, w0, w1, T, INFINITY, 1, 0)) != 0 ||
-        (st = rollback(s, w0, w1, T, INFINITY, 0, 1)) != 0)
+        (st = rollback(s, w0, w1, T, INFINITY, 1, 0)) != 0)
         return st;
-    return rollback(s, w1, w0, T, INFINITY, 0, 1);
+    const int32_t wd = s->undo_before;
+    return wd == w0 ? rollback(s, w0, w1, T, INFINITY, 0, 1)
+         : wd == w1 ? rollback(s, w1, w0, T, INFINITY, 0, 1)
+                    : 0;
 }
