@@ -345,6 +345,9 @@ typedef struct eng_books {
     /* the groups with a cycle of contacts undone (their root's record holds the contact
      * beyond a tree: engine/undo.c; read by the tests) */
     uint64_t cycle_rollbacks;
+    /* the chains whose ball and partner were in contact in them already, solved again
+     * with no new contact (engine/undo.c; read by the tests) */
+    uint64_t rejoins;
     /* progress: the time of the last event and how many events in a row came at it; when
      * that count passes eng_stall_limit the run stops (RC_ESTALL), naming the event's
      * balls (caller's index; a wall w as -1 - w; -2^62 none) */
@@ -352,7 +355,7 @@ typedef struct eng_books {
     uint64_t still_count;
     int64_t stall_ball, stall_partner;
 } eng_books;
-_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 24 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 2 + 2 + 9),
+_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 24 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 2 + 2 + 10),
                "no padding in the bookkeeping");
 
 struct rc_sim {

@@ -122,6 +122,7 @@ typedef struct uchain {
     size_t ord[UNDO_NG];
     int two; /* a chain of two the earlier rule took (one member's later collision, k
                 and walls outside it, no other ball shared): counted apart */
+    int again; /* w and k already in contact in one of the collisions */
 } uchain;
 
 static int same_coll(const eng_undo *a, const eng_undo *b)
@@ -137,9 +138,11 @@ static int same_coll(const eng_undo *a, const eng_undo *b)
  * Undone latest first, every ball goes back to its line before the earliest (a ball's
  * two records bound the depth: a member that has collided twice since, or whose later
  * collision left no record, stops it). The set takes at most one wall contact (its share
- * is taken back for one wall), no pair of balls in contact twice, nor w and k in contact
- * already (a second contact of one pair is not a contact the model has), and with k no
- * more than ENG_UNDO_NMAX balls; k may be in it (then undone too, and w's contact with
+ * is taken back for one wall), no pair of balls in contact twice (a second contact of one
+ * pair is not a contact the model has), and with k no more than ENG_UNDO_NMAX balls. If
+ * w and k are already in contact in it (C->again), their meeting again is no new contact:
+ * the set's own contacts are solved together, the later collision's impulses with the
+ * earlier one's, instead of adding w-k; k may be in it (then undone too, and w's contact with
  * it solved with the rest). deep: the chain starts at w's previous collision instead (its
  * record undp), so that w's last one is the later collision of one of its members, w
  * itself, and is undone first -- for a contact that lies before both of w's kinks. 1 and
@@ -149,6 +152,7 @@ static int chain_set(const rc_sim *s, int32_t w, int32_t k, int deep, uchain *C)
     const eng_undo *u = deep ? &s->undp[w] : &s->und[w];
     if (u->partner == ENG_NONE || u->nm == 0 || u->nm > ENG_UNDO_NMAX)
         return 0;
+    C->again = 0;
     C->ng = 1;
     C->key[0] = u;
     C->nb = 0;
@@ -193,7 +197,7 @@ static int chain_set(const rc_sim *s, int32_t w, int32_t k, int deep, uchain *C)
             } else if (q >= 0) {
                 const int32_t c = (int32_t)s->slot[q];
                 if ((b == w && c == k) || (b == k && c == w))
-                    return 0;
+                    C->again = 1;
                 for (size_t e = 0; e < np; e++)
                     if ((pa[e] == b && pb[e] == c) || (pa[e] == c && pb[e] == b))
                         return 0;
@@ -662,6 +666,10 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
         for (size_t m = 0; m < G[0].nm && found; m++)
             if (G[0].sl[m] == w)
                 found = !eng_glue_side(&G[0].g[m], &G[0].u[m], s->b[w].v, t2, dX2);
+    } else if (chain && C.again) {
+        found = 1; /* (no new contact: the collisions' own, solved together) */
+        t2 = 0.0;
+        dX2 = n2 = rc_v3(0, 0, 0);
     } else {
         const double t0 = t_first - (s->b[w].r + s->b[k].r) * s->inv_c;
         const int pst = eng_pair_contact(s, w, k, t0, &t2, &dX2, &n2);
@@ -682,6 +690,7 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
     s->bk.chain_rollbacks += chain;
     s->bk.wide_chains += chain && !C.two;
     s->bk.deep_rollbacks += deep;
+    s->bk.rejoins += chain && C.again;
     /* (a group with a cycle: as many ball contacts as members) */
     for (size_t g = 0; g < ng; g++) {
         size_t nb = 0;
@@ -796,7 +805,7 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
         s->grp_con[nc - 1].t = con[c].t;
         s->grp_con[nc - 1].x = con[c].x;
     }
-    {
+    if (!(chain && C.again)) {
         const eng_ball *bw = &s->b[w];
         if (eng_add_contact(s, &nc, mw, mk, n2) != RC_OK)
             return RC_ENOMEM;

@@ -487,6 +487,75 @@ static void test_cycle_scene(void)
     rc_sim_free(&s);
 }
 
+/* (a') A ball and a partner of its earlier collision meeting again, in a scene of 11
+ * balls (the 3-D periodic gas of test_chain_scene, seed 3: its first such undo, at t =
+ * 42.19, with the balls within 3 of ball w then, cut at t = 41.77 where no kink of theirs lies
+ * ahead): two balls collide (in G), one of them collides again soon after (L), and the
+ * two meet again. The chain that undoes L and then G holds their contact already, and a second contact of one pair is not one the model has: the code
+ * before refused it and left the conflict to the overlap policy (1 decision in this
+ * scene). Now G's and L's contacts are solved together, with no new contact -- the later
+ * collision's impulses with the earlier one's, as for contacts simultaneous along w's
+ * tube -- no decision, energy and momentum to 1e-12 relative, rest masses to 1e-13. */
+static void test_rejoin_scene(void)
+{
+    const rc_sim_def d = chain_gas_def();
+    const rc_sim_ball b0[11] = {
+        {.x = {22.450488480290158, 14.268552020928887, 21.761646511995355},
+         .p = {0.070352050314132275, 0.072610018356828274, -0.031152844963977702},
+         .r = 0.5, .m = 0.125, .tau = 34.514180964026117, .tau_last = 28.061985279404794,
+         .collided = 1},
+        {.x = {24.106490298507708, 14.908161890697979, 23.471961781332848},
+         .p = {0.078790151354854635, 0.024536527995021686, -0.13964751312784054},
+         .r = 0.5, .m = 0.125, .tau = 33.398648204392536, .tau_last = 32.820286663474079,
+         .collided = 1},
+        {.x = {23.024181839201514, 15.095940545752001, 21.856155183397597},
+         .p = {-0.0099026049977462977, -0.0053008269731850549, 0.094050910953751538},
+         .r = 0.5, .m = 0.125, .tau = 36.266287253564585, .tau_last = 30.447824933306425,
+         .collided = 1},
+        {.x = {23.614140960305878, 15.390877573988639, 22.615507609841476},
+         .p = {-0.018507396307263231, -0.01428814626969915, -0.005505780600848215},
+         .r = 0.5, .m = 0.125, .tau = 37.766402903723247, .tau_last = 34.648574599344514,
+         .collided = 1},
+        {.x = {22.764277514670471, 13.473518781506563, 22.987737054876515},
+         .p = {0.04496731394249346, 0.077666069305317609, -0.027063813035715239},
+         .r = 0.5, .m = 0.125, .tau = 34.713962154568961, .tau_last = 32.107930534743751,
+         .collided = 1},
+        {.x = {23.704176917244979, 13.7767929946544, 19.506091698784726},
+         .p = {0.012839382792807802, 0.13108045380697059, -0.030688898379113844},
+         .r = 0.5, .m = 0.125, .tau = 34.275611977251735, .tau_last = 30.189401281651627,
+         .collided = 1},
+        {.x = {21.870671524592051, 13.690388533114254, 20.157259035457088},
+         .p = {0.012086213546924553, -0.0040143290849107213, 0.050135149045320904},
+         .r = 0.5, .m = 0.125, .tau = 35.392335533539992, .tau_last = 27.937021307086447,
+         .collided = 1},
+        {.x = {20.66218155075876, 15.828729753926815, 21.996264987823754},
+         .p = {-0.083454256638460372, -0.054853639291250131, -0.034872306746747066},
+         .r = 0.5, .m = 0.125, .tau = 37.06906224503733, .tau_last = 36.30171955162222,
+         .collided = 1},
+        {.x = {22.259758297387098, 15.265805090306831, 23.312243674774503},
+         .p = {0.10986013462047314, 0.048822755538660875, -0.023432667795824254},
+         .r = 0.5, .m = 0.125, .tau = 34.078809582973498, .tau_last = 30.233125750795327,
+         .collided = 1},
+        {.x = {23.960048836016846, 13.014072998842916, 21.098828490212124},
+         .p = {-0.039372957027230059, 0.019939375715504744, 0.021298386972929517},
+         .r = 0.5, .m = 0.125, .tau = 37.57238603348835, .tau_last = 36.805678043936595,
+         .collided = 1},
+        {.x = {19.896239377871179, 14.102179760012117, 22.910278093277078},
+         .p = {0.018287893021344676, -0.012571746689056156, 0.024086849644469593},
+         .r = 0.5, .m = 0.125, .tau = 38.391824254984506, .tau_last = 34.244765778546949,
+         .collided = 1},
+    };
+    rc_sim_diag d0, d1;
+    rc_sim *s = scene_run(&d, 41.77, 11, b0, 42.69, &d0, &d1);
+    if (!s)
+        return;
+    ENSURE_MSG(d1.overlaps == 0 && s->bk.rejoins == 1,
+               "overlaps %llu rollbacks %llu rejoins %llu", (unsigned long long)d1.overlaps,
+               (unsigned long long)d1.rollbacks, (unsigned long long)s->bk.rejoins);
+    ENSURE(d1.max_group >= 3); /* (G's and L's contacts together) */
+    rc_sim_free(&s);
+}
+
 /* (a') A contact the frame (pair's ZMF, stored lines) calls approaching while the law
  * (velocities along the normal) calls parting -- seen with a ball stored on its outgoing
  * line before its kink -- once made a collision that changed nothing and came up again at
@@ -1003,6 +1072,7 @@ int main(void)
     RUN_TEST(test_wide_chain_scene);
     RUN_TEST(test_deep_scene);
     RUN_TEST(test_cycle_scene);
+    RUN_TEST(test_rejoin_scene);
     RUN_TEST(test_cluster);
     RUN_TEST(test_undo_wall);
     RC_TEST_MAIN_END();
