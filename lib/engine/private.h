@@ -70,7 +70,7 @@ _Static_assert(sizeof(eng_cov) == 64, "one cache line per record");
  * collision's contacts form a tree over its members: each member but the first holds its
  * contact with the member it joined (its parent), the first its contact with a wall if
  * there is one. Balls by their caller's index, which renumbering does not change. */
-#define ENG_UNDO_NMAX 6 /* members of a collision that can be undone (bounds the work) */
+#define ENG_UNDO_NMAX 8 /* members of a collision that can be undone (bounds the work) */
 #define ENG_ROOT (INT32_MIN + 1) /* partner: the first member, without a wall contact */
 typedef struct eng_undo {
     rc_particle in;     /* the ball's state before */
