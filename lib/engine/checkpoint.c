@@ -236,7 +236,7 @@ static int undo_ok(const rc_sim *s, size_t k, const eng_undo *u)
         if (!(u->nm >= 1 && u->nm <= ENG_UNDO_NMAX) ||
             !(u->kind == RC_SIM_EV_BALL || u->kind == RC_SIM_EV_WALL ||
               u->kind == RC_SIM_EV_MULTI) ||
-            u->npol > 2 * ENG_UNDO_NMAX) /* (contacts of a tree of nm, one wall) */
+            u->npol > 2 * ENG_UNDO_NMAX) /* (a tree of nm and a wall, or a cycle) */
             return 0;
         for (uint32_t m = 0; m < u->nm; m++) {
             if (!(u->mem[m] >= 0 && (size_t)u->mem[m] < s->n))

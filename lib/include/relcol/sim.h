@@ -236,11 +236,13 @@ typedef struct rc_sim_diag {
      * rollbacks: contacts before a ball's last kink along its tube -- predicted on the
      * incoming side of its last H, an overlap the frame reports, or a new kink that would
      * come before the last -- where that kink's collision was a single contact of the
-     * model or a group an earlier undo solved (up to six balls), none of whose balls
-     * has collided since: the collision is undone (its books too; both balls' where the
-     * contact lies before both kinks) and its contacts and the new one are solved
-     * together by the group rule, each ball's kink on its own worldline
-     * (papers/shape-change.md, sections 7 and 8). Otherwise:
+     * model or a group an earlier undo solved (up to eight balls), none of whose balls
+     * has collided since, or once since (a chain: those later collisions undone first):
+     * the collision is undone (its books too; both balls' where the contact lies before
+     * both kinks, the ball's two last ones where it lies before both of those) and its
+     * contacts and the new one are solved together by the group rule -- without a new
+     * one where the two balls were in contact in the chain already -- each ball's kink
+     * on its own worldline (papers/shape-change.md, sections 7 and 8). Otherwise:
      * tube_conflicts: predicted contacts on the incoming side of a ball's last H (with
      * the incoming piece of its glued tube, which the table-time schedule cannot order),
      * resolved by the overlap policy, counted in overlaps too (a wall's as kind [1]);
