@@ -543,6 +543,62 @@ int eng_solve_at_events(rc_sim *s, size_t nm, size_t nc, const eng_pend_snap *ps
     return 1;
 }
 
+/* The members' records once their collisions are undone. A ball with one collision
+ * undone gets back the record of the one before it (X, its previous record), which the
+ * group solved next shifts back again: without this, X's record was cleared with the
+ * undone one's and lost. X's records, in each member of X, count the ball's collisions
+ * after X by its counter, which the undone collision advanced and the group solved next
+ * advances again (counters only grow: events predicted with a counter must not become
+ * valid again); so X's counter for the ball goes up by one, and after the group the ball
+ * reads as having collided once since X, as it has. A ball with two collisions undone (a
+ * chain's) has no record of the one before them; its records are cleared. */
+static void keep_previous(rc_sim *s, const ugroup *G, size_t ng)
+{
+    int32_t once[2 * ENG_UNDO_NMAX];
+    size_t no = 0;
+    eng_undo *bump[4 * ENG_UNDO_NMAX * ENG_UNDO_NMAX];
+    size_t bq[4 * ENG_UNDO_NMAX * ENG_UNDO_NMAX], nb = 0;
+    for (size_t g = 0; g < ng; g++)
+        for (size_t m = 0; m < G[g].nm; m++) {
+            const int32_t b = G[g].sl[m];
+            size_t times = 0;
+            for (size_t h = 0; h < ng; h++)
+                times += in_list(G[h].sl, G[h].nm, b);
+            const eng_undo *x = &s->undp[b];
+            if (times != 1 || x->partner == ENG_NONE || x->nm == 0 || x->nm > ENG_UNDO_NMAX)
+                continue;
+            once[no++] = b;
+            /* X's records in its members (one slot each), found before any is changed */
+            for (size_t q = 0; q < x->nm; q++) {
+                const int32_t xb = (int32_t)s->slot[x->mem[q]];
+                eng_undo *r[2] = {&s->und[xb], &s->undp[xb]};
+                for (int j = 0; j < 2; j++) {
+                    if (!same_coll(r[j], x))
+                        continue;
+                    for (size_t e = 0; e < r[j]->nm; e++)
+                        if (r[j]->mem[e] == (int32_t)s->id[b] && nb < sizeof bq / sizeof *bq) {
+                            bump[nb] = r[j];
+                            bq[nb++] = e;
+                        }
+                }
+            }
+        }
+    for (size_t i = 0; i < nb; i++)
+        bump[i]->mcnt[bq[i]]++;
+    for (size_t g = 0; g < ng; g++)
+        for (size_t m = 0; m < G[g].nm; m++) {
+            const int32_t b = G[g].sl[m];
+            if (in_list(once, no, b)) {
+                s->und[b] = s->undp[b];
+                s->undp[b].partner = ENG_NONE;
+                s->undp[b].nm = 0;
+            } else {
+                s->und[b].partner = ENG_NONE;
+                s->und[b].nm = 0;
+            }
+        }
+}
+
 /* Ball w met ball k before its last kink along its tube (a tube conflict at the
  * prediction's X, table time tx; an overlap the frame reported: tx = inf). If w's last
  * collision can be undone (eng_undoable) -- and with both, k's too -- it is undone (its
@@ -766,11 +822,7 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
         if (!k_in && !wall)
             ps[nps++] = eng_pend_take(s, k);
     }
-    for (size_t g = 0; g < ng; g++)
-        for (size_t m = 0; m < G[g].nm; m++) {
-            s->und[G[g].sl[m]].partner = ENG_NONE;
-            s->und[G[g].sl[m]].nm = 0;
-        }
+    keep_previous(s, G, ng);
     /* the group at T (the undone members on their incoming lines) */
     size_t nm = 0, nc = 0;
     for (size_t g = 0; g < ng; g++)

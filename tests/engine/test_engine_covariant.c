@@ -556,6 +556,68 @@ static void test_rejoin_scene(void)
     rc_sim_free(&s);
 }
 
+/* (a'''''''') The records an undo keeps: a ball with one collision undone gets back the
+ * record of the one before (X), and X's counter for it goes up by one, so that after the
+ * group solved next the ball reads as having collided once since X. Checked after every
+ * event of the 3-D periodic gas at packing 0.1, rms 0.5c (N 2000, 60 000 events) for every
+ * ball the event moved: its last record counts it at its counter, its previous record one
+ * below; and after the events that undid collisions, the balls they moved with both
+ * records: 91 % (6023 of 6583). Before (the undone members' records cleared, the previous
+ * one lost with them; only the new partner and members without a record before kept two)
+ * 28 % (1828 of 6597): the bound is half. */
+static int rec_count(const rc_sim *s, const eng_undo *u, int32_t b, uint32_t *c)
+{
+    for (uint32_t q = 0; q < u->nm && q < ENG_UNDO_NMAX; q++)
+        if (u->mem[q] == (int32_t)s->id[b]) {
+            *c = u->mcnt[q];
+            return 1;
+        }
+    return 0;
+}
+
+static void test_records_kept(void)
+{
+    rc_sim *s = util_gas(util_covariant_periodic(3), 2000, 0.1, 0.5, 3);
+    if (!s)
+        return;
+    const size_t n = rc_sim_count(s);
+    uint32_t *c0 = malloc(n * sizeof *c0);
+    ENSURE(c0 != NULL);
+    size_t kept = 0, members = 0, bad = 0, checked = 0;
+    for (int ev = 0; c0 && ev < 60000; ev++) {
+        memcpy(c0, s->cnt, n * sizeof *c0);
+        const uint64_t rb = s->bk.rollbacks;
+        if (rc_sim_advance(s, INFINITY, 1) != RC_OK)
+            break;
+        for (size_t i = 0; i < n; i++) {
+            if (s->cnt[i] == c0[i])
+                continue;
+            const eng_undo *u = &s->und[i], *p = &s->undp[i];
+            const int hu = u->partner != ENG_NONE && u->nm > 0, hp = p->partner != ENG_NONE && p->nm > 0;
+            uint32_t c;
+            if (hu) {
+                checked++;
+                bad += !rec_count(s, u, (int32_t)i, &c) || c != s->cnt[i];
+            }
+            if (hp) {
+                checked++;
+                bad += !rec_count(s, p, (int32_t)i, &c) || c + 1u != s->cnt[i];
+            }
+            if (s->bk.rollbacks > rb) {
+                members++;
+                kept += hu && hp;
+            }
+        }
+    }
+    ENSURE_MSG(bad == 0, "%zu of %zu records count their ball wrongly", bad, checked);
+    ENSURE_MSG(members > 0 && 2 * kept > members,
+               "after undos: %zu of %zu members kept both records", kept, members);
+    printf("  records checked %zu; after undos %zu of %zu members kept both records\n", checked,
+           kept, members);
+    free(c0);
+    rc_sim_free(&s);
+}
+
 /* (a') A contact the frame (pair's ZMF, stored lines) calls approaching while the law
  * (velocities along the normal) calls parting -- seen with a ball stored on its outgoing
  * line before its kink -- once made a collision that changed nothing and came up again at
@@ -1073,6 +1135,7 @@ int main(void)
     RUN_TEST(test_deep_scene);
     RUN_TEST(test_cycle_scene);
     RUN_TEST(test_rejoin_scene);
+    RUN_TEST(test_records_kept);
     RUN_TEST(test_cluster);
     RUN_TEST(test_undo_wall);
     RC_TEST_MAIN_END();
