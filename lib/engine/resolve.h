@@ -125,12 +125,18 @@ void eng_finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int kind
 /* The walls' shares of the momentum p0 - p1 taken in an event (contacts 0 .. nc). */
 void eng_account_walls(rc_sim *s, size_t nc, rc_vec3 p0, rc_vec3 p1, const double *J);
 
-/* engine/undo.c */
+/* engine/records.c: the records a single contact (eng_write_undo) and a group solved at
+ * its members' events (eng_write_group) leave for a later undo */
 void eng_write_undo(rc_sim *s, size_t nm, int32_t bp, int record, int policy,
                     const rc_particle *P,
                     const rc_vec3 *vold, const eng_clock *cat, const eng_cov *gat,
                     const rc_glue *uat, const double *tx, const rc_vec3 *dX,
                     const int *kinked, int tc);
+void eng_write_group(rc_sim *s, size_t nm, size_t nc, const rc_particle *B, const eng_cov *gat,
+                     const rc_glue *uat, const double *tau0, const int *kinked, uint32_t ntc,
+                     uint32_t npol);
+
+/* engine/undo.c */
 int eng_undoable(const rc_sim *s, int32_t w, int32_t k);
 int eng_rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx);
 /* ball i's shape met wall (code) at T on the incoming side of its hyperplane (tx: the
