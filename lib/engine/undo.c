@@ -659,7 +659,6 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
         if (!k_in && !wall)
             ps[nps++] = eng_pend_take(s, k);
     }
-    keep_previous(s, G, ng);
     /* the group at T (the undone members on their incoming lines) */
     size_t nm = 0, nc = 0;
     for (size_t g = 0; g < ng; g++)
@@ -701,6 +700,8 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
         s->grp_con[nc - 1].t = t2;
         s->grp_con[nc - 1].x = rc_v3_add(rc_v3_axpy(bw->x, t2 - bw->t, bw->v), dX2);
     }
+    /* (only now: the wall's share above reads the undone records) */
+    keep_previous(s, G, ng);
     return eng_solve_at_events(s, nm, nc, ps, nps, 0, npol);
 }
 
