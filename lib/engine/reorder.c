@@ -23,15 +23,6 @@ typedef struct carry_set {
     eng_pend p;
 } carry_set;
 
-/* *slot and *cur exchanged (size bytes, at most a carry_set's member) */
-static void swap_bytes(void *slot, void *cur, size_t size)
-{
-    unsigned char t[sizeof(carry_set)];
-    memcpy(t, slot, size);
-    memcpy(slot, cur, size);
-    memcpy(cur, t, size);
-}
-
 /* ball i's elements into c */
 static void take(const rc_sim *s, size_t i, carry_set *c)
 {
@@ -53,24 +44,45 @@ static void take(const rc_sim *s, size_t i, carry_set *c)
     }
 }
 
-/* c put at slot `to`, and what was there into c */
-static void swap_in(rc_sim *s, size_t to, carry_set *c)
+/* c's elements put at slot `to` */
+static void put(rc_sim *s, size_t to, const carry_set *c)
 {
-    swap_bytes(&s->b[to], &c->b, sizeof c->b);
-    swap_bytes(&s->a[to], &c->a, sizeof c->a);
-    swap_bytes(&s->clk[to], &c->c, sizeof c->c);
-    swap_bytes(&s->id[to], &c->id, sizeof c->id);
-    swap_bytes(&s->cnt[to], &c->cnt, sizeof c->cnt);
+    s->b[to] = c->b;
+    s->a[to] = c->a;
+    s->clk[to] = c->c;
+    s->id[to] = c->id;
+    s->cnt[to] = c->cnt;
     if (s->ev_n)
-        swap_bytes(&s->ev_n[to], &c->n, sizeof c->n);
+        s->ev_n[to] = c->n;
     if (s->img)
-        swap_bytes(s->img + 3 * to, c->img, sizeof c->img);
+        memcpy(s->img + 3 * to, c->img, sizeof c->img);
     if (s->cov) {
-        swap_bytes(&s->cov[to], &c->g, sizeof c->g);
-        swap_bytes(&s->glu[to], &c->u, sizeof c->u);
-        swap_bytes(&s->und[to], &c->z, sizeof c->z);
-        swap_bytes(&s->undp[to], &c->zp, sizeof c->zp);
-        swap_bytes(&s->pend[to], &c->p, sizeof c->p);
+        s->cov[to] = c->g;
+        s->glu[to] = c->u;
+        s->und[to] = c->z;
+        s->undp[to] = c->zp;
+        s->pend[to] = c->p;
+    }
+}
+
+/* slot `from`'s elements copied to slot `to` */
+static void move(rc_sim *s, size_t to, size_t from)
+{
+    s->b[to] = s->b[from];
+    s->a[to] = s->a[from];
+    s->clk[to] = s->clk[from];
+    s->id[to] = s->id[from];
+    s->cnt[to] = s->cnt[from];
+    if (s->ev_n)
+        s->ev_n[to] = s->ev_n[from];
+    if (s->img)
+        memcpy(s->img + 3 * to, s->img + 3 * from, 3 * sizeof *s->img);
+    if (s->cov) {
+        s->cov[to] = s->cov[from];
+        s->glu[to] = s->glu[from];
+        s->und[to] = s->und[from];
+        s->undp[to] = s->undp[from];
+        s->pend[to] = s->pend[from];
     }
 }
 
@@ -88,37 +100,47 @@ void eng_reorder(rc_sim *s)
     const size_t n = s->n;
     uint32_t *np = malloc(n * sizeof *np);
     int32_t *cell = malloc(n * sizeof *cell);
+    uint32_t *inv = malloc(n * sizeof *inv);
     unsigned char *done = calloc(n, 1);
     if (cell)
         for (size_t i = 0; i < n; i++)
             cell[i] = s->a[i].cell;
-    if (!np || !cell || !done || eng_cells_number(&s->g, cell, n, np) != RC_OK) {
+    if (!np || !cell || !inv || !done || eng_cells_number(&s->g, cell, n, np) != RC_OK) {
         free(np); /* no memory: simply keep the old order */
+        free(inv);
         free(cell);
         free(done);
         return;
     }
     free(cell);
-    /* references first, then move the elements along the cycles of the permutation */
+    /* references first, then the elements along the cycles of the permutation, each
+     * cycle walked backwards (slot o gets the element of slot inv[o]): one copy of each
+     * element, where exchanging them along it forwards took four (a cycle's first element
+     * is the only one held aside). With the per_ball frames' records, 1.7 kB a ball, the
+     * exchanges made reorders 7 % of a covariant gas's time (perf: 3-D, packing 0.1,
+     * N 1e4, rms 0.5c), this walk 4 %. The permutation, and so every bit of the run, is
+     * the one the exchanges made. */
     for (size_t i = 0; i < n; i++) {
         if (s->a[i].ev_partner >= 0)
             s->a[i].ev_partner = (int32_t)np[s->a[i].ev_partner];
         s->slot[i] = np[s->slot[i]];
     }
+    for (size_t i = 0; i < n; i++)
+        inv[np[i]] = (uint32_t)i;
     for (size_t i = 0; i < n; i++) {
         if (done[i])
             continue;
-        /* the element carried along the cycle, one per per-ball array */
         carry_set c;
         take(s, i, &c);
         size_t o = i;
-        do {
-            const size_t to = np[o];
-            swap_in(s, to, &c);
+        for (size_t from = inv[o]; from != i; o = from, from = inv[o]) {
+            move(s, o, from);
             done[o] = 1;
-            o = to;
-        } while (o != i);
+        }
+        put(s, o, &c);
+        done[o] = 1;
     }
+    free(inv);
     free(done);
     free(np);
     eng_cells_clear(&s->g);
