@@ -3,12 +3,12 @@
 # libraries loaded side by side, alternating chunks on the same gas), so that the drift of
 # a shared machine between minutes does not enter the ratio.
 #
-#   scripts/ab-revs.sh REV_A REV_B [N] [dim] [rounds] [c] [frame]
+#   scripts/ab-revs.sh REV_A REV_B [N] [dim] [rounds] [c] [frame] [packing]
 #
 # REV_A, REV_B: git revisions, each built (release) in a temporary worktree that is removed
 # afterwards; "." is this checkout as it is, uncommitted changes included (its build-rel/).
 # The rest goes to ab_engine (tests/engine/ab_engine.c): N (10000), dim (3), rounds (10),
-# c (inf), frame (default). ab_engine runs RUNS times (default 3), A and B swapping places
+# c (inf), frame (default), packing (0.45 in 3-D, 0.7 in 2-D). ab_engine runs RUNS times (default 3), A and B swapping places
 # each time; printed are each run and the median of B/A over the runs. Why repeat: a run's
 # two gases each sit in memory their own way, which biases one run by up to ~5 % (one
 # library against itself: 0.956, 0.991, 1.030 at N = 1e5; 1.012, 0.954, 0.990 at 1e4).
@@ -17,7 +17,7 @@
 # Example: RUNS=5 scripts/ab-revs.sh HEAD~1 HEAD 100000 3 10
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
-usage="usage: scripts/ab-revs.sh REV_A REV_B [N] [dim] [rounds] [c] [frame]"
+usage="usage: scripts/ab-revs.sh REV_A REV_B [N] [dim] [rounds] [c] [frame] [packing]"
 rev_a=${1:?$usage}
 rev_b=${2:?$usage}
 shift 2

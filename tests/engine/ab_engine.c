@@ -2,9 +2,11 @@
  * same gas: a speed ratio that the machine's drift between minutes (tens of per cent on a
  * shared machine) does not enter, unlike two separate runs. Each library is loaded into a
  * namespace of its own (dlmopen), so two builds with the same symbols coexist.
- *   ab_engine LIB_A LIB_B [N] [dim] [rounds] [c] [frame]
+ *   ab_engine LIB_A LIB_B [N] [dim] [rounds] [c] [frame] [packing]
  * N (10000), dim 2 or 3 (3), rounds of alternation (10), c (inf; else the rms speed is
- * 0.5 c), frame (the engine's default, or a contact frame's name: table, zmf). Both gases
+ * 0.5 c), frame (the engine's default, or a contact frame's name: table, zmf, covariant),
+ * packing (bench_engine's: 0.45 in 3-D, 0.7 in 2-D; the covariant frame's glued tube is
+ * defined in dilute gases, 0.1 say, and undoes a third of its collisions at 0.45). Both gases
  * are built alike and melted (7.5 events a ball; 3 with a frame) before timing; each round
  * times a chunk of events on both, the first one alternating. Prints each library's
  * collisions per CPU second and B/A. scripts/ab-revs.sh builds two revisions for it.
@@ -74,9 +76,9 @@ static lib load(const char *path)
 }
 
 /* The gas of bench_engine (radius 1/2, seed 2024), melted; exits with a message on failure. */
-static rc_sim *make_gas(const lib *l, int dim, size_t n, double c, const char *frame)
+static rc_sim *make_gas(const lib *l, int dim, size_t n, double c, const char *frame,
+                        double packing)
 {
-    const double packing = dim == 3 ? 0.45 : 0.70;
     rc_sim_gas_def g = {dim, n, 0.5, packing, isinf(c) ? 1.0 : 0.5 * c, c, 1.0, 2024};
     rc_sim_ball *b = calloc(n, sizeof *b);
     rc_sim_def d = l->def_default();
@@ -119,8 +121,8 @@ static double arg_number(const char *what, const char *text, double lo, double h
 
 int main(int argc, char **argv)
 {
-    if (argc < 3 || argc > 8) {
-        fprintf(stderr, "usage: ab_engine LIB_A LIB_B [N] [dim] [rounds] [c] [frame]\n");
+    if (argc < 3 || argc > 9) {
+        fprintf(stderr, "usage: ab_engine LIB_A LIB_B [N] [dim] [rounds] [c] [frame] [packing]\n");
         return 2;
     }
     const size_t n = argc > 3 ? (size_t)arg_number("N", argv[3], 2, 1e8) : 10000;
@@ -136,8 +138,18 @@ int main(int argc, char **argv)
         }
     }
     const char *frame = argc > 7 ? argv[7] : NULL;
+    double packing = dim == 3 ? 0.45 : 0.70;
+    if (argc > 8) {
+        char *end;
+        packing = strtod(argv[8], &end);
+        if (end == argv[8] || *end || !(packing > 0.0 && packing < (dim == 3 ? 0.74 : 0.9))) {
+            fprintf(stderr, "ab_engine: packing '%s': not a number in (0, %s)\n", argv[8],
+                    dim == 3 ? "0.74" : "0.9");
+            return 2;
+        }
+    }
     lib l[2] = {load(argv[1]), load(argv[2])};
-    rc_sim *s[2] = {make_gas(&l[0], dim, n, c, frame), make_gas(&l[1], dim, n, c, frame)};
+    rc_sim *s[2] = {make_gas(&l[0], dim, n, c, frame, packing), make_gas(&l[1], dim, n, c, frame, packing)};
     /* chunks of ~0.1-0.5 s: many alternations, each long enough to leave the other's
      * cache footprint behind */
     const uint64_t chunk = frame ? 20000 : (n < 50000 ? 100000 : 200000);
