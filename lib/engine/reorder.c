@@ -116,10 +116,9 @@ void eng_reorder(rc_sim *s)
     /* references first, then the elements along the cycles of the permutation, each
      * cycle walked backwards (slot o gets the element of slot inv[o]): one copy of each
      * element, where exchanging them along it forwards took four (a cycle's first element
-     * is the only one held aside). With the per_ball frames' records, 1.7 kB a ball, the
-     * exchanges made reorders 7 % of a covariant gas's time (perf: 3-D, packing 0.1,
-     * N 1e4, rms 0.5c), this walk 4 %. The permutation, and so every bit of the run, is
-     * the one the exchanges made. */
+     * is the only one held aside): the per_ball frames' records, kilobytes a ball, made
+     * those exchanges a visible part of a covariant gas's time. The permutation, and so
+     * every bit of the run, is the one the exchanges made. */
     for (size_t i = 0; i < n; i++) {
         if (s->a[i].ev_partner >= 0)
             s->a[i].ev_partner = (int32_t)np[s->a[i].ev_partner];

@@ -6,7 +6,7 @@
  * N (10000), dim 2 or 3 (3), rounds of alternation (10), c (inf; else the rms speed is
  * 0.5 c), frame (the engine's default, or a contact frame's name: table, zmf, covariant),
  * packing (bench_engine's: 0.45 in 3-D, 0.7 in 2-D; the covariant frame's glued tube is
- * defined in dilute gases, 0.1 say, and undoes a third of its collisions at 0.45). Both gases
+ * defined in dilute gases, 0.1 say, where its undo and policy are rare). Both gases
  * are built alike and melted (7.5 events a ball; 3 with a frame) before timing; each round
  * times a chunk of events on both, the first one alternating. Prints each library's
  * collisions per CPU second and B/A. scripts/ab-revs.sh builds two revisions for it.

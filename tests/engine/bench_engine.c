@@ -167,8 +167,8 @@ int main(int argc, char **argv)
         }
         rc_sim_free(&cz);
         rc_sim_free(&cv);
-        /* and where the glued tube is defined (packing 0.1: about 0.3 % of collisions
-         * decided by the overlap policy, against a third at 0.45), covariant against zmf */
+        /* and where the glued tube is defined (packing 0.1, where the overlap policy
+         * decides few collisions; at 0.45 it decides many), covariant against zmf */
         rc_sim *dz = make(3, 10000, 0.1, 2.0, "zmf");
         rc_sim *dv = make(3, 10000, 0.1, 2.0, "covariant");
         if (dz && dv)
