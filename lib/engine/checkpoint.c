@@ -19,7 +19,7 @@
 #include "relcol/status.h"
 
 #define CK_MAGIC "relcolck"
-#define CK_VERSION 14u /* 2: the bookkeeping as one record (eng_books); 3: with pinned and the
+#define CK_VERSION 15u /* 2: the bookkeeping as one record (eng_books); 3: with pinned and the
                          transfer moments; 4: with the per_ball counters and hyperplanes;
                          5: with the per_ball undo records and rollbacks;
                          6: with the per_ball lines before kinks ahead (eng_pend);
@@ -35,7 +35,9 @@
                          and the count of those undone (cycle_rollbacks);
                          13: the count of chains solved again without a new
                          contact (rejoins);
-                         14: undo records of up to eight members */
+                         14: undo records of up to eight members;
+                         15: the count of undos of both balls' collisions with
+                         a chain (both_chains) */
 #define CK_ORDER 0x01020304u
 
 typedef struct ck_header {

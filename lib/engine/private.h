@@ -348,6 +348,9 @@ typedef struct eng_books {
     /* the chains whose ball and partner were in contact in them already, solved again
      * with no new contact (engine/undo.c; read by the tests) */
     uint64_t rejoins;
+    /* the undos of both balls' last collisions that took back a chain too: a member of
+     * either had collided since (engine/undo.c; read by the tests) */
+    uint64_t both_chains;
     /* progress: the time of the last event and how many events in a row came at it; when
      * that count passes eng_stall_limit the run stops (RC_ESTALL), naming the event's
      * balls (caller's index; a wall w as -1 - w; -2^62 none) */
@@ -355,7 +358,7 @@ typedef struct eng_books {
     uint64_t still_count;
     int64_t stall_ball, stall_partner;
 } eng_books;
-_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 24 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 2 + 2 + 10),
+_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 24 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 2 + 2 + 11),
                "no padding in the bookkeeping");
 
 struct rc_sim {

@@ -76,9 +76,12 @@ static int same_coll(const eng_undo *a, const eng_undo *b)
  * earlier one's, instead of adding w-k; k may be in it (then undone too, and w's contact with
  * it solved with the rest). deep: the chain starts at w's previous collision instead (its
  * record undp), so that w's last one is the later collision of one of its members, w
- * itself, and is undone first -- for a contact that lies before both of w's kinks. 1 and
- * the set if it applies, else 0. */
-static int chain_set(const rc_sim *s, int32_t w, int32_t k, int deep, uchain *C)
+ * itself, and is undone first -- for a contact that lies before both of w's kinks. both:
+ * k's last collision is in the set from the start too, for a contact on the incoming side
+ * of both balls' hyperplanes where either collision has members that collided since (the
+ * plain both-undo takes only collisions none of whose balls has). 1 and the set if it
+ * applies, else 0. */
+static int chain_set(const rc_sim *s, int32_t w, int32_t k, int deep, int both, uchain *C)
 {
     const eng_undo *u = deep ? &s->undp[w] : &s->und[w];
     if (u->partner == ENG_NONE || u->nm == 0 || u->nm > ENG_UNDO_NMAX)
@@ -86,6 +89,13 @@ static int chain_set(const rc_sim *s, int32_t w, int32_t k, int deep, uchain *C)
     C->again = 0;
     C->ng = 1;
     C->key[0] = u;
+    if (both) { /* (k's last collision too, unless it is w's) */
+        const eng_undo *uk = &s->und[k];
+        if (uk->partner == ENG_NONE || uk->nm == 0 || uk->nm > ENG_UNDO_NMAX)
+            return 0;
+        if (!same_coll(uk, u))
+            C->key[C->ng++] = uk;
+    }
     C->nb = 0;
     size_t walls = 0, np = 0, peeled = 0, walls_later = 0;
     int32_t pa[2 * ENG_UNDO_NMAX], pb[2 * ENG_UNDO_NMAX];
@@ -170,7 +180,7 @@ int eng_undoable(const rc_sim *s, int32_t w, int32_t k)
     if (n > 0)
         return !in_list(sl, n, k);
     uchain C;
-    return chain_set(s, w, k, 0, &C);
+    return chain_set(s, w, k, 0, 0, &C);
 }
 
 /* One collision being undone: its members, their states as they were (to put back if the
@@ -470,8 +480,12 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
     eng_undo keep[ENG_UNDO_NMAX];
     int32_t kb[ENG_UNDO_NMAX];
     size_t nk = 0;
-    if (deep || !(G[0].nm = undo_members(s, w, G[0].sl))) {
-        if (both || wall || !chain_set(s, w, k, deep, &C))
+    int plain = !deep && (G[0].nm = undo_members(s, w, G[0].sl)) > 0;
+    if (plain && both &&
+        (!(G[1].nm = undo_members(s, k, G[1].sl)) || in_list(G[1].sl, G[1].nm, w)))
+        plain = 0;
+    if (!plain) {
+        if (wall || !chain_set(s, w, k, deep, both, &C))
             return 0;
         chain = 1;
         ng = C.ng;
@@ -496,11 +510,8 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
     if (inner && (both || s->und[w].partner == (int32_t)s->id[k] ||
                   s->und[k].partner == (int32_t)s->id[w]))
         return 0;
-    if (both) {
-        if (!(G[1].nm = undo_members(s, k, G[1].sl)) || in_list(G[1].sl, G[1].nm, w))
-            return 0;
+    if (both && !chain)
         ng = 2;
-    }
     if (!chain && G[0].nm + (both ? G[1].nm : !inner && !wall) > ENG_UNDO_NMAX)
         return 0;
     const int k_in = chain ? in_list(C.ball, C.nb, k) : both || inner;
@@ -584,6 +595,7 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
     s->bk.wide_chains += chain && !C.two;
     s->bk.deep_rollbacks += deep;
     s->bk.rejoins += chain && C.again;
+    s->bk.both_chains += chain && both;
     /* (a group with a cycle: as many ball contacts as members) */
     for (size_t g = 0; g < ng; g++) {
         size_t nb = 0;

@@ -239,10 +239,11 @@ typedef struct rc_sim_diag {
      * model or a group an earlier undo solved (up to eight balls), none of whose balls
      * has collided since, or once since (a chain: those later collisions undone first):
      * the collision is undone (its books too; both balls' where the contact lies before
-     * both kinks, the ball's two last ones where it lies before both of those) and its
-     * contacts and the new one are solved together by the group rule -- without a new
-     * one where the two balls were in contact in the chain already -- each ball's kink
-     * on its own worldline (papers/shape-change.md, sections 7 and 8). Otherwise:
+     * both kinks, with either's chain, the ball's two last ones where it lies before
+     * both of those) and its contacts and the new one are solved together by the group
+     * rule -- without a new one where the two balls were in contact in the chain
+     * already -- each ball's kink on its own worldline (papers/shape-change.md, sections
+     * 7 and 8). Otherwise:
      * tube_conflicts: predicted contacts on the incoming side of a ball's last H (with
      * the incoming piece of its glued tube, which the table-time schedule cannot order),
      * resolved by the overlap policy, counted in overlaps too (a wall's as kind [1]);
