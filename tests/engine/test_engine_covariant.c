@@ -223,6 +223,19 @@ static rc_sim *scene_run(const rc_sim_def *d, double t0, size_t n, const rc_sim_
     return s;
 }
 
+/* A scene's verdict, then the engine freed: no overlap met (no collision left to the
+ * policy), the rule's counter `count` at exactly one, and a largest group of at least
+ * min_group contacts (the undone contacts and the new one solved together). */
+static void scene_verdict(rc_sim *s, const rc_sim_diag *d1, uint64_t count, const char *rule,
+                          size_t min_group)
+{
+    ENSURE_MSG(d1->overlaps == 0 && count == 1, "overlaps %llu rollbacks %llu %s %llu",
+               (unsigned long long)d1->overlaps, (unsigned long long)d1->rollbacks, rule,
+               (unsigned long long)count);
+    ENSURE(d1->max_group >= min_group);
+    rc_sim_free(&s);
+}
+
 /* (a''') A chain undone in a scene of four balls (cut from the 3-D periodic gas above at
  * packing 0.05, rms 0.5c, seed 3, 0.5 before its first chain undo, so the same collisions
  * happen): two balls collide (G0), one of them collides with a third (G1), then the
@@ -395,11 +408,9 @@ static void test_deep_scene(void)
     rc_sim *s = scene_run(&d, 40.07, 16, b0, 41.95, &d0, &d1);
     if (!s)
         return;
-    ENSURE_MSG(d1.overlaps == 0 && s->bk.deep_rollbacks == 1 && s->bk.chain_rollbacks >= 1,
-               "overlaps %llu rollbacks %llu deep %llu", (unsigned long long)d1.overlaps,
-               (unsigned long long)d1.rollbacks, (unsigned long long)s->bk.deep_rollbacks);
-    ENSURE(d1.max_group >= 3); /* (the contacts of Q, L and w-k together) */
-    rc_sim_free(&s);
+    ENSURE(s->bk.chain_rollbacks >= 1);
+    /* (the contacts of Q, L and w-k together) */
+    scene_verdict(s, &d1, s->bk.deep_rollbacks, "deep", 3);
 }
 
 /* (a) A group whose contacts close a cycle undone, in a scene of 15 balls (the 3-D
@@ -480,11 +491,8 @@ static void test_cycle_scene(void)
     rc_sim *s = scene_run(&d, 129.05, 15, b0, 129.89, &d0, &d1);
     if (!s)
         return;
-    ENSURE_MSG(d1.overlaps == 0 && s->bk.cycle_rollbacks == 1,
-               "overlaps %llu rollbacks %llu cycles undone %llu", (unsigned long long)d1.overlaps,
-               (unsigned long long)d1.rollbacks, (unsigned long long)s->bk.cycle_rollbacks);
-    ENSURE(d1.max_group >= 4); /* (the cycle's contacts and the new one) */
-    rc_sim_free(&s);
+    /* (the cycle's contacts and the new one together) */
+    scene_verdict(s, &d1, s->bk.cycle_rollbacks, "cycles undone", 4);
 }
 
 /* (a') A ball and a partner of its earlier collision meeting again, in a scene of 11
@@ -549,11 +557,8 @@ static void test_rejoin_scene(void)
     rc_sim *s = scene_run(&d, 41.77, 11, b0, 42.69, &d0, &d1);
     if (!s)
         return;
-    ENSURE_MSG(d1.overlaps == 0 && s->bk.rejoins == 1,
-               "overlaps %llu rollbacks %llu rejoins %llu", (unsigned long long)d1.overlaps,
-               (unsigned long long)d1.rollbacks, (unsigned long long)s->bk.rejoins);
-    ENSURE(d1.max_group >= 3); /* (G's and L's contacts together) */
-    rc_sim_free(&s);
+    /* (G's and L's contacts together) */
+    scene_verdict(s, &d1, s->bk.rejoins, "rejoins", 3);
 }
 
 /* (a) Both balls' last collisions undone, with a chain: a contact found on the incoming
@@ -593,11 +598,7 @@ static void test_both_chain_scene(void)
     rc_sim *s = scene_run(&d, 0.40, 6, b0, 1.26, &d0, &d1);
     if (!s)
         return;
-    ENSURE_MSG(d1.overlaps == 0 && s->bk.both_chains == 1,
-               "overlaps %llu rollbacks %llu both_chains %llu", (unsigned long long)d1.overlaps,
-               (unsigned long long)d1.rollbacks, (unsigned long long)s->bk.both_chains);
-    ENSURE(d1.max_group >= 5);
-    rc_sim_free(&s);
+    scene_verdict(s, &d1, s->bk.both_chains, "both-chains", 5);
 }
 
 /* (a'''''''') The records an undo keeps: a ball with one collision undone gets back the
