@@ -259,7 +259,9 @@ size_t rc_sim_bytes(const rc_sim *s)
                                sizeof *s->id + sizeof *s->slot +
                                sizeof *s->cnt + (s->ev_n ? sizeof *s->ev_n : 0) +
                                (s->img ? 3 * sizeof *s->img : 0) +
-                               (s->cov ? sizeof *s->cov + sizeof *s->glu + sizeof *s->pend : 0)) +
+                               (s->cov ? sizeof *s->cov + sizeof *s->glu + sizeof *s->pend +
+                                             sizeof *s->und + sizeof *s->undp
+                                       : 0)) +
            eng_queue_bytes(&s->q) + eng_slice_bytes(s) +
            s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot +
            s->grp_ball_cap * (sizeof *s->grp_ball + sizeof *s->grp_part) +

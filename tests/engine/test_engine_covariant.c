@@ -671,6 +671,24 @@ static void test_records_kept(void)
     rc_sim_free(&s);
 }
 
+/* (a) rc_sim_bytes counts what the covariant frame keeps per ball beyond the zmf frame:
+ * its hyperplane, glued tube, lines before kinks ahead and both undo records (the records,
+ * two thirds of it, were once left out). */
+static void test_bytes(void)
+{
+    const size_t n = 500;
+    rc_sim_def dz = util_covariant_periodic(3);
+    dz.frame = &rc_toi_frame_zmf;
+    rc_sim *c = util_gas(util_covariant_periodic(3), n, 0.1, 0.5, 3);
+    rc_sim *z = util_gas(dz, n, 0.1, 0.5, 3);
+    const size_t per = sizeof(eng_cov) + sizeof(rc_glue) + sizeof(eng_pend) + 2 * sizeof(eng_undo);
+    ENSURE_MSG(c && z && rc_sim_bytes(c) >= rc_sim_bytes(z) + n * per,
+               "covariant %zu B, zmf %zu B, records %zu B a ball", c ? rc_sim_bytes(c) : 0,
+               z ? rc_sim_bytes(z) : 0, per);
+    rc_sim_free(&c);
+    rc_sim_free(&z);
+}
+
 /* (a') A contact the frame (pair's ZMF, stored lines) calls approaching while the law
  * (velocities along the normal) calls parting -- seen with a ball stored on its outgoing
  * line before its kink -- once made a collision that changed nothing and came up again at
@@ -1190,6 +1208,7 @@ int main(void)
     RUN_TEST(test_rejoin_scene);
     RUN_TEST(test_both_chain_scene);
     RUN_TEST(test_records_kept);
+    RUN_TEST(test_bytes);
     RUN_TEST(test_cluster);
     RUN_TEST(test_undo_wall);
     RC_TEST_MAIN_END();
