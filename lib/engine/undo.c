@@ -10,12 +10,18 @@
 #include "resolve.h"
 #include "relcol/status.h"
 
+/* Does u hold a record (of a collision that can be undone, its members within the bound)? */
+static int has_record(const eng_undo *u)
+{
+    return u->partner != ENG_NONE && u->nm > 0 && u->nm <= ENG_UNDO_NMAX;
+}
+
 /* The members of ball w's last collision (their slots in sl[], in its books' order) if it
  * can be undone: it left a record and none of them has collided since; else 0. */
 static size_t undo_members(const rc_sim *s, int32_t w, int32_t *sl)
 {
     const eng_undo *u = &s->und[w];
-    if (u->partner == ENG_NONE || u->nm == 0 || u->nm > ENG_UNDO_NMAX)
+    if (!has_record(u))
         return 0;
     for (size_t m = 0; m < u->nm; m++) {
         const int32_t b = (int32_t)s->slot[u->mem[m]];
@@ -84,14 +90,14 @@ static int same_coll(const eng_undo *a, const eng_undo *b)
 static int chain_set(const rc_sim *s, int32_t w, int32_t k, int deep, int both, uchain *C)
 {
     const eng_undo *u = deep ? &s->undp[w] : &s->und[w];
-    if (u->partner == ENG_NONE || u->nm == 0 || u->nm > ENG_UNDO_NMAX)
+    if (!has_record(u))
         return 0;
     C->again = 0;
     C->ng = 1;
     C->key[0] = u;
     if (both) { /* (k's last collision too, unless it is w's) */
         const eng_undo *uk = &s->und[k];
-        if (uk->partner == ENG_NONE || uk->nm == 0 || uk->nm > ENG_UNDO_NMAX)
+        if (!has_record(uk))
             return 0;
         if (!same_coll(uk, u))
             C->key[C->ng++] = uk;
@@ -108,8 +114,7 @@ static int chain_set(const rc_sim *s, int32_t w, int32_t k, int deep, int both, 
             int later = -1;
             if (s->cnt[b] != cu->mcnt[m]) {
                 r = &s->undp[b];
-                if (s->cnt[b] != cu->mcnt[m] + 1u || v->partner == ENG_NONE || v->nm == 0 ||
-                    v->nm > ENG_UNDO_NMAX)
+                if (s->cnt[b] != cu->mcnt[m] + 1u || !has_record(v))
                     return 0;
                 size_t h = 0;
                 while (h < C->ng && !same_coll(C->key[h], v))
@@ -412,7 +417,7 @@ static void keep_previous(rc_sim *s, const ugroup *G, size_t ng)
             for (size_t h = 0; h < ng; h++)
                 times += in_list(G[h].sl, G[h].nm, b);
             const eng_undo *x = &s->undp[b];
-            if (times != 1 || x->partner == ENG_NONE || x->nm == 0 || x->nm > ENG_UNDO_NMAX)
+            if (times != 1 || !has_record(x))
                 continue;
             once[no++] = b;
             /* X's records in its members (one slot each), found before any is changed */
