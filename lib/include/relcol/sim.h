@@ -247,9 +247,14 @@ typedef struct rc_sim_diag {
      * tube_conflicts: predicted contacts on the incoming side of a ball's last H (with
      * the incoming piece of its glued tube, which the table-time schedule cannot order),
      * resolved by the overlap policy, counted in overlaps too (a wall's as kind [1]);
-     * one whose centres part there is left to separate. Where the straight cylinder of
-     * a ball's stored line overlaps or meets a neighbour inside the ball's window, its
-     * glued tube is asked instead (rc_glue_toi: first table time of contact).
+     * one whose pieces part there (a ball met on its incoming piece moving with its
+     * incoming velocity) is left to separate. Where the straight cylinder of a ball's
+     * stored line overlaps or meets a neighbour inside the ball's window, its glued tube
+     * is asked instead (rc_glue_toi: first table time of contact) -- for one ball in its
+     * window: with both balls inside theirs the straight cylinders answer, and a contact
+     * of the two glued tubes there can pass uncounted (papers/shape-change.md section 8:
+     * 9 overlaps in 24 audited 2-D elastic runs of 3000-4000 events, depth 4e-4 ..
+     * 0.012 r).
      * order_conflicts: kinks whose hyperplane crosses the ball's previous one inside it
      * (collisions less than a glue window apart, where the glued tube of the two is not
      * defined), not undone: counted; one that would come before the previous kink along
