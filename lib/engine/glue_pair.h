@@ -15,18 +15,28 @@
 #include "private.h"
 #include "relcol/status.h"
 
+/* per_ball frames: on which side of each ball's last hyperplane a contact event X lies,
+ * found t after tref: bit 0 X on bi's future side, bit 1 on bk's. y = X - (bi's centre at
+ * tref), dx = bk - bi at tref (nearest image). (The prediction's glue_valid: both; a tube
+ * conflict's pieces: which ball the incoming piece met is.) */
+static inline int glue_sides(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
+                             double tref, double t, rc_vec3 y)
+{
+    const double tx = tref + t;
+    const rc_vec3 dxi = rc_v3_axpy(y, -t, bi->v);
+    const rc_vec3 dxk = rc_v3_sub(y, rc_v3_axpy(dx, t, bk->v));
+    const eng_cov *ci = &s->cov[bi - s->b], *ck = &s->cov[bk - s->b];
+    return eng_glue_side(ci, &s->glu[bi - s->b], bi->v, tx, dxi) |
+           eng_glue_side(ck, &s->glu[bk - s->b], bk->v, tx, dxk) << 1;
+}
+
 /* per_ball frames: is the contact event X, found t after tref, on the future side of
  * both balls' last hyperplanes (eng_glue_side)? y = X - (bi's centre at tref), dx = bk -
  * bi at tref (nearest image). */
 static int glue_valid(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
                       double tref, double t, rc_vec3 y)
 {
-    const double tx = tref + t;
-    const rc_vec3 dxi = rc_v3_axpy(y, -t, bi->v);
-    const rc_vec3 dxk = rc_v3_sub(y, rc_v3_axpy(dx, t, bk->v));
-    const eng_cov *ci = &s->cov[bi - s->b], *ck = &s->cov[bk - s->b];
-    return eng_glue_side(ci, &s->glu[bi - s->b], bi->v, tx, dxi) &&
-           eng_glue_side(ck, &s->glu[bk - s->b], bk->v, tx, dxk);
+    return glue_sides(s, bi, bk, dx, tref, t, y) == 3;
 }
 
 /* per_ball frames: a ball whose kink lies ahead of now is stored at it, on its outgoing
