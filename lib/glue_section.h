@@ -158,4 +158,10 @@ static inline void rc_glue_section_plain(const rc_glue *g, const rc_toi_shape *s
     *m = rc_v3_scale(-1.0, rc_v3_axpy(e, ke, v));
 }
 
+/* min k.z over the intersection of two ellipsoids (z - m_i)^T A_i (z - m_i) <= 1, by
+ * its dual (toi_glue.c): INFINITY if the intersection is empty, NAN if a blend of the two
+ * is degenerate; *z the minimiser. rc_glue_toi's on H, and rc_glue_toi2's. */
+double rc_glue_lin_min2_(const rc_sym3 *A1, rc_vec3 m1, const rc_sym3 *A2, rc_vec3 m2, rc_vec3 k,
+                         rc_vec3 *z);
+
 #endif

@@ -110,8 +110,8 @@ static double dual_at(const rc_sym3 *A1, rc_vec3 b1, double c1, const rc_sym3 *A
 
 /* min k.z over the intersection of two ellipsoids {(z - m_i)^T A_i (z - m_i) <= 1}:
  * strong duality of the convex problem makes it the largest dual value. INFINITY if
- * the intersection is empty; *z the minimiser. */
-static double lin_min2(const rc_sym3 *A1, rc_vec3 m1, const rc_sym3 *A2, rc_vec3 m2, rc_vec3 k,
+ * the intersection is empty; *z the minimiser. (Also toi_glue_pair.c's, glue_section.h.) */
+double rc_glue_lin_min2_(const rc_sym3 *A1, rc_vec3 m1, const rc_sym3 *A2, rc_vec3 m2, rc_vec3 k,
                        rc_vec3 *z)
 {
     const rc_vec3 b1 = rc_sym3_mul_(A1, m1, 0), b2 = rc_sym3_mul_(A2, m2, 0);
@@ -160,9 +160,9 @@ static double lin_min2(const rc_sym3 *A1, rc_vec3 m1, const rc_sym3 *A2, rc_vec3
     return best;
 }
 
-/* ---- deciding lin_min2's comparison without converging it ------------------------ */
+/* ---- deciding rc_glue_lin_min2_'s comparison without converging it --------------- */
 
-/* The two ellipsoids of lin_min2, with the terms dual_at wants. */
+/* The two ellipsoids of rc_glue_lin_min2_, with the terms dual_at wants. */
 typedef struct dual_pb {
     const rc_sym3 *A1, *A2;
     rc_vec3 m1, m2, b1, b2, k;
@@ -255,20 +255,20 @@ static int repaired(const dual_pb *p, rc_vec3 z, double q1, double q2, rc_vec3 w
 }
 
 /* Cap on the evaluations of lin_below's search: it converges superlinearly; a case it
- * does not settle by then goes to lin_min2. */
+ * does not settle by then goes to rc_glue_lin_min2_. */
 #define BELOW_STEPS 40
 
-/* Whether lin_min2's minimum of k.z over the intersection is below theta, from
- * certificates rather than a converged minimum: 0 (not below) when a dual value, a lower
- * bound of the minimum, is >= theta + margin, or a blend is empty (so is the
- * intersection: lin_min2 says INFINITY); 1 (below) when a point of both ellipsoids has
- * k.z < theta - margin (only looked for if want_below); -1 when neither is found, then
- * lin_min2 itself decides. lin_min2's answer lies within its round-off of the true
- * minimum (its last brackets are below the resolution of lam), so a margin of many
- * round-offs makes the certified verdict lin_min2's. The search: the dual's slope in lam
- * has the sign of q2(z) - q1(z) at the blend's minimiser z (its multiplier times the
- * forms' difference: envelope theorem), one change of sign since the dual is unimodal;
- * regula falsi (Illinois) with bisection as a safeguard finds it. */
+/* Whether rc_glue_lin_min2_'s minimum of k.z over the intersection is below theta, from
+ * certificates rather than a converged minimum: 0 (not below) when a dual value, a lower bound
+ * of the minimum, is >= theta + margin, or a blend is empty (so is the intersection:
+ * rc_glue_lin_min2_ says INFINITY); 1 (below) when a point of both ellipsoids has k.z < theta -
+ * margin (only looked for if want_below); -1 when neither is found, then rc_glue_lin_min2_
+ * itself decides. rc_glue_lin_min2_'s answer lies within its round-off of the true minimum (its
+ * last brackets are below the resolution of lam), so a margin of many round-offs makes the
+ * certified verdict rc_glue_lin_min2_'s. The search: the dual's slope in lam has the sign of
+ * q2(z) - q1(z) at the blend's minimiser z (its multiplier times the forms' difference:
+ * envelope theorem), one change of sign since the dual is unimodal; regula falsi (Illinois)
+ * with bisection as a safeguard finds it. */
 static int lin_below(const dual_pb *p, double theta, double margin, int want_below)
 {
     const double hi_cut = theta + margin, lo_cut = theta - margin;
@@ -443,7 +443,7 @@ int rc_glue_toi(const rc_glue *g, const rc_toi_params *prm, rc_toi_workspace *ws
             const double margin = below_margin(&pb, theta, fabs(t_from) + fabs(g->t_x));
             int below = lin_below(&pb, theta, margin, 1);
             if (below < 0) {
-                const double lo = lin_min2(&Ga, m1, &Gk, m2, dir, &z);
+                const double lo = rc_glue_lin_min2_(&Ga, m1, &Gk, m2, dir, &z);
                 const double side = pc ? lo - dt : -lo - dt;
                 below = lo != INFINITY && (pc ? side < -tol : side > tol);
             }
@@ -489,7 +489,7 @@ int rc_glue_toi(const rc_glue *g, const rc_toi_params *prm, rc_toi_workspace *ws
         /* Only a contact on H before bt would be taken. It is a contact of each cylinder
          * too (their sections on H coincide), so not before either's first contact: none
          * if that is at bt or later; else lin_below may certify the minimum not below bt.
-         * lin_min2 finds the minimum where it is needed. */
+         * rc_glue_lin_min2_ finds the minimum where it is needed. */
         int later = 0;
         if (bt < INFINITY) {
             if (not_before(t_from, ta_max, bt)) {
@@ -501,7 +501,7 @@ int rc_glue_toi(const rc_glue *g, const rc_toi_params *prm, rc_toi_workspace *ws
                 later = lin_below(&pb, theta, margin, 0) == 0;
             }
         }
-        const double lo = later ? INFINITY : lin_min2(&Aa, ma, &Ak, mk, kh, &z);
+        const double lo = later ? INFINITY : rc_glue_lin_min2_(&Aa, ma, &Ak, mk, kh, &z);
         if (isnan(lo))
             return RC_EINVAL;
         if (fast && lo != INFINITY)

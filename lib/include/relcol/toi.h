@@ -266,6 +266,19 @@ int rc_glue_toi(const rc_glue *g, const rc_toi_params *prm, rc_toi_workspace *ws
                 double t_from, const rc_toi_ball *k, double *t, rc_vec3 *y, rc_vec3 *n,
                 int *piece);
 
+/* First contact at a time >= t_from of two glued tubes g1 and g2 (both in one coordinate
+ * system), each the union of its incoming cylinder before its H and its outgoing one after
+ * it (papers/shape-change.md section 10): the least table time over the four
+ * intersections of a piece of one with a piece of the other. *t the time, *y the
+ * contact point, *n the unit normal from ball 1 to ball 2 (on a crease the other ball's
+ * normal; on both creases the two averaged), *piece1 and *piece2 where it lies on each
+ * tube: 0 incoming, 1 outgoing, 2 on its H. RC_OK, RC_MISS, RC_EOVERLAP (the tubes'
+ * sections overlap at t_from by more than touch_tol of the radii), or a negative code
+ * for invalid input (RC_EINVAL also for tubes of different c). */
+int rc_glue_toi2(const rc_glue *g1, const rc_glue *g2, const rc_toi_params *prm,
+                 rc_toi_workspace *ws, double t_from, double *t, rc_vec3 *y, rc_vec3 *n,
+                 int *piece1, int *piece2);
+
 #ifdef __cplusplus
 }
 #endif
