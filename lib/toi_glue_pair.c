@@ -21,6 +21,7 @@
  * time reversed; it tells a Q_ab that began before t_from (an overlap now, if it lasts
  * past t_from) from one wholly past. */
 #include <math.h>
+#include <string.h>
 
 #include "relcol/kinematics.h"
 #include "relcol/status.h"
@@ -211,11 +212,31 @@ static void keep(double s, const cand *c, cand *best, int *have)
     }
 }
 
+/* The answers on the hyperplanes, shared by the pairs: on H_1 with ball 2's piece b, on
+ * H_2 with ball 1's piece a, on both (one answer: there each ball's two cylinders have one
+ * section), per direction s; asked once each. */
+typedef struct h_memo {
+    int st[2][5]; /* 0 not asked; else on_h's status + 1 */
+    cand c[2][5]; /* [s < 0][H_1 b = 0, 1; H_2 a = 0, 1; both] */
+} h_memo;
+
+static int on_h_memo(h_memo *m, int slot, const rc_glue *gh, const piece *po, double s, int both,
+                     cand *c)
+{
+    const int k = s < 0.0;
+    if (!m->st[k][slot])
+        m->st[k][slot] = on_h(gh, po, s, both, &m->c[k][slot]) + 1;
+    *c = m->c[k][slot];
+    return m->st[k][slot] - 1;
+}
+
 /* The extreme time s T over Q_ab (pa of tube 1, pb of tube 2): 1 (*out), 0 empty,
  * a negative code. An unbounded Q_ab (parallel cylinders overlapping always, both pieces
- * open in the direction s) has T = -s INFINITY. */
+ * open in the direction s) has T = -s INFINITY. Where the straight cylinders' extreme lies
+ * in both half-spaces it is Q_ab's (Q_ab lies in C_1a n C_2b): the hyperplanes are not
+ * asked. */
 static int extreme(const piece *pa, const piece *pb, double s, double tr,
-                   const rc_toi_params *prm, rc_toi_workspace *ws, cand *out)
+                   const rc_toi_params *prm, rc_toi_workspace *ws, h_memo *m, cand *out)
 {
     const rc_glue *g1 = pa->g, *g2 = pb->g;
     cand c = {0}, best = {0};
@@ -233,10 +254,12 @@ static int extreme(const piece *pa, const piece *pb, double s, double tr,
         out->p2 = pb->id;
         return 1;
     }
-    if (st == 1 && pa->sg * ell(g1, c.Y, c.T) >= 0.0 && pb->sg * ell(g2, c.Y, c.T) >= 0.0)
-        keep(s, &c, &best, &have);
+    if (st == 1 && pa->sg * ell(g1, c.Y, c.T) >= 0.0 && pb->sg * ell(g2, c.Y, c.T) >= 0.0) {
+        *out = c;
+        return 1;
+    }
     /* on H_1 (ball 1's crease): ball 2's normal there */
-    if ((st = on_h(g1, pb, s, 0, &c)) < 0)
+    if ((st = on_h_memo(m, pb->id, g1, pb, s, 0, &c)) < 0)
         return st;
     if (st == 1 && pb->sg * ell(g2, c.Y, c.T) >= 0.0) {
         c.n = rc_v3_scale(-1.0, piece_normal(pb, c.T, c.Y));
@@ -245,7 +268,7 @@ static int extreme(const piece *pa, const piece *pb, double s, double tr,
         keep(s, &c, &best, &have);
     }
     /* on H_2: ball 1's normal */
-    if ((st = on_h(g2, pa, s, 0, &c)) < 0)
+    if ((st = on_h_memo(m, 2 + pa->id, g2, pa, s, 0, &c)) < 0)
         return st;
     if (st == 1 && pa->sg * ell(g1, c.Y, c.T) >= 0.0) {
         c.n = piece_normal(pa, c.T, c.Y);
@@ -253,13 +276,15 @@ static int extreme(const piece *pa, const piece *pb, double s, double tr,
         c.p2 = 2;
         keep(s, &c, &best, &have);
     }
-    /* on both creases: the two balls' normals averaged (a choice: neither is smooth) */
-    if ((st = on_h(g1, pb, s, 1, &c)) < 0)
+    /* on both creases: the two balls' outgoing normals averaged (a choice: neither
+     * surface is smooth there) */
+    const piece o1 = piece_of(g1, 1), o2 = piece_of(g2, 1);
+    if ((st = on_h_memo(m, 4, g1, &o2, s, 1, &c)) < 0)
         return st;
     if (st == 1) {
-        const rc_vec3 nn = rc_v3_sub(piece_normal(pa, c.T, c.Y), piece_normal(pb, c.T, c.Y));
+        const rc_vec3 nn = rc_v3_sub(piece_normal(&o1, c.T, c.Y), piece_normal(&o2, c.T, c.Y));
         const double nl = rc_v3_norm(nn);
-        c.n = nl > 0.0 ? rc_v3_scale(1.0 / nl, nn) : rc_v3_scale(-1.0, piece_normal(pb, c.T, c.Y));
+        c.n = nl > 0.0 ? rc_v3_scale(1.0 / nl, nn) : rc_v3_scale(-1.0, piece_normal(&o2, c.T, c.Y));
         c.p1 = c.p2 = 2;
         keep(s, &c, &best, &have);
     }
@@ -279,11 +304,13 @@ int rc_glue_toi2(const rc_glue *g1, const rc_glue *g2, const rc_toi_params *prm,
         return RC_ERADIUS;
     cand best = {0};
     int have = 0, overlap = 0;
+    h_memo memo;
+    memset(&memo.st, 0, sizeof memo.st);
     for (int a = 0; a < 2; a++)
         for (int b = 0; b < 2; b++) {
             const piece pa = piece_of(g1, a), pb = piece_of(g2, b);
             cand lo, hi;
-            int st = extreme(&pa, &pb, 1.0, t_from, prm, ws, &lo);
+            int st = extreme(&pa, &pb, 1.0, t_from, prm, ws, &memo, &lo);
             if (st < 0)
                 return st;
             if (st == 0)
@@ -296,7 +323,7 @@ int rc_glue_toi2(const rc_glue *g1, const rc_glue *g2, const rc_toi_params *prm,
                 keep(1.0, &lo, &best, &have);
                 continue;
             }
-            if ((st = extreme(&pa, &pb, -1.0, t_from, prm, ws, &hi)) < 0)
+            if ((st = extreme(&pa, &pb, -1.0, t_from, prm, ws, &memo, &hi)) < 0)
                 return st;
             if (st == 1 && hi.T > t_from + ttol)
                 overlap = 1; /* Q_ab spans t_from */

@@ -251,10 +251,12 @@ typedef struct rc_sim_diag {
      * incoming velocity) is left to separate. Where the straight cylinder of a ball's
      * stored line overlaps or meets a neighbour inside the ball's window, its glued tube
      * is asked instead (rc_glue_toi: first table time of contact) -- for one ball in its
-     * window: with both balls inside theirs the straight cylinders answer, and a contact
-     * of the two glued tubes there can pass uncounted (papers/shape-change.md section 8:
-     * 9 overlaps in 24 audited 2-D elastic runs of 3000-4000 events, depth 4e-4 ..
-     * 0.012 r).
+     * window; with both balls inside theirs, the two glued tubes (rc_glue_toi2), whose
+     * contact is taken where it lies on neither incoming piece, or their miss; an
+     * overlap of the two tubes, or an incoming piece met, is left to the straight
+     * cylinders, and such a contact can pass uncounted (papers/shape-change.md sections
+     * 8 and 10: 9 overlaps in 24 audited 2-D elastic runs of 3000-4000 events before the
+     * two tubes were asked, 11 after, depth 4e-4 .. 0.018 r).
      * order_conflicts: kinks whose hyperplane crosses the ball's previous one inside it
      * (collisions less than a glue window apart, where the glued tube of the two is not
      * defined), not undone: counted; one that would come before the previous kink along
