@@ -8,6 +8,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "glue_sample.h"
 #include "rc_test.h"
 #include "relcol/relcol.h"
 
@@ -147,20 +148,10 @@ static void test_bad_input(void)
 static int g_dim = 2; /* the dimension brute_meets samples (a circle or a sphere) */
 static int brute_meets(const rc_glue *g, double t, rc_vec3 ck, const rc_toi_shape *hk, int nb)
 {
-    const int m = g_dim == 3 ? 6 * nb : nb;
+    const int m = glue_sample_count(g_dim, nb);
     for (int j = 0; j < m; j++) {
-        rc_vec3 u;
-        if (g_dim == 3) { /* (a Fibonacci lattice on the sphere) */
-            const double z = 1.0 - (2.0 * j + 1.0) / m, a = j * M_PI * (3.0 - sqrt(5.0));
-            const double q = sqrt(1.0 - z * z);
-            u = rc_v3(q * cos(a), q * sin(a), z);
-        } else {
-            const double a = 2.0 * M_PI * j / nb;
-            u = rc_v3(cos(a), sin(a), 0.0);
-        }
-        /* boundary point of k along u: the rest-frame length of s u equals r */
-        const double bu = rc_v3_dot(hk->beta, u);
-        const double s = hk->r / sqrt(1.0 + bu * bu / hk->g2);
+        const rc_vec3 u = glue_sample_dir(g_dim, j, m);
+        const double s = glue_sample_reach(hk, u); /* boundary point of k along u */
         if (rc_glue_inside(g, t, rc_v3_axpy(ck, s, u)))
             return 1;
     }

@@ -12,6 +12,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "glue_sample.h"
 #include "rc_test.h"
 #include "relcol/relcol.h"
 
@@ -68,24 +69,15 @@ static int g_dim = 2;
  * where that point belongs to the section) lie in tube b's section? */
 static int boundary_in(const rc_glue *a, const rc_glue *b, double t, int nb)
 {
-    const int m = g_dim == 3 ? 6 * nb : nb;
+    const int m = glue_sample_count(g_dim, nb);
     for (int pc = 0; pc < 2; pc++) {
         const rc_toi_shape *sh = pc ? &a->out : &a->in;
         const rc_vec3 c = rc_v3_axpy(a->x_c, t - a->t_c, pc ? a->v_out : a->v_in);
         if (rc_glue_inside(b, t, c) && rc_glue_inside(a, t, c))
             return 1;
         for (int j = 0; j < m; j++) {
-            rc_vec3 u;
-            if (g_dim == 3) { /* (a Fibonacci lattice on the sphere) */
-                const double z = 1.0 - (2.0 * j + 1.0) / m, ang = j * M_PI * (3.0 - sqrt(5.0));
-                const double q = sqrt(1.0 - z * z);
-                u = rc_v3(q * cos(ang), q * sin(ang), z);
-            } else {
-                const double ang = 2.0 * M_PI * j / nb;
-                u = rc_v3(cos(ang), sin(ang), 0.0);
-            }
-            const double bu = rc_v3_dot(sh->beta, u);
-            const double s = sh->r / sqrt(1.0 + bu * bu / sh->g2);
+            const rc_vec3 u = glue_sample_dir(g_dim, j, m);
+            const double s = glue_sample_reach(sh, u);
             /* (a hair inside, so that the point is the section's where its shape's is) */
             if (rc_glue_inside(a, t, rc_v3_axpy(c, s * (1.0 - 1e-9), u)) &&
                 rc_glue_inside(b, t, rc_v3_axpy(c, s, u)))
