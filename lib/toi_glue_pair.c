@@ -9,17 +9,21 @@
  * optimum is the optimum of the problem with its active half-spaces made equalities and
  * the others dropped, and every optimum of such a restricted problem that satisfies the
  * dropped ones is a point of Q_ab. So the least time is the least of the feasible
- * answers of four restricted problems:
+ * answers of four restricted problems (asked in the order extreme() gives, which convexity
+ * lets stop at the first feasible one):
  *   none active:  the first contact of the two straight cylinders (rc_toi_shapes_rel);
  *   on H_1:       the least time over both cylinders' sections by H_1, two ellipsoids
- *                 (rc_glue_lin_min2_, as rc_glue_toi on H), checked against S_2b;
+ *                 (rc_glue_lin_min2_slope_; rc_glue_toi asks the same on H), checked
+ *                 against S_2b;
  *   on H_2:       the same by H_2, checked against S_1a;
  *   on both:      the same on the plane where H_1 meets H_2, both ellipsoids restricted
  *                 to it (plane_min2).
  * On H_1 a point is in both of ball 1's cylinders (their sections there coincide), so
  * that answer is a's whichever a is. The latest time over Q_ab is the same program with
  * time reversed; it tells a Q_ab that began before t_from (an overlap now, if it lasts
- * past t_from) from one wholly past. */
+ * past t_from) from one wholly past. The pairs are taken in the order of their straight
+ * cylinders' first contacts, lower bounds of theirs: once that bound is no earlier than
+ * the best contact found, no later pair can improve on it or overlap. */
 #include <math.h>
 #include <string.h>
 
@@ -97,8 +101,8 @@ static int straight(const piece *pa, const piece *pb, double s, double tr,
 /* The least k.z over two ellipsoids (z - m_i)^T A_i (z - m_i) <= 1 restricted to the
  * plane q.z = h: each restricted to the plane's coordinates (s1, s2) (z = p0 + s1 e1 +
  * s2 e2, p0 = h q / |q|^2) is an ellipse (s - c)^T B (s - c) <= 1 - e, given to
- * rc_glue_lin_min2_ as the cylinder over it in (s1, s2, s3) (the third axis free: k has
- * no component along it, and a point of both cylinders at s3 is one at s3 = 0).
+ * rc_glue_lin_min2_slope_ as the cylinder over it in (s1, s2, s3) (the third axis free: k
+ * has no component along it, and a point of both cylinders at s3 is one at s3 = 0).
  * INFINITY if the restricted sets are empty, NAN if the problem is degenerate. */
 static double plane_min2(const rc_sym3 *A1, rc_vec3 m1, const rc_sym3 *A2, rc_vec3 m2,
                          rc_vec3 k, rc_vec3 q, double h, rc_vec3 *z)
@@ -141,7 +145,7 @@ static double plane_min2(const rc_sym3 *A1, rc_vec3 m1, const rc_sym3 *A2, rc_ve
     }
     rc_vec3 sz;
     const rc_vec3 kp = rc_v3(rc_v3_dot(k, e1), rc_v3_dot(k, e2), 0.0);
-    const double lo = rc_glue_lin_min2_(&R[0], c[0], &R[1], c[1], kp, &sz);
+    const double lo = rc_glue_lin_min2_slope_(&R[0], c[0], &R[1], c[1], kp, &sz);
     if (!isfinite(lo))
         return lo;
     *z = rc_v3_axpy(rc_v3_axpy(p0, sz.x, e1), sz.y, e2);
@@ -175,12 +179,12 @@ static int on_h(const rc_glue *gh, const piece *po, double s, int both, cand *c)
         const double h = (go->t_x - gh->t_x) + rc_v3_dot(go->kappa, rc_v3_sub(gh->x, go->x));
         lo = plane_min2(&Aa, ma, &Ak, mk, kh, fast ? rc_glue_turn(&fr, q) : q, h, &z);
     } else if (rc_v3_norm2(kh) > 0.0) {
-        lo = rc_glue_lin_min2_(&Aa, ma, &Ak, mk, kh, &z);
+        lo = rc_glue_lin_min2_slope_(&Aa, ma, &Ak, mk, kh, &z);
     } else {
         /* (classical: H is the slice t = t_x, every point of it at one time; the dual
          * search, blind with k = 0, is given the centres' line to find the sections apart
          * where they are) */
-        lo = rc_glue_lin_min2_(&Aa, ma, &Ak, mk, rc_v3_sub(mk, ma), &z);
+        lo = rc_glue_lin_min2_slope_(&Aa, ma, &Ak, mk, rc_v3_sub(mk, ma), &z);
         lo = isfinite(lo) ? 0.0 : lo;
     }
     if (isnan(lo))
@@ -230,51 +234,82 @@ static int on_h_memo(h_memo *m, int slot, const rc_glue *gh, const piece *po, do
     return m->st[k][slot] - 1;
 }
 
-/* The extreme time s T over Q_ab (pa of tube 1, pb of tube 2): 1 (*out), 0 empty,
- * a negative code. An unbounded Q_ab (parallel cylinders overlapping always, both pieces
- * open in the direction s) has T = -s INFINITY. Where the straight cylinders' extreme lies
- * in both half-spaces it is Q_ab's (Q_ab lies in C_1a n C_2b): the hyperplanes are not
- * asked. */
-static int extreme(const piece *pa, const piece *pb, double s, double tr,
-                   const rc_toi_params *prm, rc_toi_workspace *ws, h_memo *m, cand *out)
+/* The extreme time s T over Q_ab (pa of tube 1, pb of tube 2), given the straight
+ * cylinders' (st0, c0: straight's answer in the direction s), where it could beat bound
+ * (s T < s bound; the caller has no use for it otherwise): 1 (*out), 0 empty or not
+ * better, a negative code. An unbounded Q_ab (parallel cylinders overlapping always, both
+ * pieces open in the direction s: incoming pieces reach back in time for ever, outgoing
+ * ones forward) has T = -s INFINITY.
+ *
+ * Q_ab lies in C = C_1a n C_2b, so C's extreme x0 bounds Q_ab's: where x0 cannot beat
+ * bound, nothing more is asked. Else the active sets, in the order convexity allows (a
+ * linear objective over a convex set, x0 its unique extreme on C):
+ *  - x0 in both half-spaces is Q_ab's extreme;
+ *  - x0 outside S_1a: the extreme of C n S_1a lies on H_1 (off it, it would be a local and
+ *    so the global extreme of C, x0), so it is the answer on H_1; where that lies in
+ *    S_2b it is Q_ab's (the extreme of a superset, and in Q_ab). And Q_ab's extreme has
+ *    S_1a active (else it would be the extreme of C n S_2b, which is x0 where x0 is in
+ *    S_2b): so with x0 in S_2b the answer on H_2 alone is not asked;
+ *  - the same with 1 and 2 swapped;
+ *  - neither answer in the other half-space: Q_ab's extreme has both active (with S_2b
+ *    inactive it would be the extreme of C n S_1a, the answer on H_1, which is not in
+ *    S_2b): on the plane where H_1 meets H_2.
+ * With no x0 (parallel cylinders, C unbounded in time) these shortcuts do not hold: every
+ * answer is asked, and the least feasible one taken. */
+static int extreme(const piece *pa, const piece *pb, double s, int st0, const cand *c0,
+                   double bound, h_memo *m, cand *out)
 {
     const rc_glue *g1 = pa->g, *g2 = pb->g;
     cand c = {0}, best = {0};
-    int have = 0;
-    int st = straight(pa, pb, s, tr, prm, ws, &c);
-    if (st == RC_MISS)
-        return 0;
-    if (st < 0)
-        return st;
-    if (st == 0 && pa->sg * s < 0.0 && pb->sg * s < 0.0) {
-        /* (incoming pieces are bounded above in time, outgoing ones below) */
+    int st, have = 0;
+    if (st0 == 0 && pa->sg * s > 0.0 && pb->sg * s > 0.0) {
         out->T = -s * INFINITY;
         out->Y = out->n = rc_v3(0.0, 0.0, 0.0);
         out->p1 = pa->id;
         out->p2 = pb->id;
         return 1;
     }
-    if (st == 1 && pa->sg * ell(g1, c.Y, c.T) >= 0.0 && pb->sg * ell(g2, c.Y, c.T) >= 0.0) {
-        *out = c;
-        return 1;
+    /* in S_1a, in S_2b (both 0 with no x0) */
+    int in1 = 0, in2 = 0;
+    if (st0 == 1) {
+        if (!(s * c0->T < s * bound))
+            return 0;
+        in1 = pa->sg * ell(g1, c0->Y, c0->T) >= 0.0;
+        in2 = pb->sg * ell(g2, c0->Y, c0->T) >= 0.0;
+        if (in1 && in2) {
+            *out = *c0;
+            return 1;
+        }
     }
     /* on H_1 (ball 1's crease): ball 2's normal there */
-    if ((st = on_h_memo(m, pb->id, g1, pb, s, 0, &c)) < 0)
-        return st;
-    if (st == 1 && pb->sg * ell(g2, c.Y, c.T) >= 0.0) {
-        c.n = rc_v3_scale(-1.0, piece_normal(pb, c.T, c.Y));
-        c.p1 = 2;
-        c.p2 = pb->id;
-        keep(s, &c, &best, &have);
+    if (!in1) {
+        if ((st = on_h_memo(m, pb->id, g1, pb, s, 0, &c)) < 0)
+            return st;
+        if (st == 1 && pb->sg * ell(g2, c.Y, c.T) >= 0.0) {
+            c.n = rc_v3_scale(-1.0, piece_normal(pb, c.T, c.Y));
+            c.p1 = 2;
+            c.p2 = pb->id;
+            if (st0 == 1) {
+                *out = c;
+                return 1;
+            }
+            keep(s, &c, &best, &have);
+        }
     }
     /* on H_2: ball 1's normal */
-    if ((st = on_h_memo(m, 2 + pa->id, g2, pa, s, 0, &c)) < 0)
-        return st;
-    if (st == 1 && pa->sg * ell(g1, c.Y, c.T) >= 0.0) {
-        c.n = piece_normal(pa, c.T, c.Y);
-        c.p1 = pa->id;
-        c.p2 = 2;
-        keep(s, &c, &best, &have);
+    if (!in2) {
+        if ((st = on_h_memo(m, 2 + pa->id, g2, pa, s, 0, &c)) < 0)
+            return st;
+        if (st == 1 && pa->sg * ell(g1, c.Y, c.T) >= 0.0) {
+            c.n = piece_normal(pa, c.T, c.Y);
+            c.p1 = pa->id;
+            c.p2 = 2;
+            if (st0 == 1) {
+                *out = c;
+                return 1;
+            }
+            keep(s, &c, &best, &have);
+        }
     }
     /* on both creases: the two balls' outgoing normals averaged (a choice: neither
      * surface is smooth there) */
@@ -303,33 +338,56 @@ int rc_glue_toi2(const rc_glue *g1, const rc_glue *g2, const rc_toi_params *prm,
     if (!(g1->r > 0.0) || !(g2->r > 0.0))
         return RC_ERADIUS;
     cand best = {0};
-    int have = 0, overlap = 0;
+    int have = 0;
     h_memo memo;
     memset(&memo.st, 0, sizeof memo.st);
-    for (int a = 0; a < 2; a++)
-        for (int b = 0; b < 2; b++) {
-            const piece pa = piece_of(g1, a), pb = piece_of(g2, b);
-            cand lo, hi;
-            int st = extreme(&pa, &pb, 1.0, t_from, prm, ws, &memo, &lo);
-            if (st < 0)
-                return st;
-            if (st == 0)
-                continue;
-            /* touching within the frames' tolerance (touch_tol of the radii, crossed at
-             * the pieces' relative speed) is not an overlap: a contact at t_from */
-            const double wn = rc_v3_norm(rc_v3_sub(pb.v, pa.v));
-            const double ttol = wn > 0.0 ? prm->touch_tol * (g1->r + g2->r) / wn : 0.0;
-            if (lo.T >= t_from - ttol) {
-                keep(1.0, &lo, &best, &have);
-                continue;
-            }
-            if ((st = extreme(&pa, &pb, -1.0, t_from, prm, ws, &memo, &hi)) < 0)
-                return st;
-            if (st == 1 && hi.T > t_from + ttol)
-                overlap = 1; /* Q_ab spans t_from */
+    /* the straight cylinders' first contacts, the pairs taken in their order: a pair
+     * whose straight contact is no earlier than the best so far (itself no earlier than
+     * t_from, less the tolerance) can neither improve on it nor overlap */
+    cand c0[4];
+    int st0[4], ord[4], no = 0;
+    for (int i = 0; i < 4; i++) {
+        const piece pa = piece_of(g1, i >> 1), pb = piece_of(g2, i & 1);
+        st0[i] = straight(&pa, &pb, 1.0, t_from, prm, ws, &c0[i]);
+        if (st0[i] == RC_MISS)
+            continue;
+        if (st0[i] < 0)
+            return st0[i];
+        /* (insertion by the straight time; parallel cylinders, no time, first) */
+        const double ti = st0[i] == 1 ? c0[i].T : -INFINITY;
+        int j = no++;
+        for (; j > 0 && (st0[ord[j - 1]] == 1 ? c0[ord[j - 1]].T : -INFINITY) > ti; j--)
+            ord[j] = ord[j - 1];
+        ord[j] = i;
+    }
+    for (int q = 0; q < no; q++) {
+        const int i = ord[q];
+        const piece pa = piece_of(g1, i >> 1), pb = piece_of(g2, i & 1);
+        cand lo, hi;
+        int st = extreme(&pa, &pb, 1.0, st0[i], &c0[i], have ? best.T : INFINITY, &memo, &lo);
+        if (st < 0)
+            return st;
+        if (st == 0)
+            continue;
+        /* touching within the frames' tolerance (touch_tol of the radii, crossed at
+         * the pieces' relative speed) is not an overlap: a contact at t_from */
+        const double wn = rc_v3_norm(rc_v3_sub(pb.v, pa.v));
+        const double ttol = wn > 0.0 ? prm->touch_tol * (g1->r + g2->r) / wn : 0.0;
+        if (lo.T >= t_from - ttol) {
+            keep(1.0, &lo, &best, &have);
+            continue;
         }
-    if (overlap)
-        return RC_EOVERLAP;
+        cand ch;
+        const int sh = straight(&pa, &pb, -1.0, t_from, prm, ws, &ch);
+        if (sh == RC_MISS)
+            continue;
+        if (sh < 0)
+            return sh;
+        if ((st = extreme(&pa, &pb, -1.0, sh, &ch, t_from + ttol, &memo, &hi)) < 0)
+            return st;
+        if (st == 1 && hi.T > t_from + ttol)
+            return RC_EOVERLAP; /* Q_ab spans t_from */
+    }
     if (!have)
         return RC_MISS;
     *t = best.T;

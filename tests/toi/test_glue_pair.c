@@ -93,7 +93,10 @@ static int meets(const rc_glue *g1, const rc_glue *g2, double t, int nb)
     return boundary_in(g1, g2, t, nb) || boundary_in(g2, g1, t, nb);
 }
 
-static void scan(int dim, int trials, double tol)
+/* par: 0 four independent momenta; 1 pieces of the two tubes parallel, by turns ball 2's
+ * incoming or outgoing piece with ball 1's incoming or outgoing one (the straight
+ * cylinders then meet at all times or never, and have no first contact to start from) */
+static void scan(int dim, int trials, double tol, int par)
 {
     g_dim = dim;
     unsigned seed = 29;
@@ -105,6 +108,13 @@ static void scan(int dim, int trials, double tol)
     for (int trial = 0; trial < trials; trial++) {
         rc_particle i1 = {1.0, rmom(&seed, dim, 0.9)}, o1 = {1.0, rmom(&seed, dim, 0.9)};
         rc_particle i2 = {1.0, rmom(&seed, dim, 0.9)}, o2 = {1.0, rmom(&seed, dim, 0.9)};
+        if (par) {
+            const rc_particle *p1 = trial % 2 ? &o1 : &i1;
+            if ((trial / 2) % 2)
+                o2 = *p1;
+            else
+                i2 = *p1;
+        }
         /* ball 1 at the origin at t = 0, its collision at 0; ball 2 near it, its collision
          * at a time within a window's length, so that both windows are open together */
         const rc_glue g1 = tube(1.0, &i1, &o1, rc_v3(0, 0, 0), 0.0, 0.0, unit(&seed, dim));
@@ -170,6 +180,11 @@ static void scan(int dim, int trials, double tol)
            "incoming, outgoing, on H):\n", dim, found, misses, overl);
     for (int a = 0; a < 3; a++)
         printf("    %5d %5d %5d\n", where[a][0], where[a][1], where[a][2]);
+    if (par) { /* (both verdicts, on parallel pieces) */
+        ENSURE(found > trials / 8 && overl > 0);
+        rc_toi_workspace_free(&ws);
+        return;
+    }
     ENSURE(found > trials / 4 && overl > 0 && misses > 0);
     /* the kinds of contact the scan checked: pieces of both kinds on both tubes, a crease */
     ENSURE(where[0][0] > 0 && where[1][1] > 0 && where[0][1] + where[1][0] > 0);
@@ -179,8 +194,12 @@ static void scan(int dim, int trials, double tol)
 
 /* (2-D: the sampled circle's chord depth, (pi / NB)^2 / 2 radii, over approach speeds
  * of 0.01c and more; 3-D: points about 0.05 radii apart, a chord depth of 4e-4 radii) */
-static void test_scan_2d(void) { scan(2, 300, 4e-3); }
-static void test_scan_3d(void) { scan(3, 60, 2e-2); }
+static void test_scan_2d(void) { scan(2, 300, 4e-3, 0); }
+static void test_scan_3d(void) { scan(3, 60, 2e-2, 0); }
+/* (with no first contact of the straight cylinders to start from, every piece's answer is
+ * asked: the first version had the unbounded pieces' direction the wrong way round, and
+ * called two incoming pieces that always overlapped a later contact) */
+static void test_scan_parallel(void) { scan(2, 120, 4e-3, 1); }
 
 /* ---- a tube without a kink is a rigid ball ------------------------------------------- */
 
@@ -353,6 +372,7 @@ int main(void)
     RUN_TEST(test_swap);
     RUN_TEST(test_scan_2d);
     RUN_TEST(test_scan_3d);
+    RUN_TEST(test_scan_parallel);
     RUN_TEST(test_bad_input);
     RC_TEST_MAIN_END();
 }
