@@ -84,11 +84,10 @@ static int frame_call(const rc_sim *cs, const eng_ball *bi, const eng_ball *bk, 
  * incoming piece (RC_OK, out as frame_call's, *valid 1) or no contact at all (RC_MISS);
  * where the tubes overlap at t1 or an incoming piece is met first, -1: the straight
  * cylinders answer, as they did for every such pair before this was built. (A choice,
- * measured: made events, those two answers raised the policy's share in the dilute gases
- * -- 3-D packing 0.05 rms 0.5c, 12 to 85-91 of 41 500 collisions -- while the covariant
- * audit's uncounted overlaps fell only from 9 to 7 in 24 runs: the latest tubes as
- * stored overlap where an isolated pair's never do, section 10.) -1 also where a ball's
- * tube is not its stored line's. */
+ * measured in papers/shape-change.md section 10: made events, those two answers raised
+ * the policy's share in the dilute gases and hardly moved the covariant audit's uncounted
+ * overlaps, because the latest tubes as stored overlap where an isolated pair's never do.)
+ * -1 also where a ball's tube is not its stored line's. */
 static int windows_contact(const rc_sim *cs, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
                            double t1, rc_toi_contact *out, int *valid)
 {
@@ -254,8 +253,8 @@ static int glue_contact(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
  * the other ball, rigid on its stored line, does not reach the incoming piece first
  * (rc_glue_toi from the window's start, the table's first contact with the pieces; before
  * the window the whole ball was on its incoming line, which the engine's earlier
- * predictions answered for; in a probe 1 in 10 of the answers with a ball in its window
- * failed this). 1: it reaches it (or the question fails): an undo's case, not a contact
+ * predictions answered for; a probe found answers with a ball in its window that fail
+ * this). 1: it reaches it (or the question fails): an undo's case, not a contact
  * on the outgoing pieces. bg glued (g), bo the other, d = bo - bg at tb on the stored
  * lines. */
 static int incoming_first(const rc_sim *cs, const eng_ball *bg, const eng_ball *bo, rc_vec3 d,

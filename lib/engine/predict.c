@@ -24,11 +24,10 @@
  * (outgoing) lines part there? A ball whose incoming side the contact event X lies on is
  * met by its incoming piece, which moves with its incoming velocity, its centre on its
  * incoming line. Judged with the stored lines alone such a pair was left to separate while
- * the incoming piece went on into the neighbour: an overlap nothing counted (the covariant
- * audit, 2-D gases at 0.6c: 3 of 12 uncounted overlaps in 24 runs, depth up to 0.022 r;
- * papers/shape-change.md section 8). Now it is an event: an undo of that ball's collision
- * takes it, else the policy, counted. dx, dv: the stored separation at pref and relative
- * velocity; tref, t, y: the contact as glue_contact returned it. */
+ * the incoming piece went on into the neighbour: an overlap nothing counted (found by the
+ * covariant audit, papers/shape-change.md section 8). Now it is an event: an undo of
+ * that ball's collision takes it, else the policy, counted. dx, dv: the stored separation
+ * at pref and relative velocity; tref, t, y: the contact as glue_contact returned it. */
 static int pieces_approach(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
                            double pref, rc_vec3 dv, double tref, double t, rc_vec3 y, double ta)
 {
