@@ -76,6 +76,37 @@ static int frame_call(const rc_sim *cs, const eng_ball *bi, const eng_ball *bk, 
     return st;
 }
 
+/* per_ball frames: do two glued tubes (in one coordinate frame) overlap at t, found by
+ * probing? Points along the segments between their pieces' centres at t, nine on each of
+ * the four, are tested against both tubes shrunk by 1e-6 of their radii: a point inside
+ * both is inside an overlap deeper than any touching tolerance (touch_tol is 1e-12 by
+ * default), which windows_contact leaves to the straight cylinders. Two sections that
+ * overlap mostly overlap on those segments; an overlap off them (shallow) is left to
+ * rc_glue_toi2, which finds every overlap. The probe costs a few dozen point tests where
+ * the programs would cost several contact solves. */
+static int tubes_overlap_probe(const rc_glue *g0, const rc_glue *g1, double t)
+{
+    const double f = 1.0 - 1e-6;
+    rc_glue sh[2] = {*g0, *g1};
+    rc_vec3 c[2][2];
+    for (int j = 0; j < 2; j++) {
+        sh[j].r *= f;
+        sh[j].in.r *= f;
+        sh[j].out.r *= f;
+        c[j][0] = rc_v3_axpy(sh[j].x_c, t - sh[j].t_c, sh[j].v_in);
+        c[j][1] = rc_v3_axpy(sh[j].x_c, t - sh[j].t_c, sh[j].v_out);
+    }
+    for (int u = 0; u < 4; u++) {
+        const rc_vec3 a = c[0][u >> 1], d = rc_v3_sub(c[1][u & 1], a);
+        for (int k = 0; k <= 8; k++) {
+            const rc_vec3 y = rc_v3_axpy(a, 0.125 * k, d);
+            if (rc_glue_inside(&sh[0], t, y) && rc_glue_inside(&sh[1], t, y))
+                return 1;
+        }
+    }
+    return 0;
+}
+
 /* per_ball frames: the contact of bi and bk (separation dx at t1) when both are inside
  * their glue windows at t1: the first contact of their two glued tubes (rc_glue_toi2,
  * papers/shape-change.md section 10), bk's tube moved into bi's coordinates (its centre at
@@ -107,6 +138,8 @@ static int windows_contact(const rc_sim *cs, const eng_ball *bi, const eng_ball 
     const rc_vec3 shift = rc_v3_sub(rc_v3_add(c0, d01), rc_v3_axpy(g1.x_c, t1 - g1.t_c, b1->v));
     g1.x = rc_v3_add(g1.x, shift);
     g1.x_c = rc_v3_add(g1.x_c, shift);
+    if (tubes_overlap_probe(g0, &g1, t1))
+        return -1; /* (an overlap at t1: the straight cylinders answer, as below) */
     double t;
     rc_vec3 y, n;
     int p0, p1;
