@@ -255,6 +255,47 @@ static int repaired(const dual_pb *p, rc_vec3 z, double q1, double q2, rc_vec3 w
     return form_at(p->A1, p->m1, *y) <= 1.0 && form_at(p->A2, p->m2, *y) <= 1.0;
 }
 
+/* The bracket [a, b] of lam around the sign change of the dual's slope (h(a) > 0 > h(b)),
+ * narrowed by Illinois false position: lin_below's search and rc_glue_lin_min2_slope_'s.
+ * ha, hb: the ends' slopes, the stale end's halved; side: the end moved last. */
+typedef struct slope_bracket {
+    double a, b, ha, hb;
+    int side;
+} slope_bracket;
+
+/* The next lam: false position, or the midpoint where that leaves the bracket (or bisect
+ * asks for it); NAN when no double lies inside. */
+static double bracket_next(const slope_bracket *s, int bisect)
+{
+    double lam = s->a - s->ha * (s->b - s->a) / (s->hb - s->ha);
+    if (!(lam > s->a && lam < s->b) || bisect)
+        lam = 0.5 * (s->a + s->b);
+    return lam > s->a && lam < s->b ? lam : NAN;
+}
+
+/* The slope h at lam narrows the bracket: 1 the lower end moved, -1 the upper one, 0 h is
+ * zero or NaN (lam is the maximum, or nothing can be said). */
+static int bracket_take(slope_bracket *s, double lam, double h)
+{
+    if (h > 0.0) {
+        s->a = lam;
+        s->ha = h;
+        if (s->side == 1)
+            s->hb *= 0.5; /* Illinois: the stale end's value halved */
+        s->side = 1;
+        return 1;
+    }
+    if (h < 0.0) {
+        s->b = lam;
+        s->hb = h;
+        if (s->side == -1)
+            s->ha *= 0.5;
+        s->side = -1;
+        return -1;
+    }
+    return 0;
+}
+
 /* Cap on the evaluations of lin_below's search: it converges superlinearly; a case it
  * does not settle by then goes to rc_glue_lin_min2_. */
 #define BELOW_STEPS 40
@@ -278,18 +319,15 @@ static int lin_below(const dual_pb *p, double theta, double margin, int want_bel
     const int have_w = want_below && inner_point(p, &w, &w1, &w2);
     if (have_w && rc_v3_dot(p->k, w) < lo_cut)
         return 1;
-    double a = 0.0, b = 1.0, ha = 0.0, hb = 0.0;
-    int side = 0;
+    slope_bracket br = {0.0, 1.0, 0.0, 0.0, 0};
     for (int it = 0; it < BELOW_STEPS; it++) {
         double lam;
         if (it < 2) {
             lam = (double)it;
         } else {
-            lam = a - ha * (b - a) / (hb - ha);
-            /* bisect when false position leaves the bracket or crawls */
-            if (!(lam > a && lam < b) || (it % 4 == 3))
-                lam = 0.5 * (a + b);
-            if (!(lam > a && lam < b))
+            /* (bisected when false position leaves the bracket or crawls) */
+            lam = bracket_next(&br, it % 4 == 3);
+            if (isnan(lam))
                 return -1;
         }
         rc_vec3 z;
@@ -314,26 +352,14 @@ static int lin_below(const dual_pb *p, double theta, double margin, int want_bel
         }
         const double h = q2 - q1;
         if (it == 0) {
-            ha = h;
+            br.ha = h;
             if (!(h > 0.0))
                 return -1;
         } else if (it == 1) {
-            hb = h;
+            br.hb = h;
             if (!(h < 0.0))
                 return -1;
-        } else if (h > 0.0) {
-            a = lam;
-            ha = h;
-            if (side == 1)
-                hb *= 0.5; /* Illinois: the stale end's value halved */
-            side = 1;
-        } else if (h < 0.0) {
-            b = lam;
-            hb = h;
-            if (side == -1)
-                ha *= 0.5;
-            side = -1;
-        } else {
+        } else if (bracket_take(&br, lam, h) == 0) {
             return -1; /* at the maximum: f is the minimum, within the margin of theta */
         }
     }
@@ -362,7 +388,7 @@ double rc_glue_lin_min2_slope_(const rc_sym3 *A1, rc_vec3 m1, const rc_sym3 *A2,
     double fa = pb_dual(&p, 0.0, &za);
     if (fa == INFINITY || isnan(fa))
         return fa;
-    double ha = form_at(A2, m2, za) - form_at(A1, m1, za);
+    const double ha = form_at(A2, m2, za) - form_at(A1, m1, za);
     if (!(ha > 0.0)) {
         *z = za;
         return fa;
@@ -370,47 +396,35 @@ double rc_glue_lin_min2_slope_(const rc_sym3 *A1, rc_vec3 m1, const rc_sym3 *A2,
     double fb = pb_dual(&p, 1.0, &zb);
     if (fb == INFINITY || isnan(fb))
         return fb;
-    double hb = form_at(A2, m2, zb) - form_at(A1, m1, zb);
+    const double hb = form_at(A2, m2, zb) - form_at(A1, m1, zb);
     if (!(hb < 0.0)) {
         *z = zb;
         return fb;
     }
-    double a = 0.0, b = 1.0;
-    int side = 0;
+    slope_bracket br = {0.0, 1.0, ha, hb, 0};
     for (int it = 0;; it++) {
         if (it == SLOPE_STEPS)
             return rc_glue_lin_min2_(A1, m1, A2, m2, k, z);
-        if (b - a <= 8.0 * DBL_EPSILON * b)
+        if (br.b - br.a <= 8.0 * DBL_EPSILON * br.b)
             break;
-        double lam = a - ha * (b - a) / (hb - ha);
-        if (!(lam > a && lam < b))
-            lam = 0.5 * (a + b);
-        if (!(lam > a && lam < b))
+        const double lam = bracket_next(&br, 0);
+        if (isnan(lam))
             break;
         rc_vec3 zl;
         const double f = pb_dual(&p, lam, &zl);
         if (f == INFINITY || isnan(f))
             return f;
-        const double h = form_at(A2, m2, zl) - form_at(A1, m1, zl);
-        if (h > 0.0) {
-            a = lam;
-            ha = h;
-            fa = f;
-            za = zl;
-            if (side == 1)
-                hb *= 0.5; /* Illinois: the stale end's value halved */
-            side = 1;
-        } else if (h < 0.0) {
-            b = lam;
-            hb = h;
-            fb = f;
-            zb = zl;
-            if (side == -1)
-                ha *= 0.5;
-            side = -1;
-        } else {
+        const int moved = bracket_take(&br, lam, form_at(A2, m2, zl) - form_at(A1, m1, zl));
+        if (moved == 0) {
             *z = zl;
             return f;
+        }
+        if (moved > 0) {
+            fa = f;
+            za = zl;
+        } else {
+            fb = f;
+            zb = zl;
         }
     }
     /* both ends are dual values, lower bounds of the minimum: the larger */
