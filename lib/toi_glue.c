@@ -594,7 +594,16 @@ int rc_glue_toi(const rc_glue *g, const rc_toi_params *prm, rc_toi_workspace *ws
                 later = lin_below(&pb, theta, margin, 0) == 0;
             }
         }
-        const double lo = later ? INFINITY : rc_glue_lin_min2_(&Aa, ma, &Ak, mk, kh, &z);
+        double lo = INFINITY;
+        if (!later && rc_v3_norm2(kh) > 0.0) {
+            lo = rc_glue_lin_min2_(&Aa, ma, &Ak, mk, kh, &z);
+        } else if (!later) {
+            /* (classical: H is the slice t = t_x, every point of it at one time; the dual
+             * search, blind with k = 0 -- every blend's value is 0 -- is given the centres'
+             * line, along which it finds the sections apart where they are) */
+            lo = rc_glue_lin_min2_(&Aa, ma, &Ak, mk, rc_v3_sub(mk, ma), &z);
+            lo = isfinite(lo) ? 0.0 : lo;
+        }
         if (isnan(lo))
             return RC_EINVAL;
         if (fast && lo != INFINITY)

@@ -10,6 +10,7 @@
 
 #include "glue_sample.h"
 #include "rc_test.h"
+#include "sphere_in.h"
 #include "relcol/relcol.h"
 
 static double urand(unsigned *s) { return (double)rand_r(s) / ((double)RAND_MAX + 1.0); }
@@ -126,6 +127,71 @@ static void test_classical(void)
     ENSURE(rc_glue_make(0.0, 1.0, &in, &out, 7.0, rc_v3(1, 1, 0), rc_v3(2, 1, 0), &g) == RC_OK);
     ENSURE(g.t_first == 7.0 && g.t_last == 7.0 && g.t_c == 7.0);
     ENSURE(g.x_c.x == 1.0 && g.x_c.y == 1.0);
+}
+
+/* The classical limit of rc_glue_toi: a sphere that changes velocity at t_x, met by a
+ * rigid sphere, against the two intervals' quadratics. With kappa = 0, H is the slice
+ * t = t_x and the search on it has nothing to minimise: it must still tell two sections
+ * that touch there from two that are apart (the first version called sections apart but
+ * within a few per cent of touching a contact at t_x). */
+static void test_toi_classical(void)
+{
+    unsigned seed = 41;
+    rc_toi_params prm = rc_toi_params_default();
+    rc_toi_workspace *ws = NULL;
+    ENSURE(rc_toi_workspace_create(&ws) == RC_OK);
+    int contacts = 0, misses = 0;
+    for (int trial = 0; trial < 2000; trial++) {
+        const int dim = 2 + trial % 2;
+        rc_particle in = {1.0, rvec(&seed, 1.0, dim)}, out = {1.0, rvec(&seed, 1.0, dim)};
+        rc_particle kp = {1.0, rvec(&seed, 1.0, dim)};
+        const double tx = 0.5 * urand(&seed);
+        const rc_vec3 xc = rc_v3_scale(tx, in.p);
+        rc_vec3 u = rvec(&seed, 1.0, dim);
+        u = rc_v3_scale(1.0 / rc_v3_norm(u), u);
+        rc_glue g;
+        ENSURE(rc_glue_make(0.0, 1.0, &in, &out, tx, xc, rc_v3_add(xc, u), &g) == RC_OK);
+        /* k apart at 0; every few trials k's centre placed so that the two just miss or
+         * just touch at t_x */
+        rc_vec3 ck;
+        if (trial % 3) {
+            rc_vec3 e = rvec(&seed, 1.0, dim);
+            ck = rc_v3_scale((2.05 + urand(&seed)) / rc_v3_norm(e), e);
+        } else {
+            rc_vec3 e = rvec(&seed, 1.0, dim);
+            e = rc_v3_scale(1.0 / rc_v3_norm(e), e);
+            /* at t_x k's centre is 2 (1 + s) from the ball's, s in [-0.02, 0.02] */
+            const double sgap = 0.04 * urand(&seed) - 0.02;
+            ck = rc_v3_axpy(rc_v3_axpy(xc, 2.0 * (1.0 + sgap), e), -tx, kp.p);
+            if (!(rc_v3_norm(ck) > 2.0 * (1.0 + 1e-9)))
+                continue; /* (not apart at the start) */
+        }
+        const rc_toi_ball k = {ck, 1.0, kp.m, kp.p};
+        double t;
+        rc_vec3 y, n;
+        int piece;
+        const int st = rc_glue_toi(&g, &prm, ws, 0.0, &k, &t, &y, &n, &piece);
+        double tr = sphere_in(0.0, tx, ck, rc_v3_sub(kp.p, in.p));
+        if (tr == INFINITY)
+            tr = sphere_in(tx, INFINITY, rc_v3_sub(rc_v3_axpy(ck, tx, kp.p), xc),
+                           rc_v3_sub(kp.p, out.p));
+        const rc_vec3 dxk = rc_v3_sub(rc_v3_axpy(ck, tx, kp.p), xc);
+        if (tr == INFINITY) {
+            misses++;
+            ENSURE_MSG(st == RC_MISS, "trial %d: st %d (t %.9g, piece %d), gap at t_x %.3g",
+                       trial, st, t, piece, rc_v3_norm(dxk) - 2.0);
+            continue;
+        }
+        ENSURE_MSG(st == RC_OK, "trial %d: st %d, reference %.9g", trial, st, tr);
+        if (st != RC_OK)
+            continue;
+        contacts++;
+        /* (Brent's root of the cylinders' contact, to ~1e-13 of times ~1) */
+        ENSURE_CLOSE(t, tr, 1e-10, 1.0);
+    }
+    printf("  %d contacts, %d misses\n", contacts, misses);
+    ENSURE(contacts > 300 && misses > 300);
+    rc_toi_workspace_free(&ws);
 }
 
 static void test_bad_input(void)
@@ -327,6 +393,7 @@ int main(void)
     RUN_TEST(test_sections_match);
     RUN_TEST(test_window_mixes);
     RUN_TEST(test_classical);
+    RUN_TEST(test_toi_classical);
     RUN_TEST(test_bad_input);
     RC_TEST_MAIN_END();
 }

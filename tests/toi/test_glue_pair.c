@@ -14,6 +14,7 @@
 
 #include "glue_sample.h"
 #include "rc_test.h"
+#include "sphere_in.h"
 #include "relcol/relcol.h"
 
 static double urand(unsigned *s) { return (double)rand_r(s) / ((double)RAND_MAX + 1.0); }
@@ -281,18 +282,6 @@ static void test_swap(void)
 }
 
 /* ---- the classical limit: spheres that change velocity at t_x1 and t_x2 -------------- */
-
-/* First t in [a, b) with |d + w (t - a)| = 2 (two unit spheres), d at a; INFINITY if none
- * (apart at a) */
-static double sphere_in(double a, double b, rc_vec3 d, rc_vec3 w)
-{
-    const double A = rc_v3_norm2(w), B = rc_v3_dot(d, w), C = rc_v3_norm2(d) - 4.0;
-    const double disc = B * B - A * C;
-    if (!(A > 0.0) || !(B < 0.0) || disc < 0.0)
-        return INFINITY;
-    const double s = C / (-B + sqrt(disc));
-    return a + s < b ? a + s : INFINITY;
-}
 
 static void test_classical(void)
 {
