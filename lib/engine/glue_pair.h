@@ -9,6 +9,7 @@
 #define RELCOL_ENGINE_GLUE_PAIR_H
 
 #include <math.h>
+#include <string.h>
 
 #include "pair_zmf.h"
 #include "pairs.h"
@@ -107,6 +108,38 @@ static int tubes_overlap_probe(const rc_glue *g0, const rc_glue *g1, double t)
     return 0;
 }
 
+/* rc_glue_toi2 through the engine's memo of its last answers (eng_t2_memo): the same
+ * bits, asked once where a pair asks twice. */
+static int toi2_memo(rc_sim *s, const rc_glue *g0, const rc_glue *g1, double t1, double *t,
+                     rc_vec3 *y, rc_vec3 *n, int *p0, int *p1)
+{
+    for (uint32_t k = 0; k < s->t2m_n; k++) {
+        const eng_t2_memo *m = &s->t2m[k];
+        if (memcmp(&m->t1, &t1, sizeof t1) == 0 && memcmp(&m->g0, g0, sizeof *g0) == 0 &&
+            memcmp(&m->g1, g1, sizeof *g1) == 0) {
+            *t = m->t;
+            *y = m->y;
+            *n = m->n;
+            *p0 = m->p0;
+            *p1 = m->p1;
+            return m->st;
+        }
+    }
+    eng_t2_memo *m = &s->t2m[s->t2m_next];
+    s->t2m_next = (s->t2m_next + 1) % ENG_T2_MEMO;
+    s->t2m_n += s->t2m_n < ENG_T2_MEMO;
+    m->g0 = *g0;
+    m->g1 = *g1;
+    m->t1 = t1;
+    m->st = rc_glue_toi2(g0, g1, &s->toi, s->ws, t1, &m->t, &m->y, &m->n, &m->p0, &m->p1);
+    *t = m->t;
+    *y = m->y;
+    *n = m->n;
+    *p0 = m->p0;
+    *p1 = m->p1;
+    return m->st;
+}
+
 /* per_ball frames: the contact of bi and bk (separation dx at t1) when both are inside
  * their glue windows at t1: the first contact of their two glued tubes (rc_glue_toi2,
  * papers/shape-change.md section 10), bk's tube moved into bi's coordinates (its centre at
@@ -143,7 +176,7 @@ static int windows_contact(const rc_sim *cs, const eng_ball *bi, const eng_ball 
     double t;
     rc_vec3 y, n;
     int p0, p1;
-    const int st = rc_glue_toi2(g0, &g1, &s->toi, s->ws, t1, &t, &y, &n, &p0, &p1);
+    const int st = toi2_memo(s, g0, &g1, t1, &t, &y, &n, &p0, &p1);
     if (st == RC_EOVERLAP)
         return -1; /* (the straight cylinders answer: see above) */
     if (st != RC_OK)

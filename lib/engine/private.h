@@ -361,6 +361,21 @@ typedef struct eng_books {
 _Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 24 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 2 + 2 + 11),
                "no padding in the bookkeeping");
 
+/* per_ball frames: one answer of rc_glue_toi2 as windows_contact asked it: the two tubes
+ * (in its orientation, the second moved into the first's coordinates) and the time, and
+ * what came back. A pair with both balls in their windows is asked the same question by
+ * each of its balls, one after the other (in a dense gas a sixth to a third of the
+ * questions repeat one of the last few); an answer is a function of these bits alone, so
+ * the kept one is the same bits. */
+#define ENG_T2_MEMO 16
+typedef struct eng_t2_memo {
+    rc_glue g0, g1;
+    double t1;
+    int st, p0, p1;
+    double t;
+    rc_vec3 y, n;
+} eng_t2_memo;
+
 struct rc_sim {
     rc_sim_def def;
     int simd;
@@ -458,6 +473,10 @@ struct rc_sim {
     rc_contact *grp_con;
     double *grp_j; /* the group solver's impulses, grp_con_cap entries */
     size_t grp_ball_cap, grp_con_cap;
+    /* per_ball frames: the last answers of the two glued tubes' contact (engine/glue_pair.h
+     * windows_contact), by their whole input */
+    eng_t2_memo t2m[ENG_T2_MEMO];
+    uint32_t t2m_n, t2m_next;
 };
 
 /* A per-ball array of `bytes` (engine/mem.c): cache-line aligned, on transparent huge
