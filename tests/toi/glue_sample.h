@@ -1,7 +1,7 @@
 /* glue_sample.h — the boundary samples of a contracted shape that the glued-tube tests
  * scan with rc_glue_inside (test_glue.c, test_glue_pair.c): nb directions on a circle
  * (2-D) or 6 nb on a Fibonacci lattice on the sphere (3-D), and the boundary point along
- * each. */
+ * each; and the scan in time that finds the first contact from them. */
 #ifndef RELCOL_TEST_GLUE_SAMPLE_H
 #define RELCOL_TEST_GLUE_SAMPLE_H
 
@@ -30,6 +30,27 @@ static inline double glue_sample_reach(const rc_toi_shape *sh, rc_vec3 u)
 {
     const double bu = rc_v3_dot(sh->beta, u);
     return sh->r / sqrt(1.0 + bu * bu / sh->g2);
+}
+
+/* The first time in (t0, T) at which meets(t, ctx) holds, found by a scan in steps of dt
+ * and 30 bisections inside the first step that meets (to dt / 2^30); INFINITY if none.
+ * The reference both glued-tube tests check their solvers' times against. */
+static inline double glue_first_meet(double t0, double T, double dt,
+                                     int (*meets)(double t, void *ctx), void *ctx)
+{
+    for (double s = t0 + dt; s < T; s += dt)
+        if (meets(s, ctx)) {
+            double lo = s - dt, hi = s;
+            for (int b = 0; b < 30; b++) {
+                const double mid = 0.5 * (lo + hi);
+                if (meets(mid, ctx))
+                    hi = mid;
+                else
+                    lo = mid;
+            }
+            return hi;
+        }
+    return INFINITY;
 }
 
 #endif

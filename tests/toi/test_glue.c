@@ -224,6 +224,20 @@ static int brute_meets(const rc_glue *g, double t, rc_vec3 ck, const rc_toi_shap
     return rc_glue_inside(g, t, ck);
 }
 
+/* glue_first_meet's question: does k (centre ck0 at t0, velocity vk) meet the tube at t? */
+typedef struct brute_ctx {
+    const rc_glue *g;
+    const rc_toi_shape *hk;
+    rc_vec3 ck0, vk;
+    double t0;
+} brute_ctx;
+
+static int brute_meets_at(double t, void *ctx)
+{
+    const brute_ctx *c = ctx;
+    return brute_meets(c->g, t, rc_v3_axpy(c->ck0, t - c->t0, c->vk), c->hk, NB);
+}
+
 /* rc_glue_toi against a scan in time of the sampled sections (2-D): the first time the
  * scan sees k meet the glued ball lies within one step after the solver's time, the
  * scan sees no meeting before it, and the contact point lies on k's boundary. */
@@ -279,21 +293,9 @@ static void toi_brute(int dim, int trials, double tol)
             continue;
         }
         /* a coarse scan, then bisection inside the first step that meets */
-        const double T = g.t_last + 1.0, dt = 1e-2;
-        double tb = INFINITY;
-        for (double s = t_from + dt; s < T; s += dt)
-            if (brute_meets(&g, s, rc_v3_axpy(k.x, s - t_from, vk), &hk, NB)) {
-                double lo = s - dt, hi = s;
-                for (int b = 0; b < 30; b++) {
-                    const double mid = 0.5 * (lo + hi);
-                    if (brute_meets(&g, mid, rc_v3_axpy(k.x, mid - t_from, vk), &hk, NB))
-                        hi = mid;
-                    else
-                        lo = mid;
-                }
-                tb = hi;
-                break;
-            }
+        const double T = g.t_last + 1.0;
+        const brute_ctx bc = {&g, &hk, k.x, vk, t_from};
+        double tb = glue_first_meet(t_from, T, 1e-2, brute_meets_at, (void *)&bc);
         if (st == RC_OK && t > T)
             continue; /* beyond the scan */
         if (st == RC_MISS) {

@@ -97,6 +97,13 @@ static int meets(const rc_glue *g1, const rc_glue *g2, double t, int nb)
 /* par: 0 four independent momenta; 1 pieces of the two tubes parallel, by turns ball 2's
  * incoming or outgoing piece with ball 1's incoming or outgoing one (the straight
  * cylinders then meet at all times or never, and have no first contact to start from) */
+/* meets() of the two tubes in ctx (rc_glue[2]), NB samples: glue_first_meet's question */
+static int pair_meets(double t, void *ctx)
+{
+    const rc_glue *g = ctx;
+    return meets(&g[0], &g[1], t, NB);
+}
+
 static void scan(int dim, int trials, double tol, int par)
 {
     g_dim = dim;
@@ -134,21 +141,9 @@ static void scan(int dim, int trials, double tol, int par)
             ENSURE_MSG(st == RC_EOVERLAP, "trial %d: st %d", trial, st);
             continue;
         }
-        const double T = t_from + 6.0, dt = 1e-2;
-        double tb = INFINITY;
-        for (double s = t_from + dt; s < T; s += dt)
-            if (meets(&g1, &g2, s, NB)) {
-                double lo = s - dt, hi = s;
-                for (int b = 0; b < 30; b++) {
-                    const double mid = 0.5 * (lo + hi);
-                    if (meets(&g1, &g2, mid, NB))
-                        hi = mid;
-                    else
-                        lo = mid;
-                }
-                tb = hi;
-                break;
-            }
+        const double T = t_from + 6.0;
+        const rc_glue pair[2] = {g1, g2};
+        double tb = glue_first_meet(t_from, T, 1e-2, pair_meets, (void *)pair);
         if (st == RC_OK && t > T)
             continue; /* beyond the scan */
         if (st == RC_MISS) {
