@@ -16,8 +16,8 @@
  * lose a few bits at most and are kept (the classical path is one of them). */
 #include <math.h>
 
+#include "relcol/contacts.h"
 #include "relcol/law.h"
-#include "relcol/sim.h"
 #include "relcol/status.h"
 #include "pair_axis.h"
 
@@ -75,7 +75,13 @@ static int zmf_collide(const rc_collision_params *prm, rc_particle *a, rc_partic
 }
 
 /* The group solver: the same restitution condition on every contact, by the rule
- * prm->groups (lib/engine/contacts.c). */
+ * prm->groups (lib/contacts/), the sequential rule's single contacts by this law. */
+int rc_contacts_solve(const rc_collision_params *prm, size_t nballs, rc_particle *balls,
+                      size_t k, const rc_contact *contacts, double *jout)
+{
+    return rc_contacts_solve_law(&rc_law_zmf, prm, nballs, balls, k, contacts, jout);
+}
+
 static int zmf_group(const rc_collision_params *prm, size_t nballs, rc_particle *balls,
                      size_t k, const rc_contact *contacts, double *jout)
 {

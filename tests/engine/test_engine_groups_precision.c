@@ -621,7 +621,7 @@ static void test_impulses(void)
 
 /* ---- the sequential rule against a rule run wholly in __float128 --------------------- */
 
-/* `sequential` (lib/engine/contacts_seq.c) in __float128 from start to end: the group (the
+/* `sequential` (lib/contacts/sequential.c) in __float128 from start to end: the group (the
  * balls of its contacts: all of them here) taken to its ZMF, normals as their four-vectors
  * (u_ab.n/c^2, n) and events as events; there, the earliest approaching contact (ZMF time;
  * approach a0 = (M_b p_a.n - M_a p_b.n)/M_t above 1e-10 of the largest initial one, the

@@ -103,10 +103,10 @@ typedef struct rc_law {
     const char *summary; /* one line for --help */
     rc_law_fn collide;
     /* Optional (NULL: none): resolves a group of simultaneous contacts together, order
-     * independent (zmf: rc_contacts_resolve). Without one the engine resolves a group's
-     * contacts one at a time with collide (and the wall law) in a fixed order, which
-     * makes the outcome depend on that order (relcol/sim.h, rc_sim_diag.group_sequential;
-     * papers/simultaneous-contacts.md). */
+     * independent (zmf: rc_contacts_solve, relcol/contacts.h). Without one the engine
+     * resolves a group's contacts one at a time with collide (and the wall law) in a fixed
+     * order, which makes the outcome depend on that order (relcol/sim.h,
+     * rc_sim_diag.group_sequential; papers/simultaneous-contacts.md). */
     rc_law_group_fn group;
     /* Whether the law reads prm->alpha and prm->azimuth (an impact angle given apart from
      * the normal: cm-isotropic); apps offer --alpha only for such laws. */

@@ -7,6 +7,7 @@
 #include "relcol/vec.h"
 #include "relcol/kinematics.h"
 #include "relcol/law.h"
+#include "relcol/contacts.h"
 #include "relcol/toi.h"
 #include "relcol/sim.h"
 #include "relcol/moments.h"

@@ -1,15 +1,15 @@
-/* engine/contacts_seq.c — the sequential group rule (papers/simultaneous-contacts.md): the
- * contacts of a group one after another, in the order of their events' times in the group's
- * zero-momentum frame, the frame in which the soft model's stiff limit resolves them. */
+/* contacts/sequential.c — the sequential group rule (papers/simultaneous-contacts.md): the
+ * contacts of a group one after another, each by the law's pair kernel (the wall law for a
+ * wall), in the order of their events' times in the group's zero-momentum frame, the frame
+ * in which the soft model's stiff limit resolves them. */
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 
 #include "relcol/kinematics.h"
-#include "relcol/sim.h"
 #include "relcol/status.h"
 #include "../pair_axis.h"
-#include "contacts.h"
+#include "private.h"
 
 /* Two events tie when their ZMF times differ by no more than this many roundings of the
  * terms that make them: exact simultaneity, up to the round-off of computing it. (Classically
@@ -36,18 +36,30 @@ static double approach(double inv_c2, const rc_particle *b, const rc_contact *c)
     return rc_pair_a0(&b[c->a], &b[c->b], c->n, inv_c2, Ma, Mb, pan, rc_v3_dot(b[c->b].p, c->n));
 }
 
-int eng_contacts_sequential(const rc_collision_params *prm, size_t nballs, rc_particle *balls,
-                            size_t k, const rc_contact *contacts, double *jout)
+/* Contacts whose events tie, resolved together by the simultaneous rule in their own
+ * group's zero-momentum frame. */
+static int tied(const ctc_rule *r, size_t nballs, rc_particle *b, size_t ns,
+                const rc_contact *sub, double *jsub)
+{
+    const int st = ctc_check_input(r->inv_c2, nballs, b, ns, sub);
+    if (st != RC_OK)
+        return st;
+    const ctc_rule sim = {ctc_simultaneous, r->law, r->prm, r->inv_c2};
+    return ctc_in_group_zmf(&sim, nballs, b, ns, sub, jsub);
+}
+
+int ctc_sequential(const ctc_rule *r, size_t nballs, rc_particle *balls, size_t k,
+                   const rc_contact *contacts, double *jout)
 {
     if (k == 0)
         return RC_OK;
-    const double inv_c2 = rc_inv_c2_of(prm->c);
+    const double inv_c2 = r->inv_c2;
     /* The group's zero-momentum velocity: of the balls in its contacts; with a wall, whose
      * mass is infinite, the wall's rest frame. */
     rc_vec3 P;
     double Mt;
     int wall = 0;
-    eng_group_momentum(inv_c2, nballs, balls, k, contacts, &P, &Mt);
+    ctc_group_momentum(inv_c2, nballs, balls, k, contacts, &P, &Mt);
     for (size_t j = 0; j < k; j++)
         wall |= contacts[j].b < 0;
     const rc_vec3 u = wall ? rc_v3(0, 0, 0) : rc_v3_scale(1.0 / Mt, P);
@@ -75,7 +87,7 @@ int eng_contacts_sequential(const rc_collision_params *prm, size_t nballs, rc_pa
     }
     const double tie = SEQ_TIE_ULPS * DBL_EPSILON * tscale;
     const double at_rest = SEQ_APPROACH_REL * amax;
-    rc_collision_params pair = *prm;
+    rc_collision_params pair = *r->prm;
     st = RC_ENOCONVERGE;
     for (size_t step = 0; step < SEQ_MAX_PER_CONTACT * k; step++) {
         /* the earliest approaching contact, and every approaching one tied with it */
@@ -94,8 +106,7 @@ int eng_contacts_sequential(const rc_collision_params *prm, size_t nballs, rc_pa
                 sub[ns++] = contacts[j];
             }
         if (ns > 1) {
-            pair.groups = RC_GROUPS_SIMULTANEOUS;
-            const int s2 = rc_contacts_solve(&pair, nballs, b, ns, sub, jsub);
+            const int s2 = tied(r, nballs, b, ns, sub, jsub);
             if (s2 != RC_OK) {
                 st = s2;
                 goto done;
@@ -113,10 +124,11 @@ int eng_contacts_sequential(const rc_collision_params *prm, size_t nballs, rc_pa
         } else {
             const double before = rc_v3_dot(b[c->b].p, c->n);
             pair.eps = c->eps;
-            s1 = rc_law_zmf.collide(&pair, &b[c->a], &b[c->b], c->n);
+            s1 = r->law->collide(&pair, &b[c->a], &b[c->b], c->n);
             J[first] += rc_v3_dot(b[c->b].p, c->n) - before;
         }
-        if (s1 != RC_OK) { /* (approaching, so RC_NO_COLLISION cannot come) */
+        if (s1 != RC_OK) { /* (RC_NO_COLLISION: a law that finds not approaching what the
+                             * zmf law's approach does; the rule cannot go on) */
             st = s1 == RC_NO_COLLISION ? RC_ENOCONVERGE : s1;
             goto done;
         }
