@@ -42,11 +42,13 @@ static void usage(FILE *f)
 "  --lag T          Helfand lag in mean free times (default 20, within a block;\n"
 "                   D of a dense gas needs about 100 to take in the long-time tail)\n"
 "  --out DIR        output folder (default out/eos): eos.csv, eos.gp, eos.png\n"
-"Theory columns: 3-D Kolafa and Carnahan–Starling, 2-D virial series (Clisby & McCoy)\n"
-"and Santos et al.; transport (3-D): Enskog, and Speedy's D (a fit to 500-sphere\n"
+"Theory columns: 3-D Kolafa and Carnahan–Starling, 2-D Luding (2001) and Santos et al.;\n"
+"transport (3-D): Enskog, and Speedy's D (a fit to 500-sphere\n"
 "runs) moved to this box by Yeh & Hummer's finite-size law, and for uncontracted\n"
 "spheres at any c their own Chapman-Enskog D, eta and lambda (D_chapman_enskog,\n"
-"eta_chapman_enskog, lambda_chapman_enskog: dilute values times Enskog-type factors).\n"
+"eta_chapman_enskog, lambda_chapman_enskog: dilute values times Enskog-type factors;\n"
+"classically D_chapman_enskog is the first Sonine approximation, about 2 %% below the\n"
+"converged value). Fields without a measurement or a theory in this run are empty.\n"
 "Z, kT, P, D, eta, lambda each with a standard error from the blocks.\n");
 }
 
@@ -163,7 +165,15 @@ static int parse(int argc, char **argv, options *o)
     return 0;
 }
 
-static double z_theory(int dim, double eta) { return dim == 3 ? eos_z_kolafa(eta) : eos_z_disc_virial(eta); }
+/* ",value", or "," alone for a value that is not there (NaN): an empty CSV field */
+static void csv_field(FILE *f, const char *fmt, double x)
+{
+    fputc(',', f);
+    if (!isnan(x))
+        fprintf(f, fmt, x);
+}
+
+static double z_theory(int dim, double eta) { return dim == 3 ? eos_z_kolafa(eta) : eos_z_disc(eta); }
 
 static int write_script(const char *path, const options *o, char *err)
 {
@@ -204,15 +214,12 @@ static int write_script(const char *path, const options *o, char *err)
                 in->dim == 3
                     ? "z1(x) = (1 + x + x**2 - 2./3 * x**3 * (1 + x)) / (1 - x)**3\n"
                       "z2(x) = (1 + x + x**2 - x**3) / (1 - x)**3"
-                    : "b(k) = k == 1 ? 1 : k == 2 ? 0.782004 : k == 3 ? 0.53223180 : k == 4 ? "
-                      "0.33355604 : k == 5 ? 0.1988425 : k == 6 ? 0.1148728 : k == 7 ? 0.0649930 : "
-                      "k == 8 ? 0.0362193 : 0.0199537\n"
-                      "z1(x) = 1 + sum [k = 1:9] b(k) * (2 * x)**k\n"
+                    : "z1(x) = (1 + x**2 / 8) / (1 - x)**2 - 0.043 * x**4 / (1 - x)**3\n"
                       "z2(x) = 1 / (1 - 2 * x + (2 * pi / (2 * sqrt(3)) - 1) / (pi / (2 * "
                       "sqrt(3)))**2 * x**2)",
-                in->dim == 3 ? "Kolafa" : "virial series (Clisby–McCoy)",
+                in->dim == 3 ? "Kolafa" : "Luding 2001",
                 in->dim == 3 ? "Carnahan–Starling" : "Santos et al. 1995",
-                in->dim == 3 ? "Kolafa" : "virial series",
+                in->dim == 3 ? "Kolafa" : "Luding",
                 in->dim == 3 ? "Carnahan–Starling" : "Santos et al.");
     } else {
         app_gnuplot_head(f, "eos.png", "size 1500,520 enhanced font 'Sans,12' linewidth 1.4", 0);
@@ -270,7 +277,7 @@ int main(int argc, char **argv)
     printf("%s: %d-D, N = %zu, c = %s, frame %s, periodic box; Z against %s\n", prog,
            o.in.dim, o.in.n, app_fmt(o.in.c, fc), o.in.frame ? o.in.frame->name : "sphere",
            o.in.dim == 3 ? "Kolafa (Z_theory) and Carnahan–Starling"
-                         : "the virial series (Clisby–McCoy) and Santos et al.");
+                         : "Luding (2001) and Santos et al.");
     int rc = 0;
     for (int ip = 0; ip < o.npack && rc == 0; ip++)
         for (int it = 0; it < o.ntheta && rc == 0; it++) {
@@ -310,12 +317,21 @@ int main(int argc, char **argv)
             if (in.dim == 3 && in.transport && !(in.frame && in.frame->contracted) &&
                 tr_shear_heat_sphere(3, in.c, r.kT, 2, 200000, in.seed, &sh) == 0)
                 tr_shear_heat_enskog(&sh, in.c, r.kT, eta, &ece, &lce);
-            fprintf(a.f, "%d,%s,%zu,%.6g,%.6g,%.8g,%.3g,%.8g,%.3g,%.8g,%.8g,%.8g,%.3g,%.6g,%.3g,"
-                         "%.6g,%.3g,%.6g,%.3g,%.6g,%.6g,%.6g,%.6g,%llu,%llu,%.3f,%.6g,%.6g,%.6g\n",
-                    in.dim, app_fmt(in.c, fc), in.n, eta, in.theta, r.kT, r.kT_se, r.z, r.z_se,
-                    zt, zt2, r.p, r.p_se, r.d, r.d_se, r.eta, r.eta_se, r.lambda, r.lambda_se,
-                    de, ee, le, ds, (unsigned long long)r.collisions,
-                    (unsigned long long)r.overlaps, sec, dce, ece, lce);
+            fprintf(a.f, "%d,%s,%zu,%.6g,%.6g,%.8g,%.3g,%.8g,%.3g,%.8g,%.8g,%.8g,%.3g", in.dim,
+                    app_fmt(in.c, fc), in.n, eta, in.theta, r.kT, r.kT_se, r.z, r.z_se, zt, zt2,
+                    r.p, r.p_se);
+            /* what was not measured or has no theory here is an empty field, not 0 or nan */
+            const double tr = in.transport ? 1.0 : NAN;
+            const double tail1[] = {tr * r.d, tr * r.d_se, tr * r.eta, tr * r.eta_se,
+                                    tr * r.lambda, tr * r.lambda_se, de, ee, le, ds};
+            for (size_t q = 0; q < sizeof tail1 / sizeof *tail1; q++)
+                csv_field(a.f, q % 2 && q < 6 ? "%.3g" : "%.6g", tail1[q]);
+            fprintf(a.f, ",%llu,%llu,%.3f", (unsigned long long)r.collisions,
+                    (unsigned long long)r.overlaps, sec);
+            csv_field(a.f, "%.6g", dce);
+            csv_field(a.f, "%.6g", ece);
+            csv_field(a.f, "%.6g", lce);
+            fputc('\n', a.f);
             printf("packing %.4g theta %.4g: kT = %.5f +- %.5f  Z = %.5f +- %.5f  (theory %.5f: "
                    "%+.3f %% +- %.3f %%)  %llu collisions, %.1f s\n",
                    eta, in.theta, r.kT, r.kT_se, r.z, r.z_se, zt, 100.0 * (r.z / zt - 1.0),

@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "eos_lattice.h"
 #include "eos_theory.h"
 #include "juttner.h"
 #include "relcol/relcol.h"
@@ -54,7 +55,31 @@ static inline double eos_mean_se(const double *x, int k, double *se)
     return m;
 }
 
-/* The gas start: equal balls (m = 1, r = 1/2) on the lattice of rc_sim_gas_init, every
+/* The start rc_sim_gas_init cannot place: the close-packed lattice (eos_lattice.h) in the
+ * periodic cube of the same edge, balls of radius 1/2 at rest. */
+static inline int eos_start_close_packed(const eos_in *in, rc_sim_ball *b, rc_vec3 *box)
+{
+    const double vball = in->dim == 3 ? M_PI / 6.0 : M_PI / 4.0;
+    const double L = pow((double)in->n * vball / in->packing, 1.0 / in->dim);
+    rc_vec3 *x = malloc(in->n * sizeof *x);
+    double nn;
+    if (!x)
+        return RC_ENOMEM;
+    /* (the clearance of rc_sim_gas_init's lattice: no two balls touch at the start) */
+    const int st = eos_lattice(in->dim, in->n, L, 1.0 + 1e-6, in->seed, x, &nn);
+    for (size_t i = 0; st == 0 && i < in->n; i++) {
+        memset(&b[i], 0, sizeof b[i]);
+        b[i].x = x[i];
+        b[i].r = 0.5;
+        b[i].m = 1.0;
+    }
+    free(x);
+    *box = rc_v3(L, L, in->dim == 3 ? L : 0.0);
+    return st == 0 ? RC_OK : RC_EOVERLAP;
+}
+
+/* The gas start: equal balls (m = 1, r = 1/2) on the lattice of rc_sim_gas_init (or, where
+ * it has no room, the close-packed one), every
  * |p| the same -- relativistically the Jüttner mean energy at theta, classically
  * equipartition -- in pairs of opposite momenta (zero total momentum). */
 static inline int eos_start(const eos_in *in, rc_sim **out, double *box_edge, char *err)
@@ -67,6 +92,8 @@ static inline int eos_start(const eos_in *in, rc_sim **out, double *box_edge, ch
     rc_sim_gas_def g = {in->dim, in->n, 0.5, in->packing, 0.0, in->c, 8.0, in->seed};
     rc_vec3 box;
     int st = rc_sim_gas_init(&g, &box, b);
+    if (st == RC_EOVERLAP) /* its cubic lattice has no room: the close-packed one has */
+        st = eos_start_close_packed(in, b, &box);
     if (st != RC_OK) {
         snprintf(err, 256, "cannot place %zu balls at packing %g: %s", in->n, in->packing,
                  rc_strerror(st));

@@ -37,6 +37,17 @@ static inline double eos_z_disc_virial(double eta)
     return z;
 }
 
+/* Hard discs, the fluid to its freezing (eta ~ 0.70): Luding's equation of state (S. Luding,
+ * "Global equation of state of two-dimensional hard sphere systems", Phys. Rev. E 63,
+ * 042201 (2001), his P_4), Henderson's (1975) with a fourth-order correction fitted to
+ * simulations. The virial series above falls 0.5 % below it at eta 0.5 and 5.5 % at 0.65:
+ * its tail is not small there. */
+static inline double eos_z_disc(double eta)
+{
+    const double q = 1.0 - eta;
+    return (1.0 + eta * eta / 8.0) / (q * q) - 0.043 * eta * eta * eta * eta / (q * q * q);
+}
+
 /* Santos, López de Haro & Yuste (1995) for hard discs: eta_cp = pi / (2 sqrt 3). */
 static inline double eos_z_disc_shy(double eta)
 {
@@ -45,11 +56,11 @@ static inline double eos_z_disc_shy(double eta)
 }
 
 /* Contact value of the pair distribution, chi = g(sigma): from Z = 1 + b n chi
- * (b n = 4 eta in 3-D, 2 eta in 2-D), with Kolafa's Z (3-D) or the virial series (2-D). */
+ * (b n = 4 eta in 3-D, 2 eta in 2-D), with Kolafa's Z (3-D) or Luding's (2-D). */
 static inline double eos_chi(int dim, double eta)
 {
     return dim == 3 ? (eos_z_kolafa(eta) - 1.0) / (4.0 * eta)
-                    : (eos_z_disc_virial(eta) - 1.0) / (2.0 * eta);
+                    : (eos_z_disc(eta) - 1.0) / (2.0 * eta);
 }
 
 /* Hard spheres (3-D), number density n, sigma = m = 1, temperature kT: the first

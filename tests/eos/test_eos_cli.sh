@@ -33,4 +33,18 @@ expect_ok transport
 d=$(awk -F, 'NR == 2 {print ($14 > 0 && $16 > 0 && $18 > 0) ? "ok" : "bad"}' "$T/t/eos.csv")
 [ "$d" = ok ] && ok || bad "transport columns: $(sed -n 2p "$T/t/eos.csv")"
 
+# fields without a measurement or a theory are empty, never nan (D_chapman_enskog and its
+# two neighbours without --transport)
+grep -q nan "$T/e/eos.csv" && bad "nan in eos.csv: $(sed -n 2p "$T/e/eos.csv")" || ok
+d=$(awk -F, 'NR == 2 {print ($14 == "" && $27 == "" && $28 == "" && $29 == "") ? "ok" : "bad"}' "$T/e/eos.csv")
+[ "$d" = ok ] && ok || bad "unmeasured columns not empty: $(sed -n 2p "$T/e/eos.csv")"
+# a start for N that rc_sim_gas_init's cubic lattice cannot hold at 0.45 (250 on 7^3 sites)
+run '' --n 250 --packing 0.45 --t-run 10 --t-equil 2 --out "$T/p"
+expect_ok start-n250
+# 2-D: the theory column is Luding's disc equation of state (2001), 8.41536 at 0.65, not
+# the 10-term virial series (7.9512 there)
+run '' --dim 2 --n 200 --packing 0.65 --t-run 5 --t-equil 2 --out "$T/d2"
+expect_ok run2d
+close z-luding "$(awk -F, 'NR == 2 {print $10}' "$T/d2/eos.csv")" 8.41536 1e-5
+
 summary
