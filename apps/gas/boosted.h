@@ -138,6 +138,22 @@ static inline double bj1_density(double theta, double V, double u)
            (2.0 * gV * gsl_sf_bessel_K1_scaled(1.0 / theta));
 }
 
+/* bj1_density as a gsl_function; par: theta, V */
+static inline double bj1_density_fn(double u, void *par)
+{
+    const double *tv = par;
+    return bj1_density(tv[0], tv[1], u);
+}
+
+/* The mean of F over [lo, hi] (20-point Gauss-Legendre, table t): what a histogram bin of
+ * that width should hold per unit p', not the density at its midpoint (up to 4-5 % apart
+ * where the law curves within a bin). */
+static inline double bj_bin_mean(const gsl_function *F, double lo, double hi,
+                                 const gsl_integration_glfixed_table *t)
+{
+    return gsl_integration_glfixed(F, lo, hi, t) / (hi - lo);
+}
+
 /* weight per unit observer rapidity, unnormalised; par: theta, eta and 1 for Jüttner or
  * 0 for the "modified Jüttner" law exp(-E/kT)/E per du (exp(-cosh y/theta) per box
  * rapidity: the alternative Cubero et al. tested against), whose weight on the

@@ -28,6 +28,13 @@ static double px_density(double theta, double V, double px, double norm)
     return 2.0 * s * ymax / K / norm;
 }
 
+/* px_density as a gsl_function; par: theta, V, norm */
+static double px_density_fn(double px, void *par)
+{
+    const double *q = par;
+    return px_density(q[0], q[1], px, q[2]);
+}
+
 static double law_norm(double theta, double V)
 {
     const double u = bj_umax(theta, V);
@@ -67,12 +74,22 @@ static int write_files(const char *prog, const char *dir, const double *mom, siz
     if (app_atomic_open(&a, csv, err) != 0)
         goto out;
     fprintf(a.f, "px_lo,px_hi,px_mid,density,density_err,boosted_juttner,juttner_at_rest\n");
+    /* the laws as bin means, as the histogram is */
+    gsl_integration_glfixed_table *gl = gsl_integration_glfixed_table_alloc(20);
+    double qb[3] = {theta, V, nb}, q0[3] = {theta, 0.0, n0};
+    const gsl_function Fb = {px_density_fn, qb}, F0 = {px_density_fn, q0};
+    if (!gl) {
+        app_atomic_abort(&a);
+        app_errf(err, "out of memory");
+        goto out;
+    }
     for (int b = 0; b < MH; b++) {
         const double x0 = lo + bw * b, xm = x0 + 0.5 * bw;
         fprintf(a.f, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", x0, x0 + bw, xm,
-                h[b] / tot / bw, sqrt(h[b] * r->phi) / tot / bw, px_density(theta, V, xm, nb),
-                px_density(theta, 0.0, xm, n0));
+                h[b] / tot / bw, sqrt(h[b] * r->phi) / tot / bw,
+                bj_bin_mean(&Fb, x0, x0 + bw, gl), bj_bin_mean(&F0, x0, x0 + bw, gl));
     }
+    gsl_integration_glfixed_table_free(gl);
     if (app_atomic_commit(&a, err) != 0)
         goto out;
     if (app_atomic_open(&a, gp, err) != 0)
@@ -217,17 +234,26 @@ static int write_files_1d(const char *prog, const char *dir, const double *mom, 
         goto out;
     fprintf(a.f, "species,mass,theta,p_lo,p_hi,p_mid,density,density_err,boosted_juttner,"
                  "juttner_at_rest\n");
+    /* the laws as bin means, as the histogram is */
+    gsl_integration_glfixed_table *gl = gsl_integration_glfixed_table_alloc(20);
+    if (!gl) {
+        app_atomic_abort(&a);
+        app_errf(err, "out of memory");
+        goto out;
+    }
     for (int q = 0; q < r->nspec; q++) {
         const double bw = (hi[q] - lo[q]) / MH1;
+        double tb[2] = {r->sp_theta[q], r->v}, t0[2] = {r->sp_theta[q], 0.0};
+        const gsl_function Fb = {bj1_density_fn, tb}, F0 = {bj1_density_fn, t0};
         for (int b = 0; b < MH1; b++) {
             const double x0 = lo[q] + bw * b, xm = x0 + 0.5 * bw;
             fprintf(a.f, "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", q,
                     r->sp_mass[q], r->sp_theta[q], x0, x0 + bw, xm, h[q][b] / tot[q] / bw,
                     sqrt(h[q][b] * r->sp_phi[q]) / tot[q] / bw,
-                    bj1_density(r->sp_theta[q], r->v, xm),
-                    bj1_density(r->sp_theta[q], 0.0, xm));
+                    bj_bin_mean(&Fb, x0, x0 + bw, gl), bj_bin_mean(&F0, x0, x0 + bw, gl));
         }
     }
+    gsl_integration_glfixed_table_free(gl);
     if (app_atomic_commit(&a, err) != 0)
         goto out;
     if (app_atomic_open(&a, gp, err) != 0)
