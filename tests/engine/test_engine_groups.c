@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "rc_test.h"
+#include "three_group.h"
 #include "relcol/relcol.h"
 
 static rc_vec3 unit(rc_vec3 a) { return rc_v3_scale(1.0 / rc_v3_norm(a), a); }
@@ -33,18 +34,7 @@ static rc_contact contact(int a, int b, rc_vec3 n, double eps, double t, rc_vec3
  * deg, all radii 0.5, touching at table time 0 ----------------------------------------- */
 static void three(double c, double back, rc_particle P[3], rc_vec3 x[3], rc_contact C[2])
 {
-    const double k = rc_inv_c2_of(c), m[3] = {1, 1, 2};
-    const rc_vec3 n1 = rc_v3(cos(M_PI / 6), sin(M_PI / 6), 0);
-    const rc_vec3 n2 = rc_v3(cos(M_PI / 4), -sin(M_PI / 4), 0);
-    for (int i = 0; i < 3; i++)
-        P[i] = (rc_particle){m[i], rc_v3(0, 0, 0)};
-    ENSURE(rc_momentum_from_velocity(1.0, rc_v3(0.9, 0, 0), k, &P[0].p) == RC_OK);
-    /* moving along x, ball 0 reaches both at once from any distance back */
-    x[0] = rc_v3(-back, 0, 0);
-    x[1] = n1;
-    x[2] = n2;
-    C[0] = contact(0, 1, n1, 1.0, 0.0, rc_v3_scale(0.5, n1));
-    C[1] = contact(0, 2, n2, 1.0, 0.0, rc_v3_scale(0.5, n2));
+    ENSURE(rc_three_group(c, back, P, x, C) == RC_OK);
 }
 
 static rc_vec3 three_rule(int rule, double c, double t1, double t2)

@@ -9,23 +9,14 @@
 #include <math.h>
 
 #include "rc_test.h"
+#include "three_group.h"
 #include "relcol/relcol.h"
 
 #define C_LIGHT 3.0
 
 static void three(rc_particle P[3], rc_vec3 x[3], rc_contact C[2], double back)
 {
-    const double k = rc_inv_c2_of(C_LIGHT), m[3] = {1, 1, 2};
-    const rc_vec3 n1 = rc_v3(cos(M_PI / 6), sin(M_PI / 6), 0);
-    const rc_vec3 n2 = rc_v3(cos(M_PI / 4), -sin(M_PI / 4), 0);
-    for (int i = 0; i < 3; i++)
-        P[i] = (rc_particle){m[i], rc_v3(0, 0, 0)};
-    ENSURE(rc_momentum_from_velocity(1.0, rc_v3(0.9, 0, 0), k, &P[0].p) == RC_OK);
-    x[0] = rc_v3(-back, 0, 0);
-    x[1] = n1;
-    x[2] = n2;
-    C[0] = (rc_contact){0, 1, n1, 1.0, 0.0, rc_v3_scale(0.5, n1)};
-    C[1] = (rc_contact){0, 2, n2, 1.0, 0.0, rc_v3_scale(0.5, n2)};
+    ENSURE(rc_three_group(C_LIGHT, back, P, x, C) == RC_OK);
 }
 
 static rc_vec3 rule(int groups)
