@@ -287,7 +287,7 @@ static int parse_options(int argc, char **argv, options *o)
         return fail("--snapshots: n x snapshots = %.3g exceeds %.3g stored samples",
                     (double)o->n * (double)o->snapshots, MAX_SAMPLES);
     if (o->dim >= 2) /* a valid run in a frame that is not thermal: said before it starts */
-        gas_frame_warn(stderr, prog, o->frame, o->packing);
+        gas_frame_warn(stderr, prog, o->frame, o->dim, o->packing);
     return 0;
 }
 
@@ -433,7 +433,7 @@ static void fill_summary(const options *o, const samples *S, int nspec,
     g->seed = o->seed;
     g->frame = o->dim == 1 ? NULL : o->frame->name;
     g->readout = o->dim >= 2 && o->frame->per_ball ? readout_name[o->readout] : NULL;
-    g->thermal = o->dim == 1 ? -1 : gas_frame_thermal(o->frame);
+    g->thermal = o->dim == 1 ? -1 : gas_frame_thermal(o->frame, o->dim);
     g->boundary = o->periodic ? "periodic" : "walls";
     g->gamma_start = S->gamma0;
     g->theta_energy = S->theta_energy;

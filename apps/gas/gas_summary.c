@@ -51,7 +51,8 @@ static cJSON *chi2_object(const gas_summary_species *q)
 
 int gas_summary_write(const char *path, const gas_summary *s, char *err)
 {
-    static const char *const thermal[] = {"no", "dilute limit only", "every density"};
+    static const char *const thermal[] = {"no", "dilute limit only", "every density",
+                                          "not shown in 3-D"};
     cJSON *j = cJSON_CreateObject(), *x;
     if (!j)
         goto nomem;
@@ -84,7 +85,7 @@ int gas_summary_write(const char *path, const gas_summary *s, char *err)
     add(x, "snapshots", (double)s->snapshots);
     add(x, "blocks", s->blocks);
     add(x, "seed", (double)s->seed);
-    if (s->thermal >= 0 && s->thermal <= 2)
+    if (s->thermal >= 0 && s->thermal <= 3)
         cJSON_AddStringToObject(j, "frame_thermal", thermal[s->thermal]);
     add_thermometers(j, &s->sp[0]);
     add(j, "theta_microcanonical", s->sp[0].theta_micro);

@@ -11,12 +11,14 @@
  * every density (NULL if none is). */
 const rc_toi_frame *gas_default_frame(void);
 
-/* Is a frame's stationary state Jüttner? 2: at every density; 1: in the dilute limit
- * only; 0: not even there. */
-int gas_frame_thermal(const rc_toi_frame *f);
+/* Is a frame's stationary state Jüttner in a gas of dimension dim? 2: at every density;
+ * 1: in the dilute limit only; 0: not even there; 3: not shown (a covariant one-instant
+ * frame in 3-D, off Jüttner at the lowest packing measured). */
+int gas_frame_thermal(const rc_toi_frame *f, int dim);
 
 /* One warning line on f (stderr, "prog: warning: ...") when frame f's stationary state
  * is not Jüttner at this packing; nothing for a thermal one. */
-void gas_frame_warn(FILE *f, const char *prog, const rc_toi_frame *frame, double packing);
+void gas_frame_warn(FILE *f, const char *prog, const rc_toi_frame *frame, int dim,
+                    double packing);
 
 #endif

@@ -93,6 +93,19 @@ run '' --frame table --n 50 --t-equil 5 --t-sample 20 --snapshots 20 --out "$T/g
 [ "$st" -eq 0 ] && ok || bad "table run: exit $st"
 grep -q '^relcol-gas: warning: frame table: its stationary state is not Jüttner' "$T/err" \
     && ok || bad "no warning for the table frame: $(cat "$T/err")"
+# the zmf frame's dilute limit is Jüttner as tested in 2-D; in 3-D (off Jüttner at packing
+# 0.01) neither the warning nor summary.json claims it
+run '' --dim 3 --frame zmf --n 50 --packing 0.05 --t-equil 5 --t-sample 20 --snapshots 20 \
+    --out "$T/gz"
+[ "$st" -eq 0 ] && ok || bad "3-D zmf run: exit $st"
+grep -q '^relcol-gas: warning: frame zmf: in 3-D its gas is off Jüttner' "$T/err" \
+    && ok || bad "3-D zmf warning: $(cat "$T/err")"
+grep -q 'dilute limit' "$T/gz/summary.json" && bad "3-D zmf summary claims the dilute limit" || ok
+grep -q '"frame_thermal":	"not shown in 3-D"' "$T/gz/summary.json" && ok \
+    || bad "3-D zmf frame_thermal: $(grep frame_thermal "$T/gz/summary.json")"
+run '' --frame zmf --n 50 --packing 0.05 --t-equil 5 --t-sample 20 --snapshots 20 --out "$T/gz2"
+grep -q '"frame_thermal":	"dilute limit only"' "$T/gz2/summary.json" && ok \
+    || bad "2-D zmf frame_thermal: $(grep frame_thermal "$T/gz2/summary.json")"
 
 # a dense 3-D covariant gas runs past t = 615.37, where an overlap-policy kink put at a
 # kink still pending left the pair's geometry as it was and the same contact came up at
