@@ -381,9 +381,11 @@ positions, contact detection or overlaps. The deficit grows with θ (about −0.
 `N = 2000`, 300 collisions per disc) and stays at the lowest packings of the engine's gas
 (`tests/gas2d/test_gas2d_dilute.c`). So the −1.5 % is a property of the model — contracted
 shapes decided in the table frame — not a fault of the engine, and `relcol-gas` defaults
-to uncontracted discs, whose gas is Jüttner at every density. The zmf kernel is Jüttner
-only in the dilute limit: at finite density the excluded area of two contracted shapes
-depends on their velocities (issue 17, item 3).
+to uncontracted discs, whose gas is Jüttner at every density. The zmf kernel's Kac gas
+is Jüttner, but the engine's zmf gas is not at any packing measured (3-D, packing 0.01,
+θ = 1, N = 1000, issue 36's run: θ_pv − θ_γ = +0.00044 ± 0.00006): the excluded area of two contracted shapes depends
+on their velocities, and the one-instant velocity change adds to it
+(papers/finite-density.md).
 */
 int main(int argc, char **argv)
 {

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """share-map.py — the share of collisions the overlap policy decides in the covariant
 frame's periodic gas, by packing: one row per dimension and rms speed, one column per
-packing (papers/shape-change.md, section 8; issue 16's bound is 0.1 %).
+packing (papers/model-regime.md, section 4; issue 16's bound is 0.1 %).
 
     PYTHONPATH=build-release/python python3 scripts/share-map.py [collisions] [seed]
 

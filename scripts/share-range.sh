@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # share-range.sh — the overlap-policy share of the covariant frame over issue 16's test
 # range: periodic gases, 2-D to packing 0.7 and 3-D to 0.45, rms 0.5c and 0.9c, eps 1 and
-# 0.5 with TC (papers/shape-change.md section 8). One line per dimension, rms and eps,
+# 0.5 with TC (papers/model-regime.md section 4). One line per dimension, rms and eps,
 # one column per packing: the share of the collisions the policy decided.
 #
 #   scripts/share-range.sh [build dir (build-release)] [N (2000)] [collisions a ball (20)]

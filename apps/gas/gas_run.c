@@ -222,7 +222,7 @@ int gas_run_sim(const options *o, samples *S, char *err)
              * contact event's table time, the read-out papers/finite-density.md's
              * numbers are made with (rc_sim_get_ball applies a kink after its contact
              * event at the kink but one before it at the contact event, which selects
-             * balls by the sign of their kink's lead: papers/shape-change.md section 6);
+             * balls by the sign of their kink's lead: papers/covariant-frame.md section 1);
              * in every other frame the same as rc_sim_get_ball */
             rc_sim_ball q;
             st = rc_sim_get_ball_latest(s, i, &q);

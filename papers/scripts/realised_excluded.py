@@ -73,7 +73,7 @@ def main(argv):
         # each ball's latest segment (in the covariant frame every change at its contact
         # event's table time), the read-out finite-density.md's numbers were made with;
         # state() would read balls whose kink lies ahead on their incoming line
-        # (shape-change.md section 6)
+        # (covariant-frame.md section 1)
         st = sim.state(latest=True)
         p = st["p"]
         E = np.sqrt(1.0 + (p * p).sum(1))

@@ -114,7 +114,7 @@ def test_covariant_frame_counts_its_conflicts():
     assert abs(d["energy_error"]) < 1e-12 and d["momentum_error"] < 1e-12
     # the per-ball conflicts are counted, and a tube conflict is an overlap-policy contact
     assert 0 <= d["tube_conflicts"] <= d["overlaps"] and d["order_conflicts"] >= 0
-    # collisions undone (papers/shape-change.md section 7) are not policy decisions: a
+    # collisions undone (papers/covariant-frame.md section 2) are not policy decisions: a
     # conflict it undoes leaves no overlap behind (rollbacks + overlaps <= contacts)
     assert d["rollbacks"] > 0 and d["rollbacks"] + d["overlaps"] <= d["collisions"]
     zmf = relcol.Sim(dim=2, box=box, c=1.0, balls=balls, contact_frame="zmf",

@@ -1,11 +1,11 @@
 /* kink_clusters — the clusters of collisions joined by kinks that cross inside a ball
  * (kink_clusters.h), in the covariant frame's periodic gas: where the glued tube of
- * papers/shape-change.md section 1 is not defined, and whether that region percolates.
+ * papers/glued-tube.md section 1 is not defined, and whether that region percolates.
  * A measurement, not a test (test_engine_kink_clusters checks two points of it).
  *
  *   kink_clusters [dim packing v_rms N collisions_per_ball seed eps]
  *
- * No argument: the table of papers/shape-change.md section 8 (issue 16's range, 2-D to
+ * No argument: the table of papers/model-regime.md section 3 (issue 16's range, 2-D to
  * packing 0.7 and 3-D to 0.45, rms 0.5c and 0.9c, eps 1). One line per run: the share of
  * successive kink pairs that cross and the largest cluster's share of the collisions read,
  * over all kinks (p_all, big_all) and over kinks the overlap policy did not place (p_model,

@@ -2,7 +2,7 @@
  * only): the covariant engine is stepped one event at a time, every ball's kinks are read
  * as they are placed (its kink time, velocity before and after), and two collisions are
  * joined when a ball's kink at the later one crosses its kink at the earlier one inside the
- * ball (papers/shape-change.md section 8: the proper time between them below
+ * ball (papers/model-regime.md section 2: the proper time between them below
  * (r/c)|tanh(phi_0/2) w_0 - tanh(phi_2/2) w_2|) or the order rule put it there. Inside such
  * a cluster the glued tube of section 1 is not defined; the one rule that keeps it (every
  * cluster solved as one group, one kink a ball) makes a cluster one collision. Measured:
@@ -30,7 +30,7 @@ static inline double kc_dot(double inv_c2, rc_vec3 a, rc_vec3 b)
 /* The proper time below which two successive kinks of a ball of radius r, velocities v0
  * before the first, v1 between, v2 after the second, cross inside it: (r/c) times the
  * square root of (C01-1)/(C01+1) + (C21-1)/(C21+1) - 2 (C01 C21 - C02)/((1+C01)(1+C21))
- * (papers/shape-change.md section 8, checked there against eng_kinks_cross). */
+ * (papers/model-regime.md section 2, checked there against eng_kinks_cross). */
 static inline double kc_cross_tau(double inv_c2, double r, rc_vec3 v0, rc_vec3 v1, rc_vec3 v2)
 {
     const double c01 = kc_dot(inv_c2, v0, v1), c21 = kc_dot(inv_c2, v2, v1);

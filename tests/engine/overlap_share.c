@@ -5,7 +5,7 @@
  * A measurement, not a
  * test: the table and zmf frames change a ball's shape at one table instant, and the
  * covariant frame's glued tubes leave the contacts within a glue window to its rules
- * (papers/shape-change.md, section 6). Prints one line per run and the largest share;
+ * (papers/model-regime.md, section 4). Prints one line per run and the largest share;
  * argv[1] names one frame. Exit status 0 unless a run fails. (A benchmark target: meson
  * test --benchmark --suite relcol overlap-share.) */
 #include <stdio.h>

@@ -1,5 +1,5 @@
 /* test_engine_audit_covariant.c — an all-pairs audit of the covariant frame (per_ball kinks
- * on glued world tubes, papers/shape-change.md) in a 2-D walled gas at c = 1, independent
+ * on glued world tubes, papers/covariant-frame.md section 5) in a 2-D walled gas at c = 1, independent
  * of the engine's contact code. The engine is stepped one event at a time; after each
  * event the audit rebuilds every ball's worldline from what the engine reports (its lines
  * and, per kink, its glued tube: rc_sim_get_ball_latest, rc_sim_get_glue) and checks every
@@ -445,7 +445,7 @@ static void audit(size_t n, double packing, double v_rms, double eps, long event
             memset(&l, 0, sizeof l);
             l.v = v;
             l.und_lo = 1.0; /* (empty) */
-            /* a collision undone (papers/shape-change.md section 7): the new kink's
+            /* a collision undone (papers/covariant-frame.md section 2): the new kink's
              * incoming line is the one before the last (the same momentum, so the same
              * velocity to round-off), whose kink is gone -- or, a chain undone (section 8),
              * the one before the last two */
@@ -636,7 +636,7 @@ static void audit(size_t n, double packing, double v_rms, double eps, long event
  * its earlier glue windows is open -- collisions less than a glue window apart whose
  * centre kinks come in order (so the order rule lets them through) but whose hyperplanes
  * cross inside the ball, where the glued tube of the two is not defined. Before
- * collisions were undone (papers/shape-change.md section 7) each run had one:
+ * collisions were undone (papers/covariant-frame.md section 2) each run had one:
  *  - seed 1, eps 1: event 2974, slice t = 44.889, balls 12 and 30, depth 4.8e-4: ball 12
  *    met balls 7 and 30 at one table time (44.972583, two events in a row, not one group),
  *    its two windows overlapping, and ball 30's window holding both;

@@ -1,5 +1,5 @@
 /* test_engine_covariant — the covariant contact frame (rc_toi_frame.per_ball): each ball's
- * velocity changes at its own event of its glued world tube (papers/shape-change.md).
+ * velocity changes at its own event of its glued world tube (papers/covariant-frame.md).
  * Conservation to round-off in 2-D and 3-D gases with walls and periodic faces, elastic
  * and inelastic with TC; the classical limit bit for bit the zmf frame's; a two-ball
  * collision whose kinks are rc_glue_make's events and which gives the same kinks and
@@ -70,19 +70,19 @@ static void conserve(int dim, int periodic, double eps, double v, double packing
      * (heat, wall impulse and momentum taken back: a missing step would leave one
      * collision's heat twice, ~1e-3 of the energy) */
     ENSURE_MSG(d1.rollbacks > 0, "%dD per %d eps %g: no rollback", dim, periodic, eps);
-    /* and groups solved by an undo were undone into larger ones (papers/shape-change.md,
-     * section 8): a group of three or more contacts. None forms otherwise in these gases
+    /* and groups solved by an undo were undone into larger ones (papers/covariant-frame.md,
+     * section 3): a group of three or more contacts. None forms otherwise in these gases
      * (simultaneous at one table time; 2 at most in all eight before groups could be
      * undone), so it tells that the records of groups are written, kept and used, and
      * the sums above hold through them */
     ENSURE_MSG(d1.max_group >= 3, "%dD per %d eps %g: largest group %llu", dim, periodic, eps,
                (unsigned long long)d1.max_group);
-    /* and chains were undone (papers/shape-change.md section 8): a member's later
+    /* and chains were undone (papers/covariant-frame.md section 3): a member's later
      * collision first, then the ball's -- so the sums above hold through two collisions
      * taken back in one undo, and the previous records are kept and used */
     ENSURE_MSG(s->bk.chain_rollbacks > 0, "%dD per %d eps %g: no chain undone", dim, periodic,
                eps);
-    /* and overlap-policy decisions were undone (papers/shape-change.md section 8): solved
+    /* and overlap-policy decisions were undone (papers/covariant-frame.md section 3): solved
      * again with the contact that met a ball's tube before its kink, so the sums above
      * hold through a decision's record too */
     ENSURE_MSG(s->bk.policy_rollbacks > 0, "%dD per %d eps %g: no policy decision undone", dim,
@@ -167,7 +167,7 @@ static void test_dilute_share(void)
         rc_sim_free(&s);
     }
     /* ... and in the 3-D gas at packing 0.05, rms 0.5c (40 000 collisions, 30 decisions
-     * where the bound allows 40), since chains are undone (papers/shape-change.md section 8:
+     * where the bound allows 40), since chains are undone (papers/covariant-frame.md section 3:
      * a member of the ball's last collision that has collided since has that collision
      * undone first); 54 before, most of them that member's */
     rc_sim *s = util_gas(util_covariant_periodic(3), 2000, 0.05, 0.5, 3);
@@ -1095,7 +1095,7 @@ static void test_set_c_kinks(void)
  * the rms momentum; in the denser ring 16..120 (45 contacts) the dynamics itself
  * amplifies 1e-15 to ~5e-6, so no run can agree to 1e-9 there: the frames must agree
  * within that amplification (the zmf frame, which puts both changes at one table time,
- * differs by O(1) in both rings: papers/shape-change.md). Both runs must have ended
+ * differs by O(1) in both rings: papers/model-regime.md section 6). Both runs must have ended
  * after their last contacts (their ends are different hyperplanes; no pair may still
  * meet), or a contact could count in one run only. */
 static void cluster(double outer, double tol, int vs_jitter)
@@ -1135,7 +1135,7 @@ static void test_cluster(void)
     cluster(120.0, 1.0, 1); /* (within the round-off growth of the run itself) */
 }
 
-/* (f) a collision undone at a wall (papers/shape-change.md section 7): ball 0 (c = 1,
+/* (f) a collision undone at a wall (papers/covariant-frame.md section 3): ball 0 (c = 1,
  * rest radius 1, m = 1) runs into the wall x = 0 at 0.9c; ball 1 comes down onto it at
  * 0.95c and meets it on the incoming side of its wall kink's hyperplane, before that kink
  * along its tube. The wall collision is undone and the two contacts solved together: one

@@ -1,5 +1,5 @@
 /* test_engine_glue_precision.c — the glued tube's hyperplane H (normal u_in + u_out,
- * papers/shape-change.md) for a ball whose incoming and outgoing states both move near c
+ * papers/glued-tube.md section 2) for a ball whose incoming and outgoing states both move near c
  * the same way (issue 16, item 6): Lorentz factors 10 .. 1e8, the change of velocity that
  * of a collision in a frame where the ball is slow. Checked against __float128 on the same
  * double data: rc_glue_make's centre event on H (t_c - t_x, x_c) and its glue window
@@ -205,8 +205,8 @@ static q128 exact_cross(q128 k, double r, const rc_particle *S)
     return r * sqrtq(qdot(g, g) - gb * gb);
 }
 
-/* The same support from the three four-velocities alone (papers/shape-change.md section
- * 8, "Where the tube is not defined"): in the rest frame of the segment between the kinks
+/* The same support from the three four-velocities alone (papers/model-regime.md section
+ * 2): in the rest frame of the segment between the kinks
  * H_1 and H_2 reach the point at offset y at tau_1 + a_1.y/c and tau_2 + a_2.y/c, with
  * a_1 = tanh(phi_0/2) w_0, a_2 = tanh(phi_2/2) w_2 (w the unit direction of the velocity
  * before, resp. after, seen from that frame, phi its rapidity), so they cross inside the

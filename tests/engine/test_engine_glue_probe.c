@@ -1,5 +1,5 @@
 /* test_engine_glue_probe — two shortcuts the engine takes before the first contact of two
- * glued tubes (engine/glue_pair.h, papers/shape-change.md section 10), white-box:
+ * glued tubes (engine/glue_pair.h, papers/covariant-cost.md section 3), white-box:
  *  - tubes_overlap_probe: a point inside both tubes shrunk by 1e-6 of their radii is an
  *    overlap, so where the probe says so rc_glue_toi2 must answer RC_EOVERLAP; and on
  *    these configurations it must find a fair share of those overlaps, or it saves nothing;

@@ -1,4 +1,4 @@
-/* Where the glued tube is not defined (kink_clusters.h; papers/shape-change.md section 8):
+/* Where the glued tube is not defined (kink_clusters.h; papers/model-regime.md sections 2-3):
  * the crossing bound of two kinks against its closed forms and under a boost, and the
  * clusters of collisions joined by crossing kinks at the two ends of issue 16's range — a
  * dilute covariant gas where they stay single collisions, the densest 3-D row where
@@ -111,7 +111,7 @@ static void test_dilute(void)
  * overlap-policy decision -- the model's own kinks -- p is above 1/3 too and the largest
  * cluster holds a fixed share of the run: there the glued tube is not defined over a
  * finite part of the dynamics whatever the policy does, which is what blocks issue 16's
- * bound in this row (papers/shape-change.md section 11; measured at N 343, seeds 3-7: p
+ * bound in this row (papers/model-regime.md section 3; measured at N 343, seeds 3-7: p
  * 0.44-0.46, largest 0.09-0.25; at N 1000: 0.43, 0.22). */
 static void test_dense(void)
 {

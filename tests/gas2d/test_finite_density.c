@@ -246,7 +246,7 @@ static void test_zmf_agrees_cold(void)
  * 0.00168. Read on each ball's latest segment the split is of the order of (1) and moves
  * with the engine's rules: papers/finite-density.md section 5.1 has 0.89 +- 0.05 of it at
  * N = 4000 before overlaps the frame reported from too late a reference became contacts
- * (papers/shape-change.md section 8), 1.04, 0.91 and 1.05 with earlier rules, 0.62 +-
+ * (papers/covariant-frame.md section 3), 1.04, 0.91 and 1.05 with earlier rules, 0.62 +-
  * 0.11 here now (chains undone too: 0.58 +- 0.03 at N = 4000); the zmf frame 1.95. So no agreement with (1) is claimed: asserted are a
  * positive split on the latest segments, 4 errors above zero and below 1.5 of (1), which
  * the zmf frame's is not (the test tells the two frames apart), and, read from complete
@@ -258,7 +258,7 @@ static void test_zmf_agrees_cold(void)
  * one whose kink comes after it alike). rc_sim_get_ball's table-time picture applies a
  * kink after its contact event at the kink but one before it still at the contact event
  * (not processed yet), so it selects balls by the sign of their kink's lead: its split is
- * printed beside, not asserted (papers/shape-change.md, section 6). */
+ * printed beside, not asserted (papers/covariant-frame.md, section 1). */
 static void test_covariant_agrees(void)
 {
     const double eta = 0.2, s = predicted_slope();

@@ -1,5 +1,5 @@
 /* test_glue — a ball's world tube glued on H through a collision (rc_glue,
- * papers/shape-change.md): the incoming and outgoing cylinders have the same section on
+ * papers/glued-tube.md): the incoming and outgoing cylinders have the same section on
  * H, so the window H takes to sweep the ball is the same computed from either side, and
  * a point on H is in one cylinder exactly when it is in the other; the shape before the
  * window is the incoming one and after it the outgoing one; the classical limit has no
@@ -343,7 +343,7 @@ static void test_toi_brute_3d(void) { toi_brute(3, 80, 2e-2); }
 /* Windows of random elastic pair collisions (zmf law, c = 1, r = 1): the contact event
  * lies on the ball's section, so H reaches it inside the window, t_first <= t_x <= t_last.
  * Prints the mean window and the mean lead of its start over the contact (the figures of
- * papers/shape-change.md, section 4). */
+ * papers/model-regime.md, section 5). */
 static void test_window_lengths(void)
 {
     for (int vi = 0; vi < 2; vi++) {

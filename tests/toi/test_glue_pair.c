@@ -1,5 +1,5 @@
 /* test_glue_pair — the first contact of two glued world tubes (rc_glue_toi2,
- * papers/shape-change.md section 10), both balls inside their glue windows:
+ * papers/glued-tube.md section 4), both balls inside their glue windows:
  *   - against a scan in time of the two sections sampled on their boundaries and tested
  *     with rc_glue_inside (independent of the solver's convex programs), 2-D and 3-D;
  *   - a tube without a kink (in = out) is a rigid ball: rc_glue_toi's answer;
