@@ -38,4 +38,10 @@ int ce_rel_juttner_moments(double z, ce_rel_juttner *out, const char **why);
 int ce_rel_compute(double z, int order, const ce_rel_quad *q, ce_rel_coeffs *out,
                    const char **why);
 
+/* Jüttner pair averages (independent balls at kT = c = 1): the Møller speed
+ * <v_M> = <sqrt((p0.p1)^2 - m^4)/(E0 E1)>, whose sigma_T n^2/2 is the invariant collision
+ * rate, and the table-frame relative speed <|v0 - v1|>; 0, or -1 with a reason. */
+int ce_rel_pair_speeds(double z, const ce_rel_quad *q, double *v_moller, double *v_rel,
+                       const char **why);
+
 #endif
