@@ -106,6 +106,52 @@ int ce_rel_juttner_moments(double z, ce_rel_juttner *out, const char **why)
     return 0;
 }
 
+/* The three Gauss rules of the pair integrals: u (weight e^-u), w (w^1/2 e^-w), cos. */
+typedef struct {
+    gsl_integration_fixed_workspace *u, *w, *c;
+} ce_rules;
+
+static void rules_free(ce_rules *r)
+{
+    gsl_integration_fixed_free(r->u);
+    gsl_integration_fixed_free(r->w);
+    gsl_integration_fixed_free(r->c);
+}
+
+static int rules_alloc(const ce_rel_quad *q, ce_rules *r, const char **why)
+{
+    r->u = gsl_integration_fixed_alloc(gsl_integration_fixed_laguerre, q->n_u, 0.0, 1.0, 0.0, 0.0);
+    r->w = gsl_integration_fixed_alloc(gsl_integration_fixed_laguerre, q->n_w, 0.0, 1.0, 0.5, 0.0);
+    r->c = gsl_integration_fixed_alloc(gsl_integration_fixed_legendre, q->n_cos, -1.0, 1.0, 0.0, 0.0);
+    if (r->u && r->w && r->c)
+        return 0;
+    rules_free(r);
+    *why = "out of memory";
+    return -1;
+}
+
+/* The pair at one (u, w) node, P along z: CM momentum p*, and the boost's products
+ * sinh chi E*, sinh chi p*, cosh chi p*, cosh chi E* - m, written without cancellation
+ * (at m = 0 and small s as well). Ball 0 at CM angle cos t has K0 = kin + sh_p cos t,
+ * p0 = (p* sin t, 0, sh_E + ch_p cos t); ball 1 the same with cos t -> -cos t, -px. */
+typedef struct {
+    double rs, ps2, ps, sh_E, sh_p, ch_p, kin;
+} ce_node;
+
+static ce_node node_at(double m, double u, double w)
+{
+    ce_node n;
+    n.rs = u + 2.0 * m;
+    n.ps2 = u * (0.25 * u + m);
+    n.ps = sqrt(n.ps2);
+    const double root = sqrt(w * (2.0 * n.rs + w)); /* sqrt(s) sinh chi */
+    n.sh_E = 0.5 * root;
+    n.sh_p = root * n.ps / n.rs;
+    n.ch_p = n.ps + w * n.ps / n.rs;
+    n.kin = 0.5 * (u + w);
+    return n;
+}
+
 /* One (u, w) node's pair: Psi_i summed over both balls at each CM angle, contracted
  * over components; G accumulates int dcos Psi_i . Psi_j, M the mean's axial part
  * (the means are axial about the pair's momentum P, the zz component fixes them). */
@@ -117,11 +163,8 @@ typedef struct {
 static void pair_angles(double m, double u, double w, int N, const gsl_integration_fixed_workspace *gc,
                         ce_angles *a)
 {
-    const double rs = u + 2.0 * m, ps2 = u * (0.25 * u + m), ps = sqrt(ps2);
-    const double root = sqrt(w * (2.0 * rs + w));   /* sqrt(s) sinh chi */
-    const double sh_E = 0.5 * root, sh_p = root * ps / rs; /* sinh chi E*, sinh chi p* */
-    const double ch_p = ps + w * ps / rs;           /* cosh chi p* */
-    const double kin = 0.5 * (u + w);               /* cosh chi E* - m */
+    const ce_node nd = node_at(m, u, w);
+    const double ps = nd.ps, sh_E = nd.sh_E, sh_p = nd.sh_p, ch_p = nd.ch_p, kin = nd.kin;
     const double *xc = gsl_integration_fixed_nodes(gc), *wc = gsl_integration_fixed_weights(gc);
     const int nc = (int)gsl_integration_fixed_n(gc);
     for (int s = 0; s < CE_NSET; s++)
@@ -187,30 +230,20 @@ int ce_rel_pair_speeds(double z, const ce_rel_quad *q, double *v_moller, double 
     ce_rel_juttner J;
     if (check_z(z, why) || check_quad(&qd, why) || ce_rel_juttner_moments(z, &J, why))
         return -1;
-    gsl_integration_fixed_workspace *gu =
-        gsl_integration_fixed_alloc(gsl_integration_fixed_laguerre, qd.n_u, 0.0, 1.0, 0.0, 0.0);
-    gsl_integration_fixed_workspace *gw =
-        gsl_integration_fixed_alloc(gsl_integration_fixed_laguerre, qd.n_w, 0.0, 1.0, 0.5, 0.0);
-    gsl_integration_fixed_workspace *gc =
-        gsl_integration_fixed_alloc(gsl_integration_fixed_legendre, qd.n_cos, -1.0, 1.0, 0.0, 0.0);
-    if (!gu || !gw || !gc) {
-        gsl_integration_fixed_free(gu);
-        gsl_integration_fixed_free(gw);
-        gsl_integration_fixed_free(gc);
-        *why = "out of memory";
+    ce_rules R;
+    if (rules_alloc(&qd, &R, why))
         return -1;
-    }
     const double m = z, Z2 = J.z_scaled * J.z_scaled;
-    const double *xu = gsl_integration_fixed_nodes(gu), *wu = gsl_integration_fixed_weights(gu);
-    const double *xw = gsl_integration_fixed_nodes(gw), *ww = gsl_integration_fixed_weights(gw);
-    const double *xc = gsl_integration_fixed_nodes(gc), *wc = gsl_integration_fixed_weights(gc);
+    const double *xu = gsl_integration_fixed_nodes(R.u), *wu = gsl_integration_fixed_weights(R.u);
+    const double *xw = gsl_integration_fixed_nodes(R.w), *ww = gsl_integration_fixed_weights(R.w);
+    const double *xc = gsl_integration_fixed_nodes(R.c), *wc = gsl_integration_fixed_weights(R.c);
     double sm = 0.0, sr = 0.0;
     for (int iu = 0; iu < qd.n_u; iu++)
         for (int iw = 0; iw < qd.n_w; iw++) {
-            const double u = xu[iu], w = xw[iw], rs = u + 2.0 * m, ps2 = u * (0.25 * u + m);
-            const double ps = sqrt(ps2), root = sqrt(w * (2.0 * rs + w));
-            const double sh_E = 0.5 * root, sh_p = root * ps / rs, ch_p = ps + w * ps / rs;
-            const double kin = 0.5 * (u + w);
+            const double u = xu[iu], w = xw[iw];
+            const ce_node nd = node_at(m, u, w);
+            const double rs = nd.rs, ps2 = nd.ps2, ps = nd.ps, sh_E = nd.sh_E, sh_p = nd.sh_p,
+                         ch_p = nd.ch_p, kin = nd.kin;
             /* d^4P e^-(P0 - 2m), as in ce_rel_compute */
             const double d4p = wu[iu] * ww[iw] * 4.0 * M_PI * rs * sqrt(2.0 * rs + w) / Z2;
             /* d^3p d^3p1 v_M = p*^2 dOmega d^4P */
@@ -226,9 +259,7 @@ int ce_rel_pair_speeds(double z, const ce_rel_quad *q, double *v_moller, double 
             }
             sr += d4p * 2.0 * M_PI * (ps / rs) * ang;
         }
-    gsl_integration_fixed_free(gu);
-    gsl_integration_fixed_free(gw);
-    gsl_integration_fixed_free(gc);
+    rules_free(&R);
     *v_moller = sm;
     *v_rel = sr;
     return 0;
@@ -268,24 +299,18 @@ int ce_rel_compute(double z, int order, const ce_rel_quad *q, ce_rel_coeffs *out
 
     /* Pair measure d^3p d^3p1 v_Moller sigma* dOmega' = p*^2 dOmega dOmega' d^4P / (4 pi),
      * d^4P e^-(P0 - 2m) = 4 pi sqrt(s) sqrt(2 sqrt(s) + w) [e^-u du] [w^1/2 e^-w dw]. */
-    gsl_integration_fixed_workspace *gu =
-        gsl_integration_fixed_alloc(gsl_integration_fixed_laguerre, qd.n_u, 0.0, 1.0, 0.0, 0.0);
-    gsl_integration_fixed_workspace *gw =
-        gsl_integration_fixed_alloc(gsl_integration_fixed_laguerre, qd.n_w, 0.0, 1.0, 0.5, 0.0);
-    gsl_integration_fixed_workspace *gc =
-        gsl_integration_fixed_alloc(gsl_integration_fixed_legendre, qd.n_cos, -1.0, 1.0, 0.0, 0.0);
+    ce_rules R;
+    if (rules_alloc(&qd, &R, why))
+        return -1;
     ce_angles *ang = malloc(sizeof *ang);
-    if (!gu || !gw || !gc || !ang) {
-        gsl_integration_fixed_free(gu);
-        gsl_integration_fixed_free(gw);
-        gsl_integration_fixed_free(gc);
-        free(ang);
+    if (!ang) {
+        rules_free(&R);
         *why = "out of memory";
         return -1;
     }
     double A[CE_NSET][CE_REL_MAX_ORDER][CE_REL_MAX_ORDER] = {{{0}}};
-    const double *xu = gsl_integration_fixed_nodes(gu), *wu = gsl_integration_fixed_weights(gu);
-    const double *xw = gsl_integration_fixed_nodes(gw), *ww = gsl_integration_fixed_weights(gw);
+    const double *xu = gsl_integration_fixed_nodes(R.u), *wu = gsl_integration_fixed_weights(R.u);
+    const double *xw = gsl_integration_fixed_nodes(R.w), *ww = gsl_integration_fixed_weights(R.w);
     const double Z2 = J.z_scaled * J.z_scaled;
     /* Brackets: (1/4) int dOmega dOmega' (Delta psi_i)(Delta psi_j), in and out directions
      * independent and isotropic: 2 [4 pi int Psi_i Psi_j - int Psi_i . int Psi_j]; the
@@ -295,7 +320,7 @@ int ce_rel_compute(double z, int order, const ce_rel_quad *q, ce_rel_coeffs *out
         for (int iw = 0; iw < qd.n_w; iw++) {
             const double u = xu[iu], w = xw[iw], rs = u + 2.0 * m, ps2 = u * (0.25 * u + m);
             const double meas = wu[iu] * ww[iw] * rs * sqrt(2.0 * rs + w) * ps2 / (2.0 * Z2);
-            pair_angles(m, u, w, N, gc, ang);
+            pair_angles(m, u, w, N, R.c, ang);
             for (int s = 0; s < CE_NSET; s++)
                 for (int i = 0; i < N; i++)
                     for (int j = 0; j <= i; j++)
@@ -303,9 +328,7 @@ int ce_rel_compute(double z, int order, const ce_rel_quad *q, ce_rel_coeffs *out
                                               4.0 * M_PI * M_PI * mean_weight[s] *
                                                   ang->M[s][i] * ang->M[s][j]);
         }
-    gsl_integration_fixed_free(gu);
-    gsl_integration_fixed_free(gw);
-    gsl_integration_fixed_free(gc);
+    rules_free(&R);
     free(ang);
 
     double coef[CE_NSET];

@@ -173,6 +173,24 @@ static void test_monte_carlo_z1(void)
            " quadrature %.6f %.6f\n", eta, 100.0 * ee, lam, 100.0 * el, c.eta, c.lambda);
 }
 
+/* The pair speeds behind the collision rates (section 7): massless <v_M> = 1 and
+ * <|v0 - v1|> = 4/3 (isotropic unit velocities: 1 - cos and sqrt(2 - 2 cos) averaged);
+ * classically both 4 sqrt(kT/(pi m)) (relative correction ~1/z). */
+static void test_pair_speeds(void)
+{
+    const ce_rel_quad q = {64, 64, 96};
+    double vm, vr;
+    const char *why = "";
+    ENSURE(ce_rel_pair_speeds(0.0, &q, &vm, &vr, &why) == 0);
+    ENSURE_REL(vm, 1.0, 1e-10);
+    ENSURE_REL(vr, 4.0 / 3.0, 1e-9);
+    ENSURE(ce_rel_pair_speeds(1e4, &q, &vm, &vr, &why) == 0);
+    ENSURE_REL(vr, 4.0 / sqrt(M_PI * 1e4), 3e-4);
+    ENSURE_REL(vm, vr, 1e-4);
+    ENSURE(vm < vr);
+    ENSURE(ce_rel_pair_speeds(-1.0, &q, &vm, &vr, &why) == -1);
+}
+
 static void test_bad_input(void)
 {
     ce_rel_coeffs c;
@@ -194,6 +212,7 @@ int main(void)
     RUN_TEST(test_classical);
     RUN_TEST(test_quadrature_converged);
     RUN_TEST(test_monte_carlo_z1);
+    RUN_TEST(test_pair_speeds);
     RUN_TEST(test_bad_input);
     RC_TEST_MAIN_END();
 }
