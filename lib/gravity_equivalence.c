@@ -1,0 +1,119 @@
+/* gravity_equivalence.c — the box frame of a floor with proper acceleration g (Rindler):
+ * the clock is the floor's proper time tau, a free ball's path is the image of a straight
+ * line of the box's momentary rest frame, and H = (1 + g z/c^2) E is conserved (Tolman's
+ * redshifted energy). Closed forms of papers/gravity.md sections 2 and 3. */
+#include "gravity_private.h"
+
+/* 1 + g z/c^2 at height z: the lapse sqrt(-g_00); > 0 above the horizon */
+static double lapse(const rc_gravity *f, double z) { return 1.0 + f->g * z * f->inv_c2; }
+
+/* The box time from an event of the ball's line at t' (comoving-frame time since tau0) and
+ * height zp there: tanh(g dtau/c) = c t'/(zp + L). RC_MISS beyond the horizon. */
+static int box_time(const rc_gravity *f, double tp, double zp, double *dtau)
+{
+    const double l = lapse(f, zp);
+    if (!(l > 0.0))
+        return RC_MISS;
+    const double xarg = f->g * tp * sqrt(f->inv_c2) / l;
+    if (!(xarg < 1.0))
+        return RC_MISS;
+    *dtau = tp * grav_atanhc(xarg) / l;
+    return isfinite(*dtau) && *dtau > 0.0 ? RC_OK : RC_MISS;
+}
+
+static int equiv_check(const rc_gravity *f, double m, rc_vec3 x, rc_vec3 p)
+{
+    int st = rc_gravity_check_(f, m, x, p);
+    if (st != RC_OK)
+        return st;
+    return lapse(f, rc_v3_get(x, f->axis)) > 0.0 ? RC_OK : RC_EINVAL; /* below the horizon */
+}
+
+static int equiv_drift(const rc_gravity *f, double m, rc_vec3 *x, rc_vec3 *p, double dt)
+{
+    int st = equiv_check(f, m, *x, *p);
+    if (st != RC_OK)
+        return st;
+    if (!isfinite(dt))
+        return RC_ENONFINITE;
+    if (!(dt >= 0.0))
+        return RC_EINVAL;
+    const int ax = f->axis;
+    const double i2 = f->inv_c2, g = f->g;
+    const double m0 = rc_mass_rel(m, *p, i2);
+    const rc_vec3 v = rc_v3_scale(1.0 / m0, *p);
+    const double z0 = rc_v3_get(*x, ax), vz = rc_v3_get(v, ax), pz0 = rc_v3_get(*p, ax);
+    const double phi = g * dt * sqrt(i2), ch = cosh(phi);
+    const double T = grav_tanhc(phi), sh = grav_sinhc(phi), hc = grav_sinhc(0.5 * phi);
+    /* where the line meets the slice: comoving time t', height z' there */
+    const double tp = lapse(f, z0) * dt * T / (1.0 - g * vz * dt * i2 * T);
+    const double zp = z0 + vz * tp;
+    rc_vec3 xn = rc_v3_axpy(*x, tp, v);
+    rc_v3_set(&xn, ax, (zp - 0.5 * g * dt * dt * hc * hc) / ch);
+    rc_vec3 pn = *p; /* the boost by phi along the field */
+    rc_v3_set(&pn, ax, ch * pz0 - g * dt * sh * m0);
+    if (!rc_v3_isfinite(xn) || !rc_v3_isfinite(pn))
+        return RC_ENONFINITE;
+    *x = xn;
+    *p = pn;
+    return RC_OK;
+}
+
+static int equiv_plane_time(const rc_gravity *f, double m, rc_vec3 x, rc_vec3 p, int k,
+                            double X, double *dt)
+{
+    int st = equiv_check(f, m, x, p);
+    if (st != RC_OK)
+        return st;
+    if (k < 0 || k > 2 || !dt)
+        return RC_EINVAL;
+    if (!isfinite(X))
+        return RC_ENONFINITE;
+    const int ax = f->axis;
+    const double i2 = f->inv_c2;
+    const double m0 = rc_mass_rel(m, p, i2);
+    const double z0 = rc_v3_get(x, ax), vz = rc_v3_get(p, ax) / m0;
+    double tp;
+    if (k == ax) {
+        if (!(lapse(f, X) > 0.0))
+            return RC_EINVAL; /* a plane at or below the horizon */
+        /* the line against the hyperbola of the box points at height X (proper
+         * acceleration gx), divided through by 2 (L + X) */
+        const double gx = f->g / lapse(f, X), Z = z0 - X;
+        rc_vec3 pp = p;
+        rc_v3_set(&pp, ax, 0.0);
+        const double slow = (m * m + rc_v3_norm2(pp) * i2) / (m0 * m0); /* 1 - vz^2/c^2 */
+        st = rc_gravity_first_root_(-0.5 * gx * slow, (1.0 + gx * Z * i2) * vz,
+                                    Z * (1.0 + 0.5 * gx * Z * i2), &tp);
+        if (st != RC_OK)
+            return st;
+    } else {
+        const double vk = rc_v3_get(p, k) / m0;
+        if (vk == 0.0)
+            return RC_MISS;
+        tp = (X - rc_v3_get(x, k)) / vk;
+        if (!(tp > 0.0))
+            return RC_MISS;
+    }
+    return box_time(f, tp, z0 + vz * tp, dt);
+}
+
+static int equiv_energy(const rc_gravity *f, double m, rc_vec3 x, rc_vec3 p, double *h)
+{
+    int st = equiv_check(f, m, x, p);
+    if (st != RC_OK)
+        return st;
+    if (!h)
+        return RC_EINVAL;
+    const double z = rc_v3_get(x, f->axis), k = rc_kinetic_energy(m, p, f->inv_c2);
+    *h = k + m * f->g * z + f->g * z * k * f->inv_c2;
+    return RC_OK;
+}
+
+const rc_gravity_coupling rc_gravity_equivalence = {
+    .name = "equivalence",
+    .summary = "box of a floor accelerated at g (Rindler); H = (1 + g z/c^2) E",
+    .drift = equiv_drift,
+    .plane_time = equiv_plane_time,
+    .energy = equiv_energy,
+};
