@@ -2,6 +2,8 @@
  * the clock is the floor's proper time tau, a free ball's path is the image of a straight
  * line of the box's momentary rest frame, and H = (1 + g z/c^2) E is conserved (Tolman's
  * redshifted energy). Closed forms of papers/gravity.md sections 2 and 3. */
+#include <float.h>
+
 #include "gravity_private.h"
 
 /* 1 + g z/c^2 at height z: the lapse sqrt(-g_00); > 0 above the horizon */
@@ -110,10 +112,70 @@ static int equiv_energy(const rc_gravity *f, double m, rc_vec3 x, rc_vec3 p, dou
     return RC_OK;
 }
 
+
+/* Two balls on one slice of the box's time: each meets the slice tanh(g dtau/c) = g s/c at
+ * t' = a s/(1 - b s) on its line, a = 1 + g z/c^2, b = g v_z/c^2. Their distance there is
+ * the Minkowski interval of the two events, and times Q = (1 - b_0 s)(1 - b_1 s) squared it
+ * is a quartic in s (papers/gravity.md section 3): |A(s)|^2 - (c C(s))^2 - d^2 Q(s)^2 with
+ * A = (the events' separation) Q and C = (their time difference) Q. */
+static int equiv_pair_time(const rc_gravity *f, const rc_toi_ball *a, const rc_toi_ball *b,
+                           double t_max, double *dt)
+{
+    int st = rc_gravity_pair_check_(f, a, b, t_max, dt);
+    if (st == RC_OK)
+        st = equiv_check(f, a->m, a->x, a->p);
+    if (st == RC_OK)
+        st = equiv_check(f, b->m, b->x, b->p);
+    if (st != RC_OK)
+        return st;
+    const int ax = f->axis;
+    const double i2 = f->inv_c2, g = f->g, rc = sqrt(i2), d = a->r + b->r;
+    const rc_vec3 va = rc_v3_scale(1.0 / rc_mass_rel(a->m, a->p, i2), a->p);
+    const rc_vec3 vb = rc_v3_scale(1.0 / rc_mass_rel(b->m, b->p, i2), b->p);
+    const double aa = lapse(f, rc_v3_get(a->x, ax)), ab = lapse(f, rc_v3_get(b->x, ax));
+    const double ba = g * rc_v3_get(va, ax) * i2, bb = g * rc_v3_get(vb, ax) * i2;
+    const double q[3] = {1.0, -(ba + bb), ba * bb};
+    const rc_vec3 dx = rc_v3_sub(a->x, b->x);
+    double p[5] = {0};
+    for (int k = 0; k < 3; k++) {
+        const double x0 = rc_v3_get(dx, k), wa = rc_v3_get(va, k) * aa, wb = rc_v3_get(vb, k) * ab;
+        const double A[3] = {x0, x0 * q[1] + wa - wb, x0 * q[2] - wa * bb + wb * ba};
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++)
+                p[i + j] += A[i] * A[j];
+    }
+    const double dz = rc_v3_get(dx, ax);
+    const double C[3] = {0.0, g * rc * dz,
+                         g * rc * (ab * rc_v3_get(va, ax) - aa * rc_v3_get(vb, ax))};
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            p[i + j] -= C[i] * C[j] + d * d * q[i] * q[j];
+    if (p[0] < -RC_GRAVITY_TOUCH * d * d)
+        return RC_EOVERLAP;
+    if (p[0] <= RC_GRAVITY_TOUCH * d * d && p[1] < 0.0) {
+        *dt = 0.0; /* touching and approaching */
+        return RC_OK;
+    }
+    /* the slice parameter s = (c/g) tanh(g dtau/c) < c/g, and s at t_max */
+    const double s_max = rc > 0.0 ? 1.0 / (g * rc) : INFINITY;
+    const double s_hi = isfinite(t_max) ? t_max * grav_tanhc(g * t_max * rc) : s_max;
+    double s;
+    const double lo = p[0] > RC_GRAVITY_TOUCH * d * d ? 0.0 : DBL_MIN;
+    st = rc_gravity_poly_first_fall_(p, 4, lo, fmin(s_hi, s_max), &s);
+    if (st != RC_OK)
+        return st;
+    const double x = g * s * rc;
+    if (!(x < 1.0))
+        return RC_MISS;
+    *dt = s * grav_atanhc(x);
+    return *dt <= t_max ? RC_OK : RC_MISS;
+}
+
 const rc_gravity_coupling rc_gravity_equivalence = {
     .name = "equivalence",
     .summary = "box of a floor accelerated at g (Rindler); H = (1 + g z/c^2) E",
     .drift = equiv_drift,
     .plane_time = equiv_plane_time,
     .energy = equiv_energy,
+    .pair_time = equiv_pair_time,
 };

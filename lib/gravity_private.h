@@ -22,4 +22,18 @@ int rc_gravity_check_(const rc_gravity *f, double m, rc_vec3 x, rc_vec3 p);
  * textbook formula; RC_MISS when there is none. */
 int rc_gravity_first_root_(double a, double b, double c0, double *t);
 
+/* The balls of a pair query, the field and the horizon: RC_ERADIUS for a radius <= 0,
+ * RC_EINVAL for t_max < 0 or NaN (t_max may be INFINITY) or no output. */
+int rc_gravity_pair_check_(const rc_gravity *f, const rc_toi_ball *a, const rc_toi_ball *b,
+                           double t_max, const double *dt);
+
+/* Overlap beyond this share of (r_a + r_b)^2 at the start is RC_EOVERLAP; within it, a pair
+ * counts as touching (the engine's positions are themselves computed). */
+#define RC_GRAVITY_TOUCH 1e-12
+
+/* The smallest s in (lo, hi] where the polynomial c[0] + c[1] s + ... + c[deg] s^deg
+ * (deg <= 4) falls from > 0 to <= 0, by its monotone pieces between the roots of its
+ * derivatives; RC_MISS when it does not fall there. */
+int rc_gravity_poly_first_fall_(const double *c, int deg, double lo, double hi, double *s);
+
 #endif

@@ -12,6 +12,7 @@
 #define RELCOL_GRAVITY_H
 
 #include "relcol/kinematics.h"
+#include "relcol/toi.h"
 #include "relcol/vec.h"
 
 #ifdef __cplusplus
@@ -37,6 +38,11 @@ typedef struct rc_gravity_coupling {
                       double *dt);
     /// The conserved energy minus the rest energy m c^2 (finite classically), in *h.
     int (*energy)(const rc_gravity *f, double m, rc_vec3 x, rc_vec3 p, double *h);
+    /// Earliest dt in [0, t_max] at which two balls touch as spheres of their rest radii at
+    /// one instant of the coupling's clock (0: touching and approaching now). RC_MISS: none
+    /// by t_max; RC_EOVERLAP: overlapping by more than 1e-12 of r_a + r_b now.
+    int (*pair_time)(const rc_gravity *f, const rc_toi_ball *a, const rc_toi_ball *b,
+                     double t_max, double *dt);
 } rc_gravity_coupling;
 
 extern const rc_gravity_coupling rc_gravity_newtonian;
