@@ -32,6 +32,29 @@ int rc_gravity_check_(const rc_gravity *f, double m, rc_vec3 x, rc_vec3 p)
     return RC_OK;
 }
 
+int rc_gravity_arg_dt_(double dt)
+{
+    if (!isfinite(dt))
+        return RC_ENONFINITE;
+    return dt >= 0.0 ? RC_OK : RC_EINVAL;
+}
+
+int rc_gravity_arg_plane_(int k, double X, const double *dt)
+{
+    if (k < 0 || k > 2 || !dt)
+        return RC_EINVAL;
+    return isfinite(X) ? RC_OK : RC_ENONFINITE;
+}
+
+int rc_gravity_put_(rc_vec3 *x, rc_vec3 *p, rc_vec3 xn, rc_vec3 pn)
+{
+    if (!rc_v3_isfinite(xn) || !rc_v3_isfinite(pn))
+        return RC_ENONFINITE;
+    *x = xn;
+    *p = pn;
+    return RC_OK;
+}
+
 int rc_gravity_first_root_(double a, double b, double c0, double *t)
 {
     const double d = b * b - 4.0 * a * c0;

@@ -34,12 +34,10 @@ static int equiv_check(const rc_gravity *f, double m, rc_vec3 x, rc_vec3 p)
 static int equiv_drift(const rc_gravity *f, double m, rc_vec3 *x, rc_vec3 *p, double dt)
 {
     int st = equiv_check(f, m, *x, *p);
+    if (st == RC_OK)
+        st = rc_gravity_arg_dt_(dt);
     if (st != RC_OK)
         return st;
-    if (!isfinite(dt))
-        return RC_ENONFINITE;
-    if (!(dt >= 0.0))
-        return RC_EINVAL;
     const int ax = f->axis;
     const double i2 = f->inv_c2, g = f->g;
     const double m0 = rc_mass_rel(m, *p, i2);
@@ -54,23 +52,17 @@ static int equiv_drift(const rc_gravity *f, double m, rc_vec3 *x, rc_vec3 *p, do
     rc_v3_set(&xn, ax, (zp - 0.5 * g * dt * dt * hc * hc) / ch);
     rc_vec3 pn = *p; /* the boost by phi along the field */
     rc_v3_set(&pn, ax, ch * pz0 - g * dt * sh * m0);
-    if (!rc_v3_isfinite(xn) || !rc_v3_isfinite(pn))
-        return RC_ENONFINITE;
-    *x = xn;
-    *p = pn;
-    return RC_OK;
+    return rc_gravity_put_(x, p, xn, pn);
 }
 
 static int equiv_plane_time(const rc_gravity *f, double m, rc_vec3 x, rc_vec3 p, int k,
                             double X, double *dt)
 {
     int st = equiv_check(f, m, x, p);
+    if (st == RC_OK)
+        st = rc_gravity_arg_plane_(k, X, dt);
     if (st != RC_OK)
         return st;
-    if (k < 0 || k > 2 || !dt)
-        return RC_EINVAL;
-    if (!isfinite(X))
-        return RC_ENONFINITE;
     const int ax = f->axis;
     const double i2 = f->inv_c2;
     const double m0 = rc_mass_rel(m, p, i2);

@@ -12,12 +12,10 @@ static double mass_at(double a2, double pz, double inv_c2) { return sqrt(a2 + pz
 static int newton_drift(const rc_gravity *f, double m, rc_vec3 *x, rc_vec3 *p, double dt)
 {
     int st = rc_gravity_check_(f, m, *x, *p);
+    if (st == RC_OK)
+        st = rc_gravity_arg_dt_(dt);
     if (st != RC_OK)
         return st;
-    if (!isfinite(dt))
-        return RC_ENONFINITE;
-    if (!(dt >= 0.0))
-        return RC_EINVAL;
     const int ax = f->axis;
     const double i2 = f->inv_c2, mg = m * f->g;
     const double pz0 = rc_v3_get(*p, ax), pz = pz0 - mg * dt;
@@ -35,23 +33,17 @@ static int newton_drift(const rc_gravity *f, double m, rc_vec3 *x, rc_vec3 *p, d
     rc_v3_set(&xn, ax, rc_v3_get(*x, ax) + (pz0 + pz) * dt / (m0 + mt));
     rc_vec3 pn = *p;
     rc_v3_set(&pn, ax, pz);
-    if (!rc_v3_isfinite(xn) || !rc_v3_isfinite(pn))
-        return RC_ENONFINITE;
-    *x = xn;
-    *p = pn;
-    return RC_OK;
+    return rc_gravity_put_(x, p, xn, pn);
 }
 
 static int newton_plane_time(const rc_gravity *f, double m, rc_vec3 x, rc_vec3 p, int k,
                              double X, double *dt)
 {
     int st = rc_gravity_check_(f, m, x, p);
+    if (st == RC_OK)
+        st = rc_gravity_arg_plane_(k, X, dt);
     if (st != RC_OK)
         return st;
-    if (k < 0 || k > 2 || !dt)
-        return RC_EINVAL;
-    if (!isfinite(X))
-        return RC_ENONFINITE;
     const int ax = f->axis;
     const double i2 = f->inv_c2, mg = m * f->g;
     const double pz0 = rc_v3_get(p, ax);

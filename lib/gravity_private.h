@@ -18,6 +18,14 @@ static inline double grav_atanhc(double x) { return x == 0.0 ? 1.0 : atanh(x) / 
  * 0..2, inv_c2 < 0), RC_EMASS for m <= 0, RC_ENONFINITE for a NaN or infinite input. */
 int rc_gravity_check_(const rc_gravity *f, double m, rc_vec3 x, rc_vec3 p);
 
+/* A time step: RC_ENONFINITE for NaN or infinite, RC_EINVAL for a negative one. */
+int rc_gravity_arg_dt_(double dt);
+/* A plane x_k = X and the output: RC_EINVAL for k outside 0..2 or no output, RC_ENONFINITE
+ * for an X that is not finite. */
+int rc_gravity_arg_plane_(int k, double X, const double *dt);
+/* A drift's result into *x, *p when it is finite (RC_ENONFINITE, nothing written, if not). */
+int rc_gravity_put_(rc_vec3 *x, rc_vec3 *p, rc_vec3 xn, rc_vec3 pn);
+
 /* The smallest root > 0 of a t^2 + b t + c0 = 0 (a != 0), without the cancellation of the
  * textbook formula; RC_MISS when there is none. */
 int rc_gravity_first_root_(double a, double b, double c0, double *t);

@@ -53,16 +53,45 @@ static inline int grav_integrate(const rc_gravity *f, int equivalence, double m,
     return st;
 }
 
+/* a vector with each component uniform in [-h, h] */
+static inline rc_vec3 grav_cube(rc_test_rng *r, double h)
+{
+    return rc_v3(rc_test_range(r, -h, h), rc_test_range(r, -h, h), rc_test_range(r, -h, h));
+}
+
+/* Brute force: the first t in (0, tmax] where fn changes sign from its sign at 0, found on
+ * `samples` equal steps and bisected to a rounding; -1 when it does not. */
+static inline double grav_first_change(double (*fn)(double t, void *ctx), void *ctx,
+                                       double tmax, int samples)
+{
+    const int pos0 = fn(0.0, ctx) > 0.0;
+    double lo = 0.0;
+    for (int i = 1; i <= samples; i++) {
+        const double t = tmax * i / samples, s = fn(t, ctx);
+        if ((s > 0.0) != pos0 || s == 0.0) {
+            double hi = t;
+            for (int j = 0; j < 200 && hi - lo > 1e-16 * hi; j++) {
+                const double mid = 0.5 * (lo + hi), sm = fn(mid, ctx);
+                if ((sm > 0.0) == pos0 && sm != 0.0)
+                    lo = mid;
+                else
+                    hi = mid;
+            }
+            return hi;
+        }
+        lo = t;
+    }
+    return -1.0;
+}
+
 /* A ball above the floor: height in (0, zmax), momentum up to pmax in each component. */
 static inline void grav_random_ball(rc_test_rng *r, int axis, double zmax, double pmax,
                                     double *m, rc_vec3 *x, rc_vec3 *p)
 {
     *m = rc_test_range(r, 0.5, 2.0);
-    *x = rc_v3(rc_test_range(r, -3, 3), rc_test_range(r, -3, 3), rc_test_range(r, -3, 3));
+    *x = grav_cube(r, 3.0);
     rc_v3_set(x, axis, rc_test_range(r, 0.01, zmax));
-    *p = rc_v3(rc_test_range(r, -pmax, pmax), rc_test_range(r, -pmax, pmax),
-               rc_test_range(r, -pmax, pmax));
-    *p = rc_v3_scale(*m, *p);
+    *p = rc_v3_scale(*m, grav_cube(r, pmax));
 }
 
 #endif

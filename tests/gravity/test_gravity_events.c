@@ -7,38 +7,36 @@
 
 enum { SAMPLES = 3000 };
 
-/* coordinate k of the ball after t, by the drift */
+/* coordinate k of the ball after t, by the drift, minus X */
+typedef struct plane_q {
+    const rc_gravity_coupling *cp;
+    const rc_gravity *f;
+    double m;
+    rc_vec3 x, p;
+    int k;
+    double X;
+} plane_q;
+
+static double coord_minus(double t, void *ctx)
+{
+    const plane_q *q = ctx;
+    rc_vec3 x = q->x, p = q->p;
+    q->cp->drift(q->f, q->m, &x, &p, t);
+    return rc_v3_get(x, q->k) - q->X;
+}
+
 static double coord_at(const rc_gravity_coupling *cp, const rc_gravity *f, double m,
                        rc_vec3 x, rc_vec3 p, int k, double t)
 {
-    cp->drift(f, m, &x, &p, t);
-    return rc_v3_get(x, k);
+    plane_q q = {cp, f, m, x, p, k, 0.0};
+    return coord_minus(t, &q);
 }
 
-/* the first crossing of x_k = X in (0, tmax], or -1 */
 static double brute(const rc_gravity_coupling *cp, const rc_gravity *f, double m, rc_vec3 x,
                     rc_vec3 p, int k, double X, double tmax)
 {
-    const double s0 = rc_v3_get(x, k) - X;
-    double lo = 0.0;
-    for (int i = 1; i <= SAMPLES; i++) {
-        const double t = tmax * i / SAMPLES;
-        const double s = coord_at(cp, f, m, x, p, k, t) - X;
-        if ((s0 > 0.0) != (s > 0.0) || s == 0.0) {
-            double hi = t;
-            for (int j = 0; j < 200 && hi - lo > 1e-16 * hi; j++) {
-                const double mid = 0.5 * (lo + hi);
-                const double sm = coord_at(cp, f, m, x, p, k, mid) - X;
-                if ((sm > 0.0) == (s0 > 0.0) && sm != 0.0)
-                    lo = mid;
-                else
-                    hi = mid;
-            }
-            return hi;
-        }
-        lo = t;
-    }
-    return -1.0;
+    plane_q q = {cp, f, m, x, p, k, X};
+    return grav_first_change(coord_minus, &q, tmax, SAMPLES);
 }
 
 static void check_planes(const rc_gravity_coupling *cp, double c, uint64_t seed)

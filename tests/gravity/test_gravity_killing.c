@@ -23,6 +23,22 @@ static double charge(const rc_gravity *f, const ev_ball *b)
 
 static rc_vec3 angular(const ev_ball *b) { return rc_v3_cross(b->x.x, b->p.x); }
 
+/* two balls of rest mass in [0.5, 2) with momenta up to m c in each component */
+static void random_balls(rc_test_rng *r, double c, rc_particle b[2])
+{
+    for (int k = 0; k < 2; k++) {
+        b[k].m = rc_test_range(r, 0.5, 2.0);
+        b[k].p = rc_v3_scale(b[k].m * c, grav_cube(r, 1.0));
+    }
+}
+
+/* a random unit vector (from the cube, normalised) */
+static rc_vec3 random_unit(rc_test_rng *r)
+{
+    const rc_vec3 n = grav_cube(r, 1.0);
+    return rc_v3_scale(1.0 / rc_v3_norm(n), n);
+}
+
 static rc_four boosted(rc_four a, rc_vec3 w, double inv_c2)
 {
     rc_boost(w, inv_c2, &a);
@@ -37,26 +53,19 @@ static void test_zmf_simultaneous_keeps_charge(void)
         const double c = i % 3 == 0 ? 1.0 : i % 3 == 1 ? 2.0 : 5.0;
         rc_gravity f = {rc_test_range(&r, 0.2, 2.0), 2, 1.0 / (c * c)};
         rc_particle b[2];
-        for (int k = 0; k < 2; k++) {
-            b[k].m = rc_test_range(&r, 0.5, 2.0);
-            b[k].p = rc_v3_scale(b[k].m * c, rc_v3(rc_test_range(&r, -1, 1),
-                                                   rc_test_range(&r, -1, 1),
-                                                   rc_test_range(&r, -1, 1)));
-        }
+        random_balls(&r, c, b);
         rc_vec3 u;
         ENSURE(rc_zmf(b, 2, f.inv_c2, &u, NULL) == RC_OK);
         /* in the ZMF: momenta, a normal along which ball 0 approaches, simultaneous centres */
         rc_four q[2];
         for (int k = 0; k < 2; k++)
             q[k] = boosted(rc_particle_four(&b[k], f.inv_c2), u, f.inv_c2);
-        rc_vec3 n = rc_v3(rc_test_range(&r, -1, 1), rc_test_range(&r, -1, 1),
-                          rc_test_range(&r, -1, 1));
-        n = rc_v3_scale(1.0 / rc_v3_norm(n), n);
+        rc_vec3 n = random_unit(&r);
         if (rc_v3_dot(q[0].x, n) < 0)
             n = rc_v3_scale(-1.0, n);
         const double d = rc_test_range(&r, 0.1, 1.0), t0 = rc_test_range(&r, -1, 1);
-        const rc_vec3 y = rc_v3(rc_test_range(&r, -1, 1), rc_test_range(&r, -1, 1),
-                                rc_test_range(&r, 0.5, 2));
+        rc_vec3 y = grav_cube(&r, 1.0);
+        y.z = rc_test_range(&r, 0.5, 2);
         const rc_four xz[2] = {{t0, y}, {t0, rc_v3_axpy(y, d, n)}};
         /* elastic central impulse in the ZMF: each normal momentum reversed */
         const double jn = 2.0 * rc_v3_dot(q[0].x, n);
@@ -96,15 +105,8 @@ static void test_one_instant_changes_charge(void)
         rc_collision_params prm = rc_collision_params_default();
         prm.c = c;
         rc_particle b[2];
-        for (int k = 0; k < 2; k++) {
-            b[k].m = rc_test_range(&r, 0.5, 2.0);
-            b[k].p = rc_v3_scale(b[k].m * c, rc_v3(rc_test_range(&r, -1, 1),
-                                                   rc_test_range(&r, -1, 1),
-                                                   rc_test_range(&r, -1, 1)));
-        }
-        rc_vec3 n = rc_v3(rc_test_range(&r, -1, 1), rc_test_range(&r, -1, 1),
-                          rc_test_range(&r, -1, 1));
-        n = rc_v3_scale(1.0 / rc_v3_norm(n), n);
+        random_balls(&r, c, b);
+        rc_vec3 n = random_unit(&r);
         const double d = rc_test_range(&r, 0.1, 1.0);
         const rc_vec3 x0 = rc_v3(0, 0, rc_test_range(&r, 0.5, 2)), x1 = rc_v3_axpy(x0, d, n);
         ev_ball before[2], after[2];

@@ -8,35 +8,34 @@
 
 enum { SAMPLES = 4000 };
 
+typedef struct pair_q {
+    const rc_gravity_coupling *cp;
+    const rc_gravity *f;
+    const rc_toi_ball *a, *b;
+} pair_q;
+
+/* the gap between the two spheres after t, both moved by the drift */
+static double gap_fn(double t, void *ctx)
+{
+    const pair_q *q = ctx;
+    rc_vec3 xa = q->a->x, pa = q->a->p, xb = q->b->x, pb = q->b->p;
+    q->cp->drift(q->f, q->a->m, &xa, &pa, t);
+    q->cp->drift(q->f, q->b->m, &xb, &pb, t);
+    return rc_v3_norm(rc_v3_sub(xa, xb)) - (q->a->r + q->b->r);
+}
+
 static double gap_at(const rc_gravity_coupling *cp, const rc_gravity *f, const rc_toi_ball *a,
                      const rc_toi_ball *b, double t)
 {
-    rc_vec3 xa = a->x, pa = a->p, xb = b->x, pb = b->p;
-    cp->drift(f, a->m, &xa, &pa, t);
-    cp->drift(f, b->m, &xb, &pb, t);
-    return rc_v3_norm(rc_v3_sub(xa, xb)) - (a->r + b->r);
+    pair_q q = {cp, f, a, b};
+    return gap_fn(t, &q);
 }
 
 static double brute(const rc_gravity_coupling *cp, const rc_gravity *f, const rc_toi_ball *a,
                     const rc_toi_ball *b, double tmax)
 {
-    double lo = 0.0;
-    for (int i = 1; i <= SAMPLES; i++) {
-        const double t = tmax * i / SAMPLES;
-        if (gap_at(cp, f, a, b, t) <= 0.0) {
-            double hi = t;
-            for (int j = 0; j < 200 && hi - lo > 1e-16 * hi; j++) {
-                const double mid = 0.5 * (lo + hi);
-                if (gap_at(cp, f, a, b, mid) > 0.0)
-                    lo = mid;
-                else
-                    hi = mid;
-            }
-            return hi;
-        }
-        lo = t;
-    }
-    return -1.0;
+    pair_q q = {cp, f, a, b};
+    return grav_first_change(gap_fn, &q, tmax, SAMPLES);
 }
 
 static void random_pair(rc_test_rng *r, int axis, double c, rc_toi_ball *a, rc_toi_ball *b)
@@ -48,7 +47,7 @@ static void random_pair(rc_test_rng *r, int axis, double c, rc_toi_ball *a, rc_t
     grav_random_ball(r, axis, 2.0, pm, &b->m, &x, &p);
     b->r = rc_test_range(r, 0.05, 0.3);
     /* a partner within a few radii, above the floor */
-    rc_vec3 off = rc_v3(rc_test_range(r, -1, 1), rc_test_range(r, -1, 1), rc_test_range(r, -1, 1));
+    rc_vec3 off = grav_cube(r, 1.0);
     off = rc_v3_scale((a->r + b->r) * rc_test_range(r, 1.05, 5.0) / rc_v3_norm(off), off);
     b->x = rc_v3_add(a->x, off);
     if (rc_v3_get(b->x, axis) < 0.01)
