@@ -13,6 +13,7 @@
 #include "relcol/moments.h"
 #include "relcol/soft.h"
 #include "relcol/gas1d.h"
+#include "relcol/gravity.h"
 #include "relcol/rng.h"
 
 #endif
