@@ -178,6 +178,10 @@ int rcpy_sim_read(rc_sim *s, int which, uint32_t slice, size_t n, int dim, doubl
                   double *p, double *r, double *m, double *tau, double *tau_last,
                   int32_t *image, int8_t *ahead, size_t *bad);
 int rcpy_sim_balls(const rc_sim *s, size_t n, rc_sim_ball *out, size_t *bad);
+int rcpy_collide_many(const rc_law *law, const rc_collision_params *prm, size_t n_pairs,
+                      const double *c, size_t c_stride, const double *eps, size_t eps_stride,
+                      double *m0, rc_vec3 *p0, double *m1, rc_vec3 *p1, const rc_vec3 *n,
+                      int *status, size_t *hits, size_t *bad);
 """
 
 

@@ -57,3 +57,36 @@ int rcpy_sim_balls(const rc_sim *s, size_t n, rc_sim_ball *out, size_t *bad)
     }
     return RC_OK;
 }
+
+int rcpy_collide_many(const rc_law *law, const rc_collision_params *prm, size_t n_pairs,
+                      const double *c, size_t c_stride, const double *eps, size_t eps_stride,
+                      double *m0, rc_vec3 *p0, double *m1, rc_vec3 *p1, const rc_vec3 *n,
+                      int *status, size_t *hits, size_t *bad)
+{
+    if (!prm || !c || !eps)
+        return RC_EINVAL;
+    rc_collision_params q = *prm;
+    if (c_stride == 0 && eps_stride == 0) {
+        q.c = c[0];
+        q.eps = eps[0];
+        return rc_collide_many(law, &q, n_pairs, m0, p0, m1, p1, n, status, hits, bad);
+    }
+    /* per-pair parameters: the library's checked batch, one pair at a time */
+    size_t h = 0;
+    *bad = 0;
+    for (size_t i = 0; i < n_pairs; i++) {
+        size_t hi = 0;
+        q.c = c[i * c_stride];
+        q.eps = eps[i * eps_stride];
+        int st = rc_collide_many(law, &q, 1, m0 + i, p0 + i, m1 + i, p1 + i, n + i,
+                                 status ? status + i : NULL, &hi, NULL);
+        if (st < 0) {
+            *bad = i;
+            *hits = h;
+            return st;
+        }
+        h += hi;
+    }
+    *hits = h;
+    return RC_OK;
+}

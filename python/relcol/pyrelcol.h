@@ -24,4 +24,12 @@ int rcpy_sim_read(rc_sim *s, int which, uint32_t slice, size_t n, int dim, doubl
 /* Every ball of s as an rc_sim_ball (n = rc_sim_count(s)), for scn_write and add(). */
 int rcpy_sim_balls(const rc_sim *s, size_t n, rc_sim_ball *out, size_t *bad);
 
+/* rc_collide_many with c and eps per pair (stride 1) or shared (stride 0): the library's
+ * checks and kernels, the parameters of pair i those at c[i * c_stride], eps[i *
+ * eps_stride]; the failing pair in *bad (a parameter's failure too: it is that pair's). */
+int rcpy_collide_many(const rc_law *law, const rc_collision_params *prm, size_t n_pairs,
+                      const double *c, size_t c_stride, const double *eps, size_t eps_stride,
+                      double *m0, rc_vec3 *p0, double *m1, rc_vec3 *p1, const rc_vec3 *n,
+                      int *status, size_t *hits, size_t *bad);
+
 #endif
