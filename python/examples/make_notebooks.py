@@ -1,4 +1,10 @@
-import nbformat as nbf, sys
+"""make_notebooks.py -- writes the example notebooks (elastic_collisions, sweep_c, h5md)
+beside itself from the cells below, so that they are reviewed as code; run it with
+/usr/bin/python3 (nbformat) after editing a cell. The suite executes the .ipynb files
+(python/tests/test_notebooks.py)."""
+import os
+
+import nbformat as nbf
 def nb(cells):
     n = nbf.v4.new_notebook()
     n.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
@@ -330,4 +336,4 @@ plt.xlabel("t"); plt.ylabel("mean square displacement"); plt.legend();
 ]
 
 for name, cells in (("elastic_collisions", elastic), ("sweep_c", sweep), ("h5md", h5md)):
-    nbf.write(nb(cells), "/work/wt/python/python/examples/%s.ipynb" % name)
+    nbf.write(nb(cells), os.path.join(os.path.dirname(os.path.abspath(__file__)), name + ".ipynb"))

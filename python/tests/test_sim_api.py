@@ -45,6 +45,9 @@ def test_c_filled_reads_equal_per_ball_reads(frame):
     assert np.array_equal(sim.radii, ref["r"]) and np.array_equal(sim.rest_masses, ref["m"])
     assert np.array_equal(sim.proper_times, ref["tau"])
     assert np.array_equal(sim.images, ref["image"])
+    if frame == "covariant":  # (kinks ahead only in a per_ball frame)
+        want = [lib.rc_sim_kink_ahead(sim._sim, i) for i in range(sim.n)]
+        assert np.array_equal(st["kink_ahead"], want) and max(want) >= 0
     lt = sim.state(latest=True)
     ref_l = per_ball(sim, lib.rc_sim_get_ball_latest)
     for k in ref_l:
