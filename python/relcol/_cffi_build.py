@@ -7,6 +7,7 @@ against librelcol like any other target. Usage: python3 _cffi_build.py OUT.c
 Only what the package uses is declared; `...;` leaves the rest of a struct to the
 compiler.
 """
+import os
 import sys
 
 import cffi
@@ -172,22 +173,20 @@ int scn_start(rc_sim *sim, const scn_scenario *s, const char *file, char *err);
 int scn_save(const char *dir, const char *name, const scn_scenario *s, const rc_sim *sim,
              double t_end, char *err);
 
-/* package-side loops (pyrelcol.h) */
-enum { RCPY_NOW = 0, RCPY_LATEST = 1, RCPY_SLICE = 2 };
-int rcpy_sim_read(rc_sim *s, int which, uint32_t slice, size_t n, int dim, double *x,
-                  double *p, double *r, double *m, double *tau, double *tau_last,
-                  int32_t *image, int8_t *ahead, size_t *bad);
-int rcpy_sim_balls(const rc_sim *s, size_t n, rc_sim_ball *out, size_t *bad);
-int rcpy_collide_many(const rc_law *law, const rc_collision_params *prm, size_t n_pairs,
-                      const double *c, size_t c_stride, const double *eps, size_t eps_stride,
-                      double *m0, rc_vec3 *p0, double *m1, rc_vec3 *p1, const rc_vec3 *n,
-                      int *status, size_t *hits, size_t *bad);
 """
+
+
+def pyrelcol_cdef():
+    """The package-side declarations, read from pyrelcol.h itself (its preprocessor lines
+    dropped: cffi's cdef takes declarations only), so that they are written once."""
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "pyrelcol.h")
+    with open(path, encoding="utf-8") as f:
+        return "".join(line for line in f if not line.lstrip().startswith("#"))
 
 
 def main(out):
     ffi = cffi.FFI()
-    ffi.cdef(CDEF)
+    ffi.cdef(CDEF + pyrelcol_cdef())
     ffi.set_source("relcol._relcol", '#include "relcol/relcol.h"\n#include "app.h"\n'
                    '#include "scenario.h"\n#include "pyrelcol.h"\n')
     ffi.emit_c_code(out)
