@@ -4,9 +4,9 @@
 
 #include "pyrelcol.h"
 
-int rcpy_sim_read(rc_sim *s, int which, uint32_t slice, size_t n, int dim, double *x,
-                  double *p, double *r, double *m, double *tau, double *tau_last,
-                  int32_t *image, int8_t *ahead, size_t *bad)
+int rcpy_sim_read(rc_sim *s, int which, uint32_t slice, size_t n, int dim, double inv_c2,
+                  double *x, double *p, double *v, double *r, double *m, double *tau,
+                  double *tau_last, int32_t *image, int8_t *ahead, size_t *bad)
 {
     *bad = 0;
     if (!s || n != rc_sim_count(s) || dim < 1 || dim > 3 || which < RCPY_NOW ||
@@ -27,11 +27,15 @@ int rcpy_sim_read(rc_sim *s, int which, uint32_t slice, size_t n, int dim, doubl
     for (size_t i = 0; i < n && st == RC_OK; i++) {
         const rc_sim_ball *b = &all[i];
         const double bx[3] = {b->x.x, b->x.y, b->x.z}, bp[3] = {b->p.x, b->p.y, b->p.z};
+        const rc_vec3 u = v ? rc_velocity(b->m, b->p, inv_c2) : b->p;
+        const double bv[3] = {u.x, u.y, u.z};
         for (int d = 0; d < dim; d++) {
             if (x)
                 x[i * (size_t)dim + (size_t)d] = bx[d];
             if (p)
                 p[i * (size_t)dim + (size_t)d] = bp[d];
+            if (v)
+                v[i * (size_t)dim + (size_t)d] = bv[d];
             if (image)
                 image[i * (size_t)dim + (size_t)d] = b->image[d];
         }

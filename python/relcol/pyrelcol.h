@@ -13,13 +13,13 @@
  * (rc_sim_slice_get). */
 enum { RCPY_NOW = 0, RCPY_LATEST = 1, RCPY_SLICE = 2 };
 
-/* Every ball of s into arrays (any may be NULL: not read): x and p n x dim, row-major; r,
- * m, tau n; tau_last n (NaN for a ball that has not collided); image n x dim; ahead n
- * (rc_sim_kink_ahead, RCPY_NOW only). n must be rc_sim_count(s) (RC_EINVAL otherwise).
- * On failure *bad names the ball. */
-int rcpy_sim_read(rc_sim *s, int which, uint32_t slice, size_t n, int dim, double *x,
-                  double *p, double *r, double *m, double *tau, double *tau_last,
-                  int32_t *image, int8_t *ahead, size_t *bad);
+/* Every ball of s into arrays (any may be NULL: not read): x, p and v (p / M, M the mass
+ * rc_velocity forms at inv_c2 = 1/c^2) n x dim, row-major; r, m, tau n; tau_last n (NaN
+ * for a ball that has not collided); image n x dim; ahead n (rc_sim_kink_ahead, RCPY_NOW
+ * only). n must be rc_sim_count(s) (RC_EINVAL otherwise). On failure *bad names the ball. */
+int rcpy_sim_read(rc_sim *s, int which, uint32_t slice, size_t n, int dim, double inv_c2,
+                  double *x, double *p, double *v, double *r, double *m, double *tau,
+                  double *tau_last, int32_t *image, int8_t *ahead, size_t *bad);
 
 /* Every ball of s as an rc_sim_ball (n = rc_sim_count(s)), for scn_write and add(). */
 int rcpy_sim_balls(const rc_sim *s, size_t n, rc_sim_ball *out, size_t *bad);

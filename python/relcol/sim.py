@@ -17,10 +17,11 @@ import numpy as np
 
 from ._relcol import ffi, lib
 from .errors import check
+from .kinematics import inv_c2 as _inv_c2
 from .scenario import ScenarioError, load_scenario, parse
 
 _EVENTS = ("ball", "wall", "group", "cell", "stale", "tc")
-_FIELDS = ("x", "p", "r", "m", "tau", "tau_last", "image", "ahead")
+_FIELDS = ("x", "p", "v", "r", "m", "tau", "tau_last", "image", "ahead")
 
 
 class Sim:
@@ -212,7 +213,7 @@ class Sim:
     def _read(self, fields, which=0, slice_id=0):
         """The named fields of every ball, filled by rcpy_sim_read in one call."""
         n, dim = self.n, self.dim
-        shapes = {"x": (n, dim), "p": (n, dim), "image": (n, dim)}
+        shapes = {"x": (n, dim), "p": (n, dim), "v": (n, dim), "image": (n, dim)}
         types = {"image": np.int32, "ahead": np.int8}
         out, ptrs = {}, []
         for f in _FIELDS:
@@ -224,14 +225,10 @@ class Sim:
             else:
                 ptrs.append(ffi.NULL)
         bad = ffi.new("size_t *")
-        check(lib.rcpy_sim_read(self._sim, which, slice_id, n, dim, *ptrs, bad), "ball",
-              int(bad[0]))
+        inv_c2 = _inv_c2(self.c)
+        check(lib.rcpy_sim_read(self._sim, which, slice_id, n, dim, inv_c2, *ptrs, bad),
+              "ball", int(bad[0]))
         return out
-
-    def _velocities(self, st):
-        k = 0.0 if math.isinf(self.c) else self.c ** -2
-        mr = np.sqrt(st["m"] * st["m"] + np.einsum("ij,ij->i", st["p"], st["p"]) * k)
-        return st["p"] / mr[:, None]
 
     def state(self, latest=False):
         """Every ball at the engine's time, as a dict of arrays: x, p, v, r, m (rest
@@ -246,7 +243,6 @@ class Sim:
         kinks = not latest and self._def.frame.per_ball and not math.isinf(self.c)
         st = self._read(_FIELDS if kinks else _FIELDS[:-1], 1 if latest else 0)
         st["kink_ahead"] = st.pop("ahead", np.zeros(self.n, dtype=np.int8))
-        st["v"] = self._velocities(st)
         st["t"] = self.time
         return st
 
@@ -276,7 +272,6 @@ class Sim:
         st = self._read(_FIELDS[:-1], lib.RCPY_SLICE, int(sid))
         if release:
             self.slice_release(sid)
-        st["v"] = self._velocities(st)
         st["t"] = ts
         return st
 
@@ -290,8 +285,8 @@ class Sim:
     rest_masses = property(lambda self: self._read(("m",))["m"], doc="rest masses, (N,)")
     proper_times = property(lambda self: self._read(("tau",))["tau"], doc="proper times, (N,)")
     images = property(lambda self: self._read(("image",))["image"], doc="periodic wraps, (N, dim)")
-    velocities = property(lambda self: self._velocities(self._read(("p", "m"))),
-                          doc="velocities p / M, (N, dim)")
+    velocities = property(lambda self: self._read(("v",))["v"],
+                          doc="velocities p / M (rc_velocity), (N, dim)")
 
     def _diag(self):
         d = ffi.new("rc_sim_diag *")
