@@ -12,11 +12,14 @@ RELCOL_PACKAGES=(gcc libc6-dev meson ninja-build pkg-config libgsl-dev libsundia
                  gnuplot-nox libcjson-dev mpi-default-dev openmpi-bin help2man libhdf5-dev
                  python3-numpy python3-h5py python3-ase)
 # The Python package (python/, meson option -Dpython): its build needs cffi, numpy and the
-# Python headers, its tests pytest, the README's example matplotlib. RELCOL_PYTHON=disabled
+# Python headers, its tests pytest, the README's example and the notebooks (python/examples)
+# matplotlib, the notebooks' test nbclient and ipykernel (and jupyter-nbconvert for HTML),
+# `pip install .` python3-mesonpy and patchelf (which meson-python runs on librelcol). RELCOL_PYTHON=disabled
 # leaves them out and configures without it (default auto: built when they are there).
 RELCOL_PYTHON=${RELCOL_PYTHON:-auto}
 if [ "$RELCOL_PYTHON" != disabled ]; then
-    RELCOL_PACKAGES+=(python3-dev python3-cffi python3-numpy python3-pytest python3-matplotlib)
+    RELCOL_PACKAGES+=(python3-dev python3-cffi python3-numpy python3-pytest python3-matplotlib
+                      python3-nbclient python3-ipykernel jupyter-nbconvert python3-mesonpy patchelf)
 fi
 
 # The browser page (web/, issue 20): Debian's emscripten (node-acorn: its optimiser's

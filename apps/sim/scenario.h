@@ -79,6 +79,20 @@ void scn_free(scn_scenario *s);
  * for relcol-sim and for the tests that run a scenario as relcol-sim does. */
 rc_sim_def scn_sim_def(const scn_scenario *s);
 
+/* The engine sim (made from scn_sim_def(s)) at the scenario's start: the checkpoint it
+ * names, read from the folder of file (the scenario's path) and checked to hold the
+ * scenario's balls to the bit, or else its balls at its time. 0, or -1 with "FILE:
+ * balls[3]: overlaps another ball" (or the checkpoint's failure) in err (APP_ERR_LEN). */
+int scn_start(rc_sim *sim, const scn_scenario *s, const char *file, char *err);
+/* The run's state in dir as a scenario to be continued until t_end (name.json: s with
+ * the engine's balls and time, "restart": true, naming name.ckpt, the engine's whole
+ * state): reading it back with scn_load and scn_start continues the run bit for bit. Each
+ * file written atomically. 0, or -1 with the reason in err. */
+int scn_save(const char *dir, const char *name, const scn_scenario *s, const rc_sim *sim,
+             double t_end, char *err);
+/* The whole file at path, malloc'ed (*bytes its length); NULL with errno on failure. */
+unsigned char *scn_read_bytes(const char *path, size_t *bytes);
+
 /* The output folder of a run continued from one that wrote into dir: "dir.1", and after
  * "dir.K" "dir.K+1" -- so that continuing from final.json never writes over the files of
  * the run it continues. NULL if out of memory (free the result). */

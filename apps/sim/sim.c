@@ -31,8 +31,9 @@ static void usage(FILE *f)
 "usage: relcol-sim SCENARIO.json | --builtin rack|gas  [--out DIR] [--t-end T]\n"
 "                  [--frame NAME] [--no-plots] [--dump]\n"
 "\n"
-"Run an event-driven simulation of hard balls at any c (see apps/sim/SCENARIO.md for the\n"
-"scenario format; data/scenarios/ has examples, --builtin NAME runs one of them).\n"
+"Run an event-driven simulation of hard balls at any c. The scenario format is\n"
+"SCENARIO.md (installed as share/relcol/SCENARIO.md, in the source apps/sim/); the\n"
+"scenarios in share/relcol/scenarios/ are examples, --builtin NAME runs one of them.\n"
 "\n"
 "  --builtin NAME  rack: a billiard break (15 balls in a triangle and a cue ball);\n"
 "                  gas: 400 discs at packing 0.2, rms speed 0.5 c, c = 1\n"
@@ -68,86 +69,6 @@ static void usage(FILE *f)
 
 /* "relcol-sim: message" on stderr, returning the exit status code */
 #define fail(code, ...) app_fail(prog, (code), __VA_ARGS__)
-
-/* The whole file at path, malloc'ed (*bytes its length); NULL with errno on failure. */
-static unsigned char *read_file(const char *path, size_t *bytes)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return NULL;
-    size_t cap = 1 << 20, n = 0;
-    unsigned char *buf = malloc(cap);
-    while (buf) {
-        n += fread(buf + n, 1, cap - n, f);
-        if (n < cap || ferror(f))
-            break;
-        unsigned char *nb = cap < ((size_t)1 << 40) ? realloc(buf, cap *= 2) : NULL;
-        if (!nb) {
-            free(buf);
-            errno = ENOMEM;
-        }
-        buf = nb;
-    }
-    if (buf && ferror(f)) {
-        free(buf);
-        buf = NULL;
-        errno = EIO;
-    }
-    fclose(f);
-    *bytes = n;
-    return buf;
-}
-
-/* Continue from the checkpoint the scenario names (beside the scenario file): the engine
- * takes the whole state it holds, which must be the state of the scenario's balls, to the
- * bit (the balls are the readable copy; the checkpoint alone carries the scheduled events
- * that make the continuation exact). 0, or -1 with the reason in err. */
-static int load_checkpoint(rc_sim *sim, const scn_scenario *s, const char *file, char *err)
-{
-    const char *slash = strrchr(file, '/');
-    char *dir = slash ? strndup(file, (size_t)(slash - file) + (slash == file)) : strdup(".");
-    char *path = dir ? app_path_join(dir, s->checkpoint) : NULL;
-    free(dir);
-    if (!path) {
-        app_errf(err, "out of memory");
-        return -1;
-    }
-    size_t bytes = 0;
-    unsigned char *buf = read_file(path, &bytes);
-    int r = -1;
-    if (!buf) {
-        app_errf(err, "%s: checkpoint: cannot read %s: %s", file, path, strerror(errno));
-        goto done;
-    }
-    int st = rc_sim_checkpoint_read(sim, buf, bytes);
-    if (st != RC_OK) {
-        app_errf(err, "%s: checkpoint: %s: %s", file, path, rc_strerror(st));
-        goto done;
-    }
-    if (rc_sim_count(sim) != s->n || rc_sim_time(sim) != s->time) {
-        app_errf(err, "%s: checkpoint: %s holds %zu balls at t = %.17g, the scenario %zu at "
-                 "t = %.17g: not this run's state", file, path, rc_sim_count(sim),
-                 rc_sim_time(sim), s->n, s->time);
-        goto done;
-    }
-    for (size_t i = 0; i < s->n; i++) {
-        rc_sim_ball b;
-        const rc_sim_ball *w = &s->balls[i];
-        rc_sim_get_ball(sim, i, &b);
-        if (memcmp(&b.x, &w->x, sizeof b.x) || memcmp(&b.p, &w->p, sizeof b.p) ||
-            b.r != w->r || b.m != w->m || b.tau != w->tau) {
-            app_errf(err, "%s: balls[%zu]: differs from the state in the checkpoint %s (edit "
-                     "the balls and delete the \"checkpoint\" key to start afresh from them)",
-                     file, i, path);
-            goto done;
-        }
-    }
-    r = 0;
-done:
-    free(buf);
-    free(path);
-    return r;
-}
 
 static double now(void)
 {
@@ -234,27 +155,10 @@ int main(int argc, char **argv)
         scn_free(&s);
         return fail(2, "cannot create the simulation: %s", rc_strerror(st));
     }
-    size_t badi = 0;
-    if (s.checkpoint) {
-        /* (a builtin has none: only a file can name one) */
-        if (load_checkpoint(sim, &s, file, err)) {
-            rc_sim_free(&sim);
-            scn_free(&s);
-            return fail(2, "%s", err);
-        }
-        st = RC_OK;
-    } else {
-        st = rc_sim_set_time(sim, s.time);
-        if (st == RC_OK)
-            st = rc_sim_set_balls(sim, s.n, s.balls, &badi);
-    }
-    if (st != RC_OK) {
+    if (scn_start(sim, &s, builtin ? builtin : file, err)) {
         rc_sim_free(&sim);
         scn_free(&s);
-        return fail(2, "%s: balls[%zu]: %s", builtin ? builtin : file, badi,
-                    st == RC_EOVERLAP  ? "overlaps another ball"
-                    : st == RC_EINVAL ? "the ball's shape is not inside the box"
-                                      : rc_strerror(st));
+        return fail(2, "%s", err);
     }
 
     sim_output o;

@@ -233,79 +233,22 @@ int simout_at(sim_output *o, const rc_sim *sim, char *err)
     return 0;
 }
 
-/* final.ckpt: the engine's whole state (rc_sim_checkpoint_write), which final.json names:
- * continuing from it changes no bit of the run. */
-static int write_checkpoint(const sim_output *o, const rc_sim *sim, char *err)
-{
-    size_t bytes = 0;
-    unsigned char *buf = NULL;
-    char *path = app_path_join(o->dir, SIMOUT_CHECKPOINT);
-    app_atomic a;
-    int r = -1, st = rc_sim_checkpoint_size(sim, &bytes);
-    if (!path || st != RC_OK || !(buf = malloc(bytes))) {
-        app_errf(err, "cannot make the checkpoint: %s", st != RC_OK ? rc_strerror(st) : "out of memory");
-        goto done;
-    }
-    if ((st = rc_sim_checkpoint_write(sim, buf, bytes)) != RC_OK) {
-        app_errf(err, "cannot make the checkpoint: %s", rc_strerror(st));
-        goto done;
-    }
-    if (app_atomic_open(&a, path, err))
-        goto done;
-    if (fwrite(buf, 1, bytes, a.f) != bytes) {
-        app_atomic_abort(&a);
-        app_errf(err, "cannot write %s", path);
-        goto done;
-    }
-    r = app_atomic_commit(&a, err);
-done:
-    free(buf);
-    free(path);
-    return r;
-}
-
+/* final.json and final.ckpt (scn_save): continuing from them changes no bit of the run */
 static int write_final(const sim_output *o, const rc_sim *sim, int interrupted, char *err)
 {
-    if (write_checkpoint(o, sim, err))
-        return -1;
     const scn_scenario *s = o->s;
-    size_t n = rc_sim_count(sim);
-    rc_sim_ball *b = malloc((n ? n : 1) * sizeof *b);
-    char *path = app_path_join(o->dir, "final.json");
-    char *next_dir = NULL;
-    app_atomic a;
-    int r = -1;
-    if (!b || !path) {
-        app_errf(err, "out of memory");
-        goto done;
-    }
-    for (size_t i = 0; i < n; i++)
-        rc_sim_get_ball(sim, i, &b[i]);
-    if (app_atomic_open(&a, path, err))
-        goto done;
-    double t = rc_sim_time(sim);
     /* interrupted: continue to the same end; finished: continue for as long again */
-    double t_end = interrupted ? s->t_end : t + (s->t_end - s->time);
+    const double t = rc_sim_time(sim), t_end = interrupted ? s->t_end : t + (s->t_end - s->time);
     /* the continuation writes into a folder of its own (scn_next_dir) */
     scn_scenario next = *s;
-    next_dir = scn_next_dir(s->out.dir);
+    char *next_dir = scn_next_dir(s->out.dir);
     if (!next_dir) {
-        app_atomic_abort(&a);
         app_errf(err, "out of memory");
-        goto done;
+        return -1;
     }
     next.out.dir = next_dir;
-    next.checkpoint = SIMOUT_CHECKPOINT;
-    if (scn_write(a.f, &next, t, t_end, n, b)) {
-        app_atomic_abort(&a);
-        app_errf(err, "cannot write %s", path);
-        goto done;
-    }
-    r = app_atomic_commit(&a, err);
-done:
+    int r = scn_save(o->dir, SIMOUT_FINAL, &next, sim, t_end, err);
     free(next_dir);
-    free(b);
-    free(path);
     return r;
 }
 

@@ -7,8 +7,8 @@
 #include "scenario.h"
 #include "h5md.h"
 
-/* The engine's state beside final.json, which names it. */
-#define SIMOUT_CHECKPOINT "final.ckpt"
+/* The run's final state: final.json, naming the engine's state final.ckpt (scn_save). */
+#define SIMOUT_FINAL "final"
 
 typedef struct sim_output {
     const scn_scenario *s;

@@ -106,6 +106,20 @@ int rc_sim_get_ball(const rc_sim *s, size_t i, rc_sim_ball *out)
     return RC_OK;
 }
 
+int rc_sim_get_balls(const rc_sim *s, size_t n, rc_sim_ball *out, int latest, int8_t *ahead)
+{
+    if (!s || (n && !out) || n != s->n)
+        return RC_EINVAL;
+    /* in storage order, each ball written to its caller's index: the engine's arrays are
+     * walked once, in order, however the balls were renumbered */
+    for (size_t k = 0; k < n; k++) {
+        const int a = eng_ball_now(s, k, &out[s->id[k]], !latest);
+        if (ahead)
+            ahead[s->id[k]] = (int8_t)a;
+    }
+    return RC_OK;
+}
+
 int rc_sim_get_ball_latest(const rc_sim *s, size_t i, rc_sim_ball *out)
 {
     if (!s || !out || i >= s->n)

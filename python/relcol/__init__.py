@@ -8,6 +8,7 @@ RelcolError carrying the library's message. c = inf (math.inf) is the classical 
     toi(x0, r0, m0, p0, x1, r1, m1, p1, c=, frame=)   time of first contact
     soft_collide(m, p, x, r, c=, eps=, stiffness=)    the soft-sphere reference
     Sim(scenario)                                 the event-driven engine
+    read_summary, read_snapshot(s), read_h5md, read_run   relcol-sim's outputs
     gas_init(...), Gas1D(...)                     gases
     laws(), frames(), steppers()                  the library's tables
     momentum(m, v, c), velocity(m, p, c), ...     kinematics
@@ -18,7 +19,9 @@ from .kinematics import gamma, inv_c2, kinetic_energy, mass_rel, momentum, veloc
 from .laws import Collision, Law, collide, laws
 from .toi import Contact, Frame, frames, toi
 from .soft import SoftResult, soft_collide, steppers
-from .sim import Sim, load_scenario
+from .scenario import ScenarioError, load_scenario
+from .sim import Sim
+from .outputs import read_h5md, read_run, read_snapshot, read_snapshots, read_summary
 from .gas import Gas1D, gas_init
 
 __version__ = _ffi.string(_lib.rc_version()).decode()
@@ -26,4 +29,5 @@ __version__ = _ffi.string(_lib.rc_version()).decode()
 __all__ = ["RelcolError", "strerror", "gamma", "inv_c2", "kinetic_energy", "mass_rel",
            "momentum", "velocity", "Collision", "Law", "collide", "laws", "Contact",
            "Frame", "frames", "toi", "SoftResult", "soft_collide", "steppers", "Sim",
-           "load_scenario", "Gas1D", "gas_init", "__version__"]
+           "load_scenario", "ScenarioError", "Gas1D", "gas_init", "read_summary", "read_snapshot",
+           "read_snapshots", "read_h5md", "read_run", "__version__"]

@@ -7,6 +7,7 @@ against librelcol like any other target. Usage: python3 _cffi_build.py OUT.c
 Only what the package uses is declared; `...;` leaves the rest of a struct to the
 compiler.
 """
+import os
 import sys
 
 import cffi
@@ -49,7 +50,7 @@ typedef struct rc_toi_contact { double t; rc_vec3 x; rc_vec3 n; } rc_toi_contact
 typedef struct rc_toi_workspace rc_toi_workspace;
 typedef struct rc_toi_frame {
     const char *name; const char *summary; int wall_contracted; int contracted;
-    int covariant; int deferrable; ...;
+    int covariant; int deferrable; int per_ball; ...;
 } rc_toi_frame;
 extern const rc_toi_frame *const rc_toi_frames[];
 const rc_toi_frame *rc_toi_frame_find(const char *name);
@@ -121,6 +122,10 @@ int rc_sim_slice_get(rc_sim *s, uint32_t id, size_t i, rc_sim_ball *out);
 int rc_sim_slice_release(rc_sim *s, uint32_t id);
 int rc_sim_diagnostics(const rc_sim *s, rc_sim_diag *d);
 uint64_t rc_sim_hash(const rc_sim *s);
+int rc_sim_set_c(rc_sim *s, double c);
+int rc_sim_checkpoint_size(const rc_sim *s, size_t *bytes);
+int rc_sim_checkpoint_write(const rc_sim *s, void *buf, size_t bytes);
+int rc_sim_checkpoint_read(rc_sim *s, const void *buf, size_t bytes);
 typedef struct rc_sim_gas_def {
     int dim; size_t n; double radius; double packing; double v_rms; double c;
     double density; uint64_t seed; ...;
@@ -150,13 +155,40 @@ int rc_gas1d_step(rc_gas1d *g, double t_end, rc_gas1d_event *ev);
 typedef struct rc_gas1d_segment { double t; double x; double m; double p; double v; ...; }
     rc_gas1d_segment;
 int rc_gas1d_segment_get(const rc_gas1d *g, size_t i, rc_gas1d_segment *out);
+
+/* relcol-sim's scenario reader, writer and start (apps/sim/scenario.h): the one place of
+   the scenario rules, linked into this module */
+typedef struct scn_scenario {
+    int dim; rc_vec3 box; int boundary[3]; double c; const rc_law *law;
+    double eps_ball; double eps_wall; const rc_toi_frame *frame; int groups; double t_c;
+    uint64_t seed; double time; double t_end; int restart; char *checkpoint; size_t n;
+    rc_sim_ball *balls; char generator[16]; ...;
+} scn_scenario;
+#define APP_ERR_LEN ...
+int scn_parse(const char *text, const char *name, scn_scenario *s, char *err);
+int scn_load(const char *path, scn_scenario *s, char *err);
+void scn_free(scn_scenario *s);
+rc_sim_def scn_sim_def(const scn_scenario *s);
+int scn_start(rc_sim *sim, const scn_scenario *s, const char *file, char *err);
+int scn_save(const char *dir, const char *name, const scn_scenario *s, const rc_sim *sim,
+             double t_end, char *err);
+
 """
+
+
+def pyrelcol_cdef():
+    """The package-side declarations, read from pyrelcol.h itself (its preprocessor lines
+    dropped: cffi's cdef takes declarations only), so that they are written once."""
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "pyrelcol.h")
+    with open(path, encoding="utf-8") as f:
+        return "".join(line for line in f if not line.lstrip().startswith("#"))
 
 
 def main(out):
     ffi = cffi.FFI()
-    ffi.cdef(CDEF)
-    ffi.set_source("relcol._relcol", '#include "relcol/relcol.h"\n')
+    ffi.cdef(CDEF + pyrelcol_cdef())
+    ffi.set_source("relcol._relcol", '#include "relcol/relcol.h"\n#include "app.h"\n'
+                   '#include "scenario.h"\n#include "pyrelcol.h"\n')
     ffi.emit_c_code(out)
 
 

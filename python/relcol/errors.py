@@ -22,14 +22,18 @@ class RelcolError(Exception):
     name    its name, e.g. "RC_ESPEED"
     reason  the library's text, rc_strerror(code), e.g. "speed must be < c"
     index   the pair or ball that failed in a batch call, else None
+    field   the argument that is wrong, as "m[3]" or "c", where known, else None
     """
 
-    def __init__(self, code, context=None, index=None):
+    def __init__(self, code, context=None, index=None, field=None):
         self.code = int(code)
         self.name = CODES.get(self.code, "RC_%d" % self.code)
         self.reason = strerror(self.code)
         self.index = index
-        where = "" if index is None else " (item %d)" % index
+        self.field = field
+        where = "" if index is None or field is not None else " (item %d)" % index
+        if field is not None:
+            context = "%s: %s" % (context, field) if context else field
         head = "%s%s: " % (context, where) if context else (where.strip() + ": " if where else "")
         super().__init__("%s%s [%s]" % (head, self.reason, self.name))
 
@@ -45,3 +49,8 @@ def check(code, context=None, index=None):
     if code < 0:
         raise RelcolError(code, context, index)
     return code
+
+
+def shape_error(func, name, got, want):
+    """ValueError naming the argument whose array has the wrong shape."""
+    return ValueError("%s: %s: has shape %s, expected %s" % (func, name, tuple(got), want))

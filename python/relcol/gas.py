@@ -5,24 +5,42 @@ import math
 import numpy as np
 
 from ._relcol import ffi, lib
-from .errors import check
+from .errors import RelcolError, check, shape_error
 from .laws import find_law
+
+
+def _scalar(func, name, v):
+    """v as a float; ValueError naming the argument if it is not one number."""
+    a = np.asarray(v, dtype=float)
+    if a.ndim != 0:
+        raise shape_error(func, name, a.shape, "a number")
+    return float(a)
 
 
 def gas_init(dim, n, radius, packing, v_rms, c=math.inf, density=1.0, seed=1):
     """n equal balls on random lattice sites of a square / cubic box sized for the packing
-    fraction, isotropic random momenta of rms speed v_rms (< c), zero total momentum.
-    Returns (box, balls) with balls a dict of arrays {"x", "p", "r", "m"} for Sim."""
-    g = ffi.new("rc_sim_gas_def *")
-    g.dim, g.n, g.radius, g.packing = int(dim), int(n), float(radius), float(packing)
-    g.v_rms, g.c, g.density, g.seed = float(v_rms), float(c), float(density), int(seed)
-    box = ffi.new("rc_vec3 *")
-    cb = ffi.new("rc_sim_ball[]", int(n))
-    check(lib.rc_sim_gas_init(g, box, cb), "gas_init")
-    x = np.array([[b.x.x, b.x.y, b.x.z][:dim] for b in cb])
-    p = np.array([[b.p.x, b.p.y, b.p.z][:dim] for b in cb])
-    return [box.x, box.y, box.z][:dim], {"x": x, "p": p, "r": np.array([b.r for b in cb]),
-                                         "m": np.array([b.m for b in cb])}
+    fraction, isotropic random momenta of rms speed v_rms (< c), zero total momentum:
+    relcol-sim's generator {"kind": "gas"} (rc_sim_gas_init), read by its scenario reader,
+    whose rules and messages it keeps ("gas_init: generate.n: must be a whole number in
+    [1, 1e8]"). Returns (box, balls) with balls a dict of arrays {"x", "p", "r", "m"}."""
+    from .scenario import Scenario
+    sc = Scenario({"dim": dim, "c": c, "seed": seed, "t_end": 1.0,
+                   "generate": {"kind": "gas", "n": n, "radius": radius, "packing": packing,
+                                "v_rms": v_rms, "density": density}}, name="gas_init")
+    p = sc.ptr
+    return [p.box.x, p.box.y, p.box.z][:int(p.dim)], sc.balls()
+
+
+def _column(func, name, a, n):
+    """a as a contiguous (n,) float column (a scalar broadcasts); ValueError naming the
+    argument otherwise."""
+    a = np.asarray(a, dtype=float)
+    if a.ndim == 0:
+        a = np.broadcast_to(a, (n,))
+    if a.shape != (n,):
+        raise shape_error(func, name, a.shape, "(%d,) like x, or a scalar" % n
+                          if name != "x" else "(N,)")
+    return np.ascontiguousarray(a)
 
 
 class Gas1D:
@@ -31,10 +49,15 @@ class Gas1D:
     x: positions, strictly increasing in [0, length]; m: rest masses; p: momenta."""
 
     def __init__(self, x, m, p, length=1.0, c=math.inf, t0=0.0, law="zmf"):
-        self._x = np.ascontiguousarray(x, dtype=float)
-        n = len(self._x)
-        self._m = np.ascontiguousarray(np.broadcast_to(np.asarray(m, dtype=float), (n,)))
-        self._p = np.ascontiguousarray(p, dtype=float)
+        x = np.asarray(x, dtype=float)
+        if x.ndim != 1 or len(x) == 0:
+            raise shape_error("Gas1D", "x", x.shape, "(N,) with N >= 1")
+        n = len(x)
+        self._x = _column("Gas1D", "x", x, n)
+        self._m = _column("Gas1D", "m", m, n)
+        self._p = _column("Gas1D", "p", p, n)
+        length, c, t0 = (_scalar("Gas1D", k, v) for k, v in
+                         (("length", length), ("c", c), ("t0", t0)))
         d = ffi.new("rc_gas1d_def *", lib.rc_gas1d_def_default())
         d.n, d.length, d.c, d.t0 = n, float(length), float(c), float(t0)
         d.x = ffi.from_buffer("double[]", self._x)
@@ -44,9 +67,31 @@ class Gas1D:
         out = ffi.new("rc_gas1d **")
         bad = ffi.new("size_t *")
         rc = lib.rc_gas1d_create(d, out, bad)
-        check(rc, "Gas1D", int(bad[0]))
+        if rc < 0:
+            raise RelcolError(rc, "Gas1D", int(bad[0]), self._field(rc, int(bad[0]), length, c, t0))
         self._g = ffi.gc(out[0], lambda q: lib.rc_gas1d_free(ffi.new("rc_gas1d **", q)))
         self.n = n
+
+    def _field(self, rc, i, length, c, t0):
+        """The argument the library's code rc points at (the library says what is wrong,
+        and *bad which particle; this says which array)."""
+        if rc == -6:  # RC_ESPEEDOFLIGHT
+            return "c"
+        if rc == -3:  # RC_EMASS
+            return "m[%d]" % i
+        if rc == -2:  # RC_ENONFINITE: the first non-finite input
+            for k, v in (("length", length), ("t0", t0)):
+                if not math.isfinite(v):
+                    return k
+            for k, a in (("x", self._x), ("m", self._m), ("p", self._p)):
+                bad = ~np.isfinite(a)
+                if bad.any():
+                    return "%s[%d]" % (k, int(np.argmax(bad)))
+        if rc == -1:  # RC_EINVAL: the box, or the positions' order and range
+            if not length > 0:
+                return "length"
+            return "x[%d]" % i
+        return None
 
     def advance(self, t, max_events=0):
         """Process events up to time t (or max_events of them); returns self."""

@@ -57,6 +57,7 @@ def collide(m0, p0, m1, p1, n, c=math.inf, eps=1.0, law="zmf", alpha=None, azimu
     Vectors have 1 to 3 components (the last axis); give one pair as (d,) vectors and
     scalar masses, or N pairs as (N, d) arrays and (N,) or scalar masses (they
     broadcast). c is the speed of light (inf: classical), eps the restitution in [0, 1],
+    each one number or one per pair,
     law a name from laws(); alpha and azimuth the impact angle of laws that use one
     (cm-isotropic; None: the angle follows from n).
 
@@ -88,18 +89,33 @@ def collide(m0, p0, m1, p1, n, c=math.inf, eps=1.0, law="zmf", alpha=None, azimu
     # the normals are only read: used as they are when they already have the layout
     nn = n if (d == 3 and n.shape == (npair, 3) and n.flags.c_contiguous) else _columns(n, npair, d)
     prm = ffi.new("rc_collision_params *", lib.rc_collision_params_default())
-    prm.c = float(c)
-    prm.eps = float(eps)
     prm.alpha = math.nan if alpha is None else float(alpha)
     prm.azimuth = float(azimuth)
+    # c and eps: one number for every pair, or one per pair (they broadcast as the masses)
+    cols = []
+    for name, v in (("c", c), ("eps", eps)):
+        a = np.asarray(v, dtype=float)
+        if a.ndim == 0:
+            cols.append((np.array([float(a)]), 0))
+        elif a.shape == (npair,) or (a.ndim == 1 and len(a) == 1):
+            cols.append((np.ascontiguousarray(np.broadcast_to(a, (npair,))), 1))
+        else:
+            raise ValueError("collide: %s: has shape %s, expected a number or (%d,) like the "
+                             "pairs" % (name, a.shape, npair))
+    (cc, sc), (ee, se) = cols
     status = np.zeros(npair, dtype=np.intc)
     hits = ffi.new("size_t *")
     bad = ffi.new("size_t *")
-    rc = lib.rc_collide_many(lw, prm, npair, _buf("double[]", m0), _buf("rc_vec3[]", p0),
-                             _buf("double[]", m1), _buf("rc_vec3[]", p1),
-                             ffi.from_buffer("rc_vec3[]", nn), _buf("int[]", status), hits, bad)
+    rc = lib.rcpy_collide_many(lw, prm, npair, ffi.from_buffer("double[]", cc), sc,
+                               ffi.from_buffer("double[]", ee), se,
+                               _buf("double[]", m0), _buf("rc_vec3[]", p0),
+                               _buf("double[]", m1), _buf("rc_vec3[]", p1),
+                               ffi.from_buffer("rc_vec3[]", nn), _buf("int[]", status), hits, bad)
     if rc < 0:
-        check(rc, "collide", int(bad[0]) if npair and _params_ok(prm) else None)
+        if sc == 0 and se == 0:
+            prm.c, prm.eps = cc[0], ee[0]
+            check(rc, "collide", int(bad[0]) if npair and _params_ok(prm) else None)
+        check(rc, "collide", int(bad[0]) if npair else None)
     collided = status == lib.RC_OK
     if d < 3:
         p0, p1 = p0[:, :d], p1[:, :d]

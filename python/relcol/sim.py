@@ -1,129 +1,27 @@
 """The event-driven engine (relcol/sim.h) from Python: a Sim is made from a scenario --
-the JSON object relcol-sim reads (apps/sim/SCENARIO.md), as a dict or a file -- and
-steps to a time; its state and diagnostics come back as numpy arrays and a dict.
+the JSON object relcol-sim reads (apps/sim/SCENARIO.md), as a dict, a file or JSON text,
+read by relcol-sim's own reader (relcol.scenario) -- and steps to a time; its state comes
+back as numpy arrays filled in C in one call, its diagnostics as a dict.
 
-The scenario keys are relcol-sim's: relcol, dim, box, boundary, c, law, restitution,
-contact_frame, groups, tc, seed, time, t_end, restart, balls, generate (rack, gas) and outputs
-(accepted and ignored: a Sim writes no files). `balls` may also be a dict of arrays,
-{"x": (N, dim), "v" or "p": (N, dim), "r": (N,) or scalar, "m": (N,) or scalar (default
-r^3), "tau": (N,), "tau_last": (N,) (NaN: no collision yet), "image": (N, dim)}, which is
-how one builds a run from numpy. Keyword arguments override keys:
-Sim("data/scenarios/rack.json", c=10). A relcol-sim final.json loads with checkpoint=None
-(its balls and time; without the checkpoint the continuation re-plans its events, see
-rc_sim_sync in relcol/sim.h)."""
-import json
+`balls` may also be a dict of arrays, {"x": (N, dim), "v" or "p": (N, dim), "r": (N,) or
+scalar, "m": (N,) or scalar (default r^3), "tau": (N,), "tau_last": (N,) (NaN: no
+collision yet), "image": (N, dim)}, which is how one builds a run from numpy. Keyword
+arguments override keys: Sim("data/scenarios/rack.json", c=10). t_end is optional (a Sim
+without one runs as far as asked). A relcol-sim final.json loads with its checkpoint and
+continues bit for bit as relcol-sim would; checkpoint=None starts afresh from its balls
+(the events are then planned again, see rc_sim_sync in relcol/sim.h)."""
 import math
 import os
 
 import numpy as np
 
 from ._relcol import ffi, lib
-from .errors import RelcolError, check
-from .kinematics import momentum
-from .laws import find_law
-from .toi import find_frame
+from .errors import check
+from .kinematics import inv_c2 as _inv_c2
+from .scenario import ScenarioError, load_scenario, parse
 
-_KEYS = {"relcol", "dim", "box", "boundary", "c", "law", "restitution", "contact_frame", "groups",
-         "tc", "seed", "time", "t_end", "restart", "checkpoint", "balls", "generate",
-         "outputs"}
 _EVENTS = ("ball", "wall", "group", "cell", "stale", "tc")
-
-
-def _num(value, path, allow_inf=False):
-    if allow_inf and value == "inf":
-        return math.inf
-    if isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)):
-        raise ValueError("%s: must be a number%s, not %r"
-                         % (path, ' or "inf"' if allow_inf else "", value))
-    value = float(value)
-    if not (math.isfinite(value) or (allow_inf and value == math.inf)):
-        raise ValueError("%s: must be finite" % path)
-    return value
-
-
-# relcol-sim's range for a ball's numbers (app_check_scale in apps/common/table.c): squares
-# and products of magnitudes in [1e-150, 1e150] are finite, normal doubles, so nothing the
-# engine forms from them overflows; zero is allowed where the number may be zero.
-_SCALE_MIN, _SCALE_MAX = 1e-150, 1e150
-
-
-def _check_scale(r, m, x, p, source):
-    """ValueError naming `source` and the first ball whose radius, rest mass, position or
-    momentum lies outside relcol-sim's range, as relcol-sim refuses it."""
-    def bad(a, zero_ok):
-        a = np.abs(np.asarray(a, dtype=float))
-        out = ~((a >= _SCALE_MIN) & (a <= _SCALE_MAX))
-        return out & ~(a == 0) if zero_ok else out
-    for what, arr, zero_ok in (("radius", r, False), ("rest mass", m, False),
-                               ("position", x, True), ("momentum", p, True)):
-        hit = bad(arr, zero_ok)
-        if hit.ndim > 1:
-            hit = hit.any(axis=1)
-        if hit.any():
-            i = int(np.argmax(hit))
-            raise ValueError("%s: gives ball %d a %s out of range: magnitudes must lie in "
-                             "[1e-150, 1e150], where their squares and products are finite, "
-                             "normal doubles" % (source(i), i, what))
-
-
-def load_scenario(source):
-    """A scenario as a dict: source is a dict (copied), a path to a JSON file or JSON text."""
-    if isinstance(source, dict):
-        return dict(source)
-    if isinstance(source, (str, os.PathLike)) and not str(source).lstrip().startswith("{"):
-        with open(source, encoding="utf-8") as f:
-            return json.load(f)
-    return json.loads(source)
-
-
-def _rack(s, c, g):
-    """relcol-sim's billiard break (apps/sim/scenario.c), in the same arithmetic: 15 balls
-    in a triangle whose apex is at 3/4 of the table, a cue ball at 1/4 moving at `speed`."""
-    unknown = set(g) - {"kind", "radius", "speed", "aim", "gap"}
-    if unknown:
-        raise ValueError("generate: unknown key %s" % sorted(unknown)[0])
-    if s["dim"] != 2:
-        raise ValueError("dim: generate.kind = rack is a 2-D table")
-    r = _num(g.get("radius", 0.028575), "generate.radius")
-    speed = _num(g.get("speed", 5.0), "generate.speed")
-    aim = _num(g.get("aim", 0.0), "generate.aim")
-    gap = _num(g.get("gap", 1e-6), "generate.gap")
-    if not r > 0:
-        raise ValueError("generate.radius: must be > 0")
-    if not 0 <= speed < c:
-        raise ValueError("generate.speed: must be in [0, c) (c = %g)" % c)
-    L, W = s["box"][0], s["box"][1]
-    pitch = 2 * r * (1 + gap)
-    x0, y0 = 0.75 * L, 0.5 * W
-    if x0 + 4 * pitch * math.sqrt(3) / 2 + r > L or 5 * pitch > W or 0.25 * L - r < 0:
-        raise ValueError("box: too small for a rack of balls of radius %g" % r)
-    x = [[0.25 * L, y0]]
-    for row in range(5):
-        for j in range(row + 1):
-            x.append([x0 + row * pitch * math.sqrt(3) / 2, y0 + (j - row / 2.0) * pitch])
-    v = np.zeros((16, 2))
-    v[0] = [speed * math.cos(aim), speed * math.sin(aim)]
-    m = r * r * r
-    return {"x": np.array(x), "p": _momenta(m, v, c), "r": r, "m": m}
-
-
-def _momenta(m, v, c):
-    """Momenta from velocities through the library's rc_momentum_from_velocity, so that a
-    scenario gives the same bits here as in relcol-sim."""
-    k = ffi.new("double *")
-    check(lib.rc_inv_c2(c, k), "c")
-    v = np.atleast_2d(v)
-    m = np.broadcast_to(np.asarray(m, dtype=float), (len(v),))
-    out = np.zeros_like(v)
-    p = ffi.new("rc_vec3 *")
-    for i, vi in enumerate(v):
-        vv = list(vi) + [0.0] * (3 - len(vi))
-        rc = lib.rc_momentum_from_velocity(m[i], {"x": vv[0], "y": vv[1], "z": vv[2]}, k[0], p)
-        if rc < 0:
-            raise RelcolError(rc, "balls[%d].v: |v| = %.17g, c = %g"
-                              % (i, float(np.linalg.norm(vi)), c))
-        out[i] = [p.x, p.y, p.z][:v.shape[1]]
-    return out
+_FIELDS = ("x", "p", "v", "r", "m", "tau", "tau_last", "image", "ahead")
 
 
 class Sim:
@@ -132,159 +30,43 @@ class Sim:
     Sim(scenario, **overrides): scenario is a dict, a JSON file's path or JSON text in
     relcol-sim's format (see the module's documentation); overrides replace its keys.
 
-    advance(t) processes every event up to table time t; the state at the engine's time
-    is read as arrays: positions, momenta, velocities, rest_masses, radii, proper_times,
-    images (periodic wraps); diagnostics() gives the conservation errors and counts.
+    integrate(t) (or advance(t)) processes every event up to table time t; steps(dt) and
+    events() iterate over a run; the state at the engine's time is read as arrays:
+    positions, momenta, velocities, rest_masses, radii, proper_times, images, or all at
+    once with state(); diagnostics() gives the conservation errors and counts; add()
+    puts balls in, set_c() changes the speed of light, save() writes the run as
+    relcol-sim's final.json does (scenario + checkpoint) and Sim(path) continues it.
     """
 
     def __init__(self, scenario=None, **overrides):
-        s = load_scenario(scenario) if scenario is not None else {}
-        s.update(overrides)
-        unknown = set(s) - _KEYS
-        if unknown:
-            raise ValueError("%s: unknown key (expected one of: %s)"
-                             % (sorted(unknown)[0], ", ".join(sorted(_KEYS))))
-        if s.get("relcol", 1) != 1:
-            raise ValueError("relcol: unsupported scenario format version %r" % s["relcol"])
-        if s.get("checkpoint") is not None:
-            raise ValueError("checkpoint: a Sim starts from the balls; delete the key")
-        dim = s.get("dim")
-        if dim not in (2, 3):
-            raise ValueError("dim: required, 2 or 3")
-        c = _num(s.get("c", "inf"), "c", allow_inf=True)
-        self.scenario = s
-        self.dim = dim
-        self.c = c
-        self.t_end = s.get("t_end")
-        d = lib.rc_sim_def_default()
-        d.dim = dim
-        d.c = c
-        d.law = find_law(s.get("law", "zmf"))
-        d.frame = find_frame(s.get("contact_frame", "table"))
-        rule = s.get("groups", "simultaneous")
-        g = lib.rc_group_rule_find(rule.encode() if isinstance(rule, str) else b"")
-        if g < 0:
-            raise ValueError("groups: unknown rule for simultaneous contacts %r (expected "
-                             "simultaneous, sequential, drop)" % (rule,))
-        d.groups = g
-        rest = s.get("restitution", {})
-        d.eps_ball = _num(rest.get("ball", 1.0), "restitution.ball")
-        d.eps_wall = _num(rest.get("wall", 1.0), "restitution.wall")
-        d.t_c = _num(s.get("tc", 0.0), "tc")
-        d.restart = 1 if s.get("restart", False) else 0
-        bnd = s.get("boundary", "walls")
-        bnd = [bnd] * dim if isinstance(bnd, str) else list(bnd)
-        if len(bnd) != dim or any(b not in ("walls", "periodic") for b in bnd):
-            raise ValueError('boundary: "walls", "periodic" or a list of %d of them' % dim)
-        for k, b in enumerate(bnd):
-            d.boundary[k] = lib.RC_SIM_PERIODIC if b == "periodic" else lib.RC_SIM_WALLS
-        gen = s.get("generate")
-        if (gen is None) == (s.get("balls") is None):
-            raise ValueError("balls: give balls or generate (rack or gas), not both")
-        if gen is not None and gen.get("kind") == "gas":
-            from .gas import gas_init
-            if "box" in s:
-                raise ValueError("box: must not be given with generate.kind = gas")
-            unknown = set(gen) - {"kind", "n", "radius", "packing", "v_rms", "density"}
-            if unknown:
-                raise ValueError("generate: unknown key %s" % sorted(unknown)[0])
-            box, balls = gas_init(dim, int(gen["n"]), gen.get("radius", 1.0), gen["packing"],
-                                  gen["v_rms"], c, gen.get("density", 1.0), s.get("seed", 1))
-        else:
-            box = s.get("box")
-            if box is None or len(box) != dim:
-                raise ValueError("box: required, %d numbers > 0" % dim)
-            box = [_num(v, "box[%d]" % k) for k, v in enumerate(box)]
-            if gen is None:
-                balls = s["balls"]
-            elif gen.get("kind") == "rack":
-                s2 = dict(s, box=box)
-                balls = _rack(s2, c, gen)
-            else:
-                raise ValueError("generate.kind: unknown generator %r (expected rack or gas)"
-                                 % gen.get("kind"))
-        self.box = np.array(box, dtype=float)
-        d.box.x, d.box.y = box[0], box[1]
-        if dim == 3:
-            d.box.z = box[2]
-        self._def = ffi.new("rc_sim_def *", d)
+        self._scn = parse(scenario, overrides)
+        self.scenario = self._scn.dict
+        p = self._scn.ptr
+        self.dim = int(p.dim)
+        self.c = float(p.c)
+        self.t_end = self._scn.t_end
+        self.box = np.array([p.box.x, p.box.y, p.box.z][:self.dim])
+        self._def = ffi.new("rc_sim_def *", lib.scn_sim_def(p))
         ptr = ffi.new("rc_sim **")
         check(lib.rc_sim_create(self._def, ptr), "Sim")
         self._sim = ffi.gc(ptr[0], lambda q: lib.rc_sim_free(ffi.new("rc_sim **", q)))
-        self._balls(balls, c, "generate.radius" if gen is not None else None)
-        check(lib.rc_sim_set_time(self._sim, _num(s.get("time", 0.0), "time")), "time")
-        self._set(self._cballs)
+        err = ffi.new("char[]", lib.APP_ERR_LEN)
+        if lib.scn_start(self._sim, p, self._scn.file.encode(), err) != 0:
+            raise ScenarioError(ffi.string(err).decode())
+        self.t0 = self.time
         self._d0 = self._diag()
 
-    def _balls(self, balls, c, generated=None):
-        """rc_sim_ball records from a list of ball objects or a dict of arrays."""
-        dim = self.dim
-        if isinstance(balls, dict):
-            cols = {k: np.asarray(v, dtype=float) for k, v in balls.items()}
-            unknown = set(cols) - {"x", "v", "p", "r", "m", "tau", "image", "tau_last"}
-            if unknown:
-                raise ValueError("balls.%s: unknown key" % sorted(unknown)[0])
-            x = np.atleast_2d(cols["x"])
-            n = len(x)
-            r = np.broadcast_to(cols.get("r", 1.0), (n,))
-            m = np.broadcast_to(cols["m"], (n,)) if "m" in cols else r ** 3
-            if "v" in cols and "p" in cols:
-                raise ValueError("balls: give either v or p, not both")
-            if "v" in cols:
-                p = _momenta(m, np.atleast_2d(cols["v"]), c)
-            else:
-                p = np.atleast_2d(cols.get("p", np.zeros((n, dim))))
-            tau = np.broadcast_to(cols.get("tau", 0.0), (n,))
-            # (TC-model memory: the proper time of each ball's last collision, NaN = none)
-            tau_last = np.broadcast_to(cols.get("tau_last", np.nan), (n,))
-            image = np.broadcast_to(cols.get("image", np.zeros((n, dim))), (n, dim))
-        else:
-            n = len(balls)
-            x, p, r, m, tau, image = (np.zeros((n, dim)), np.zeros((n, dim)), np.zeros(n),
-                                      np.zeros(n), np.zeros(n), np.zeros((n, dim)))
-            tau_last = np.full(n, np.nan)
-            for i, b in enumerate(balls):
-                unknown = set(b) - {"x", "v", "p", "r", "m", "tau", "image", "tau_last"}
-                if unknown:
-                    raise ValueError("balls[%d].%s: unknown key" % (i, sorted(unknown)[0]))
-                r[i] = _num(b.get("r", float("nan")), "balls[%d].r" % i)
-                m[i] = _num(b["m"], "balls[%d].m" % i) if "m" in b else r[i] ** 3
-                x[i] = b["x"]
-                tau[i] = b.get("tau", 0.0)
-                if "tau_last" in b:
-                    tau_last[i] = _num(b["tau_last"], "balls[%d].tau_last" % i)
-                image[i] = b.get("image", [0] * dim)
-                if "v" in b and "p" in b:
-                    raise ValueError("balls[%d]: give either v or p, not both" % i)
-                if "v" in b:
-                    p[i] = _momenta(m[i], np.array([b["v"]], dtype=float), c)[0]
-                elif "p" in b:
-                    p[i] = b["p"]
-        if x.shape != (n, dim) or p.shape != (n, dim):
-            raise ValueError("balls: x and v (or p) must be (N, %d) arrays" % dim)
-        if np.any(m <= 0):
-            raise RelcolError(-3, "balls", int(np.argmax(m <= 0)))
-        _check_scale(r, m, x, p, (lambda i: generated) if generated else
-                     (lambda i: "balls[%d]" % i))
-        cb = ffi.new("rc_sim_ball[]", n)
-        for i in range(n):
-            bi = cb[i]
-            bi.x.x, bi.x.y = x[i, 0], x[i, 1]
-            bi.p.x, bi.p.y = p[i, 0], p[i, 1]
-            if dim == 3:
-                bi.x.z, bi.p.z = x[i, 2], p[i, 2]
-            bi.r, bi.m, bi.tau = r[i], m[i], tau[i]
-            if not math.isnan(tau_last[i]):
-                bi.collided, bi.tau_last = 1, tau_last[i]
-            for k in range(dim):
-                bi.image[k] = int(image[i, k])
-        self._cballs = cb
-        self.n = n
+    @classmethod
+    def load(cls, path, **overrides):
+        """A run saved by save() or relcol-sim's final.json, continued bit for bit."""
+        return cls(os.fspath(path), **overrides)
 
-    def _set(self, cb):
-        bad = ffi.new("size_t *")
-        rc = lib.rc_sim_set_balls(self._sim, len(cb), cb, bad)
-        check(rc, "balls", int(bad[0]))
+    @property
+    def n(self):
+        """The number of balls."""
+        return int(lib.rc_sim_count(self._sim))
+
+    # ---- stepping ---------------------------------------------------------------------
 
     def advance(self, t, max_events=0):
         """Process events up to table time t (or max_events of them, 0 = all); returns
@@ -292,58 +74,184 @@ class Sim:
         check(lib.rc_sim_advance(self._sim, float(t), int(max_events)), "advance to t = %g" % t)
         return self
 
+    def integrate(self, t, every=None, callback=None):
+        """Advance to table time t (REBOUND's word); with callback, call callback(self)
+        every `every` time units from the current time (the last call at t), or after
+        every event when every="event". Returns self."""
+        if callback is None:
+            return self.advance(t)
+        it = self.events(t) if every == "event" else self.steps(every, t)
+        for _ in it:
+            callback(self)
+        return self
+
+    def steps(self, dt, t_end=None):
+        """Iterate over the run at times t0 + k dt up to t_end (default the scenario's
+        t_end), advancing the engine to each and yielding the Sim there; the grid is
+        counted in whole steps from the current time, so it does not drift."""
+        dt = float(dt)
+        if not (dt > 0 and math.isfinite(dt)):
+            raise ValueError("steps: dt must be a finite number > 0, not %r" % dt)
+        end = self._end(t_end)
+        t0, k = self.time, 1
+        while True:
+            t = min(t0 + k * dt, end)
+            self.advance(t)
+            yield self
+            if t >= end:
+                return
+            k += 1
+
+    def events(self, t_end=None):
+        """Iterate over the run event by event up to t_end (default the scenario's
+        t_end), yielding the Sim at each event's table time (cell crossings and stale
+        queue entries included: see diagnostics()["events"]); the last yield is at
+        t_end."""
+        end = self._end(t_end)
+        while self.time < end:
+            self.advance(end, max_events=1)
+            yield self
+
+    def _end(self, t_end):
+        end = self.t_end if t_end is None else float(t_end)
+        if end is None:
+            raise ValueError("t_end: the scenario has none; give t_end")
+        return end
+
     def run(self):
         """advance() to the scenario's t_end."""
-        if self.t_end is None:
-            raise ValueError("t_end: the scenario has none; call advance(t)")
-        return self.advance(_num(self.t_end, "t_end"))
+        return self.advance(self._end(None))
+
+    def set_c(self, c):
+        """Change the speed of light of the running engine (rc_sim_set_c in relcol/sim.h:
+        every ball keeps its momentum and rest mass; c = inf is classical). Returns
+        self."""
+        c = float(c)
+        check(lib.rc_sim_set_c(self._sim, c), "set_c(%r)" % c)
+        self.c = c
+        self._def.c = c
+        self._scn.ptr.c = c
+        return self
+
+    def add(self, balls=None, **ball):
+        """Add balls: a list of ball objects or a dict of arrays as in a scenario, or one
+        ball as keywords (x=, v= or p=, r=, m=, ...). They are read by the scenario reader
+        (same rules, same messages) and given with the balls already there to
+        rc_sim_set_balls, which plans the events afresh (a checkpoint's schedule is not
+        kept) and refuses overlaps (the run then stays as it was); the diagnostics
+        restart from the new total. Returns self."""
+        if balls is None:
+            balls = [ball]
+        elif ball:
+            raise ValueError("add: give balls or one ball's keywords, not both")
+        head = {k: v for k, v in self.scenario.items()
+                if k in ("relcol", "dim", "box", "boundary", "c", "law", "contact_frame")}
+        head.update(c=self.c, time=self.time, balls=balls)
+        if "box" not in head:
+            head["box"] = self.box
+        new = parse(head, name="add").ptr
+        n, k = self.n, int(new.n)
+        all_balls = ffi.new("rc_sim_ball[]", n + k)
+        bad = ffi.new("size_t *")
+        check(lib.rcpy_sim_balls(self._sim, n, all_balls, bad), "ball", int(bad[0]))
+        ffi.memmove(all_balls + n, new.balls, k * ffi.sizeof("rc_sim_ball"))
+        before = self.checkpoint()  # (a refused add leaves the run as it was, exactly)
+        rc = lib.rc_sim_set_balls(self._sim, n + k, all_balls, bad)
+        if rc < 0:
+            self.restore(before)
+            i = int(bad[0])
+            raise ScenarioError("add: balls[%d]: %s" % (i - n, "overlaps another ball"
+                                if rc == lib.RC_EOVERLAP else "the ball's shape is not inside "
+                                "the box" if rc == -1 else ffi.string(lib.rc_strerror(rc)).decode()))
+        self._d0 = self._diag()
+        return self
+
+    # ---- checkpoints ------------------------------------------------------------------
+
+    def save(self, path, t_end=None):
+        """Write the run as relcol-sim writes final.json: path (NAME.json) is the
+        scenario with the balls and time now, "restart": true, naming NAME.ckpt beside it,
+        the engine's whole state; Sim(path) (or relcol-sim path) continues it bit for bit.
+        t_end: the end written (default the scenario's, or as long again as run so far).
+        Both files are written atomically. Returns path."""
+        path = os.fspath(path)
+        folder, base = os.path.split(os.path.abspath(path))
+        if not base.endswith(".json") or len(base) <= 5:
+            raise ValueError("save: %r: the file name must end in .json" % path)
+        if t_end is None:
+            t_end = self.t_end if self.t_end is not None and self.t_end > self.time else \
+                self.time + max(self.time - self.t0, 1.0)
+        err = ffi.new("char[]", lib.APP_ERR_LEN)
+        if lib.scn_save(folder.encode(), base[:-5].encode(), self._scn.ptr, self._sim,
+                        float(t_end), err) != 0:
+            raise OSError("save: %s" % ffi.string(err).decode())
+        return path
+
+    def checkpoint(self):
+        """The engine's whole state as bytes (rc_sim_checkpoint_write)."""
+        size = ffi.new("size_t *")
+        check(lib.rc_sim_checkpoint_size(self._sim, size), "checkpoint")
+        buf = bytearray(size[0])
+        check(lib.rc_sim_checkpoint_write(self._sim, ffi.from_buffer(buf), size[0]),
+              "checkpoint")
+        return bytes(buf)
+
+    def restore(self, data):
+        """Replace the state by checkpoint bytes from a Sim of an equal definition
+        (rc_sim_checkpoint_read: damaged or foreign bytes are refused). Returns self."""
+        check(lib.rc_sim_checkpoint_read(self._sim, ffi.from_buffer(data), len(data)),
+              "restore")
+        return self
+
+    # ---- state ------------------------------------------------------------------------
 
     @property
     def time(self):
         """The engine's table time."""
         return lib.rc_sim_time(self._sim)
 
-    def _read(self, latest=False, slice_id=None):
-        n, dim = lib.rc_sim_count(self._sim), self.dim
-        out = ffi.new("rc_sim_ball *")
-        x, p = np.empty((n, dim)), np.empty((n, dim))
-        r, m, tau = np.empty(n), np.empty(n), np.empty(n)
-        image = np.empty((n, dim), dtype=np.int64)
-        ahead = np.zeros(n, dtype=np.int64)
-        if slice_id is not None:
-            latest = True  # (no kink_ahead: a final slice has none to flag)
-            get = lambda sim, i, o: lib.rc_sim_slice_get(sim, slice_id, i, o)
-        else:
-            get = lib.rc_sim_get_ball_latest if latest else lib.rc_sim_get_ball
-        for i in range(n):
-            check(get(self._sim, i, out), "ball", i)
-            x[i] = (out.x.x, out.x.y, out.x.z)[:dim]
-            p[i] = (out.p.x, out.p.y, out.p.z)[:dim]
-            r[i], m[i], tau[i] = out.r, out.m, out.tau
-            image[i] = list(out.image)[:dim]
-            if not latest:
-                ahead[i] = lib.rc_sim_kink_ahead(self._sim, i)
-        return x, p, r, m, tau, image, ahead
+    def _read(self, fields, which=0, slice_id=0):
+        """The named fields of every ball, filled by rcpy_sim_read in one call."""
+        n, dim = self.n, self.dim
+        shapes = {"x": (n, dim), "p": (n, dim), "v": (n, dim), "image": (n, dim)}
+        types = {"image": np.int32, "ahead": np.int8}
+        out, ptrs = {}, []
+        for f in _FIELDS:
+            if f in fields:
+                a = np.empty(shapes.get(f, (n,)), dtype=types.get(f, np.float64))
+                out[f] = a
+                ctype = {"image": "int32_t[]", "ahead": "int8_t[]"}.get(f, "double[]")
+                ptrs.append(ffi.from_buffer(ctype, a, require_writable=True))
+            else:
+                ptrs.append(ffi.NULL)
+        bad = ffi.new("size_t *")
+        inv_c2 = _inv_c2(self.c)
+        check(lib.rcpy_sim_read(self._sim, which, slice_id, n, dim, inv_c2, *ptrs, bad),
+              "ball", int(bad[0]))
+        return out
 
     def state(self, latest=False):
         """Every ball at the engine's time, as a dict of arrays: x, p, v, r, m (rest
-        mass), tau (proper time), image (periodic wraps), kink_ahead, t. In the covariant
-        frame a ball's kink may lie after the engine's time: the state is then the one it
-        has there, on its incoming line, and kink_ahead is 1 (2: not recorded, see
-        rc_sim_kink_ahead in relcol/sim.h); latest=True reads every ball's latest segment
-        instead (each change at its contact event's table time, as the other frames do;
-        rc_sim_get_ball_latest), whose sums are the conserved ones."""
-        x, p, r, m, tau, image, ahead = self._read(latest)
-        mr = np.sqrt(m * m + np.sum(p * p, axis=1) * (0.0 if math.isinf(self.c) else self.c ** -2))
-        return {"t": self.time, "x": x, "p": p, "v": p / mr[:, None], "r": r, "m": m,
-                "tau": tau, "image": image, "kink_ahead": ahead}
+        mass), tau (proper time), tau_last (TC memory, NaN: none), image (periodic
+        wraps), kink_ahead, t. In the covariant frame a ball's kink may lie after the
+        engine's time: the state is then the one it has there, on its incoming line, and
+        kink_ahead is 1 (2: not recorded, see rc_sim_kink_ahead in relcol/sim.h);
+        latest=True reads every ball's latest segment instead (each change at its contact
+        event's table time, as the other frames do; rc_sim_get_ball_latest), whose sums
+        are the conserved ones."""
+        # (only a per_ball frame at finite c has kinks ahead: elsewhere they are all 0)
+        kinks = not latest and self._def.frame.per_ball and not math.isinf(self.c)
+        st = self._read(_FIELDS if kinks else _FIELDS[:-1], 1 if latest else 0)
+        st["kink_ahead"] = st.pop("ahead", np.zeros(self.n, dtype=np.int8))
+        st["t"] = self.time
+        return st
 
     def slice_request(self, t):
         """Ask for the delayed table-time slice at t >= the engine's time (relcol/sim.h,
         rc_sim_slice_request): every ball's state at t on its worldline, kept by the engine
         as later collisions place or undo kinks before t. Returns its id."""
         sid = ffi.new("uint32_t *")
-        check(lib.rc_sim_slice_request(self._sim, _num(t, "t"), sid), "slice at t = %g" % t)
+        check(lib.rc_sim_slice_request(self._sim, float(t), sid), "slice at t = %g" % t)
         return int(sid[0])
 
     def slice_ready(self, sid):
@@ -361,24 +269,24 @@ class Sim:
         (RelcolError RC_ENOTREADY before: advance to slice_ready(sid)["t_final"]). Its sums
         are not the conserved ones (relcol/sim.h). release=True drops it after reading."""
         ts = self.slice_ready(sid)["ts"]
-        x, p, r, m, tau, image, _ = self._read(slice_id=int(sid))
+        st = self._read(_FIELDS[:-1], lib.RCPY_SLICE, int(sid))
         if release:
             self.slice_release(sid)
-        mr = np.sqrt(m * m + np.sum(p * p, axis=1) * (0.0 if math.isinf(self.c) else self.c ** -2))
-        return {"t": ts, "x": x, "p": p, "v": p / mr[:, None], "r": r, "m": m,
-                "tau": tau, "image": image}
+        st["t"] = ts
+        return st
 
     def slice_release(self, sid):
         """Drop slice sid."""
         check(lib.rc_sim_slice_release(self._sim, int(sid)), "slice %d" % sid)
 
-    positions = property(lambda self: self._read()[0], doc="centres, (N, dim)")
-    momenta = property(lambda self: self._read()[1], doc="momenta, (N, dim)")
-    radii = property(lambda self: self._read()[2], doc="rest radii, (N,)")
-    rest_masses = property(lambda self: self._read()[3], doc="rest masses, (N,)")
-    proper_times = property(lambda self: self._read()[4], doc="proper times, (N,)")
-    images = property(lambda self: self._read()[5], doc="periodic wraps, (N, dim)")
-    velocities = property(lambda self: self.state()["v"], doc="velocities p / M, (N, dim)")
+    positions = property(lambda self: self._read(("x",))["x"], doc="centres, (N, dim)")
+    momenta = property(lambda self: self._read(("p",))["p"], doc="momenta, (N, dim)")
+    radii = property(lambda self: self._read(("r",))["r"], doc="rest radii, (N,)")
+    rest_masses = property(lambda self: self._read(("m",))["m"], doc="rest masses, (N,)")
+    proper_times = property(lambda self: self._read(("tau",))["tau"], doc="proper times, (N,)")
+    images = property(lambda self: self._read(("image",))["image"], doc="periodic wraps, (N, dim)")
+    velocities = property(lambda self: self._read(("v",))["v"],
+                          doc="velocities p / M (rc_velocity), (N, dim)")
 
     def _diag(self):
         d = ffi.new("rc_sim_diag *")
@@ -431,3 +339,6 @@ class Sim:
 
     def __repr__(self):
         return "<relcol.Sim %d-D, %d balls, c = %g, t = %g>" % (self.dim, self.n, self.c, self.time)
+
+
+__all__ = ["Sim", "load_scenario", "ScenarioError"]

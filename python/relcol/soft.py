@@ -8,7 +8,7 @@ import math
 import numpy as np
 
 from ._relcol import ffi, lib
-from .errors import RelcolError, check
+from .errors import RelcolError, check, shape_error
 from .laws import _table
 
 SHAPES = {"sphere": 0, "contracted": 1, "contracted-frozen": 2}
@@ -45,8 +45,12 @@ def soft_collide(m, p, x, r, c=math.inf, eps=1.0, stiffness=1e6, rtol=1e-10,
     if x.shape != (n, d) or not 1 <= d <= 3:
         raise ValueError("p and x must both be (n, d) arrays with d in 1..3: %s, %s"
                          % (p.shape, x.shape))
-    m = np.broadcast_to(np.asarray(m, dtype=float), (n,))
-    r = np.ascontiguousarray(np.broadcast_to(np.asarray(r, dtype=float), (n,)))
+    m, r = np.asarray(m, dtype=float), np.asarray(r, dtype=float)
+    for name, a in (("m", m), ("r", r)):
+        if a.shape not in ((), (n,)):
+            raise shape_error("soft_collide", name, a.shape, "a scalar or (%d,) like p" % n)
+    m = np.broadcast_to(m, (n,))
+    r = np.ascontiguousarray(np.broadcast_to(r, (n,)))
     b = np.zeros((n, 4))
     b[:, 0] = m
     b[:, 1:1 + d] = p

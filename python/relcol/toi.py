@@ -8,7 +8,7 @@ import math
 import numpy as np
 
 from ._relcol import ffi, lib
-from .errors import RelcolError, check
+from .errors import RelcolError, check, shape_error
 from .laws import _table, _vectors
 
 Frame = collections.namedtuple("Frame", "name summary contracted covariant wall_contracted")
@@ -76,8 +76,14 @@ def toi(x0, r0, m0, p0, x1, r1, m1, p1, c=math.inf, frame="table", **tolerances)
         raise ValueError("x0, p0, x1 and p1 must have the same number of components")
     sc = [np.asarray(s, dtype=float) for s in (r0, m0, r1, m1)]
     single = all(v.ndim == 1 for v in vec) and all(s.ndim == 0 for s in sc)
-    shape = np.broadcast_shapes(*(v.shape[:-1] for v in vec), *(s.shape for s in sc))
-    npair = shape[0] if shape else 1
+    rows = [v.shape[0] for v in vec if v.ndim == 2] + [a.shape[0] for a in sc if a.ndim == 1]
+    npair = max(rows) if rows else 1
+    for name, v in zip(("x0", "p0", "x1", "p1"), vec):
+        if v.ndim == 2 and v.shape[0] != npair:
+            raise shape_error("toi", name, v.shape, "(%d,) or (%d, %d)" % (d, npair, d))
+    for name, a in zip(("r0", "m0", "r1", "m1"), sc):
+        if a.ndim > 1 or (a.ndim == 1 and a.shape[0] != npair):
+            raise shape_error("toi", name, a.shape, "a scalar or (%d,)" % npair)
     x0, p0, x1, p1 = (np.broadcast_to(v, (npair, d)) for v in vec)
     r0, m0, r1, m1 = (np.broadcast_to(s, (npair,)) for s in sc)
     ws = ffi.new("rc_toi_workspace **")

@@ -76,12 +76,11 @@ def test_ball_list_velocities_and_walls():
 def test_scenario_errors():
     with pytest.raises(ValueError, match="colour: unknown key"):
         relcol.Sim(RACK, colour="red")
-    with pytest.raises(relcol.RelcolError, match="speed must be < c"):
+    with pytest.raises(relcol.ScenarioError, match=r"balls\[0\]\.v: \|v\| = 1 >= c = 1"):
         relcol.Sim(dim=2, box=[4, 4], c=1, balls={"x": [[1, 1]], "v": [[1.0, 0]], "r": 0.5})
-    with pytest.raises(relcol.RelcolError, match="shapes overlap|invalid") as e:
+    with pytest.raises(relcol.ScenarioError, match=r"balls\[1\]: overlaps another ball"):
         relcol.Sim(dim=2, box=[4, 4], balls={"x": [[1, 1], [1.5, 1]], "r": 0.5})
-    assert e.value.index is not None
-    with pytest.raises(relcol.RelcolError, match="law 'newton'"):
+    with pytest.raises(relcol.ScenarioError, match="law: unknown collision law 'newton'"):
         relcol.Sim(RACK, law="newton")
 
 
@@ -95,10 +94,10 @@ def test_ball_numbers_out_of_range_are_refused_as_relcol_sim_refuses_them():
         out = subprocess.run([os.environ["RELCOL_SIM"], reg, "--out", os.devnull],
                              capture_output=True, text=True)
         assert out.returncode != 0 and "generate.radius" in out.stderr
-    with pytest.raises(ValueError, match=r"balls\[1\]: gives ball 1 a position out of range"):
+    with pytest.raises(ValueError, match=r"balls\[1\]\.x\[1\]: 1e-200 is too small"):
         relcol.Sim(dim=2, box=[4, 4], balls=[{"x": [1, 1], "r": 0.5},
                                              {"x": [3, 1e-200], "r": 0.5}])
-    with pytest.raises(ValueError, match=r"balls\[0\]: gives ball 0 a radius out of range"):
+    with pytest.raises(ValueError, match=r"balls\[0\]\.r: 1e-160 is too small"):
         relcol.Sim(dim=2, box=[4, 4], balls={"x": [[1, 1]], "r": 1e-160, "m": 1.0})
     # zero positions and momenta are in range
     relcol.Sim(dim=2, box=[4, 4], balls={"x": [[1, 1]], "p": [[0.0, 0.0]], "r": 0.5})

@@ -38,9 +38,14 @@ if readelf -d "$P/bin/relcol-sim" | grep -q 'RUNPATH.*\$ORIGIN/\.\./'; then ok; 
 if (cd "$T" && "$P/bin/relcol-sim" "$P/share/relcol/scenarios/rack.json" --t-end 0.5 \
         --out "$T/rack" --no-plots > "$T/out" 2> "$T/err") && [ -s "$T/rack/final.json" ]; then ok
 else bad "relcol-sim on share/relcol/scenarios/rack.json: $(cat "$T/err")"; fi
-for f in papers/relcol.md papers/zmf-law.md scenarios/gas.json examples/stick-0.6.csv; do
+for f in SCENARIO.md papers/relcol.md papers/zmf-law.md scenarios/gas.json examples/stick-0.6.csv; do
     if [ -s "$P/share/relcol/$f" ]; then ok; else bad "share/relcol/$f not installed"; fi
 done
+
+# the man pages name the installed scenario format and papers
+if ! command -v help2man > /dev/null || { grep -q 'share/relcol/SCENARIO.md' "$P/share/man/man1/relcol-sim.1" &&
+        grep -q 'SCENARIO.md' "$P/share/man/man1/relcol-gas.1" && grep -q 'papers/' "$P/share/man/man1/relcol-gas.1"; }; then ok
+else bad "the man pages do not name share/relcol/SCENARIO.md and papers/"; fi
 
 # a C program against the installed relcol.pc (its prefix moved to where it now is)
 pc=$(find "$P" -name relcol.pc | head -1)

@@ -395,6 +395,12 @@ int rc_sim_get_ball(const rc_sim *s, size_t i, rc_sim_ball *out);
  * rc_sim_slice_request below). This read-out applies every change at its contact event
  * instead, for both balls alike. */
 int rc_sim_get_ball_latest(const rc_sim *s, size_t i, rc_sim_ball *out);
+/* Every ball at once, out[i] for i < n = rc_sim_count(s) (RC_EINVAL otherwise): what
+ * rc_sim_get_ball (latest = 0) or rc_sim_get_ball_latest (latest != 0) gives, bit for
+ * bit, read in the engine's storage order (n single calls each land on a random place of
+ * the engine's arrays). ahead (may be NULL, n entries, latest = 0): rc_sim_kink_ahead of
+ * each ball. */
+int rc_sim_get_balls(const rc_sim *s, size_t n, rc_sim_ball *out, int latest, int8_t *ahead);
 /* per_ball frames (covariant): ball i's glued world tube through its latest kink
  * (relcol/toi.h: rc_glue; its section at a time t is the incoming cylinder's part not yet
  * reached by H and the outgoing one's part reached), in table coordinates: on a walled
