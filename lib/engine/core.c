@@ -304,8 +304,8 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T, const double *
         if (s->glue) {
             bat[j] = s->b[b];
             cat[j] = s->clk[b];
-            gat[j] = s->cov[b];
-            uat[j] = s->glu[b];
+            gat[j] = s->pb->cov[b];
+            uat[j] = s->pb->glu[b];
             /* (no change, no kink: a contact the law found nothing to resolve keeps the
              * ball's line and its hyperplane) */
             kinked[j] = 0;
@@ -314,11 +314,11 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T, const double *
                  * order (not undone above): the tube of the two is not defined there,
                  * counted with the order conflicts (the collision can still be undone:
                  * its kink is where the model puts it) */
-                if (te[j] >= s->cov[b].t_k && cross[j])
+                if (te[j] >= s->pb->cov[b].t_k && cross[j])
                     s->bk.order_conflicts++;
                 const uint64_t oc = s->bk.order_conflicts;
                 eng_glue_kink_at(s, b, &P[j], &Q[j], tx[j], dX[j], te[j], kap[j], !model);
-                kinked[j] = s->bk.order_conflicts == oc && s->glu[b].r > 0.0;
+                kinked[j] = s->bk.order_conflicts == oc && s->pb->glu[b].r > 0.0;
             }
         }
         s->a[b].m = Q[j].m;
@@ -345,8 +345,8 @@ static int try_single(rc_sim *s, size_t nm, int32_t bp, double T, const double *
             if (s->glue) {
                 s->b[b] = bat[j];
                 s->clk[b] = cat[j];
-                s->cov[b] = gat[j];
-                s->glu[b] = uat[j];
+                s->pb->cov[b] = gat[j];
+                s->pb->glu[b] = uat[j];
             }
         }
         s->bk.events[RC_SIM_EV_TC] = tc_before;
@@ -396,8 +396,8 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
         if (bp >= 0) {
             const rc_vec3 n = s->ev_n[i];
             if (!isnan(n.x)) { /* (as the prediction found it) */
-                tx[0] = s->cov[i].ev_tx;
-                dX[0] = s->cov[i].ev_dx;
+                tx[0] = s->pb->cov[i].ev_tx;
+                dX[0] = s->pb->cov[i].ev_dx;
                 have_x = 1;
             }
             else {
@@ -684,20 +684,20 @@ static void finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int k
  * free of side effects and drops its calls.) */
 __attribute__((always_inline)) static inline void glue_prefetch(const rc_sim *s, int32_t b)
 {
-    const char *g = (const char *)&s->glu[b];
-    __builtin_prefetch(&s->cov[b]);
+    const char *g = (const char *)&s->pb->glu[b];
+    __builtin_prefetch(&s->pb->cov[b]);
     /* (five lines: the array is line-aligned, so a record starts at most 56 bytes into
      * its first line) */
     for (size_t o = 0; o < sizeof(rc_glue); o += 64)
         __builtin_prefetch(g + o);
-    __builtin_prefetch(&s->und[b].partner);
+    __builtin_prefetch(&s->pb->und[b].partner);
     /* (the record a new one shifts into the previous one: whole, written at once) */
-    const char *u = (const char *)&s->und[b], *up = (const char *)&s->undp[b];
+    const char *u = (const char *)&s->pb->und[b], *up = (const char *)&s->pb->undp[b];
     for (size_t o = 0; o < sizeof(eng_undo); o += 64) {
         __builtin_prefetch(u + o);
         __builtin_prefetch(up + o, 1);
     }
-    __builtin_prefetch(&s->pend[b].depth);
+    __builtin_prefetch(&s->pb->pend[b].depth);
 }
 
 /* Events a run may have at one instant before it is called stalled: every contact of a
@@ -797,7 +797,7 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
                     glue_prefetch(s, a->ev_partner);
             }
             eng_pend_snap ps[2];
-            const int np = !s->pend ? 0 : a->ev_partner >= 0 ? 2 : 1;
+            const int np = !s->pb ? 0 : a->ev_partner >= 0 ? 2 : 1;
             if (np)
                 ps[0] = eng_pend_take(s, i);
             if (np == 2)

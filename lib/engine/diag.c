@@ -16,9 +16,9 @@ double rc_sim_time(const rc_sim *s) { return s ? s->now : NAN; }
 static int before_kink(const rc_sim *s, size_t i, double now, rc_sim_ball *o,
                        const int32_t **img)
 {
-    if (!s->pend || !(s->cov[i].t_k > now))
+    if (!s->pb || !(s->pb->cov[i].t_k > now))
         return 0;
-    const eng_pend *r = &s->pend[i];
+    const eng_pend *r = &s->pb->pend[i];
     int k = 0;
     while (k < r->depth && !(now < r->l[k].t))
         k++;
@@ -116,10 +116,10 @@ int rc_sim_get_ball_latest(const rc_sim *s, size_t i, rc_sim_ball *out)
 
 int rc_sim_get_glue(const rc_sim *s, size_t i, rc_glue *out)
 {
-    if (!s || !out || i >= s->n || !s->glu)
+    if (!s || !out || i >= s->n || !s->pb)
         return RC_EINVAL;
     const size_t k = s->slot[i];
-    *out = s->glu[k];
+    *out = s->pb->glu[k];
     if (out->r > 0.0) {
         /* kept with the contact event at the origin: shifted so that its centre at t_c is
          * the stored line's there (its kink) */
@@ -259,8 +259,8 @@ size_t rc_sim_bytes(const rc_sim *s)
                                sizeof *s->id + sizeof *s->slot +
                                sizeof *s->cnt + (s->ev_n ? sizeof *s->ev_n : 0) +
                                (s->img ? 3 * sizeof *s->img : 0) +
-                               (s->cov ? sizeof *s->cov + sizeof *s->glu + sizeof *s->pend +
-                                             sizeof *s->und + sizeof *s->undp
+                               (s->pb ? sizeof *s->pb->cov + sizeof *s->pb->glu + sizeof *s->pb->pend +
+                                             sizeof *s->pb->und + sizeof *s->pb->undp
                                        : 0)) +
            eng_queue_bytes(&s->q) + eng_slice_bytes(s) +
            s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot +

@@ -7,7 +7,7 @@
 
 eng_pend_snap eng_pend_take(const rc_sim *s, int32_t b)
 {
-    const eng_pend_snap p = {b, s->cnt[b], s->cov[b].t_k, {s->a[b].m, s->a[b].p}, s->clk[b].tau_last};
+    const eng_pend_snap p = {b, s->cnt[b], s->pb->cov[b].t_k, {s->a[b].m, s->a[b].p}, s->clk[b].tau_last};
     return p;
 }
 
@@ -21,8 +21,8 @@ void eng_pend_note(rc_sim *s, const eng_pend_snap *p)
     const int32_t b = p->b;
     if (s->cnt[b] == p->cnt)
         return; /* (no change: no kink) */
-    eng_pend *r = &s->pend[b];
-    const double te = s->cov[b].t_k, now = s->now;
+    eng_pend *r = &s->pb->pend[b];
+    const double te = s->pb->cov[b].t_k, now = s->now;
     while (r->depth >= 2 && r->l[0].t <= now) {
         /* the first recorded line has ended: the next is the one the ball is on, from
          * that kink (its centre and proper time there) */

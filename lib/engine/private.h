@@ -7,7 +7,8 @@
 
 #include <stdint.h>
 #include "relcol/sim.h"
-#include "../glue_kv.h"
+#include "relcol/perball.h"
+#include "perball/perball.h"
 
 /* Hot data read by every pair test: one 64-byte line per ball. The state is stored at
  * the ball's own time t (its local clock); v = p / M is derived from p and m. */
@@ -45,108 +46,6 @@ typedef struct eng_clock {
     double tau;      /* proper time at t */
     double tau_last; /* proper time of the last collision (-inf: none yet) */
 } eng_clock;
-
-/* A per_ball frame's glued world tubes (papers/shape-change.md), cold, one 64-byte line
- * per ball: the hyperplane H that began the ball's current segment, t - t_k = kappa.(y -
- * x_k), through its last kink (t_k, x_k) -- x_k its centre at t_k on the stored line, so
- * nothing here moves when the ball wraps or is advanced; t_k = -inf, kappa = 0 before its
- * first collision. A contact of the model lies on the future side of both balls' H. */
-typedef struct eng_cov {
-    double t_k;
-    rc_vec3 kappa;
-    /* the contact event X of the ball's scheduled ball event, as its prediction found it
-     * (a collision reads it rather than asking the frame again, whose reference time
-     * depends on now): its table time and X - (the ball's centre then on its stored line) */
-    double ev_tx;
-    rc_vec3 ev_dx;
-} eng_cov;
-_Static_assert(sizeof(eng_cov) == 64, "one cache line per record");
-
-/* per_ball frames: what undoing a ball's last collision needs (papers/shape-change.md,
- * sections 7 and 8): a third ball that meets the ball's incoming piece, before its kink
- * along its tube, undoes the collision -- a single contact of the model, or a group an
- * earlier undo solved -- and the contacts are solved together. Every member of the
- * collision holds a record; valid while no member has collided since (the counters). The
- * collision's contacts form a tree over its members: each member but the first holds its
- * contact with the member it joined (its parent), the first its contact with a wall if
- * there is one. Balls by their caller's index, which renumbering does not change. */
-#define ENG_UNDO_NMAX 8 /* members of a collision that can be undone (bounds the work) */
-#define ENG_ROOT (INT32_MIN + 1) /* partner: the first member, without a wall contact */
-typedef struct eng_undo {
-    rc_particle in;     /* the ball's state before */
-    eng_cov cov;        /* its hyperplane before (and its scheduled event's X, unused) */
-    rc_glue glu;        /* its glued tube before */
-    double tau_last;    /* its clock's last collision before */
-    rc_vec3 n;          /* the contact normal, from the ball to its partner */
-    double dt;          /* the contact event X - the ball's kink E: time ... */
-    rc_vec3 dx;         /* ... and position (E on both the incoming and the outgoing line) */
-    int32_t partner;    /* its parent (caller's index), ENG_WALL(w), ENG_ROOT, or ENG_NONE:
-                           no record */
-    uint32_t nm;        /* the collision's members ... */
-    int32_t mem[ENG_UNDO_NMAX];  /* ... by caller's index, in the order its books took them */
-    uint32_t mcnt[ENG_UNDO_NMAX]; /* their counters after it */
-    uint32_t kind;      /* its event kind (RC_SIM_EV_BALL, _WALL or _MULTI) ... */
-    uint32_t ntc;       /* ... and the TC contacts it counted (rc_sim_diag) */
-    uint32_t npol;      /* its contacts the overlap policy decided (counted once, when
-                           decided: undone and solved again they stay counted) */
-} eng_undo;
-/* per_ball frames: where a ball's kinks lie after the engine's time. The engine stores a
- * ball at its latest kink on its outgoing line, which may lie ahead of now; the table-time
- * picture at now (rc_sim_get_ball) needs the line the ball is still on. Written after each
- * event for its own balls (engine/pending.c, eng_pend_note), read only by the read-out
- * (engine/diag.c), so nothing here changes a run. depth 0: none (the ball's kinks were at
- * or before the event that made them). depth >= 1: the ball moves on the line with
- * momentum l[0].p and rest mass l[0].m until its kink at table time l[0].t, at centre x
- * (in the wrap coordinates img, periodic boxes), where its proper time is tau; its TC
- * memory before it is tau_last (-inf: no collision); then on line k (l[k].p, l[k].m)
- * from kink l[k - 1].t until kink l[k].t, k < depth. Where the latest kink (eng_cov.t_k)
- * lies beyond the last recorded end l[depth - 1].t, the lines in between were not recorded (more than
- * ENG_PEND_LINES kinks ahead of now at once, or a chain the record lost): the read-out
- * says so (rc_sim_kink_ahead = 2). Dense hot gases put several kinks ahead of a ball
- * within a glue window: two lines made the delayed slice at packing 0.2 fail. */
-#define ENG_PEND_LINES 6
-typedef struct eng_pend_line {
-    double t;  /* its kink's table time */
-    double m;  /* the line's rest mass ... */
-    rc_vec3 p; /* ... and momentum */
-} eng_pend_line;
-typedef struct eng_pend {
-    /* (what every event's note reads first, then the lines: a record of one line, the
-     * common case, lies in its first two cache lines, as the two-line record did) */
-    int32_t depth;
-    int32_t img[3];
-    rc_vec3 x;
-    double tau;
-    double tau_last;
-    eng_pend_line l[ENG_PEND_LINES];
-    double pad[3];
-} eng_pend;
-_Static_assert(sizeof(eng_pend) % 64 == 0, "whole cache lines per record");
-
-/* 1 - kappa.v for the hyperplane c that began a ball's segment and its velocity v on it:
- * for a ball fast before and after that kink the same way ~1/gamma^2, which the plain
- * difference loses to the rounding of its terms; then from the kink's tube's shapes
- * (glue_kv.h rc_glue_omkv_out), when g is that tube (r > 0: not an order conflict's) and
- * v its outgoing velocity, bit for bit. */
-static inline double eng_seg_den(const eng_cov *c, const rc_glue *g, rc_vec3 v)
-{
-    const double kv = rc_v3_dot(c->kappa, v);
-    if (!(kv > RC_GLUE_KV_FAST) || !(g->r > 0.0) || g->v_out.x != v.x || g->v_out.y != v.y ||
-        g->v_out.z != v.z)
-        return 1.0 - kv;
-    return rc_glue_omkv_out(&g->in, &g->out);
-}
-
-/* Is the event X (table time tx, offset dxb from the ball's centre then on its stored
- * line, velocity v) on the future side of the hyperplane c that began its segment,
- * t - t_k = kappa.(y - x_k)? With x_k on the stored line, X - x_k = dxb + v (tx - t_k), so
- * the test reads (tx - t_k)(1 - kappa.v) >= kappa.dxb (1 - kappa.v > 0: |kappa| < 1/c).
- * No kink yet: t_k = -inf, always true. g: the ball's tube of that kink (s->glu). */
-static inline int eng_glue_side(const eng_cov *c, const rc_glue *g, rc_vec3 v, double tx,
-                                rc_vec3 dxb)
-{
-    return (tx - c->t_k) * eng_seg_den(c, g, v) >= rc_v3_dot(c->kappa, dxb);
-}
 
 /* The event queue (engine/queue.c): one entry per ball, popped in (time, ball) order.
  * (Functions shared between the engine files carry eng_: exported, not public.) */
@@ -328,29 +227,6 @@ typedef struct eng_books {
     /* tube conflicts resolved by undoing a ball's last collision and solving the two
      * contacts together (eng_undo), not by the overlap policy (not in tube_conflicts) */
     uint64_t rollbacks;
-    /* ... of which undid a chain: a member's later collision first (engine/undo.c;
-     * read by the tests, not in rc_sim_diag) */
-    uint64_t chain_rollbacks;
-    /* ... and that undid an overlap-policy decision, or were a wall's tube conflict
-     * (engine/undo.c; read by the tests) */
-    uint64_t policy_rollbacks, wall_rollbacks;
-    /* the chains (chain_rollbacks) that took back more than a chain of two: several
-     * members' later collisions, a later member's later one, or the other ball's own
-     * (engine/undo.c; read by the tests) */
-    uint64_t wide_chains;
-    /* the undos that took back the ball's own previous collision too: the contact from
-     * the line before its last kink lay before its previous kink as well (engine/undo.c;
-     * read by the tests) */
-    uint64_t deep_rollbacks;
-    /* the groups with a cycle of contacts undone (their root's record holds the contact
-     * beyond a tree: engine/undo.c; read by the tests) */
-    uint64_t cycle_rollbacks;
-    /* the chains whose ball and partner were in contact in them already, solved again
-     * with no new contact (engine/undo.c; read by the tests) */
-    uint64_t rejoins;
-    /* the undos of both balls' last collisions that took back a chain too: a member of
-     * either had collided since (engine/undo.c; read by the tests) */
-    uint64_t both_chains;
     /* progress: the time of the last event and how many events in a row came at it; when
      * that count passes eng_stall_limit the run stops (RC_ESTALL), naming the event's
      * balls (caller's index; a wall w as -1 - w; -2^62 none) */
@@ -358,23 +234,8 @@ typedef struct eng_books {
     uint64_t still_count;
     int64_t stall_ball, stall_partner;
 } eng_books;
-_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 24 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 2 + 2 + 11),
+_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 24 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 2 + 1 + 4),
                "no padding in the bookkeeping");
-
-/* per_ball frames: one answer of rc_glue_toi2 as windows_contact asked it: the two tubes
- * (in its orientation, the second moved into the first's coordinates) and the time, and
- * what came back. A pair with both balls in their windows is asked the same question by
- * each of its balls, one after the other (in a dense gas a sixth to a third of the
- * questions repeat one of the last few); an answer is a function of these bits alone, so
- * the kept one is the same bits. */
-#define ENG_T2_MEMO 16
-typedef struct eng_t2_memo {
-    rc_glue g0, g1;
-    double t1;
-    int st, p0, p1;
-    double t;
-    rc_vec3 y, n;
-} eng_t2_memo;
 
 struct rc_sim {
     rc_sim_def def;
@@ -406,24 +267,8 @@ struct rc_sim {
      * frame found the shapes overlapping), so that resolving the event need not ask the
      * frame again */
     rc_vec3 *ev_n;
-    /* per_ball frames only (else NULL): per ball, its glued tube's last hyperplane */
-    eng_cov *cov;
-    /* per_ball frames only (else NULL): per ball, the glued tube of its last kink in
-     * coordinates with the contact event at the origin (rc_glue_make), for a neighbour's
-     * contact while the ball is in its window; r = 0: none (no kink yet, or one put at
-     * the previous kink by the order rule) */
-    rc_glue *glu;
-    /* per_ball frames only (else NULL): per ball, how to undo its last collision ... */
-    eng_undo *und;
-    /* ... and the one before (the record und held before the last was written), so that a
-     * collision whose member has collided once since can be undone after that later one
-     * (a chain, engine/undo.c) */
-    eng_undo *undp;
-    /* scratch of one conflict's undo attempts (engine/undo.c): the ball whose contact from
-     * its line before its last kink was found before its previous kink too, or -1 */
-    int32_t undo_before;
-    /* per_ball frames only (else NULL): per ball, the lines before its kinks ahead of now */
-    eng_pend *pend;
+    /* the per-ball model's state (engine/perball/perball.h); NULL in other frames */
+    eng_perball *pb;
     /* delayed table-time slices asked for (engine/slice.c; none: slc_n = 0, and no hook
      * does more than test slc_n) */
     struct eng_slice *slc;
@@ -473,15 +318,15 @@ struct rc_sim {
     rc_contact *grp_con;
     double *grp_j; /* the group solver's impulses, grp_con_cap entries */
     size_t grp_ball_cap, grp_con_cap;
-    /* per_ball frames: the last answers of the two glued tubes' contact (engine/glue_pair.h
-     * windows_contact), by their whole input */
-    eng_t2_memo t2m[ENG_T2_MEMO];
-    uint32_t t2m_n, t2m_next;
 };
 
 /* A per-ball array of `bytes` (engine/mem.c): cache-line aligned, on transparent huge
  * pages where it spans some; NULL if out of memory. Released with free(). */
 void *eng_alloc(size_t bytes);
+/* The per-ball model's state for n balls (engine/perball/state.c): no kink, nothing to
+ * undo; NULL if out of memory. Freed by eng_perball_free, which NULLs the pointer. */
+eng_perball *eng_perball_alloc(size_t n);
+void eng_perball_free(eng_perball **pb);
 
 /* Allocate the state of n balls (engine/setup.c), replacing any held: per-ball arrays,
  * cells sized for the largest rest radius rmax, queue; bookkeeping cleared. */

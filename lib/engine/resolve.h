@@ -63,11 +63,11 @@ static inline double eng_kink_time(const rc_sim *s, int32_t b, const rc_particle
 static inline int eng_kinks_cross(const rc_sim *s, int32_t b, double te, rc_vec3 kappa,
                                   const rc_particle *in, const rc_particle *out)
 {
-    const eng_cov *c = &s->cov[b];
+    const eng_cov *c = &s->pb->cov[b];
     if (!(c->t_k > -INFINITY))
         return 0;
     const rc_vec3 v = s->b[b].v;
-    const double d1 = eng_seg_den(c, &s->glu[b], v);
+    const double d1 = eng_seg_den(c, &s->pb->glu[b], v);
     const double d2 = eng_kink_den(s->inv_c2, in, out, kappa, v);
     const rc_vec3 g = rc_v3_sub(rc_v3_scale(1.0 / d1, c->kappa), rc_v3_scale(1.0 / d2, kappa));
     const rc_vec3 beta = rc_v3_scale(s->inv_c, v);

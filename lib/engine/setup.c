@@ -181,16 +181,7 @@ static void release_balls(rc_sim *s)
     s->cnt = NULL;
     free(s->ev_n);
     s->ev_n = NULL;
-    free(s->cov);
-    s->cov = NULL;
-    free(s->glu);
-    s->glu = NULL;
-    free(s->und);
-    s->und = NULL;
-    free(s->undp);
-    s->undp = NULL;
-    free(s->pend);
-    s->pend = NULL;
+    eng_perball_free(&s->pb);
     free(s->img);
     s->img = NULL;
     s->b = NULL;
@@ -409,28 +400,9 @@ int eng_alloc_state(rc_sim *s, size_t n, double rmax)
         st = RC_ENOMEM;
         goto fail;
     }
-    if (s->narrow && s->def.frame->per_ball) {
-        /* no kink yet: every contact is on the future side of a ball's (absent) plane.
-         * (The tubes, undo and read-out records as the engine's other per-ball arrays:
-         * aligned, and on huge pages when large -- a collision touches two balls' records
-         * anywhere in them.) */
-        if (!(s->cov = eng_alloc(n * sizeof *s->cov)) ||
-            !(s->glu = eng_alloc(n * sizeof *s->glu)) ||
-            !(s->und = eng_alloc(n * sizeof *s->und)) ||
-            !(s->undp = eng_alloc(n * sizeof *s->undp)) ||
-            !(s->pend = eng_alloc(n * sizeof *s->pend))) {
-            st = RC_ENOMEM;
-            goto fail;
-        }
-        memset(s->glu, 0, n * sizeof *s->glu);
-        memset(s->und, 0, n * sizeof *s->und);
-        memset(s->undp, 0, n * sizeof *s->undp);
-        memset(s->pend, 0, n * sizeof *s->pend);
-        for (size_t k = 0; k < n; k++) {
-            s->cov[k] = (eng_cov){-INFINITY, {0.0, 0.0, 0.0}, 0.0, {0.0, 0.0, 0.0}};
-            s->und[k].partner = ENG_NONE; /* (nothing to undo) */
-            s->undp[k].partner = ENG_NONE;
-        }
+    if (s->narrow && s->def.frame->per_ball && !(s->pb = eng_perball_alloc(n))) {
+        st = RC_ENOMEM;
+        goto fail;
     }
     if (s->periodic && !(s->img = eng_alloc(3 * n * sizeof *s->img))) {
         st = RC_ENOMEM;

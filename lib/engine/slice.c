@@ -85,7 +85,7 @@ static int take(const rc_sim *s, const struct eng_slice *sl, int32_t k, int trut
     slice_ball *e = &sl->e[s->id[k]];
     const int ahead = eng_ball_at(s, (size_t)k, sl->ts, &e->b, truth);
     wrap_all(s, &e->b);
-    e->tk = ahead ? NAN : s->cov ? s->cov[k].t_k : -INFINITY;
+    e->tk = ahead ? NAN : s->pb ? s->pb->cov[k].t_k : -INFINITY;
     return ahead;
 }
 
@@ -104,13 +104,13 @@ static double gamma_now(const rc_sim *s)
     double g = 1.0;
     for (size_t k = 0; k < s->n; k++) {
         g = fmax(g, seg_gamma(s, (int32_t)k));
-        const eng_pend *r = &s->pend[k];
+        const eng_pend *r = &s->pb->pend[k];
         for (int q = 0; q < r->depth; q++)
             g = fmax(g, gamma_of(s, r->l[q].m, r->l[q].p));
-        if (s->und[k].partner != ENG_NONE)
-            g = fmax(g, gamma_of(s, s->und[k].in.m, s->und[k].in.p));
-        if (s->undp[k].partner != ENG_NONE) /* (a chain undo's, engine/undo.c) */
-            g = fmax(g, gamma_of(s, s->undp[k].in.m, s->undp[k].in.p));
+        if (s->pb->und[k].partner != ENG_NONE)
+            g = fmax(g, gamma_of(s, s->pb->und[k].in.m, s->pb->und[k].in.p));
+        if (s->pb->undp[k].partner != ENG_NONE) /* (a chain undo's, engine/undo.c) */
+            g = fmax(g, gamma_of(s, s->pb->undp[k].in.m, s->pb->undp[k].in.p));
     }
     return g;
 }
@@ -296,7 +296,7 @@ void eng_slice_flush(rc_sim *s)
         const int32_t k = (int32_t)s->slot[i];
         s->slc_mark[i] = 0;
         s->slc_gmax = fmax(s->slc_gmax, seg_gamma(s, k));
-        const double tk = s->cov[k].t_k;
+        const double tk = s->pb->cov[k].t_k;
         const eng_aux *a = &s->a[k];
         for (size_t q = 0; q < s->slc_n; q++) {
             struct eng_slice *sl = &s->slc[q];

@@ -20,12 +20,12 @@ static int has_record(const eng_undo *u)
  * can be undone: it left a record and none of them has collided since; else 0. */
 static size_t undo_members(const rc_sim *s, int32_t w, int32_t *sl)
 {
-    const eng_undo *u = &s->und[w];
+    const eng_undo *u = &s->pb->und[w];
     if (!has_record(u))
         return 0;
     for (size_t m = 0; m < u->nm; m++) {
         const int32_t b = (int32_t)s->slot[u->mem[m]];
-        const eng_undo *v = &s->und[b];
+        const eng_undo *v = &s->pb->und[b];
         /* (the same collision: member 0's counter after it names it) */
         if (s->cnt[b] != u->mcnt[m] || v->partner == ENG_NONE || v->nm != u->nm ||
             v->mem[0] != u->mem[0] || v->mcnt[0] != u->mcnt[0])
@@ -89,14 +89,14 @@ static int same_coll(const eng_undo *a, const eng_undo *b)
  * applies, else 0. */
 static int chain_set(const rc_sim *s, int32_t w, int32_t k, int deep, int both, uchain *C)
 {
-    const eng_undo *u = deep ? &s->undp[w] : &s->und[w];
+    const eng_undo *u = deep ? &s->pb->undp[w] : &s->pb->und[w];
     if (!has_record(u))
         return 0;
     C->again = 0;
     C->ng = 1;
     C->key[0] = u;
     if (both) { /* (k's last collision too, unless it is w's) */
-        const eng_undo *uk = &s->und[k];
+        const eng_undo *uk = &s->pb->und[k];
         if (!has_record(uk))
             return 0;
         if (!same_coll(uk, u))
@@ -110,10 +110,10 @@ static int chain_set(const rc_sim *s, int32_t w, int32_t k, int deep, int both, 
         C->nm[g] = cu->nm;
         for (size_t m = 0; m < cu->nm; m++) {
             const int32_t b = (int32_t)s->slot[cu->mem[m]];
-            const eng_undo *v = &s->und[b], *r = v; /* r: b's record of collision g */
+            const eng_undo *v = &s->pb->und[b], *r = v; /* r: b's record of collision g */
             int later = -1;
             if (s->cnt[b] != cu->mcnt[m]) {
-                r = &s->undp[b];
+                r = &s->pb->undp[b];
                 if (s->cnt[b] != cu->mcnt[m] + 1u || !has_record(v))
                     return 0;
                 size_t h = 0;
@@ -210,21 +210,21 @@ static void lift(rc_sim *s, ugroup *G, int slices)
 {
     for (size_t m = 0; m < G->nm; m++) {
         const int32_t b = G->sl[m];
-        const eng_undo *u = &s->und[b];
+        const eng_undo *u = &s->pb->und[b];
         G->b[m] = s->b[b];
         G->a[m] = s->a[b];
         G->c[m] = s->clk[b];
-        G->g[m] = s->cov[b];
-        G->u[m] = s->glu[b];
+        G->g[m] = s->pb->cov[b];
+        G->u[m] = s->pb->glu[b];
         G->out[m] = (rc_particle){s->a[b].m, s->a[b].p};
-        G->te[m] = s->cov[b].t_k;
+        G->te[m] = s->pb->cov[b].t_k;
         eng_advance_ball(s, b, G->te[m]);
         G->xe[m] = s->b[b].x;
         s->a[b].m = u->in.m;
         s->a[b].p = u->in.p;
         s->b[b].v = rc_v3_scale(1.0 / eng_mass_rel(u->in.m, u->in.p, s->inv_c2), u->in.p);
-        s->cov[b] = u->cov;
-        s->glu[b] = u->glu;
+        s->pb->cov[b] = u->cov;
+        s->pb->glu[b] = u->glu;
         s->clk[b].tau_last = u->tau_last;
         if (slices && s->slc_n) /* (a delayed slice at or after the undone kink: the
                                    incoming line) */
@@ -239,8 +239,8 @@ static void put_back(rc_sim *s, const ugroup *G)
         s->b[b] = G->b[m];
         s->a[b] = G->a[m];
         s->clk[b] = G->c[m];
-        s->cov[b] = G->g[m];
-        s->glu[b] = G->u[m];
+        s->pb->cov[b] = G->g[m];
+        s->pb->glu[b] = G->u[m];
     }
 }
 
@@ -352,8 +352,8 @@ int eng_solve_at_events(rc_sim *s, size_t nm, size_t nc, const eng_pend_snap *ps
     int kinked[2 * ENG_UNDO_NMAX];
     for (size_t m = 0; m < nm; m++) {
         const int32_t b = s->grp_ball[m];
-        gat[m] = s->cov[b];
-        uat[m] = s->glu[b];
+        gat[m] = s->pb->cov[b];
+        uat[m] = s->pb->glu[b];
         tau0[m] = s->clk[b].tau_last;
         kinked[m] = 0;
         if (P[m].m == B[m].m && memcmp(&P[m].p, &B[m].p, sizeof P[m].p) == 0)
@@ -375,7 +375,7 @@ int eng_solve_at_events(rc_sim *s, size_t nm, size_t nc, const eng_pend_snap *ps
         }
         const uint64_t oc = s->bk.order_conflicts;
         eng_glue_kink(s, b, &B[m], &P[m], tb, db, 0);
-        kinked[m] = s->bk.order_conflicts == oc && s->glu[b].r > 0.0;
+        kinked[m] = s->bk.order_conflicts == oc && s->pb->glu[b].r > 0.0;
     }
     for (size_t m = 0; m < nm; m++) {
         const int32_t b = s->grp_ball[m];
@@ -416,14 +416,14 @@ static void keep_previous(rc_sim *s, const ugroup *G, size_t ng)
             size_t times = 0;
             for (size_t h = 0; h < ng; h++)
                 times += in_list(G[h].sl, G[h].nm, b);
-            const eng_undo *x = &s->undp[b];
+            const eng_undo *x = &s->pb->undp[b];
             if (times != 1 || !has_record(x))
                 continue;
             once[no++] = b;
             /* X's records in its members (one slot each), found before any is changed */
             for (size_t q = 0; q < x->nm; q++) {
                 const int32_t xb = (int32_t)s->slot[x->mem[q]];
-                eng_undo *r[2] = {&s->und[xb], &s->undp[xb]};
+                eng_undo *r[2] = {&s->pb->und[xb], &s->pb->undp[xb]};
                 for (int j = 0; j < 2; j++) {
                     if (!same_coll(r[j], x))
                         continue;
@@ -441,12 +441,12 @@ static void keep_previous(rc_sim *s, const ugroup *G, size_t ng)
         for (size_t m = 0; m < G[g].nm; m++) {
             const int32_t b = G[g].sl[m];
             if (in_list(once, no, b)) {
-                s->und[b] = s->undp[b];
-                s->undp[b].partner = ENG_NONE;
-                s->undp[b].nm = 0;
+                s->pb->und[b] = s->pb->undp[b];
+                s->pb->undp[b].partner = ENG_NONE;
+                s->pb->undp[b].nm = 0;
             } else {
-                s->und[b].partner = ENG_NONE;
-                s->und[b].nm = 0;
+                s->pb->und[b].partner = ENG_NONE;
+                s->pb->und[b].nm = 0;
             }
         }
 }
@@ -500,7 +500,7 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
                 const int32_t b = C.sl[g][m];
                 G[g].sl[m] = b;
                 if (C.later[g][m] >= 0 && !in_list(kb, nk, b)) {
-                    keep[nk] = s->und[b];
+                    keep[nk] = s->pb->und[b];
                     kb[nk++] = b;
                 }
             }
@@ -512,8 +512,8 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
      * it -- unless the two were already in contact in it (a second contact of one pair is
      * not a contact the model has) */
     const int inner = !wall && !chain && in_list(G[0].sl, G[0].nm, k);
-    if (inner && (both || s->und[w].partner == (int32_t)s->id[k] ||
-                  s->und[k].partner == (int32_t)s->id[w]))
+    if (inner && (both || s->pb->und[w].partner == (int32_t)s->id[k] ||
+                  s->pb->und[k].partner == (int32_t)s->id[w]))
         return 0;
     if (both && !chain)
         ng = 2;
@@ -528,9 +528,9 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
             size_t j = 0;
             while (chain && j < nk && kb[j] != b)
                 j++;
-            rec[i][m] = chain && C.later[i][m] >= 0 ? &s->undp[b]
+            rec[i][m] = chain && C.later[i][m] >= 0 ? &s->pb->undp[b]
                         : chain && j < nk           ? &keep[j]
-                                                    : &s->und[b];
+                                                    : &s->pb->und[b];
         }
     }
     if (chain) {
@@ -542,7 +542,7 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
             const size_t g = ord[i];
             for (size_t m = 0; m < G[g].nm; m++)
                 if (C.later[g][m] >= 0)
-                    s->und[G[g].sl[m]] = s->undp[G[g].sl[m]];
+                    s->pb->und[G[g].sl[m]] = s->pb->undp[G[g].sl[m]];
             lift(s, &G[g], 0);
         }
     } else {
@@ -584,37 +584,37 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
         const int pst = eng_pair_contact(s, w, k, t0, &t2, &dX2, &n2);
         found = pst == RC_OK;
         if (pst == ENG_BEFORE_A)
-            s->undo_before = w;
+            s->pb->undo_before = w;
     }
     if (!found) {
         for (size_t i = ng; i-- > 0;)
             put_back(s, &G[ord[i]]);
         for (size_t j = 0; j < nk; j++)
-            s->und[kb[j]] = keep[j];
+            s->pb->und[kb[j]] = keep[j];
         if (s->slc_nd) /* (slices lift moved: back on the members' lines) */
             eng_slice_flush(s);
         return 0;
     }
     s->bk.rollbacks++;
-    s->bk.chain_rollbacks += chain;
-    s->bk.wide_chains += chain && !C.two;
-    s->bk.deep_rollbacks += deep;
-    s->bk.rejoins += chain && C.again;
-    s->bk.both_chains += chain && both;
+    s->pb->tally.chain_rollbacks += chain;
+    s->pb->tally.wide_chains += chain && !C.two;
+    s->pb->tally.deep_rollbacks += deep;
+    s->pb->tally.rejoins += chain && C.again;
+    s->pb->tally.both_chains += chain && both;
     /* (a group with a cycle: as many ball contacts as members) */
     for (size_t g = 0; g < ng; g++) {
         size_t nb = 0;
         for (size_t m = 0; m < G[g].nm; m++)
             nb += rec[g][m]->partner >= 0;
-        s->bk.cycle_rollbacks += G[g].nm >= 3 && nb == G[g].nm;
+        s->pb->tally.cycle_rollbacks += G[g].nm >= 3 && nb == G[g].nm;
     }
     /* the undone collisions' policy decisions: solved again with the rest, still counted
      * once (rc_sim_diag.overlaps keeps them) */
     uint32_t npol = 0;
     for (size_t g = 0; g < ng; g++)
         npol += rec[g][0]->npol;
-    s->bk.policy_rollbacks += npol > 0;
-    s->bk.wall_rollbacks += wall;
+    s->pb->tally.policy_rollbacks += npol > 0;
+    s->pb->tally.wall_rollbacks += wall;
     /* (each member stored at its earliest undone kink, on the line before it: a slice at
      * or after that kink is on that line) */
     for (size_t j = 0; chain && s->slc_n && j < C.nb; j++)
@@ -661,10 +661,10 @@ static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int bo
      * kinks, latest first, then noted for the group's kinks like any event's balls */
     eng_pend_snap ps[ENG_UNDO_NMAX + 1];
     size_t nps = 0;
-    if (s->pend) {
+    if (s->pb) {
         for (size_t i = 0; i < ng; i++)
             for (size_t m = 0; m < G[ord[i]].nm; m++)
-                eng_pend_undo(&s->pend[G[ord[i]].sl[m]], G[ord[i]].te[m]);
+                eng_pend_undo(&s->pb->pend[G[ord[i]].sl[m]], G[ord[i]].te[m]);
         if (chain) {
             for (size_t j = 0; j < C.nb; j++)
                 ps[nps++] = eng_pend_take(s, C.ball[j]);
@@ -744,15 +744,15 @@ int eng_undo_wall(rc_sim *s, int32_t i, int32_t wall, double T, double tx)
 int eng_undo_conflict(rc_sim *s, int32_t i, int32_t bp, double T, int tube)
 {
     int st;
-    s->undo_before = -1;
+    s->pb->undo_before = -1;
     if (tube) {
-        const double tx = s->cov[i].ev_tx;
-        const rc_vec3 dXi = s->cov[i].ev_dx;
+        const double tx = s->pb->cov[i].ev_tx;
+        const rc_vec3 dXi = s->pb->cov[i].ev_dx;
         const eng_ball *bi = &s->b[i], *bq = &s->b[bp];
         const rc_vec3 sep = eng_image(s, rc_v3_sub(rc_v3_axpy(bq->x, tx - bq->t, bq->v),
                                                    rc_v3_axpy(bi->x, tx - bi->t, bi->v)));
-        const int in_i = !eng_glue_side(&s->cov[i], &s->glu[i], s->b[i].v, tx, dXi),
-                  in_q = !eng_glue_side(&s->cov[bp], &s->glu[bp], s->b[bp].v, tx,
+        const int in_i = !eng_glue_side(&s->pb->cov[i], &s->pb->glu[i], s->b[i].v, tx, dXi),
+                  in_q = !eng_glue_side(&s->pb->cov[bp], &s->pb->glu[bp], s->b[bp].v, tx,
                                         rc_v3_sub(dXi, sep));
         if (!in_i && !in_q)
             return 0;
@@ -762,15 +762,15 @@ int eng_undo_conflict(rc_sim *s, int32_t i, int32_t bp, double T, int tube)
         if ((st = rollback(s, w, k, T, tx, 0, 0)) != 0 ||
             (st = rollback(s, w, k, T, tx, 1, 0)) != 0)
             return st;
-        return s->undo_before == w ? rollback(s, w, k, T, tx, 0, 1) : 0;
+        return s->pb->undo_before == w ? rollback(s, w, k, T, tx, 0, 1) : 0;
     }
-    const int later = s->cov[bp].t_k > s->cov[i].t_k;
+    const int later = s->pb->cov[bp].t_k > s->pb->cov[i].t_k;
     const int32_t w0 = later ? bp : i, w1 = later ? i : bp;
     if ((st = rollback(s, w0, w1, T, INFINITY, 0, 0)) != 0 ||
         (st = rollback(s, w1, w0, T, INFINITY, 0, 0)) != 0 ||
         (st = rollback(s, w0, w1, T, INFINITY, 1, 0)) != 0)
         return st;
-    const int32_t wd = s->undo_before;
+    const int32_t wd = s->pb->undo_before;
     return wd == w0 ? rollback(s, w0, w1, T, INFINITY, 0, 1)
          : wd == w1 ? rollback(s, w1, w0, T, INFINITY, 0, 1)
                     : 0;

@@ -290,7 +290,7 @@ int eng_zmf_group(rc_sim *s, int32_t i, int32_t bp, double T, double tx0, rc_vec
     eng_pend_snap ps[ENG_EVGROUP_NMAX];
     size_t nps = 0, nm = 2, nc = 1;
     for (size_t q = 2; q < g.nm; q++) {
-        if (s->pend)
+        if (s->pb)
             ps[nps++] = eng_pend_take(s, g.mem[q]);
         if (eng_member_of(s, &nm, g.mem[q], T) < 0)
             return RC_ENOMEM;

@@ -244,6 +244,7 @@ static void test_kinks_cross(void)
     static eng_ball bl;
     static eng_cov cv;
     static rc_glue gl;
+    static eng_perball pb;
     for (int it = 0; it < 20000; it++) {
         double c, rad;
         q128 k;
@@ -272,8 +273,9 @@ static void test_kinks_cross(void)
         cv.t_k = 0.0;
         cv.kappa = gl.kappa;
         s.b = &bl;
-        s.cov = &cv;
-        s.glu = &gl;
+        pb.cov = &cv;
+        pb.glu = &gl;
+        s.pb = &pb;
         rc_vec3 kap;
         (void)eng_kink_time(&s, 0, &S[1], &S[2], 0.0, rc_v3(0, 0, 0), &kap);
         const int got = eng_kinks_cross(&s, 0, te, kap, &S[1], &S[2]);
