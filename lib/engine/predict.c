@@ -9,7 +9,7 @@
 #include <stdlib.h>
 
 #include "approach.h"
-#include "glue_pair.h"
+#include "perball/glue_pair.h"
 #include "lanes.h"
 #include "pairs.h"
 #include "shapes.h"

@@ -5,7 +5,7 @@
  * papers/shape-change.md, sections 7 and 8). */
 #include <string.h>
 
-#include "resolve.h"
+#include "model.h"
 
 /* A ball's record about to be written: the one it holds becomes its previous one (a chain
  * undo's, chain_set). */

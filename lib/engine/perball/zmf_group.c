@@ -7,10 +7,11 @@
  * (eng_solve_at_events). */
 #include <math.h>
 
-#include "pair_zmf.h"
-#include "resolve.h"
-#include "walk.h"
-#include "../toi_private.h"
+#include "../group.h"
+#include "../pair_zmf.h"
+#include "../walk.h"
+#include "../../toi_private.h"
+#include "model.h"
 #include "relcol/status.h"
 
 /* A contact found: members a, b (local), normal from a to b, its event relative to ball

@@ -2,8 +2,7 @@
  * kink, through the glued tube's hyperplane, and the order rule where kinks cross), and a
  * wall's contact event of the model (papers/shape-change.md, sections 2, 6 and 8). Used
  * by the event loop (engine/core.c) and the undo (engine/undo.c). */
-#include "private.h"
-#include "resolve.h"
+#include "model.h"
 #include "relcol/status.h"
 
 /* per_ball frames: ball b's velocity changes from `in` to `out` through the contact event
