@@ -10,7 +10,7 @@
 #include "pairs.h"
 #include "private.h"
 #include "group.h"
-#include "perball/model.h"
+#include "model.h"
 #include "relcol/status.h"
 
 /* ---- resolving events ------------------------------------------------------------ */
@@ -37,19 +37,14 @@ static single_result single_is(single_verdict v, size_t member)
 
 /* The common case: the event's own contact alone. Resolve it, then predict both balls
  * while checking that no other contact was simultaneous with it; if one was, take it
- * back (SINGLE_GROUP). undo_order: a member whose new kink would cross its last one may
- * ask for that collision to be undone (SINGLE_UNDO). */
-static single_result try_single(rc_sim *s, size_t nm, int32_t bp, double T, const double *tx,
-                                const rc_vec3 *dX, int model, int undo_order)
+ * back (SINGLE_GROUP). undo_order: the model may ask for a member's last collision to be
+ * undone first (SINGLE_UNDO). The model is told at each step (engine/model.h). */
+static single_result try_single(rc_sim *s, size_t nm, int32_t bp, double T,
+                                const eng_event_x *ev, int undo_order)
 {
+    const eng_model_ops *mo = s->model;
     rc_particle *P = s->grp_part;
     rc_vec3 vold[2];
-    /* per_ball frames: the records at T before the kinks, to undo and to check from */
-    eng_ball bat[2];
-    eng_clock cat[2];
-    eng_cov gat[2];
-    rc_glue uat[2];
-    int kinked[2] = {0, 0};
     const uint64_t oc_before = s->bk.order_conflicts;
     double k0 = 0.0;
     rc_vec3 p0 = rc_v3(0, 0, 0);
@@ -70,52 +65,20 @@ static single_result try_single(rc_sim *s, size_t nm, int32_t bp, double T, cons
         s->bk.events[RC_SIM_EV_TC] = tc_before;
         return single_failed(st);
     }
-    /* per_ball frames: each changed member's kink (time, H's normal), once, and whether
-     * its hyperplane would reach some point of the ball before the last one did
-     * (eng_kinks_cross; the centre's order is the order rule's). (A member's kink moves only
-     * its own record, so the other's is the same before and after it.) */
-    int changed[2] = {0, 0}, cross[2] = {0, 0};
-    double te[2] = {0.0, 0.0};
-    rc_vec3 kap[2] = {rc_v3(0, 0, 0), rc_v3(0, 0, 0)};
-    for (size_t j = 0; j < nm; j++) {
+    int changed[2] = {0, 0};
+    for (size_t j = 0; j < nm; j++)
         changed[j] = Q[j].m != P[j].m || memcmp(&Q[j].p, &P[j].p, sizeof Q[j].p) != 0;
-        if (s->glue && changed[j]) {
-            const int32_t b = s->grp_ball[j];
-            te[j] = eng_kink_time(s, b, &P[j], &Q[j], tx[j], dX[j], &kap[j]);
-            cross[j] = eng_kinks_cross(s, b, te[j], kap[j], &P[j], &Q[j]);
-        }
-    }
-    /* such a ball met its new partner within its last kink's window: the last collision
-     * is undone if it can be (2 + the member: the caller's rollback), else the order rule
-     * (glue_kink_at) */
-    for (size_t j = 0; j < nm && s->glue && model && undo_order && nm > 1; j++) {
-        if (changed[j] && cross[j] && eng_undoable(s, s->grp_ball[j], s->grp_ball[1 - j])) {
+    if (mo->before_resolve) {
+        const int u = mo->before_resolve(s, nm, P, Q, changed, ev, undo_order);
+        if (u >= 0) {
             s->bk.events[RC_SIM_EV_TC] = tc_before;
-            return single_is(SINGLE_UNDO, j);
+            return single_is(SINGLE_UNDO, (size_t)u);
         }
     }
     for (size_t j = 0; j < nm; j++) {
         int32_t b = s->grp_ball[j];
-        if (s->glue) {
-            bat[j] = s->b[b];
-            cat[j] = s->clk[b];
-            gat[j] = s->pb->cov[b];
-            uat[j] = s->pb->glu[b];
-            /* (no change, no kink: a contact the law found nothing to resolve keeps the
-             * ball's line and its hyperplane) */
-            kinked[j] = 0;
-            if (changed[j]) {
-                /* hyperplanes crossing inside the ball though the centres' kinks come in
-                 * order (not undone above): the tube of the two is not defined there,
-                 * counted with the order conflicts (the collision can still be undone:
-                 * its kink is where the model puts it) */
-                if (te[j] >= s->pb->cov[b].t_k && cross[j])
-                    s->bk.order_conflicts++;
-                const uint64_t oc = s->bk.order_conflicts;
-                eng_glue_kink_at(s, b, &P[j], &Q[j], tx[j], dX[j], te[j], kap[j], !model);
-                kinked[j] = s->bk.order_conflicts == oc && s->pb->glu[b].r > 0.0;
-            }
-        }
+        if (mo->resolve_member)
+            mo->resolve_member(s, j, P, Q, changed[j], ev);
         s->a[b].m = Q[j].m;
         s->a[b].p = Q[j].p;
         s->b[b].v = rc_v3_scale(1.0 / eng_mass_rel(Q[j].m, Q[j].p, s->inv_c2), Q[j].p);
@@ -125,8 +88,9 @@ static single_result try_single(rc_sim *s, size_t nm, int32_t bp, double T, cons
     for (size_t j = 0; j < nm && !conflict; j++) {
         int32_t b = s->grp_ball[j];
         int32_t partner = nm > 1 ? s->grp_ball[1 - j] : bp;
-        const eng_check chk = {P[j], vold[j], partner, s->glue ? &bat[j] : NULL,
-                               s->glue && model && bp >= 0};
+        const eng_check chk = {P[j], vold[j], partner,
+                               mo->member_before ? mo->member_before(s, j) : NULL,
+                               ev->model && bp >= 0};
         conflict = s->narrow ? eng_predict_checked_narrow(s, b, &chk)
                              : eng_predict_checked(s, b, &chk, T);
     }
@@ -137,37 +101,16 @@ static single_result try_single(rc_sim *s, size_t nm, int32_t bp, double T, cons
             s->a[b].p = P[j].p;
             s->b[b].v = vold[j];
             s->cnt[b]--;
-            if (s->glue) {
-                s->b[b] = bat[j];
-                s->clk[b] = cat[j];
-                s->pb->cov[b] = gat[j];
-                s->pb->glu[b] = uat[j];
-            }
+            if (mo->take_back)
+                mo->take_back(s, j);
         }
         s->bk.events[RC_SIM_EV_TC] = tc_before;
         s->bk.order_conflicts = oc_before;
         return single_is(SINGLE_GROUP, 0);
     }
     eng_moments_add(s, nm, s->grp_ball, P, Q);
-    if (s->glue) {
-        /* An overlap-policy decision between two balls leaves a record too, so that a
-         * later conflict with either ball's tube before its kink undoes it and solves it
-         * with the new contact (one decision, still counted once) instead of handing that
-         * conflict to the policy as well (papers/shape-change.md section 8). Its contact
-         * event, for the undo's group: one event for both, on the centre line at T where
-         * spheres of the rest radii would touch. */
-        const int policy_pair = !model && nm == 2;
-        rc_vec3 dXp[2];
-        if (policy_pair) {
-            const int32_t b0 = s->grp_ball[0], b1 = s->grp_ball[1];
-            const rc_vec3 d = eng_image(s, rc_v3_sub(bat[1].x, bat[0].x));
-            dXp[0] = rc_v3_scale(s->b[b0].r / (s->b[b0].r + s->b[b1].r), d);
-            dXp[1] = rc_v3_sub(dXp[0], d);
-        }
-        eng_write_undo(s, nm, bp, model || policy_pair, policy_pair, P, vold, cat, gat, uat,
-                       tx, policy_pair ? dXp : dX, kinked,
-                       s->bk.events[RC_SIM_EV_TC] != tc_before);
-    }
+    if (mo->after_resolve)
+        mo->after_resolve(s, nm, bp, P, vold, ev, s->bk.events[RC_SIM_EV_TC] != tc_before);
     for (size_t j = 0; j < nm; j++)
         P[j] = Q[j];
     eng_finish(s, nm, 1, k0, p0, bp >= 0 ? RC_SIM_EV_BALL : RC_SIM_EV_WALL, 1, NULL);
@@ -181,42 +124,14 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
     size_t nm = 0, nc = 0;
     rc_vec3 n0;
     int frame_normal = 0;
-    /* per_ball frames: each ball's contact event (time, offset from its centre), read
-     * before the balls are advanced (the stored states the prediction saw); the overlap
-     * policy's kinks are at T, through the centre */
-    double tx[2] = {T, T};
-    rc_vec3 dX[2] = {rc_v3(0, 0, 0), rc_v3(0, 0, 0)};
-    int have_x = 0, wall_tube = 0;
-    if (s->glue) {
-        if (bp >= 0) {
-            const rc_vec3 n = s->ev_n[i];
-            if (!isnan(n.x)) { /* (as the prediction found it) */
-                tx[0] = s->pb->cov[i].ev_tx;
-                dX[0] = s->pb->cov[i].ev_dx;
-                have_x = 1;
-            }
-            else {
-                const int st = eng_undo_conflict(s, i, bp, T, n.y == 1.0);
-                if (st != 0)
-                    return st > 0 ? RC_OK : st;
-                if (n.y == 1.0)
-                    s->bk.tube_conflicts++;
-            }
-        } else {
-            have_x = eng_wall_event_point(s, i, ENG_WALL_INDEX(bp), &tx[0], &dX[0]);
-            wall_tube = !have_x;
-            if (wall_tube) {
-                /* the shape met the wall on the incoming side of the ball's hyperplane:
-                 * its last collision undone and solved with the wall's contact, as a
-                 * ball's (engine/undo.c), else the overlap policy */
-                const int st = eng_undo_wall(s, i, bp, T, tx[0]);
-                if (st != 0)
-                    return st > 0 ? RC_OK : st;
-                s->bk.tube_conflicts++;
-                tx[0] = T;
-                dX[0] = rc_v3(0, 0, 0);
-            }
-        }
+    /* each ball's contact event as the model places it, read before the balls are
+     * advanced (the stored states the prediction saw); by default at T, through the
+     * centres (the one-instant rule, and the overlap policy's) */
+    eng_event_x ev = {{T, T}, {rc_v3(0, 0, 0), rc_v3(0, 0, 0)}, 0, 0};
+    if (s->model->contact_event) {
+        const int st = s->model->contact_event(s, i, bp, T, &ev);
+        if (st != 0)
+            return st > 0 ? RC_OK : st;
     }
     if (bp >= 0 && s->narrow) {
         /* The frame's normal at contact: the one its call that predicted this event
@@ -239,9 +154,9 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
             return RC_ENOMEM;
         rc_vec3 dx = eng_image(s, rc_v3_sub(s->b[bp].x, s->b[i].x));
         double len = rc_v3_norm(dx);
-        if (have_x) { /* X from bp's centre at tx: both are at T now */
-            tx[1] = tx[0];
-            dX[1] = rc_v3_sub(dX[0], rc_v3_axpy(dx, tx[0] - T, rc_v3_sub(s->b[bp].v, s->b[i].v)));
+        if (ev.model) { /* X from bp's centre at tx: both are at T now */
+            ev.tx[1] = ev.tx[0];
+            ev.dX[1] = rc_v3_sub(ev.dX[0], rc_v3_axpy(dx, ev.tx[0] - T, rc_v3_sub(s->b[bp].v, s->b[i].v)));
         }
         if (!frame_normal)
             n0 = len > 0.0 ? rc_v3_scale(1.0 / len, dx) : rc_v3(1.0, 0.0, 0.0);
@@ -258,26 +173,26 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
             return RC_ENOMEM;
         const uint64_t ov = s->bk.overlaps;
         eng_count_overlaps(s, 0, 1); /* (before the collision changes the shape) */
-        if (wall_tube && s->bk.overlaps == ov) { /* (the overlap policy decides it) */
+        if (ev.wall_tube && s->bk.overlaps == ov) { /* (the overlap policy decides it) */
             eng_note_overlap(s, 1);
         }
     }
-    /* per_ball frames, a contact of the model between two balls: the group is formed by
-     * simultaneity in its own ZMF, with each member kinked at its own event (a wall's
-     * contacts keep the table's: the wall's rest frame) */
-    if (have_x && bp >= 0 && s->def.sim_tol > 0.0) {
-        const int st = eng_zmf_group(s, i, bp, T, tx[0], dX[0]);
+    /* a contact of the model between two balls: the model's own group (the per-ball
+     * model's, formed by simultaneity in its ZMF, each member kinked at its own event; a
+     * wall's contacts keep the table's: the wall's rest frame) */
+    if (ev.model && bp >= 0 && s->def.sim_tol > 0.0 && s->model->group_of_model) {
+        const int st = s->model->group_of_model(s, i, bp, T, &ev);
         if (st != 0)
             return st > 0 ? RC_OK : st;
     }
-    single_result single = try_single(s, nm, bp, T, tx, dX, have_x, 1);
+    single_result single = try_single(s, nm, bp, T, &ev, 1);
     if (single.status == RC_OK && single.verdict == SINGLE_UNDO) {
         /* (an order conflict that undoing the member's last collision resolves) */
         const size_t j = single.member;
-        const int st = eng_rollback(s, s->grp_ball[j], s->grp_ball[1 - j], T, tx[0]);
+        const int st = s->model->undo_member(s, s->grp_ball[j], s->grp_ball[1 - j], T, &ev);
         if (st != 0)
             return st > 0 ? RC_OK : st;
-        single = try_single(s, nm, bp, T, tx, dX, have_x, 0);
+        single = try_single(s, nm, bp, T, &ev, 0);
     }
     if (single.status != RC_OK)
         return single.status;
@@ -354,29 +269,6 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
     eng_moments_add(s, nm, s->grp_ball, NULL, P);
     eng_finish(s, nm, nc, k0, p0, kind, 0, J);
     return RC_OK;
-}
-
-/* per_ball frames: a collision reads ball b's cold records -- its hyperplane, its glued
- * tube (copied whole for the undo record), whether its undo record is live, the read-out's
- * record -- in that order as it goes; asked for at once, their lines come in parallel
- * instead of one miss after another. (Always inlined: out of line GCC finds the function
- * free of side effects and drops its calls.) */
-__attribute__((always_inline)) static inline void glue_prefetch(const rc_sim *s, int32_t b)
-{
-    const char *g = (const char *)&s->pb->glu[b];
-    __builtin_prefetch(&s->pb->cov[b]);
-    /* (five lines: the array is line-aligned, so a record starts at most 56 bytes into
-     * its first line) */
-    for (size_t o = 0; o < sizeof(rc_glue); o += 64)
-        __builtin_prefetch(g + o);
-    __builtin_prefetch(&s->pb->und[b].partner);
-    /* (the record a new one shifts into the previous one: whole, written at once) */
-    const char *u = (const char *)&s->pb->und[b], *up = (const char *)&s->pb->undp[b];
-    for (size_t o = 0; o < sizeof(eng_undo); o += 64) {
-        __builtin_prefetch(u + o);
-        __builtin_prefetch(up + o, 1);
-    }
-    __builtin_prefetch(&s->pb->pend[b].depth);
 }
 
 /* Events a run may have at one instant before it is called stalled: every contact of a
@@ -470,26 +362,15 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
             eng_predict(s, i, 1);
         } else {
             s->since_reorder++;
-            if (s->glue) {
-                glue_prefetch(s, i);
-                if (a->ev_partner >= 0)
-                    glue_prefetch(s, a->ev_partner);
-            }
-            eng_pend_snap ps[2];
-            const int np = !s->pb ? 0 : a->ev_partner >= 0 ? 2 : 1;
-            if (np)
-                ps[0] = eng_pend_take(s, i);
-            if (np == 2)
-                ps[1] = eng_pend_take(s, a->ev_partner);
-            const uint64_t rb = s->bk.rollbacks;
+            if (s->model->event_begin)
+                s->model->event_begin(s, i, a->ev_partner);
             int st = collide(s, i, a->ev_partner, top_t);
             if (s->slc_nd) /* (delayed slices follow the event's kinks: engine/slice.c) */
                 eng_slice_flush(s);
             if (st != RC_OK)
                 return st;
-            for (int j = 0; j < np && s->bk.rollbacks == rb; j++) /* (a rollback notes its
-                                                                      own three) */
-                eng_pend_note(s, &ps[j]);
+            if (s->model->event_end)
+                s->model->event_end(s);
         }
     }
     if (isfinite(t_end))

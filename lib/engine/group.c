@@ -10,7 +10,7 @@
 
 #include "approach.h"
 #include "group.h"
-#include "perball/model.h"
+#include "model.h"
 #include "relcol/status.h"
 
 static int grow(void **p, size_t *cap, size_t need, size_t elem)
@@ -322,10 +322,10 @@ void eng_finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec3 p0, int kind
         eng_aux *a = &s->a[b];
         k1 += eng_kinetic(&P[j], s->inv_c2);
         p1 = rc_v3_add(p1, P[j].p);
-        if (!single && s->glue) { /* a group: every kink at the group's time (members are
-                                     there), through the centre */
+        if (!single && s->model->group_member) { /* (a group at one table time: the
+                                                    model's kinks) */
             const rc_particle in = {a->m, a->p};
-            eng_glue_kink(s, b, &in, &P[j], s->b[b].t, rc_v3(0, 0, 0), 1);
+            s->model->group_member(s, b, &in, &P[j]);
         }
         s->clk[b].tau_last = s->clk[b].tau;
         if (!single) {

@@ -9,12 +9,13 @@
 #include <stdlib.h>
 
 #include "approach.h"
-#include "perball/glue_pair.h"
+#include "glue_pair.h"
 #include "lanes.h"
 #include "pairs.h"
 #include "shapes.h"
 #include "walk.h"
 #include "private.h"
+#include "model.h"
 #include "relcol/status.h"
 
 /* ---- event prediction ------------------------------------------------------------ */
@@ -94,7 +95,7 @@ __attribute__((always_inline)) static inline double pair_time_dx(
             return INFINITY;
         parting = 1;
     }
-    if (use_narrow && s->glue) {
+    if (use_narrow && s->model->per_ball) {
         /* per_ball frames: the contact event, checked against both balls' hyperplanes */
         rc_toi_contact out;
         int valid = 0;
@@ -418,7 +419,7 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
             s->cand[nc].k = kk;
             nc++;
             __builtin_prefetch(&s->a[kk]); /* (the frame will want its momentum and mass) */
-            if (s->glue) { /* (and glue_valid its hyperplane, window_contact its window) */
+            if (s->model->per_ball) { /* (and glue_valid its hyperplane, window_contact its window) */
                 __builtin_prefetch(&s->pb->cov[kk]);
                 __builtin_prefetch(&s->pb->glu[kk].r);
                 __builtin_prefetch(&s->pb->glu[kk].t_last);

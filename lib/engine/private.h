@@ -8,7 +8,6 @@
 #include <stdint.h>
 #include "relcol/sim.h"
 #include "relcol/perball.h"
-#include "perball/perball.h"
 
 /* Hot data read by every pair test: one 64-byte line per ball. The state is stored at
  * the ball's own time t (its local clock); v = p / M is derived from p and m. */
@@ -46,6 +45,8 @@ typedef struct eng_clock {
     double tau;      /* proper time at t */
     double tau_last; /* proper time of the last collision (-inf: none yet) */
 } eng_clock;
+
+#include "perball_state.h" /* (the per-ball model's records, which hold these) */
 
 /* The event queue (engine/queue.c): one entry per ball, popped in (time, ball) order.
  * (Functions shared between the engine files carry eng_: exported, not public.) */
@@ -267,7 +268,7 @@ struct rc_sim {
      * frame found the shapes overlapping), so that resolving the event need not ask the
      * frame again */
     rc_vec3 *ev_n;
-    /* the per-ball model's state (engine/perball/perball.h); NULL in other frames */
+    /* the per-ball model's state (engine/perball_state.h); NULL in other frames */
     eng_perball *pb;
     /* delayed table-time slices asked for (engine/slice.c; none: slc_n = 0, and no hook
      * does more than test slc_n) */
@@ -289,9 +290,8 @@ struct rc_sim {
      * as eng_cov.ev_tx / ev_dx */
     double sc_tx, bx_tx;
     rc_vec3 sc_dx, bx_dx;
-    /* the per-ball kinks are in force: cov != NULL and c finite (with 1/c^2 = 0 every kink
-     * is its contact event, kappa = 0, and the one-instant path is that model exactly) */
-    int glue;
+    /* the model of where balls change velocity: its properties and ops (engine/model.h) */
+    const struct eng_model_ops *model;
     eng_queue q;
     eng_cells g;
     rc_collision_params prm;

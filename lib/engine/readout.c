@@ -4,7 +4,7 @@
 #include <math.h>
 
 #include "private.h"
-#include "perball/model.h"
+#include "model.h"
 #include "relcol/status.h"
 
 int eng_ball_now(const rc_sim *s, size_t i, rc_sim_ball *o, int truth)
@@ -28,7 +28,7 @@ int eng_ball_at(const rc_sim *s, size_t i, double t, rc_sim_ball *o, int truth)
     if (h != 0.0)
         o->tau += s->inv_c2 == 0.0 ? h : h * (a->m / eng_mass_rel(a->m, a->p, s->inv_c2));
     const int32_t *img = s->img ? s->img + 3 * i : NULL;
-    const int ahead = truth ? eng_pend_read(s, i, t, o, &img) : 0;
+    const int ahead = truth && s->model->ball_at ? s->model->ball_at(s, i, t, o, &img) : 0;
     for (int d = 0; d < 3; d++) {
         o->image[d] = 0;
         if (!s->img || s->walled >> d & 1u || d >= s->def.dim)

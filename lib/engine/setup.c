@@ -6,6 +6,7 @@
 
 #include "lanes.h"
 #include "private.h"
+#include "model.h"
 #include "relcol/status.h"
 
 /* Cell edge margin over the largest bounding diameter (relative): keeps balls that can
@@ -158,7 +159,7 @@ int rc_sim_create(const rc_sim_def *def, rc_sim **out)
         return RC_EINVAL;
     }
     s->wall_contracted = def->frame && def->frame->wall_contracted && s->inv_c2 > 0.0;
-    s->glue = s->narrow && def->frame->per_ball && s->inv_c2 > 0.0;
+    s->model = eng_model_for(def->frame, s->narrow, s->inv_c2);
     if (s->narrow) {
         if (!def->frame->toi || rc_toi_workspace_create(&s->ws) != RC_OK) {
             free(s);
@@ -272,7 +273,7 @@ int rc_sim_sync(rc_sim *s)
         return RC_EINVAL;
     /* per_ball frames at finite c: the balls do not carry the hyperplanes, tubes and kinks
      * ahead, and a prediction asked later rounds differently (relcol/sim.h): keep all */
-    if (s->glue)
+    if (s->model->per_ball)
         return RC_OK;
     size_t n = s->n;
     rc_sim_ball *b = malloc((n ? n : 1) * sizeof *b);
@@ -310,7 +311,7 @@ int rc_sim_set_c(rc_sim *s, double c)
     /* per_ball frames: a kink still ahead of now is made now, at the ball's true centre
      * and proper time, with its latest segment's momentum and rest mass (the glued tube
      * it belongs to is a function of the old c); the hyperplanes go with the reload */
-    for (size_t i = 0; s->glue && i < n; i++)
+    for (size_t i = 0; s->model->per_ball && i < n; i++)
         if (rc_sim_kink_ahead(s, i) > 0) {
             const eng_aux *a = &s->a[s->slot[i]];
             b[i].p = a->p;
@@ -330,7 +331,7 @@ int rc_sim_set_c(rc_sim *s, double c)
     s->prm.c = c;
     s->toi.c = c;
     s->wall_contracted = s->def.frame && s->def.frame->wall_contracted && k > 0.0;
-    s->glue = s->narrow && s->def.frame->per_ball && k > 0.0;
+    s->model = eng_model_for(s->def.frame, s->narrow, k);
     /* planned afresh, unchecked: the shapes the new c gives may overlap a neighbour or a
      * wall, which the overlap policy resolves (and counts) as for any shape change */
     st = load_balls(s, n, b, NULL, 0);
@@ -341,7 +342,7 @@ int rc_sim_set_c(rc_sim *s, double c)
         s->prm.c = def0.c;
         s->toi.c = def0.c;
         s->wall_contracted = wc0;
-        s->glue = s->narrow && s->def.frame->per_ball && k0 > 0.0;
+        s->model = eng_model_for(s->def.frame, s->narrow, k0);
         if (load_balls(s, n, b, NULL, 0) == RC_OK)
             s->bk = kept;
         free(b);

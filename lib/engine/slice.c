@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "private.h"
+#include "model.h"
 #include "relcol/status.h"
 
 /* A ball's state at ts, and the segment it was taken on: the kink time that began it and
@@ -142,7 +143,7 @@ int rc_sim_slice_request(rc_sim *s, double ts, uint32_t *id)
         s->slc = p;
         s->slc_cap = cap;
     }
-    if (s->glue && !s->slc_mark) {
+    if (s->model->per_ball && !s->slc_mark) {
         s->slc_dirty = malloc(s->n * sizeof *s->slc_dirty);
         s->slc_mark = calloc(s->n, 1);
         s->slc_nd = 0;
@@ -160,7 +161,7 @@ int rc_sim_slice_request(rc_sim *s, double ts, uint32_t *id)
         return RC_ENOMEM;
     for (size_t k = 0; k < s->n; k++)
         sl.rmax = fmax(sl.rmax, s->b[k].r);
-    if (s->glue) {
+    if (s->model->per_ball) {
         /* every ball's line at ts now; the hooks keep it (a ball with three kinks ahead of
          * ts has no recorded line there) */
         for (size_t k = 0; k < s->n; k++)
@@ -175,7 +176,7 @@ int rc_sim_slice_request(rc_sim *s, double ts, uint32_t *id)
     s->slc[s->slc_n++] = sl;
     s->slc_next_id++;
     *id = sl.id;
-    if (!s->glue)
+    if (!s->model->per_ball)
         set_due(s);
     return RC_OK;
 }
@@ -188,7 +189,7 @@ int rc_sim_slice_ready(const rc_sim *s, uint32_t id, rc_sim_slice_info *info)
     if (!sl)
         return RC_ENOSLICE;
     double t_final = sl->ts;
-    if (s->glue) {
+    if (s->model->per_ball) {
         const double g = s->slc_gmax;
         t_final = sl->ts + 2.0 * sl->rmax * s->inv_c * (1.0 + 3.0 * sqrt((g - 1.0) * (g + 1.0)));
     }

@@ -303,7 +303,7 @@ static void test_kinks_cross(void)
     ENSURE_MSG(worst_cov <= 1e-12, "rest-frame crossing support off by %.3g", worst_cov);
 }
 
-/* eng_glue_side (lib/engine/perball/perball.h): is a contact event X, at table time tx and offset
+/* eng_glue_side (lib/engine/perball_state.h): is a contact event X, at table time tx and offset
  * dxb from the ball's centre then (a point of its contracted surface), on the future side
  * of the hyperplane of its last kink (at t_k = 0), (tx - t_k)(1 - kappa.v) >= kappa.dxb?
  * The ball slow in R before and after the kink, R at gamma 10 .. 1e8; tx - t_k f times the

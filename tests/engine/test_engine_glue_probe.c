@@ -13,7 +13,7 @@
 
 /* (the header's other helpers serve engine/predict.c, not this test) */
 #pragma GCC diagnostic ignored "-Wunused-function"
-#include "../../lib/engine/perball/glue_pair.h"
+#include "../../lib/engine/glue_pair.h"
 #include "rc_test.h"
 #include "relcol/relcol.h"
 

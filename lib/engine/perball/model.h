@@ -104,14 +104,6 @@ int eng_undo_conflict(rc_sim *s, int32_t i, int32_t bp, double T, int tube);
 
 /* ---- pending.c: the read-out's record of lines before kinks ahead ------------------ */
 
-/// What an event's ball was before it, for eng_pend_note.
-typedef struct eng_pend_snap {
-    int32_t b;       ///< the ball (storage slot)
-    uint32_t cnt;    ///< its counter before
-    double t_k;      ///< its last kink's time before
-    rc_particle in;  ///< its state before
-    double tau_last; ///< its TC memory before
-} eng_pend_snap;
 /// Ball b's snapshot before an event.
 eng_pend_snap eng_pend_take(const rc_sim *s, int32_t b);
 /// After an event: ball p->b's record of the lines it is still on at now.

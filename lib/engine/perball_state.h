@@ -1,12 +1,12 @@
-/* engine/perball/perball.h — the state of the per-ball model (frames whose balls change
+/* engine/perball_state.h — the state of the per-ball model (frames whose balls change
  * velocity at their own events: rc_toi_frame.per_ball), held by the engine behind one
  * pointer, rc_sim.pb (NULL in every other frame). The model: papers/shape-change.md. */
-#ifndef RELCOL_ENGINE_PERBALL_H
-#define RELCOL_ENGINE_PERBALL_H
+#ifndef RELCOL_ENGINE_PERBALL_STATE_H
+#define RELCOL_ENGINE_PERBALL_STATE_H
 
 #include <stdint.h>
 #include "relcol/toi.h"
-#include "../../glue_kv.h"
+#include "../glue_kv.h"
 
 /// A ball's last kink: the hyperplane H, t - t_k = kappa.(y - x_k), that began its segment (one cache line).
 typedef struct eng_cov {
@@ -81,6 +81,33 @@ typedef struct eng_undo_tally {
     uint64_t both_chains;      ///< undos of both balls' collisions with a chain
 } eng_undo_tally;
 
+/// What an event's ball was before it, for eng_pend_note.
+typedef struct eng_pend_snap {
+    int32_t b;       ///< the ball (storage slot)
+    uint32_t cnt;    ///< its counter before
+    double t_k;      ///< its last kink's time before
+    rc_particle in;  ///< its state before
+    double tau_last; ///< its TC memory before
+} eng_pend_snap;
+/// The single contact's records at its event's time T before its members' kinks (engine/perball/ops.c).
+typedef struct eng_single_rec {
+    eng_ball b[2];    ///< each member's stored record ...
+    eng_clock c[2];   ///< ... clock ...
+    eng_cov g[2];     ///< ... hyperplane ...
+    rc_glue u[2];     ///< ... and glued tube
+    int kinked[2];    ///< its kink placed cleanly (a record for a later undo)
+    double te[2];     ///< its new kink's time ...
+    rc_vec3 kap[2];   ///< ... and H's normal
+    int cross[2];     ///< its new hyperplane reaches the ball before its last one did
+} eng_single_rec;
+
+/// The event being resolved: its balls as they were, for their read-out records after it.
+typedef struct eng_event_rec {
+    eng_pend_snap ps[2]; ///< the event's ball and partner
+    int np;              ///< how many
+    uint64_t rollbacks;  ///< undos before it (an undo notes its own balls)
+} eng_event_rec;
+
 /// The per-ball model's state: per ball arrays (caller's balls in storage order) and scratch.
 typedef struct eng_perball {
     eng_cov *cov;       ///< each ball's last hyperplane
@@ -92,6 +119,8 @@ typedef struct eng_perball {
     eng_undo_tally tally; ///< counts for the tests
     eng_t2_memo t2m[ENG_T2_MEMO]; ///< the last answers of the two tubes' contact
     uint32_t t2m_n, t2m_next;     ///< answers kept, and the next to replace
+    eng_single_rec single;        ///< scratch of the single-contact path
+    eng_event_rec event;          ///< scratch of the event being resolved
 } eng_perball;
 
 /// 1 - kappa.v for the hyperplane c that began a segment and the velocity v on it: from the tube's shapes where v is its outgoing one and fast (glue_kv.h), bit for bit.

@@ -11,9 +11,9 @@
 #include <math.h>
 #include <string.h>
 
-#include "../pair_zmf.h"
-#include "../pairs.h"
-#include "../private.h"
+#include "pair_zmf.h"
+#include "pairs.h"
+#include "private.h"
 #include "relcol/status.h"
 
 /* per_ball frames: on which side of each ball's last hyperplane a contact event X lies,
