@@ -7,9 +7,7 @@
 
 #include "../resolve.h"
 
-/* 1 - kappa.v_in of the kink from `in` to `out` (H's normal kappa, v_in the stored
- * velocity p / M of `in`): the plain form, or for a ball fast before and after the same
- * way the one free of its cancellation (glue_kv.h) */
+/// 1 - kappa.v_in of the kink from `in` to `out` (kappa H's normal, v_in the stored velocity), free of cancellation for a ball fast before and after the same way (glue_kv.h).
 static inline double eng_kink_den(double ic2, const rc_particle *in, const rc_particle *out,
                                   rc_vec3 kappa, rc_vec3 v_in)
 {
@@ -20,7 +18,7 @@ static inline double eng_kink_den(double ic2, const rc_particle *in, const rc_pa
     return rc_glue_one_minus_kv(ic2, in, M0, out, M1, M0 / in->m + M1 / out->m, kv);
 }
 
-/* H's normal and the kink's time (glue_kink; the stored line is the incoming one) */
+/// The kink's table time through the contact event (tx, dx), and H's normal *kappa (the stored line is the incoming one).
 static inline double eng_kink_time(const rc_sim *s, int32_t b, const rc_particle *in,
                                    const rc_particle *out, double tx, rc_vec3 dx, rc_vec3 *kappa)
 {
@@ -32,17 +30,7 @@ static inline double eng_kink_time(const rc_sim *s, int32_t b, const rc_particle
     return tx - rc_v3_dot(*kappa, dx) / eng_kink_den(ic2, in, out, *kappa, s->b[b].v);
 }
 
-/* Would ball b's new kink (centre at table time te, H's normal kappa, from `in`, its
- * stored state, to `out`) have its hyperplane reach some point of the ball before its last
- * one did? On the segment between the two kinks (velocity v, the stored one) a point at
- * offset rho from the centre is reached by H_i at t_ci + a_i.rho, a_i = kappa_i / (1 -
- * kappa_i.v); the two sweep the contracted section in order iff t_c2 - t_c1 >= max over it
- * of (a1 - a2).rho, the support of the contracted disc, r sqrt(|g|^2 - (g.beta)^2). (The
- * order rule checks the centre only, rho = 0.) For a ball fast before and after each kink
- * the same way, both denominators are ~1/gamma^2 and the support's two terms gamma^2 times
- * its value: the last kink's denominator then comes from its tube's shapes (s->glu:
- * eng_seg_den), the new one's from the momenta (eng_kink_den), and the support as
- * r sqrt(|g|^2 / gamma^2 + |beta x g|^2), a sum of positive terms. */
+/// Would ball b's new kink (te, kappa, from `in` to `out`) have its hyperplane reach some point of the ball before its last one did: the contracted section's support test (papers/shape-change.md).
 static inline int eng_kinks_cross(const rc_sim *s, int32_t b, double te, rc_vec3 kappa,
                                   const rc_particle *in, const rc_particle *out)
 {
