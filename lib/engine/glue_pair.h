@@ -147,11 +147,8 @@ static int toi2_memo(rc_sim *s, const rc_glue *g0, const rc_glue *g1, double t1,
  * the same bits whichever ball asks. Taken where it is a contact on neither ball's
  * incoming piece (RC_OK, out as frame_call's, *valid 1) or no contact at all (RC_MISS);
  * where the tubes overlap at t1 or an incoming piece is met first, -1: the straight
- * cylinders answer, as they did for every such pair before this was built. (A choice,
- * measured in papers/shape-change.md section 10: made events, those two answers raised
- * the policy's share in the dilute gases and hardly moved the covariant audit's uncounted
- * overlaps, because the latest tubes as stored overlap where an isolated pair's never do.)
- * -1 also where a ball's tube is not its stored line's. */
+ * cylinders answer (a choice: papers/shape-change.md). -1 also where a ball's tube is not
+ * its stored line's. */
 static int windows_contact(const rc_sim *cs, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
                            double t1, rc_toi_contact *out, int *valid)
 {

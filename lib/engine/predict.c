@@ -82,8 +82,7 @@ __attribute__((always_inline)) static inline double pair_time_dx(
         /* Bounding spheres that already overlap and do not approach can still hold
          * contracted shapes that meet later: a flat shape's flank sweeps into its
          * neighbour while the centres part. Such a pair goes to the narrow phase with
-         * the lower bound now (missed before: ~1 contact in 3000 in a table-frame gas at
-         * theta = 0.75 passed through; test_engine_audit). */
+         * the lower bound now (test_engine_audit). */
         const double sig = bi->r + bk->r;
         if (!use_narrow || !(d2 <= sig * sig))
             return INFINITY;

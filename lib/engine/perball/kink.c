@@ -19,8 +19,7 @@
  * policy's, a group's). Such a kink before a kink still pending (ahead of now) overtakes
  * it: put where the order rule would, at the pending kink, it would leave the ball's line
  * up to there, and so the geometry that called the policy, as it was, and the same
- * contact would come up again at the same instant for ever (RC_ESTALL, a 3-D covariant gas
- * at packing 0.2). It is kept at the event's time instead (counted with the order
+ * contact would come up again at the same instant for ever (RC_ESTALL). It is kept at the event's time instead (counted with the order
  * conflicts; the ball's centre there is its stored line's). te, kappa: eng_kink_time's. */
 void eng_glue_kink_at(rc_sim *s, int32_t b, const rc_particle *in, const rc_particle *out,
                       double tx, rc_vec3 dx, double te, rc_vec3 kappa, int at_event)

@@ -708,9 +708,8 @@ int eng_undo_wall(rc_sim *s, int32_t i, int32_t wall, double T, double tx)
  * ball's incoming line alone; on the incoming side of both, both. An overlap the frame
  * reported (no X) tries the ball with the later kink, then the other, then both. Last,
  * where an attempt found the contact from a ball's incoming line before its previous kink
- * too, that ball's two last collisions (deep; in the 3-D gas at packing 0.1, rms 0.5c, a
- * quarter of the conflicts left to the policy were such). 1 done, 0 none applies, or the
- * law's failure. */
+ * too, that ball's two last collisions (deep). 1 done, 0 none applies, or the law's
+ * failure. */
 int eng_undo_conflict(rc_sim *s, int32_t i, int32_t bp, double T, int tube)
 {
     int st;
