@@ -110,7 +110,7 @@ static double gamma_now(const rc_sim *s)
             g = fmax(g, gamma_of(s, r->l[q].m, r->l[q].p));
         if (s->pb->und[k].partner != ENG_NONE)
             g = fmax(g, gamma_of(s, s->pb->und[k].in.m, s->pb->und[k].in.p));
-        if (s->pb->undp[k].partner != ENG_NONE) /* (a chain undo's, engine/undo.c) */
+        if (s->pb->undp[k].partner != ENG_NONE) /* (a chain undo's, engine/perball/undo.c) */
             g = fmax(g, gamma_of(s, s->pb->undp[k].in.m, s->pb->undp[k].in.p));
     }
     return g;

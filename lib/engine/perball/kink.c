@@ -1,7 +1,7 @@
-/* engine/kink.c — per_ball frames: where a ball's velocity changes on its worldline (its
+/* engine/perball/kink.c — per_ball frames: where a ball's velocity changes on its worldline (its
  * kink, through the glued tube's hyperplane, and the order rule where kinks cross), and a
  * wall's contact event of the model (papers/shape-change.md, sections 2, 6 and 8). Used
- * by the event loop (engine/core.c) and the undo (engine/undo.c). */
+ * by the event loop (engine/core.c) and the undo (engine/perball/undo.c). */
 #include "model.h"
 #include "relcol/status.h"
 

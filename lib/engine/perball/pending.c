@@ -1,4 +1,4 @@
-/* engine/pending.c — per_ball frames: the read-out's record of the lines a ball is still
+/* engine/perball/pending.c — per_ball frames: the read-out's record of the lines a ball is still
  * on before kinks that lie after the engine's time (eng_pend, read by engine/diag.c); kept
  * after each event and after an undo. Reads the engine, changes nothing a run reads. */
 #include <math.h>

@@ -1,7 +1,7 @@
-/* engine/records.c — per_ball frames: the records a collision leaves so that a later
+/* engine/perball/records.c — per_ball frames: the records a collision leaves so that a later
  * conflict can undo it (eng_undo: each member's state, hyperplane, tube and clock before,
  * its contact, the collision's members and their counters after it), written by the
- * single-contact path and by the groups the undo solves (engine/undo.c reads them;
+ * single-contact path and by the groups the undo solves (engine/perball/undo.c reads them;
  * papers/shape-change.md, sections 7 and 8). */
 #include <string.h>
 

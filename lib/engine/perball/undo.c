@@ -1,9 +1,9 @@
-/* engine/undo.c — per_ball frames: undoing a ball's last collision when a third ball meets
+/* engine/perball/undo.c — per_ball frames: undoing a ball's last collision when a third ball meets
  * it before that kink along its tube, and solving the contacts together
  * (papers/shape-change.md, sections 7 and 8). A collision that can be undone is a single
  * contact of the model, or a group an earlier undo solved: undoing a group into a larger
  * one is what lets a fourth ball meet a group of three inside a window. The records are
- * written by engine/records.c (eng_write_undo, eng_write_group). */
+ * written by engine/perball/records.c (eng_write_undo, eng_write_group). */
 #include <math.h>
 #include <string.h>
 

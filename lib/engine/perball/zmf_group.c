@@ -1,4 +1,4 @@
-/* engine/zmf_group.c — per_ball frames: a group of contacts formed by simultaneity in the
+/* engine/perball/zmf_group.c — per_ball frames: a group of contacts formed by simultaneity in the
  * group's zero-momentum frame rather than at one table time (papers/simultaneous-contacts.md,
  * "Forming the group in its ZMF"). A further contact of a member joins the event's when
  * the frame's contact event of that pair lies within sim_tol light-crossing times of the
