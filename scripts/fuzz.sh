@@ -49,7 +49,7 @@ clang "${flags[@]}" -fsanitize=fuzzer-no-link,address,undefined -mavx2 \
 clang "${flags[@]}" -fsanitize=fuzzer-no-link,address,undefined -mavx512f -mavx512vl \
     -c "$here/lib/engine/lanes_avx512.c" -o "$out/lanes_avx512.o"
 engine=()
-for f in "$here"/lib/engine/*.c "$here"/lib/contacts/*.c; do
+for f in "$here"/lib/engine/*.c "$here"/lib/engine/perball/*.c "$here"/lib/contacts/*.c; do
     case "$f" in *lanes_avx*) ;; *) engine+=("$f") ;; esac
 done
 clang "${flags[@]}" -fsanitize=fuzzer,address,undefined \

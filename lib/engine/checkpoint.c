@@ -19,25 +19,7 @@
 #include "relcol/status.h"
 
 #define CK_MAGIC "relcolck"
-#define CK_VERSION 15u /* 2: the bookkeeping as one record (eng_books); 3: with pinned and the
-                         transfer moments; 4: with the per_ball counters and hyperplanes;
-                         5: with the per_ball undo records and rollbacks;
-                         6: with the per_ball lines before kinks ahead (eng_pend);
-                         7: undo records of groups (members, kind, TC count),
-                         up to ENG_PEND_LINES lines before kinks ahead;
-                         8: each ball's previous undo record too;
-                         9: undo records of overlap-policy decisions (npol), the
-                         count of walls' tube conflicts undone;
-                         10: the wider chain undos' count;
-                         11: the count of undos that took back a ball's own two
-                         collisions (deep_rollbacks);
-                         12: undo records of groups with one cycle of contacts,
-                         and the count of those undone (cycle_rollbacks);
-                         13: the count of chains solved again without a new
-                         contact (rejoins);
-                         14: undo records of up to eight members;
-                         15: the count of undos of both balls' collisions with
-                         a chain (both_chains) */
+#define CK_VERSION 16u /* the format's number: raised by every change of layout; another is RC_EMISMATCH */
 #define CK_ORDER 0x01020304u
 
 typedef struct ck_header {
@@ -180,12 +162,12 @@ static void write_all(const rc_sim *s, ck_cursor *c, const int32_t *next)
         put(c, s->ev_n, n * sizeof *s->ev_n);
     if (s->img) /* (periodic boxes: the wrap counters) */
         put(c, s->img, 3 * n * sizeof *s->img);
-    if (s->cov) { /* (per_ball frames: the glued tubes' hyperplanes and tubes) */
-        put(c, s->cov, n * sizeof *s->cov);
-        put(c, s->glu, n * sizeof *s->glu);
-        put(c, s->und, n * sizeof *s->und);
-        put(c, s->undp, n * sizeof *s->undp);
-        put(c, s->pend, n * sizeof *s->pend);
+    if (s->pb) { /* (per_ball frames: the glued tubes' hyperplanes and tubes) */
+        put(c, s->pb->cov, n * sizeof *s->pb->cov);
+        put(c, s->pb->glu, n * sizeof *s->pb->glu);
+        put(c, s->pb->und, n * sizeof *s->pb->und);
+        put(c, s->pb->undp, n * sizeof *s->pb->undp);
+        put(c, s->pb->pend, n * sizeof *s->pb->pend);
     }
     if (n) {
         put(c, s->g.slot, s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot);
@@ -272,26 +254,26 @@ static int check_ball(const rc_sim *s, size_t k)
     const int dim = s->def.dim;
     /* (a per_ball ball's clock may be at its last kink, after now) */
     if (!rc_v3_isfinite(b->x) || !rc_v3_isfinite(b->v) || !isfinite(b->t) ||
-        !(b->t <= s->now || s->cov) ||
+        !(b->t <= s->now || s->pb) ||
         !isfinite(b->r) || !(b->r > 0.0) || !rc_v3_isfinite(a->p) || !isfinite(a->m) ||
         !(a->m > 0.0) || !isfinite(t->tau) || isnan(t->tau_last) || t->tau_last == INFINITY)
         return RC_ECORRUPT;
     if (dim == 2 && (b->x.z != 0.0 || a->p.z != 0.0))
         return RC_ECORRUPT;
-    if (s->cov && (isnan(s->cov[k].t_k) || s->cov[k].t_k == INFINITY ||
-                   !isfinite(s->cov[k].ev_tx) || !rc_v3_isfinite(s->cov[k].ev_dx) ||
-                   !rc_v3_isfinite(s->cov[k].kappa) ||
-                   !(rc_v3_norm2(s->cov[k].kappa) * s->def.c * s->def.c < 1.0 || isinf(s->def.c))))
+    if (s->pb && (isnan(s->pb->cov[k].t_k) || s->pb->cov[k].t_k == INFINITY ||
+                   !isfinite(s->pb->cov[k].ev_tx) || !rc_v3_isfinite(s->pb->cov[k].ev_dx) ||
+                   !rc_v3_isfinite(s->pb->cov[k].kappa) ||
+                   !(rc_v3_norm2(s->pb->cov[k].kappa) * s->def.c * s->def.c < 1.0 || isinf(s->def.c))))
         return RC_ECORRUPT;
-    if (s->glu && s->glu[k].r != 0.0 &&
-        (s->glu[k].r != b->r || !isfinite(s->glu[k].t_c) || !isfinite(s->glu[k].t_first) ||
-         !isfinite(s->glu[k].t_last) || !rc_v3_isfinite(s->glu[k].x_c) ||
-         !rc_v3_isfinite(s->glu[k].kappa) || !(s->glu[k].inv_c2 == s->inv_c2)))
+    if (s->pb && s->pb->glu[k].r != 0.0 &&
+        (s->pb->glu[k].r != b->r || !isfinite(s->pb->glu[k].t_c) || !isfinite(s->pb->glu[k].t_first) ||
+         !isfinite(s->pb->glu[k].t_last) || !rc_v3_isfinite(s->pb->glu[k].x_c) ||
+         !rc_v3_isfinite(s->pb->glu[k].kappa) || !(s->pb->glu[k].inv_c2 == s->inv_c2)))
         return RC_ECORRUPT;
-    if (s->und && (!undo_ok(s, k, &s->und[k]) || !undo_ok(s, k, &s->undp[k])))
+    if (s->pb && (!undo_ok(s, k, &s->pb->und[k]) || !undo_ok(s, k, &s->pb->undp[k])))
         return RC_ECORRUPT;
-    if (s->pend) { /* (read only by the read-out, but it must be a state it can read) */
-        const eng_pend *r = &s->pend[k];
+    if (s->pb) { /* (read only by the read-out, but it must be a state it can read) */
+        const eng_pend *r = &s->pb->pend[k];
         if (r->depth < 0 || r->depth > ENG_PEND_LINES ||
             (r->depth >= 1 && (!rc_v3_isfinite(r->x) || !isfinite(r->tau) ||
                                isnan(r->tau_last) || r->tau_last == INFINITY)))
@@ -426,10 +408,10 @@ static int read_all(rc_sim *s, ck_cursor *c)
         get(c, s->cnt, n * sizeof *s->cnt) ||
         (s->ev_n && get(c, s->ev_n, n * sizeof *s->ev_n)) ||
         (s->img && get(c, s->img, 3 * n * sizeof *s->img)) ||
-        (s->cov && (get(c, s->cov, n * sizeof *s->cov) || get(c, s->glu, n * sizeof *s->glu) ||
-                     get(c, s->und, n * sizeof *s->und) ||
-                     get(c, s->undp, n * sizeof *s->undp) ||
-                     get(c, s->pend, n * sizeof *s->pend))))
+        (s->pb && (get(c, s->pb->cov, n * sizeof *s->pb->cov) || get(c, s->pb->glu, n * sizeof *s->pb->glu) ||
+                     get(c, s->pb->und, n * sizeof *s->pb->und) ||
+                     get(c, s->pb->undp, n * sizeof *s->pb->undp) ||
+                     get(c, s->pb->pend, n * sizeof *s->pb->pend))))
         return RC_ECORRUPT;
     if (n && (get(c, s->g.slot, s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot) ||
               get(c, s->g.next, n * sizeof *s->g.next)))

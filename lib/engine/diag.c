@@ -1,5 +1,5 @@
-/* engine/diag.c — reading the engine's state: balls at the engine's time, conservation
- * diagnostics (wall impulses and dissipated energy included), a state hash, memory. */
+/* engine/diag.c — the engine's diagnostics: conservation sums (wall impulses and
+ * dissipated energy included), the state hash, memory. Balls are read by engine/readout.c. */
 #include <math.h>
 #include <string.h>
 
@@ -8,150 +8,6 @@
 
 size_t rc_sim_count(const rc_sim *s) { return s ? s->n : 0; }
 double rc_sim_time(const rc_sim *s) { return s ? s->now : NAN; }
-
-/* per_ball frames: ball i's state at now (t >= now) where its latest kink lies ahead of
- * it, from the lines eng_pend recorded: 1 (*x in the wrap coordinates *img, p, m, tau, TC
- * memory set), 2 if the line it is on then was not recorded, 0 if the ball is on its
- * stored line. */
-static int before_kink(const rc_sim *s, size_t i, double now, rc_sim_ball *o,
-                       const int32_t **img)
-{
-    if (!s->pend || !(s->cov[i].t_k > now))
-        return 0;
-    const eng_pend *r = &s->pend[i];
-    int k = 0;
-    while (k < r->depth && !(now < r->l[k].t))
-        k++;
-    if (k == r->depth)
-        return 2;
-    /* line k: from the first recorded kink (k = 0: back from it), else along the lines
-     * between to kink k - 1 */
-    double t0 = r->l[0].t, tau0 = r->tau, tau_last = r->tau_last;
-    rc_vec3 x0 = r->x;
-    for (int q = 1; q < k; q++) {
-        const double M = eng_mass_rel(r->l[q].m, r->l[q].p, s->inv_c2), h = r->l[q].t - t0;
-        x0 = rc_v3_axpy(x0, h, rc_v3_scale(1.0 / M, r->l[q].p));
-        tau0 += h * (r->l[q].m / M);
-        t0 = r->l[q].t;
-    }
-    if (k >= 1)
-        tau_last = tau0;
-    const rc_vec3 p = r->l[k].p;
-    const double m = r->l[k].m;
-    const double h = now - t0, M = eng_mass_rel(m, p, s->inv_c2);
-    o->x = rc_v3_axpy(x0, h, rc_v3_scale(1.0 / M, p));
-    o->p = p;
-    o->m = m;
-    o->tau = tau0 + h * (m / M);
-    o->collided = isfinite(tau_last);
-    o->tau_last = o->collided ? tau_last : 0.0;
-    *img = r->img;
-    return 1;
-}
-
-int eng_ball_now(const rc_sim *s, size_t i, rc_sim_ball *o, int truth)
-{
-    return eng_ball_at(s, i, s->now, o, truth);
-}
-
-int eng_ball_at(const rc_sim *s, size_t i, double t, rc_sim_ball *o, int truth)
-{
-    const eng_ball *b = &s->b[i];
-    const eng_aux *a = &s->a[i];
-    double h = t - b->t;
-    o->x = h == 0.0 ? b->x : rc_v3_axpy(b->x, h, b->v);
-    o->p = a->p;
-    o->r = b->r;
-    o->m = a->m;
-    const eng_clock *k = &s->clk[i];
-    o->tau = k->tau;
-    o->collided = isfinite(k->tau_last);
-    o->tau_last = o->collided ? k->tau_last : 0.0;
-    if (h != 0.0)
-        o->tau += s->inv_c2 == 0.0 ? h : h * (a->m / eng_mass_rel(a->m, a->p, s->inv_c2));
-    const int32_t *img = s->img ? s->img + 3 * i : NULL;
-    const int ahead = truth ? before_kink(s, i, t, o, &img) : 0;
-    for (int d = 0; d < 3; d++) {
-        o->image[d] = 0;
-        if (!s->img || s->walled >> d & 1u || d >= s->def.dim)
-            continue;
-        /* periodic: in [0, L) (a ball exactly at its wrap, not yet processed, may lie a
-         * rounding error outside), with the wrap counted */
-        int32_t im = img[d];
-        double x = rc_v3_get(o->x, d);
-        const double L = s->L[d];
-        if (x >= L) {
-            x -= L;
-            im++;
-        } else if (x < 0.0) {
-            const double y = x + L;
-            if (y < L) {
-                x = y;
-                im--;
-            } else {
-                x = 0.0; /* (within half an ulp of L below 0) */
-            }
-        }
-        rc_v3_set(&o->x, d, x);
-        o->image[d] = im;
-    }
-    return ahead;
-}
-
-int rc_sim_get_ball(const rc_sim *s, size_t i, rc_sim_ball *out)
-{
-    if (!s || !out || i >= s->n)
-        return RC_EINVAL;
-    eng_ball_now(s, s->slot[i], out, 1);
-    return RC_OK;
-}
-
-int rc_sim_get_balls(const rc_sim *s, size_t n, rc_sim_ball *out, int latest, int8_t *ahead)
-{
-    if (!s || (n && !out) || n != s->n)
-        return RC_EINVAL;
-    /* in storage order, each ball written to its caller's index: the engine's arrays are
-     * walked once, in order, however the balls were renumbered */
-    for (size_t k = 0; k < n; k++) {
-        const int a = eng_ball_now(s, k, &out[s->id[k]], !latest);
-        if (ahead)
-            ahead[s->id[k]] = (int8_t)a;
-    }
-    return RC_OK;
-}
-
-int rc_sim_get_ball_latest(const rc_sim *s, size_t i, rc_sim_ball *out)
-{
-    if (!s || !out || i >= s->n)
-        return RC_EINVAL;
-    eng_ball_now(s, s->slot[i], out, 0);
-    return RC_OK;
-}
-
-int rc_sim_get_glue(const rc_sim *s, size_t i, rc_glue *out)
-{
-    if (!s || !out || i >= s->n || !s->glu)
-        return RC_EINVAL;
-    const size_t k = s->slot[i];
-    *out = s->glu[k];
-    if (out->r > 0.0) {
-        /* kept with the contact event at the origin: shifted so that its centre at t_c is
-         * the stored line's there (its kink) */
-        const eng_ball *b = &s->b[k];
-        const rc_vec3 shift = rc_v3_sub(rc_v3_axpy(b->x, out->t_c - b->t, b->v), out->x_c);
-        out->x = rc_v3_add(out->x, shift);
-        out->x_c = rc_v3_add(out->x_c, shift);
-    }
-    return RC_OK;
-}
-
-int rc_sim_kink_ahead(const rc_sim *s, size_t i)
-{
-    if (!s || i >= s->n)
-        return RC_EINVAL;
-    rc_sim_ball b;
-    return eng_ball_now(s, s->slot[i], &b, 1);
-}
 
 /* Deepest overlap among ball i's neighbours at the engine's time, relative to ri + rk. */
 static double overlap_around(const rc_sim *s, size_t i, const rc_vec3 xi)
@@ -273,8 +129,8 @@ size_t rc_sim_bytes(const rc_sim *s)
                                sizeof *s->id + sizeof *s->slot +
                                sizeof *s->cnt + (s->ev_n ? sizeof *s->ev_n : 0) +
                                (s->img ? 3 * sizeof *s->img : 0) +
-                               (s->cov ? sizeof *s->cov + sizeof *s->glu + sizeof *s->pend +
-                                             sizeof *s->und + sizeof *s->undp
+                               (s->pb ? sizeof *s->pb->cov + sizeof *s->pb->glu + sizeof *s->pb->pend +
+                                             sizeof *s->pb->und + sizeof *s->pb->undp
                                        : 0)) +
            eng_queue_bytes(&s->q) + eng_slice_bytes(s) +
            s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot +

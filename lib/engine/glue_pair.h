@@ -26,9 +26,9 @@ static inline int glue_sides(const rc_sim *s, const eng_ball *bi, const eng_ball
     const double tx = tref + t;
     const rc_vec3 dxi = rc_v3_axpy(y, -t, bi->v);
     const rc_vec3 dxk = rc_v3_sub(y, rc_v3_axpy(dx, t, bk->v));
-    const eng_cov *ci = &s->cov[bi - s->b], *ck = &s->cov[bk - s->b];
-    return eng_glue_side(ci, &s->glu[bi - s->b], bi->v, tx, dxi) |
-           eng_glue_side(ck, &s->glu[bk - s->b], bk->v, tx, dxk) << 1;
+    const eng_cov *ci = &s->pb->cov[bi - s->b], *ck = &s->pb->cov[bk - s->b];
+    return eng_glue_side(ci, &s->pb->glu[bi - s->b], bi->v, tx, dxi) |
+           eng_glue_side(ck, &s->pb->glu[bk - s->b], bk->v, tx, dxk) << 1;
 }
 
 /* per_ball frames: is the contact event X, found t after tref, on the future side of
@@ -113,8 +113,8 @@ static int tubes_overlap_probe(const rc_glue *g0, const rc_glue *g1, double t)
 static int toi2_memo(rc_sim *s, const rc_glue *g0, const rc_glue *g1, double t1, double *t,
                      rc_vec3 *y, rc_vec3 *n, int *p0, int *p1)
 {
-    for (uint32_t k = 0; k < s->t2m_n; k++) {
-        const eng_t2_memo *m = &s->t2m[k];
+    for (uint32_t k = 0; k < s->pb->t2m_n; k++) {
+        const eng_t2_memo *m = &s->pb->t2m[k];
         if (memcmp(&m->t1, &t1, sizeof t1) == 0 && memcmp(&m->g0, g0, sizeof *g0) == 0 &&
             memcmp(&m->g1, g1, sizeof *g1) == 0) {
             *t = m->t;
@@ -125,9 +125,9 @@ static int toi2_memo(rc_sim *s, const rc_glue *g0, const rc_glue *g1, double t1,
             return m->st;
         }
     }
-    eng_t2_memo *m = &s->t2m[s->t2m_next];
-    s->t2m_next = (s->t2m_next + 1) % ENG_T2_MEMO;
-    s->t2m_n += s->t2m_n < ENG_T2_MEMO;
+    eng_t2_memo *m = &s->pb->t2m[s->pb->t2m_next];
+    s->pb->t2m_next = (s->pb->t2m_next + 1) % ENG_T2_MEMO;
+    s->pb->t2m_n += s->pb->t2m_n < ENG_T2_MEMO;
     m->g0 = *g0;
     m->g1 = *g1;
     m->t1 = t1;
@@ -147,11 +147,8 @@ static int toi2_memo(rc_sim *s, const rc_glue *g0, const rc_glue *g1, double t1,
  * the same bits whichever ball asks. Taken where it is a contact on neither ball's
  * incoming piece (RC_OK, out as frame_call's, *valid 1) or no contact at all (RC_MISS);
  * where the tubes overlap at t1 or an incoming piece is met first, -1: the straight
- * cylinders answer, as they did for every such pair before this was built. (A choice,
- * measured in papers/shape-change.md section 10: made events, those two answers raised
- * the policy's share in the dilute gases and hardly moved the covariant audit's uncounted
- * overlaps, because the latest tubes as stored overlap where an isolated pair's never do.)
- * -1 also where a ball's tube is not its stored line's. */
+ * cylinders answer (a choice: papers/shape-change.md). -1 also where a ball's tube is not
+ * its stored line's. */
 static int windows_contact(const rc_sim *cs, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
                            double t1, rc_toi_contact *out, int *valid)
 {
@@ -159,8 +156,8 @@ static int windows_contact(const rc_sim *cs, const eng_ball *bi, const eng_ball 
     const int flip = dx.x < 0.0 || (dx.x == 0.0 && (dx.y < 0.0 || (dx.y == 0.0 && dx.z < 0.0)));
     const eng_ball *b0 = flip ? bk : bi, *b1 = flip ? bi : bk;
     const rc_vec3 d01 = flip ? rc_v3_scale(-1.0, dx) : dx;
-    const rc_glue *g0 = &s->glu[b0 - s->b];
-    rc_glue g1 = s->glu[b1 - s->b];
+    const rc_glue *g0 = &s->pb->glu[b0 - s->b];
+    rc_glue g1 = s->pb->glu[b1 - s->b];
     /* (a tube whose outgoing line is not the ball's stored one is not its present tube:
      * the straight cylinders answer, as before this was built) */
     if (rc_v3_norm2(rc_v3_sub(g0->v_out, b0->v)) != 0.0 ||
@@ -203,7 +200,7 @@ static int window_contact(const rc_sim *cs, const eng_ball *bi, const eng_ball *
 {
     rc_sim *s = (rc_sim *)cs; /* (the workspace is scratch) */
     const size_t i = (size_t)(bi - s->b), k = (size_t)(bk - s->b);
-    const rc_glue *gi = &s->glu[i], *gk = &s->glu[k];
+    const rc_glue *gi = &s->pb->glu[i], *gk = &s->pb->glu[k];
     const int wi = gi->r > 0.0 && t1 < gi->t_last, wk = gk->r > 0.0 && t1 < gk->t_last;
     if (!wi && !wk)
         return -1;
@@ -226,11 +223,11 @@ static int window_contact(const rc_sim *cs, const eng_ball *bi, const eng_ball *
     out->x = rc_v3_sub(y, ci);
     out->n = wi ? n : rc_v3_scale(-1.0, n);
     /* the other ball's side: X - its centre at t */
-    const eng_cov *co = &s->cov[bo - s->b];
+    const eng_cov *co = &s->pb->cov[bo - s->b];
     const rc_vec3 dxo = rc_v3_sub(rc_v3_axpy(out->x, -out->t, bi->v),
                                   wi ? rc_v3_axpy(dx, out->t, rc_v3_sub(bk->v, bi->v))
                                      : rc_v3(0.0, 0.0, 0.0));
-    *valid = piece != 0 && eng_glue_side(co, &s->glu[bo - s->b], bo->v, t, dxo);
+    *valid = piece != 0 && eng_glue_side(co, &s->pb->glu[bo - s->b], bo->v, t, dxo);
     return RC_OK;
 }
 
@@ -327,7 +324,7 @@ static int incoming_first(const rc_sim *cs, const eng_ball *bg, const eng_ball *
                           double tb, double tx)
 {
     rc_sim *s = (rc_sim *)cs; /* (the workspace is scratch) */
-    const rc_glue *g = &s->glu[bg - s->b];
+    const rc_glue *g = &s->pb->glu[bg - s->b];
     const eng_aux *ao = &s->a[bo - s->b];
     const double t0 = tb > g->t_first ? tb : g->t_first;
     const rc_vec3 cg = rc_v3_axpy(g->x_c, t0 - g->t_c, bg->v);
@@ -360,7 +357,7 @@ static int incoming_first(const rc_sim *cs, const eng_ball *bg, const eng_ball *
 static int back_refused(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
                         double tref)
 {
-    const eng_cov *ci = &s->cov[bi - s->b], *ck = &s->cov[bk - s->b];
+    const eng_cov *ci = &s->pb->cov[bi - s->b], *ck = &s->pb->cov[bk - s->b];
     const int hi = ci->t_k > -INFINITY, hk = ck->t_k > -INFINITY;
     eng_zpair z;
     if ((!hi && !hk) || !eng_zpair_make(s, bi, bk, dx, &z))
@@ -378,8 +375,8 @@ static int back_refused(const rc_sim *s, const eng_ball *bi, const eng_ball *bk,
                               (bi->r + bk->r) * (1.0 / z.wn + s->inv_c) +
                           1e-12 * (fabs(tref) + fabs(tau) + (hi ? fabs(di) : 0.0) +
                                    (hk ? fabs(dk) : 0.0));
-    const double den_i = hi ? eng_seg_den(ci, &s->glu[bi - s->b], bi->v) : 1.0;
-    const double den_k = hk ? eng_seg_den(ck, &s->glu[bk - s->b], bk->v) : 1.0;
+    const double den_i = hi ? eng_seg_den(ci, &s->pb->glu[bi - s->b], bi->v) : 1.0;
+    const double den_k = hk ? eng_seg_den(ck, &s->pb->glu[bk - s->b], bk->v) : 1.0;
     if (equal) { /* X = Y */
         double t;
         rc_vec3 y;
@@ -426,7 +423,7 @@ static int glue_back(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc
     rc_toi_contact o;
     if (frame_call(s, bi, bk, dxb, &o) != RC_OK || !glue_valid(s, bi, bk, dxb, tb, o.t, o.x))
         return RC_EOVERLAP;
-    const rc_glue *gi = &s->glu[bi - s->b], *gk = &s->glu[bk - s->b];
+    const rc_glue *gi = &s->pb->glu[bi - s->b], *gk = &s->pb->glu[bk - s->b];
     const double tx = tb + o.t;
     if ((gi->r > 0.0 && tb < gi->t_last && incoming_first(s, bi, bk, dxb, tb, tx)) ||
         (gk->r > 0.0 && tb < gk->t_last &&

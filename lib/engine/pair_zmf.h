@@ -1,6 +1,6 @@
 /* engine/pair_zmf.h — per_ball frames: two balls' straight cylinders (their stored lines)
  * seen from the pair's ZMF, to bound where the frame would put their contact event X
- * before it is asked (engine/glue_pair.h glue_back, engine/zmf_group.c try_join). Asked
+ * before it is asked (engine/glue_pair.h glue_back, engine/perball/zmf_group.c try_join). Asked
  * from a reference where the cylinders are apart, the frame's X is the point of their
  * intersection S that comes first in the pair's ZMF. Stretched along the ZMF relative
  * velocity by ball i's Lorentz factor there, ball i is a sphere r_i and ball k lies

@@ -15,6 +15,7 @@
 #include "shapes.h"
 #include "walk.h"
 #include "private.h"
+#include "model.h"
 #include "relcol/status.h"
 
 /* ---- event prediction ------------------------------------------------------------ */
@@ -32,7 +33,7 @@ static int pieces_approach(const rc_sim *s, const eng_ball *bi, const eng_ball *
                            double pref, rc_vec3 dv, double tref, double t, rc_vec3 y, double ta)
 {
     const size_t i = (size_t)(bi - s->b), k = (size_t)(bk - s->b);
-    const rc_glue *gi = &s->glu[i], *gk = &s->glu[k];
+    const rc_glue *gi = &s->pb->glu[i], *gk = &s->pb->glu[k];
     const int sides = glue_sides(s, bi, bk, rc_v3_axpy(dx, tref - pref, dv), tref, t, y);
     const int in_i = gi->r > 0.0 && !(sides & 1), in_k = gk->r > 0.0 && !(sides & 2);
     if (!in_i && !in_k)
@@ -81,8 +82,7 @@ __attribute__((always_inline)) static inline double pair_time_dx(
         /* Bounding spheres that already overlap and do not approach can still hold
          * contracted shapes that meet later: a flat shape's flank sweeps into its
          * neighbour while the centres part. Such a pair goes to the narrow phase with
-         * the lower bound now (missed before: ~1 contact in 3000 in a table-frame gas at
-         * theta = 0.75 passed through; test_engine_audit). */
+         * the lower bound now (test_engine_audit). */
         const double sig = bi->r + bk->r;
         if (!use_narrow || !(d2 <= sig * sig))
             return INFINITY;
@@ -94,7 +94,7 @@ __attribute__((always_inline)) static inline double pair_time_dx(
             return INFINITY;
         parting = 1;
     }
-    if (use_narrow && s->glue) {
+    if (use_narrow && s->model->per_ball) {
         /* per_ball frames: the contact event, checked against both balls' hyperplanes */
         rc_toi_contact out;
         int valid = 0;
@@ -418,10 +418,10 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
             s->cand[nc].k = kk;
             nc++;
             __builtin_prefetch(&s->a[kk]); /* (the frame will want its momentum and mass) */
-            if (s->glue) { /* (and glue_valid its hyperplane, window_contact its window) */
-                __builtin_prefetch(&s->cov[kk]);
-                __builtin_prefetch(&s->glu[kk].r);
-                __builtin_prefetch(&s->glu[kk].t_last);
+            if (s->model->per_ball) { /* (and glue_valid its hyperplane, window_contact its window) */
+                __builtin_prefetch(&s->pb->cov[kk]);
+                __builtin_prefetch(&s->pb->glu[kk].r);
+                __builtin_prefetch(&s->pb->glu[kk].t_last);
             }
         }
     }
@@ -537,11 +537,11 @@ static inline void store_event(rc_sim *s, int32_t i, double best, int32_t bp, rc
         s->ev_n[i] = df && df->on && bp >= 0 ? ev_deferred_mark(df->lb2)
                      : ev_is_deferred(bn)    ? rc_v3(0.0, 0.0, 0.0)
                                              : bn;
-    if (s->cov && bp >= 0 && (!isnan(bn.x) || bn.y == 1.0)) { /* (per_ball frames: the
+    if (s->pb && bp >= 0 && (!isnan(bn.x) || bn.y == 1.0)) { /* (per_ball frames: the
                                                                 event's X, a tube
                                                                 conflict's too) */
-        s->cov[i].ev_tx = s->bx_tx;
-        s->cov[i].ev_dx = s->bx_dx;
+        s->pb->cov[i].ev_tx = s->bx_tx;
+        s->pb->cov[i].ev_dx = s->bx_dx;
     }
 }
 
@@ -742,9 +742,9 @@ void eng_cross(rc_sim *s, int32_t i)
     double best = a->ev_t;
     int32_t bp = a->ev_partner;
     rc_vec3 bn = s->ev_n ? s->ev_n[i] : rc_v3(0, 0, 0);
-    if (s->cov) { /* (the kept event's X, unless a scan finds a better one) */
-        s->bx_tx = s->cov[i].ev_tx;
-        s->bx_dx = s->cov[i].ev_dx;
+    if (s->pb) { /* (the kept event's X, unless a scan finds a better one) */
+        s->bx_tx = s->pb->cov[i].ev_tx;
+        s->bx_dx = s->pb->cov[i].ev_dx;
     }
     eng_defer df = {s->defer && bp >= 0 && ev_is_deferred(bn), bn.x};
     int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
@@ -791,7 +791,7 @@ int eng_pair_contact(rc_sim *s, int32_t a, int32_t b, double t0, double *tx, rc_
         return st;
     if (!glue_valid(s, ba, bb, d, t0, out.t, out.x)) {
         /* (X on the incoming side of a's hyperplane: before a's last kink too) */
-        const int before_a = !eng_glue_side(&s->cov[a], &s->glu[a], ba->v, t0 + out.t,
+        const int before_a = !eng_glue_side(&s->pb->cov[a], &s->pb->glu[a], ba->v, t0 + out.t,
                                             rc_v3_axpy(out.x, -out.t, ba->v));
         return before_a ? ENG_BEFORE_A : RC_MISS;
     }

@@ -7,7 +7,7 @@
 
 #include <stdint.h>
 #include "relcol/sim.h"
-#include "../glue_kv.h"
+#include "relcol/perball.h"
 
 /* Hot data read by every pair test: one 64-byte line per ball. The state is stored at
  * the ball's own time t (its local clock); v = p / M is derived from p and m. */
@@ -18,9 +18,9 @@ typedef struct eng_ball {
     double r;
 } eng_ball;
 
-/* No event. */
+/// No event.
 #define ENG_NONE INT32_MIN
-/* ev_partner for wall w = 2 d + side (side 1 is the far wall x_d = L_d) */
+/// ev_partner for wall w = 2 d + side (side 1 is the far wall x_d = L_d)
 #define ENG_WALL(w) (-1 - (w))
 #define ENG_WALL_INDEX(code) (-1 - (code))
 
@@ -29,174 +29,72 @@ typedef struct eng_ball {
 typedef struct eng_aux {
     rc_vec3 p;
     double m;
-    double ev_t;      /* earliest collision (ball or wall) */
-    double cross_t;   /* next cell crossing */
+    double ev_t;      ///< earliest collision (ball or wall)
+    double cross_t;   ///< next cell crossing
     int32_t ev_partner;
-    uint32_t ev_pcount; /* partner's counter (rc_sim.cnt) when ev was computed */
+    uint32_t ev_pcount; ///< partner's counter (rc_sim.cnt) when ev was computed
     int32_t cell;
-    int32_t cross_code; /* 2 d + (direction > 0), -1 none */
+    int32_t cross_code; ///< 2 d + (direction > 0), -1 none
 } eng_aux;
 
-/* (aligned_alloc wants sizes that are multiples of the alignment) */
+/// (aligned_alloc wants sizes that are multiples of the alignment)
 _Static_assert(sizeof(eng_ball) == 64 && sizeof(eng_aux) == 64, "one cache line per record");
 
-/* Proper time, read and written only when the ball collides (or is read out). */
+/// Proper time, read and written only when the ball collides (or is read out).
 typedef struct eng_clock {
-    double tau;      /* proper time at t */
-    double tau_last; /* proper time of the last collision (-inf: none yet) */
+    double tau;      ///< proper time at t
+    double tau_last; ///< proper time of the last collision (-inf: none yet)
 } eng_clock;
 
-/* A per_ball frame's glued world tubes (papers/shape-change.md), cold, one 64-byte line
- * per ball: the hyperplane H that began the ball's current segment, t - t_k = kappa.(y -
- * x_k), through its last kink (t_k, x_k) -- x_k its centre at t_k on the stored line, so
- * nothing here moves when the ball wraps or is advanced; t_k = -inf, kappa = 0 before its
- * first collision. A contact of the model lies on the future side of both balls' H. */
-typedef struct eng_cov {
-    double t_k;
-    rc_vec3 kappa;
-    /* the contact event X of the ball's scheduled ball event, as its prediction found it
-     * (a collision reads it rather than asking the frame again, whose reference time
-     * depends on now): its table time and X - (the ball's centre then on its stored line) */
-    double ev_tx;
-    rc_vec3 ev_dx;
-} eng_cov;
-_Static_assert(sizeof(eng_cov) == 64, "one cache line per record");
-
-/* per_ball frames: what undoing a ball's last collision needs (papers/shape-change.md,
- * sections 7 and 8): a third ball that meets the ball's incoming piece, before its kink
- * along its tube, undoes the collision -- a single contact of the model, or a group an
- * earlier undo solved -- and the contacts are solved together. Every member of the
- * collision holds a record; valid while no member has collided since (the counters). The
- * collision's contacts form a tree over its members: each member but the first holds its
- * contact with the member it joined (its parent), the first its contact with a wall if
- * there is one. Balls by their caller's index, which renumbering does not change. */
-#define ENG_UNDO_NMAX 8 /* members of a collision that can be undone (bounds the work) */
-#define ENG_ROOT (INT32_MIN + 1) /* partner: the first member, without a wall contact */
-typedef struct eng_undo {
-    rc_particle in;     /* the ball's state before */
-    eng_cov cov;        /* its hyperplane before (and its scheduled event's X, unused) */
-    rc_glue glu;        /* its glued tube before */
-    double tau_last;    /* its clock's last collision before */
-    rc_vec3 n;          /* the contact normal, from the ball to its partner */
-    double dt;          /* the contact event X - the ball's kink E: time ... */
-    rc_vec3 dx;         /* ... and position (E on both the incoming and the outgoing line) */
-    int32_t partner;    /* its parent (caller's index), ENG_WALL(w), ENG_ROOT, or ENG_NONE:
-                           no record */
-    uint32_t nm;        /* the collision's members ... */
-    int32_t mem[ENG_UNDO_NMAX];  /* ... by caller's index, in the order its books took them */
-    uint32_t mcnt[ENG_UNDO_NMAX]; /* their counters after it */
-    uint32_t kind;      /* its event kind (RC_SIM_EV_BALL, _WALL or _MULTI) ... */
-    uint32_t ntc;       /* ... and the TC contacts it counted (rc_sim_diag) */
-    uint32_t npol;      /* its contacts the overlap policy decided (counted once, when
-                           decided: undone and solved again they stay counted) */
-} eng_undo;
-/* per_ball frames: where a ball's kinks lie after the engine's time. The engine stores a
- * ball at its latest kink on its outgoing line, which may lie ahead of now; the table-time
- * picture at now (rc_sim_get_ball) needs the line the ball is still on. Written after each
- * event for its own balls (engine/pending.c, eng_pend_note), read only by the read-out
- * (engine/diag.c), so nothing here changes a run. depth 0: none (the ball's kinks were at
- * or before the event that made them). depth >= 1: the ball moves on the line with
- * momentum l[0].p and rest mass l[0].m until its kink at table time l[0].t, at centre x
- * (in the wrap coordinates img, periodic boxes), where its proper time is tau; its TC
- * memory before it is tau_last (-inf: no collision); then on line k (l[k].p, l[k].m)
- * from kink l[k - 1].t until kink l[k].t, k < depth. Where the latest kink (eng_cov.t_k)
- * lies beyond the last recorded end l[depth - 1].t, the lines in between were not recorded (more than
- * ENG_PEND_LINES kinks ahead of now at once, or a chain the record lost): the read-out
- * says so (rc_sim_kink_ahead = 2). Dense hot gases put several kinks ahead of a ball
- * within a glue window: two lines made the delayed slice at packing 0.2 fail. */
-#define ENG_PEND_LINES 6
-typedef struct eng_pend_line {
-    double t;  /* its kink's table time */
-    double m;  /* the line's rest mass ... */
-    rc_vec3 p; /* ... and momentum */
-} eng_pend_line;
-typedef struct eng_pend {
-    /* (what every event's note reads first, then the lines: a record of one line, the
-     * common case, lies in its first two cache lines, as the two-line record did) */
-    int32_t depth;
-    int32_t img[3];
-    rc_vec3 x;
-    double tau;
-    double tau_last;
-    eng_pend_line l[ENG_PEND_LINES];
-    double pad[3];
-} eng_pend;
-_Static_assert(sizeof(eng_pend) % 64 == 0, "whole cache lines per record");
-
-/* 1 - kappa.v for the hyperplane c that began a ball's segment and its velocity v on it:
- * for a ball fast before and after that kink the same way ~1/gamma^2, which the plain
- * difference loses to the rounding of its terms; then from the kink's tube's shapes
- * (glue_kv.h rc_glue_omkv_out), when g is that tube (r > 0: not an order conflict's) and
- * v its outgoing velocity, bit for bit. */
-static inline double eng_seg_den(const eng_cov *c, const rc_glue *g, rc_vec3 v)
-{
-    const double kv = rc_v3_dot(c->kappa, v);
-    if (!(kv > RC_GLUE_KV_FAST) || !(g->r > 0.0) || g->v_out.x != v.x || g->v_out.y != v.y ||
-        g->v_out.z != v.z)
-        return 1.0 - kv;
-    return rc_glue_omkv_out(&g->in, &g->out);
-}
-
-/* Is the event X (table time tx, offset dxb from the ball's centre then on its stored
- * line, velocity v) on the future side of the hyperplane c that began its segment,
- * t - t_k = kappa.(y - x_k)? With x_k on the stored line, X - x_k = dxb + v (tx - t_k), so
- * the test reads (tx - t_k)(1 - kappa.v) >= kappa.dxb (1 - kappa.v > 0: |kappa| < 1/c).
- * No kink yet: t_k = -inf, always true. g: the ball's tube of that kink (s->glu). */
-static inline int eng_glue_side(const eng_cov *c, const rc_glue *g, rc_vec3 v, double tx,
-                                rc_vec3 dxb)
-{
-    return (tx - c->t_k) * eng_seg_den(c, g, v) >= rc_v3_dot(c->kappa, dxb);
-}
+#include "perball_state.h" /* (the per-ball model's records, which hold these) */
 
 /* The event queue (engine/queue.c): one entry per ball, popped in (time, ball) order.
  * (Functions shared between the engine files carry eng_: exported, not public.) */
 typedef struct eng_qent {
-    double key;   /* the ball's entry's time */
-    int32_t next; /* links of the bucket list it is in, or its heap position (engine/queue.c) */
+    double key;   ///< the ball's entry's time
+    int32_t next; ///< links of the bucket list it is in, or its heap position (engine/queue.c)
     int32_t prev;
 } eng_qent;
 
 /* A ball's key, links and heap place on one 16-byte entry: an update reads and writes one
- * line instead of four arrays' (at N = 1e5 they come from L3). */
+ * line instead of four arrays'. */
 _Static_assert(sizeof(eng_qent) == 16, "four entries a cache line");
 
 typedef struct eng_queue {
     size_t n;
-    eng_qent *e;          /* per ball */
-    uint32_t *heap;       /* the bucket being drained: a binary heap (capacity n) */
+    eng_qent *e;          ///< per ball
+    uint32_t *heap;       ///< the bucket being drained: a binary heap (capacity n)
     size_t hn;
-    int32_t *head;        /* nb calendar lists, then overflow, then never */
-    uint32_t nb;          /* buckets in the span, a power of two */
-    double inv_w;         /* 1 / bucket width */
-    int64_t cur;          /* number of the bucket being drained */
+    int32_t *head;        ///< nb calendar lists, then overflow, then never
+    uint32_t nb;          ///< buckets in the span, a power of two
+    double inv_w;         ///< 1 / bucket width
+    int64_t cur;          ///< number of the bucket being drained
     int64_t redist;       /* end of the span: buckets from here on wait in the overflow
                              list, spread again when cur reaches it */
-    size_t in_cal;        /* entries in the calendar lists */
+    size_t in_cal;        ///< entries in the calendar lists
     double over_min;      /* at most the least key in the overflow list (keys filed there
                              since it was last spread; INFINITY: none) */
-    int32_t ahead;        /* the entry of the next bucket's list to fetch ahead (-1: none) */
+    int32_t ahead;        ///< the entry of the next bucket's list to fetch ahead (-1: none)
 } eng_queue;
 
-/* Allocate for n balls; then eng_queue_build with every ball's key. */
+/// Allocate for n balls; then eng_queue_build with every ball's key.
 int eng_queue_init(eng_queue *q, size_t n);
 void eng_queue_free(eng_queue *q);
-/* Refile every ball under keys[] (all >= now), choosing the bucket width afresh. */
+/// Refile every ball under keys[] (all >= now), choosing the bucket width afresh.
 void eng_queue_build(eng_queue *q, const double *keys, double now);
-/* The same with the keys already in q->e[i].key. */
+/// The same with the keys already in q->e[i].key.
 void eng_queue_rebuild(eng_queue *q, double now);
 /* engine/reorder.c: the balls renumbered in cell order, every per-ball array with them
  * (the event loop calls it every ENG_REORDER_EVERY x N collisions and cell crossings) */
 #define ENG_REORDER_EVERY 4
 void eng_reorder(rc_sim *s);
-/* Change ball's key (>= the time last popped). */
+/// Change ball's key (>= the time last popped).
 void eng_queue_update(eng_queue *q, uint32_t ball, double t);
-/* The earliest entry (time, ball); 0 if the queue is empty. */
+/// The earliest entry (time, ball); 0 if the queue is empty.
 int eng_queue_top(eng_queue *q, double *t, uint32_t *ball);
 size_t eng_queue_bytes(const eng_queue *q);
 /* The ball likely to come after the top (the earlier child of the heap's root), -1 if
- * the heap holds no other: a hint for prefetching, not a promise of order. (Looking into
- * the next calendar lists as well names the next ball more often, but gained nothing
- * measurable: papers/relcol.md, section 7.) */
+ * the heap holds no other: a hint for prefetching, not a promise of order. */
 static inline int32_t eng_queue_next(const eng_queue *q)
 {
     if (q->hn < 2)
@@ -220,13 +118,13 @@ static inline int32_t eng_queue_next(const eng_queue *q)
 
 typedef struct eng_cells {
     int n[3];
-    double w[3];      /* cell edge per dimension */
+    double w[3];      ///< cell edge per dimension
     double inv_w[3];
-    int32_t *slot;    /* ENG_CELL_CAP per cell */
-    int32_t *next;    /* per ball: next of its overflow chain (-1: the end) */
+    int32_t *slot;    ///< ENG_CELL_CAP per cell
+    int32_t *next;    ///< per ball: next of its overflow chain (-1: the end)
     size_t ncells;
-    int32_t block_rows[9]; /* a full 3^d block's rows, as slot offsets from its first */
-    int wrap[3];      /* periodic axis: the cells wrap around (n >= 4) */
+    int32_t block_rows[9]; ///< a full 3^d block's rows, as slot offsets from its first
+    int wrap[3];      ///< periodic axis: the cells wrap around (n >= 4)
     /* a ball in cell c[d] moving up crosses a face if c[d] < up_lim[d] (n - 1 walled, n
      * periodic), moving down if c[d] > dn_lim[d] (0 walled, -1 periodic) */
     int up_lim[3], dn_lim[3];
@@ -237,12 +135,12 @@ typedef struct eng_cells {
 int eng_cells_init(eng_cells *g, int dim, rc_vec3 box, double min_edge, size_t nballs,
                       const int periodic[3]);
 void eng_cells_free(eng_cells *g);
-/* Every cell empty again. */
+/// Every cell empty again.
 void eng_cells_clear(eng_cells *g);
 /* rank[cell] (ncells entries): the cell's place in Z order, the order balls are
  * numbered in. */
 void eng_cells_zorder(const eng_cells *g, int32_t *rank);
-/* pos[i]: ball i's number in that order, from its cell cell[i] (stable). */
+/// pos[i]: ball i's number in that order, from its cell cell[i] (stable).
 int eng_cells_number(const eng_cells *g, const int32_t *cell, size_t n, uint32_t *pos);
 int32_t eng_cells_index_of(const eng_cells *g, int dim, rc_vec3 x);
 void eng_cells_insert(eng_cells *g, eng_aux *a, int32_t i, int32_t cell);
@@ -252,8 +150,8 @@ void eng_cells_remove(eng_cells *g, const eng_aux *a, int32_t i);
  *   for (int32_t k = cell_first(g, cell, &it); k >= 0; k = cell_next(g, &it)) */
 typedef struct eng_cell_it {
     const int32_t *sl;
-    int j;     /* next slot */
-    int32_t k; /* next ball of the chain being walked (-1: none) */
+    int j;     ///< next slot
+    int32_t k; ///< next ball of the chain being walked (-1: none)
 } eng_cell_it;
 
 static inline int32_t cell_next(const eng_cells *g, eng_cell_it *it)
@@ -283,7 +181,7 @@ static inline int32_t cell_first(const eng_cells *g, int32_t cell, eng_cell_it *
     return cell_next(g, it);
 }
 
-/* A broad-phase candidate of a contracted frame: bounding-sphere time, ball. */
+/// A broad-phase candidate of a contracted frame: bounding-sphere time, ball.
 typedef struct eng_cand {
     double t;
     int32_t k;
@@ -294,194 +192,92 @@ typedef struct eng_cand {
  * paths: same bits). */
 enum { ENG_SIMD_NONE = 0, ENG_SIMD_AVX2 = 2, ENG_SIMD_AVX512 = 3 };
 
-/* A run's bookkeeping: conservation sums (Kahan-compensated) and event counts. One struct,
- * so that everything that must survive a re-planning or a checkpoint is copied whole and
- * a counter added here cannot be forgotten there. All fields are 8-byte doubles and
- * counters: no padding, so its bytes are its value. */
+/// A run's bookkeeping: what survives a re-planning and a checkpoint, copied whole; 8-byte fields only, so its bytes are its value.
 typedef struct eng_books {
-    double heat, heat_c;
-    double wall[3], wall_c[3];
-    /* per wall (index 2 d + side, side 1 the far wall x_d = L_d): the momentum along e_d
-     * it has taken, attributed contact by contact (rc_sim_diag.wall_impulse_by_wall) */
-    double wallw[6], wallw_c[6];
-    uint64_t wall_shared;
-    uint64_t pinned; /* wall contacts of a ball as wide as the box, made plastic */
-    /* the momentum and energy that collisions carry across space (engine/moments.c):
-     * sum over events of r_a dp_b (row a, column b) and r_a dE over the members, r the
-     * member's centre relative to the event's first ball (nearest image); and the same
-     * with r replaced by nearest image minus unwrapped separation (periodic axes only:
-     * multiples of L), which turns the balls' unwrapped moments into Helfand moments.
-     * Plain sums: their rounding is far below any statistical error they feed. */
-    double vir[9], vir_e[3], wrap[9], wrap_e[3];
-    uint64_t overlaps;
-    uint64_t overlap_kind[3]; /* overlaps by the kind of contact: ball, wall, group */
-    uint64_t collisions;
-    uint64_t events[RC_SIM_EV_NKINDS];
-    uint64_t max_group;
-    uint64_t group_fallbacks;
-    uint64_t group_sequential;
-    /* per_ball frames: predicted contacts on the incoming side of a ball's last hyperplane
-     * (the incoming piece of a glued tube: resolved by the overlap policy, counted in
-     * overlaps too), and kinks that would have come before the ball's previous one along
-     * its worldline (put at the previous one) */
-    uint64_t tube_conflicts, order_conflicts;
-    /* tube conflicts resolved by undoing a ball's last collision and solving the two
-     * contacts together (eng_undo), not by the overlap policy (not in tube_conflicts) */
-    uint64_t rollbacks;
-    /* ... of which undid a chain: a member's later collision first (engine/undo.c;
-     * read by the tests, not in rc_sim_diag) */
-    uint64_t chain_rollbacks;
-    /* ... and that undid an overlap-policy decision, or were a wall's tube conflict
-     * (engine/undo.c; read by the tests) */
-    uint64_t policy_rollbacks, wall_rollbacks;
-    /* the chains (chain_rollbacks) that took back more than a chain of two: several
-     * members' later collisions, a later member's later one, or the other ball's own
-     * (engine/undo.c; read by the tests) */
-    uint64_t wide_chains;
-    /* the undos that took back the ball's own previous collision too: the contact from
-     * the line before its last kink lay before its previous kink as well (engine/undo.c;
-     * read by the tests) */
-    uint64_t deep_rollbacks;
-    /* the groups with a cycle of contacts undone (their root's record holds the contact
-     * beyond a tree: engine/undo.c; read by the tests) */
-    uint64_t cycle_rollbacks;
-    /* the chains whose ball and partner were in contact in them already, solved again
-     * with no new contact (engine/undo.c; read by the tests) */
-    uint64_t rejoins;
-    /* the undos of both balls' last collisions that took back a chain too: a member of
-     * either had collided since (engine/undo.c; read by the tests) */
-    uint64_t both_chains;
-    /* progress: the time of the last event and how many events in a row came at it; when
-     * that count passes eng_stall_limit the run stops (RC_ESTALL), naming the event's
-     * balls (caller's index; a wall w as -1 - w; -2^62 none) */
-    double still_t;
-    uint64_t still_count;
-    int64_t stall_ball, stall_partner;
+    double heat, heat_c;         ///< kinetic energy turned into heat (Kahan sum and compensation)
+    double wall[3], wall_c[3];   ///< momentum the walls took, per axis
+    double wallw[6], wallw_c[6]; ///< ... per wall w = 2 d + side, along e_d, contact by contact
+    uint64_t wall_shared;        ///< groups touching both walls of an axis (rc_sim_diag.wall_shared)
+    uint64_t pinned;             ///< wall contacts of a ball as wide as the box, made plastic
+    double vir[9], vir_e[3];     ///< sum of r_a dp_b and r_a dE over events' members (engine/moments.c)
+    double wrap[9], wrap_e[3];   ///< the same with r replaced by nearest image minus unwrapped separation
+    uint64_t overlaps;           ///< contacts the overlap policy decided (eng_note_overlap)
+    uint64_t overlap_kind[3];    ///< ... by kind: the event's own ball contact, a wall's, a group's other
+    uint64_t collisions;         ///< contacts resolved
+    uint64_t events[RC_SIM_EV_NKINDS]; ///< events by kind
+    uint64_t max_group;          ///< most contacts resolved together
+    uint64_t group_fallbacks;    ///< groups whose joint solve failed
+    uint64_t group_sequential;   ///< groups resolved one contact at a time (no group solver)
+    uint64_t tube_conflicts;     ///< per-ball frames: contacts on a tube's incoming piece left to the policy
+    uint64_t order_conflicts;    ///< per-ball frames: kinks put at the previous one by the order rule
+    uint64_t rollbacks;          ///< per-ball frames: collisions undone and solved again
+    double still_t;              ///< the time of the last event ...
+    uint64_t still_count;        ///< ... and how many came at it in a row (RC_ESTALL past the limit)
+    int64_t stall_ball, stall_partner; ///< the stalled event's balls (caller's index; wall w as -1 - w; -2^62 none)
 } eng_books;
-_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 24 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 2 + 2 + 11),
+_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 24 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 2 + 1 + 4),
                "no padding in the bookkeeping");
 
-/* per_ball frames: one answer of rc_glue_toi2 as windows_contact asked it: the two tubes
- * (in its orientation, the second moved into the first's coordinates) and the time, and
- * what came back. A pair with both balls in their windows is asked the same question by
- * each of its balls, one after the other (in a dense gas a sixth to a third of the
- * questions repeat one of the last few); an answer is a function of these bits alone, so
- * the kept one is the same bits. */
-#define ENG_T2_MEMO 16
-typedef struct eng_t2_memo {
-    rc_glue g0, g1;
-    double t1;
-    int st, p0, p1;
-    double t;
-    rc_vec3 y, n;
-} eng_t2_memo;
-
+/// The engine (relcol/sim.h's opaque rc_sim): plain arrays per ball, so a state can be written out and continued bit-identically.
 struct rc_sim {
-    rc_sim_def def;
-    int simd;
-    double inv_c2;
-    double inv_c; /* sqrt(inv_c2): contracted shapes' beta = p inv_c / M */
-    double L[3];
-    /* periodic boundaries: periodic != 0 if any axis is; inv_L[d] = 1 / L[d] on a periodic
-     * axis, 0 on a walled one (eng_image: the same expression is then exactly dx);
-     * walled: bit d set for a walled axis d < dim (wall events only there) */
-    int periodic;
-    double inv_L[3];
-    unsigned walled;
-    double now;
-    size_t n;
-    eng_ball *b;
-    eng_aux *a;
-    eng_clock *clk;
-    uint32_t *id;   /* caller's index of internal ball k */
-    uint32_t *slot; /* internal index of caller's ball i */
-    /* collisions per ball so far: an event naming a ball whose counter moved is stale.
-     * Its own compact array: read for every popped event, it stays in cache. */
-    uint32_t *cnt;
-    /* periodic boxes only (else NULL): per ball, three wrap counters (rc_sim_ball.image);
-     * cold, read and written only when the ball wraps or is read out */
-    int32_t *img;
-    /* contracted frames only (else NULL): per ball, the frame's contact normal of its
-     * scheduled ball event, from the same call that predicted the event's time (NAN: the
-     * frame found the shapes overlapping), so that resolving the event need not ask the
-     * frame again */
-    rc_vec3 *ev_n;
-    /* per_ball frames only (else NULL): per ball, its glued tube's last hyperplane */
-    eng_cov *cov;
-    /* per_ball frames only (else NULL): per ball, the glued tube of its last kink in
-     * coordinates with the contact event at the origin (rc_glue_make), for a neighbour's
-     * contact while the ball is in its window; r = 0: none (no kink yet, or one put at
-     * the previous kink by the order rule) */
-    rc_glue *glu;
-    /* per_ball frames only (else NULL): per ball, how to undo its last collision ... */
-    eng_undo *und;
-    /* ... and the one before (the record und held before the last was written), so that a
-     * collision whose member has collided once since can be undone after that later one
-     * (a chain, engine/undo.c) */
-    eng_undo *undp;
-    /* scratch of one conflict's undo attempts (engine/undo.c): the ball whose contact from
-     * its line before its last kink was found before its previous kink too, or -1 */
-    int32_t undo_before;
-    /* per_ball frames only (else NULL): per ball, the lines before its kinks ahead of now */
-    eng_pend *pend;
-    /* delayed table-time slices asked for (engine/slice.c; none: slc_n = 0, and no hook
-     * does more than test slc_n) */
-    struct eng_slice *slc;
-    size_t slc_n, slc_cap;
-    uint32_t slc_next_id;
-    /* per_ball frames: caller's indices of the balls whose lines changed in the event
-     * being resolved (slc_mark[i] != 0: listed), brought up to date after it */
-    uint32_t *slc_dirty;
-    unsigned char *slc_mark;
-    size_t slc_nd;
-    /* other frames: the least table time of a slice not yet taken (INFINITY: none) */
-    double slc_due;
-    /* per_ball frames: the largest Lorentz factor of any segment since the oldest slice
-     * was asked for (the reach of later events: slice.c) */
-    double slc_gmax;
-    /* per_ball frames: scratch of the prediction -- the contact event of the pair last
-     * put to the frame (pair_time_dx) and of the best event so far (scan_block_narrow),
-     * as eng_cov.ev_tx / ev_dx */
-    double sc_tx, bx_tx;
-    rc_vec3 sc_dx, bx_dx;
-    /* the per-ball kinks are in force: cov != NULL and c finite (with 1/c^2 = 0 every kink
-     * is its contact event, kappa = 0, and the one-instant path is that model exactly) */
-    int glue;
-    eng_queue q;
-    eng_cells g;
-    rc_collision_params prm;
-    /* contact geometry: narrow != 0 calls def.frame after the sphere test */
-    int narrow;
-    /* the frame's ball events are stored deferred (eng_defer): frame->deferrable */
-    int defer;
-    /* the frame's contact is the table-frame shapes' (frame->shapes declared): the engine
-     * calls shapes directly and uses the table-frame shape bounds */
-    int table;
-    rc_toi_shapes_fn shapes;
-    int wall_contracted;
-    rc_toi_params toi;
-    rc_toi_workspace *ws;
-    eng_cand *cand;
-    size_t cand_cap;
-    /* what has happened so far, carried whole through a re-planning (rc_sim_sync) and a
-     * checkpoint: the diagnostics continue */
-    eng_books bk;
-    uint64_t since_reorder; /* collisions and crossings since the balls were last renumbered */
-    /* scratch for contact groups */
-    int32_t *grp_ball;
-    rc_particle *grp_part;
-    rc_contact *grp_con;
-    double *grp_j; /* the group solver's impulses, grp_con_cap entries */
-    size_t grp_ball_cap, grp_con_cap;
-    /* per_ball frames: the last answers of the two glued tubes' contact (engine/glue_pair.h
-     * windows_contact), by their whole input */
-    eng_t2_memo t2m[ENG_T2_MEMO];
-    uint32_t t2m_n, t2m_next;
+    rc_sim_def def;      ///< the definition it was made from
+    int simd;            ///< lanes in use (ENG_SIMD_*)
+    double inv_c2;       ///< 1 / c^2 (0 classically)
+    double inv_c;        ///< sqrt(inv_c2): contracted shapes' beta = p inv_c / M
+    double L[3];         ///< box edges
+    int periodic;        ///< some axis is periodic
+    double inv_L[3];     ///< 1 / L on a periodic axis, 0 on a walled one (eng_image needs no branch)
+    unsigned walled;     ///< bit d: axis d < dim has walls (wall events only there)
+    double now;          ///< the engine's time
+    size_t n;            ///< balls
+    eng_ball *b;         ///< per ball: hot line (position, velocity, own clock, radius)
+    eng_aux *a;          ///< per ball: momentum, mass, scheduled event, cell
+    eng_clock *clk;      ///< per ball: proper time
+    uint32_t *id;        ///< caller's index of internal ball k
+    uint32_t *slot;      ///< internal index of caller's ball i
+    uint32_t *cnt;       ///< collisions per ball: an event naming a ball whose counter moved is stale (own array: read for every event)
+    int32_t *img;        ///< periodic boxes (else NULL): three wrap counters per ball
+    rc_vec3 *ev_n;       ///< contracted frames (else NULL): the frame's normal of each ball's scheduled event (NAN: overlap; eng_defer's mark: deferred)
+    eng_perball *pb;     ///< the per-ball model's state (engine/perball_state.h); NULL in other frames
+    struct eng_slice *slc; ///< delayed table-time slices asked for (engine/slice.c) ...
+    size_t slc_n, slc_cap; ///< ... how many (0: no hook does more than test slc_n), room
+    uint32_t slc_next_id;  ///< the next slice's id
+    uint32_t *slc_dirty;   ///< per-ball frames: caller's indices of the balls whose lines changed in the event ...
+    unsigned char *slc_mark; ///< ... listed (nonzero), brought up to date after it
+    size_t slc_nd;         ///< ... how many
+    double slc_due;        ///< other frames: the least table time of a slice not yet taken (INFINITY: none)
+    double slc_gmax;       ///< per-ball frames: the largest Lorentz factor of a segment since the oldest slice was asked for
+    double sc_tx, bx_tx;   ///< prediction scratch: the contact event's time of the pair last put to the frame, and of the best event so far ...
+    rc_vec3 sc_dx, bx_dx;  ///< ... and its offset from the ball's centre then
+    const struct eng_model_ops *model; ///< where balls change velocity: its properties and ops (engine/model.h)
+    eng_queue q;           ///< the event queue
+    eng_cells g;           ///< the cells
+    rc_collision_params prm; ///< the law's parameters
+    int narrow;            ///< the frame is called after the sphere test (contracted)
+    int defer;             ///< ball events stored deferred (eng_defer)
+    int table;             ///< the frame declares the table-frame shapes' direct solver (shapes): called directly, shape bounds used
+    rc_toi_shapes_fn shapes; ///< that solver
+    int wall_contracted;   ///< walls see the contracted support
+    rc_toi_params toi;     ///< the frame's tolerances
+    rc_toi_workspace *ws;  ///< the frame's workspace
+    eng_cand *cand;        ///< broad-phase candidates (scratch) ...
+    size_t cand_cap;       ///< ... room
+    eng_books bk;          ///< what has happened so far
+    uint64_t since_reorder; ///< collisions and crossings since the balls were last renumbered
+    int32_t *grp_ball;     ///< group scratch: members (internal index) ...
+    rc_particle *grp_part; ///< ... their states ...
+    rc_contact *grp_con;   ///< ... contacts ...
+    double *grp_j;         ///< ... the solver's impulses (grp_con_cap entries)
+    size_t grp_ball_cap, grp_con_cap; ///< room
 };
 
 /* A per-ball array of `bytes` (engine/mem.c): cache-line aligned, on transparent huge
  * pages where it spans some; NULL if out of memory. Released with free(). */
 void *eng_alloc(size_t bytes);
+/* The per-ball model's state for n balls (engine/perball/state.c): no kink, nothing to
+ * undo; NULL if out of memory. Freed by eng_perball_free, which NULLs the pointer. */
+eng_perball *eng_perball_alloc(size_t n);
+void eng_perball_free(eng_perball **pb);
 
 /* Allocate the state of n balls (engine/setup.c), replacing any held: per-ball arrays,
  * cells sized for the largest rest radius rmax, queue; bookkeeping cleared. */
@@ -489,9 +285,9 @@ int eng_alloc_state(rc_sim *s, size_t n, double rmax);
 /* Ball i (storage slot) at the engine's time (engine/diag.c): truth != 0 the table-time
  * picture (per_ball frames: on the line it is still on where its kink lies ahead, as
  * eng_pend records it), 0 its stored line taken to now (the state hash's view). */
-/* Returns rc_sim_kink_ahead's value (0 without truth). */
+/// Returns rc_sim_kink_ahead's value (0 without truth).
 int eng_ball_now(const rc_sim *s, size_t i, rc_sim_ball *o, int truth);
-/* Release the balls' state (the engine then holds none). */
+/// Release the balls' state (the engine then holds none).
 void eng_release_state(rc_sim *s);
 
 /* Ball i (storage slot) at table time t >= its stored time's last event (engine/diag.c),
@@ -502,18 +298,18 @@ int eng_ball_at(const rc_sim *s, size_t i, double t, rc_sim_ball *o, int truth);
 /* engine/slice.c: the delayed slices' hooks, called only where s->slc_n != 0. A kink was
  * put on ball k (storage slot) in the event being resolved (its line is read after it). */
 void eng_slice_mark(rc_sim *s, int32_t k);
-/* Ball k's last kink, at its stored time, was undone: it is on its incoming line again. */
+/// Ball k's last kink, at its stored time, was undone: it is on its incoming line again.
 void eng_slice_undo(rc_sim *s, int32_t k);
-/* After an event: the slices of the balls marked brought up to date. */
+/// After an event: the slices of the balls marked brought up to date.
 void eng_slice_flush(rc_sim *s);
-/* Other frames: the engine's next event comes at t_next > slc_due: take the slices due. */
+/// Other frames: the engine's next event comes at t_next > slc_due: take the slices due.
 void eng_slice_take(rc_sim *s, double t_next);
-/* Forget every slice (new balls, a new c, a checkpoint read, the engine freed). */
+/// Forget every slice (new balls, a new c, a checkpoint read, the engine freed).
 void eng_slice_clear(rc_sim *s);
-/* Bytes the slices held take. */
+/// Bytes the slices held take.
 size_t eng_slice_bytes(const rc_sim *s);
 
-/* Velocity p / M and inverse Lorentz factor of a state. */
+/// Velocity p / M and inverse Lorentz factor of a state.
 static inline double eng_mass_rel(double m, rc_vec3 p, double inv_c2)
 {
     return inv_c2 == 0.0 ? m : sqrt(m * m + rc_v3_norm2(p) * inv_c2);
@@ -549,7 +345,7 @@ static inline rc_vec3 eng_image(const rc_sim *s, rc_vec3 dx)
     return dx;
 }
 
-/* Cell c[d] + o on axis d: wrapped on a periodic axis, -1 off the grid on a walled one. */
+/// Cell c[d] + o on axis d: wrapped on a periodic axis, -1 off the grid on a walled one.
 static inline int cell_step(const eng_cells *g, int d, int c, int o)
 {
     int k = c + o;
@@ -571,7 +367,7 @@ static inline int32_t cell_at(const eng_cells *g, const int c[3], int ox, int oy
     return (int32_t)(x + g->n[0] * (y + g->n[1] * z));
 }
 
-/* Cell coordinates of a cell index. */
+/// Cell coordinates of a cell index.
 static inline void cell_coords(const eng_cells *g, int32_t cell, int c[3])
 {
     c[0] = cell % g->n[0];
@@ -579,7 +375,7 @@ static inline void cell_coords(const eng_cells *g, int32_t cell, int c[3])
     c[2] = cell / (g->n[0] * g->n[1]);
 }
 
-/* Heap key of a ball: its earliest event, collision or cell crossing. */
+/// Heap key of a ball: its earliest event, collision or cell crossing.
 static inline double key_of(const eng_aux *a)
 {
     return a->ev_t < a->cross_t ? a->ev_t : a->cross_t;
@@ -590,19 +386,19 @@ static inline double key_of(const eng_aux *a)
  * keyed by that bound, and a bound lb2 of every other event of the ball (ball or wall).
  * The frame is asked only when the bound comes up in the queue (eng_settle), and not
  * at all for the predictions that a collision elsewhere makes stale first, or that a
- * later prediction of the ball replaces (papers/relcol.md, section 7, has the count).
+ * later prediction of the ball replaces.
  * Such an event's ev_n entry is (lb2, 0, +inf): a contact normal is never infinite. */
 typedef struct eng_defer {
-    int on;     /* the best event so far is deferred: its time is a bound */
-    double lb2; /* on: a lower bound of every other event */
+    int on;     ///< the best event so far is deferred: its time is a bound
+    double lb2; ///< on: a lower bound of every other event
 } eng_defer;
 
 static inline rc_vec3 ev_deferred_mark(double lb2) { return rc_v3(lb2, 0.0, INFINITY); }
 static inline int ev_is_deferred(rc_vec3 n) { return n.z == INFINITY; }
 
-/* Predict ball i's earliest events from scratch (and update its heap entry if asked). */
+/// Predict ball i's earliest events from scratch (and update its heap entry if asked).
 void eng_predict(rc_sim *s, int32_t i, int update_heap);
-/* Ball i's deferred event has come up: ask the frame, store the event (queue updated). */
+/// Ball i's deferred event has come up: ask the frame, store the event (queue updated).
 void eng_settle(rc_sim *s, int32_t i);
 
 /* What a contracted-frame prediction for a ball that has just collided (at T, its clock)
@@ -627,7 +423,7 @@ typedef struct eng_check {
  * stored), else the events are stored (the queue is not updated) and 0. */
 int eng_predict_checked(rc_sim *s, int32_t i, const eng_check *chk, double T);
 int eng_predict_checked_narrow(rc_sim *s, int32_t i, const eng_check *chk);
-/* Ball i crosses into its next cell (events updated, queue too). */
+/// Ball i crosses into its next cell (events updated, queue too).
 void eng_cross(rc_sim *s, int32_t i);
 /* per_ball frames: the frame's contact of a and b from their stored lines at t0, if one
  * of the model (engine/predict.c); ENG_BEFORE_A (not an RC_ code) when the frame's
@@ -635,7 +431,7 @@ void eng_cross(rc_sim *s, int32_t i);
 #define ENG_BEFORE_A 100 /* (above every informational rc_status) */
 int eng_pair_contact(rc_sim *s, int32_t a, int32_t b, double t0, double *tx, rc_vec3 *dx,
                      rc_vec3 *n);
-/* The contracted contact test of a simultaneity check (engine/predict.c). */
+/// The contracted contact test of a simultaneity check (engine/predict.c).
 int eng_narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
                            double d2, const eng_check *chk, rc_vec3 *normal);
 /* The event's transfer moments (eng_books.vir ...): members mem[0 .. nm) (internal
@@ -643,7 +439,7 @@ int eng_narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_ve
  * states, s->a) to after[]. */
 void eng_moments_add(rc_sim *s, size_t nm, const int32_t *mem, const rc_particle *before,
                      const rc_particle *after);
-/* Support distance of ball i's shape along the wall normal e_d. */
+/// Support distance of ball i's shape along the wall normal e_d.
 double eng_wall_support(const rc_sim *s, int32_t i, int d);
 
 #endif

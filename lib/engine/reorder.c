@@ -35,12 +35,12 @@ static void take(const rc_sim *s, size_t i, carry_set *c)
     memset(c->img, 0, sizeof c->img);
     if (s->img) /* (periodic boxes: the wrap counters travel with the ball) */
         memcpy(c->img, s->img + 3 * i, sizeof c->img);
-    if (s->cov) {
-        c->g = s->cov[i];
-        c->u = s->glu[i];
-        c->z = s->und[i]; /* (partners by caller's index: unchanged) */
-        c->zp = s->undp[i];
-        c->p = s->pend[i];
+    if (s->pb) {
+        c->g = s->pb->cov[i];
+        c->u = s->pb->glu[i];
+        c->z = s->pb->und[i]; /* (partners by caller's index: unchanged) */
+        c->zp = s->pb->undp[i];
+        c->p = s->pb->pend[i];
     }
 }
 
@@ -56,12 +56,12 @@ static void put(rc_sim *s, size_t to, const carry_set *c)
         s->ev_n[to] = c->n;
     if (s->img)
         memcpy(s->img + 3 * to, c->img, sizeof c->img);
-    if (s->cov) {
-        s->cov[to] = c->g;
-        s->glu[to] = c->u;
-        s->und[to] = c->z;
-        s->undp[to] = c->zp;
-        s->pend[to] = c->p;
+    if (s->pb) {
+        s->pb->cov[to] = c->g;
+        s->pb->glu[to] = c->u;
+        s->pb->und[to] = c->z;
+        s->pb->undp[to] = c->zp;
+        s->pb->pend[to] = c->p;
     }
 }
 
@@ -77,12 +77,12 @@ static void move(rc_sim *s, size_t to, size_t from)
         s->ev_n[to] = s->ev_n[from];
     if (s->img)
         memcpy(s->img + 3 * to, s->img + 3 * from, 3 * sizeof *s->img);
-    if (s->cov) {
-        s->cov[to] = s->cov[from];
-        s->glu[to] = s->glu[from];
-        s->und[to] = s->und[from];
-        s->undp[to] = s->undp[from];
-        s->pend[to] = s->pend[from];
+    if (s->pb) {
+        s->pb->cov[to] = s->pb->cov[from];
+        s->pb->glu[to] = s->pb->glu[from];
+        s->pb->und[to] = s->pb->und[from];
+        s->pb->undp[to] = s->pb->undp[from];
+        s->pb->pend[to] = s->pb->pend[from];
     }
 }
 

@@ -6,6 +6,7 @@
 
 #include "lanes.h"
 #include "private.h"
+#include "model.h"
 #include "relcol/status.h"
 
 /* Cell edge margin over the largest bounding diameter (relative): keeps balls that can
@@ -158,7 +159,7 @@ int rc_sim_create(const rc_sim_def *def, rc_sim **out)
         return RC_EINVAL;
     }
     s->wall_contracted = def->frame && def->frame->wall_contracted && s->inv_c2 > 0.0;
-    s->glue = s->narrow && def->frame->per_ball && s->inv_c2 > 0.0;
+    s->model = eng_model_for(def->frame, s->narrow, s->inv_c2);
     if (s->narrow) {
         if (!def->frame->toi || rc_toi_workspace_create(&s->ws) != RC_OK) {
             free(s);
@@ -181,16 +182,7 @@ static void release_balls(rc_sim *s)
     s->cnt = NULL;
     free(s->ev_n);
     s->ev_n = NULL;
-    free(s->cov);
-    s->cov = NULL;
-    free(s->glu);
-    s->glu = NULL;
-    free(s->und);
-    s->und = NULL;
-    free(s->undp);
-    s->undp = NULL;
-    free(s->pend);
-    s->pend = NULL;
+    eng_perball_free(&s->pb);
     free(s->img);
     s->img = NULL;
     s->b = NULL;
@@ -281,7 +273,7 @@ int rc_sim_sync(rc_sim *s)
         return RC_EINVAL;
     /* per_ball frames at finite c: the balls do not carry the hyperplanes, tubes and kinks
      * ahead, and a prediction asked later rounds differently (relcol/sim.h): keep all */
-    if (s->glue)
+    if (s->model->per_ball)
         return RC_OK;
     size_t n = s->n;
     rc_sim_ball *b = malloc((n ? n : 1) * sizeof *b);
@@ -319,7 +311,7 @@ int rc_sim_set_c(rc_sim *s, double c)
     /* per_ball frames: a kink still ahead of now is made now, at the ball's true centre
      * and proper time, with its latest segment's momentum and rest mass (the glued tube
      * it belongs to is a function of the old c); the hyperplanes go with the reload */
-    for (size_t i = 0; s->glue && i < n; i++)
+    for (size_t i = 0; s->model->per_ball && i < n; i++)
         if (rc_sim_kink_ahead(s, i) > 0) {
             const eng_aux *a = &s->a[s->slot[i]];
             b[i].p = a->p;
@@ -339,7 +331,7 @@ int rc_sim_set_c(rc_sim *s, double c)
     s->prm.c = c;
     s->toi.c = c;
     s->wall_contracted = s->def.frame && s->def.frame->wall_contracted && k > 0.0;
-    s->glue = s->narrow && s->def.frame->per_ball && k > 0.0;
+    s->model = eng_model_for(s->def.frame, s->narrow, k);
     /* planned afresh, unchecked: the shapes the new c gives may overlap a neighbour or a
      * wall, which the overlap policy resolves (and counts) as for any shape change */
     st = load_balls(s, n, b, NULL, 0);
@@ -350,7 +342,7 @@ int rc_sim_set_c(rc_sim *s, double c)
         s->prm.c = def0.c;
         s->toi.c = def0.c;
         s->wall_contracted = wc0;
-        s->glue = s->narrow && s->def.frame->per_ball && k0 > 0.0;
+        s->model = eng_model_for(s->def.frame, s->narrow, k0);
         if (load_balls(s, n, b, NULL, 0) == RC_OK)
             s->bk = kept;
         free(b);
@@ -409,28 +401,9 @@ int eng_alloc_state(rc_sim *s, size_t n, double rmax)
         st = RC_ENOMEM;
         goto fail;
     }
-    if (s->narrow && s->def.frame->per_ball) {
-        /* no kink yet: every contact is on the future side of a ball's (absent) plane.
-         * (The tubes, undo and read-out records as the engine's other per-ball arrays:
-         * aligned, and on huge pages when large -- a collision touches two balls' records
-         * anywhere in them.) */
-        if (!(s->cov = eng_alloc(n * sizeof *s->cov)) ||
-            !(s->glu = eng_alloc(n * sizeof *s->glu)) ||
-            !(s->und = eng_alloc(n * sizeof *s->und)) ||
-            !(s->undp = eng_alloc(n * sizeof *s->undp)) ||
-            !(s->pend = eng_alloc(n * sizeof *s->pend))) {
-            st = RC_ENOMEM;
-            goto fail;
-        }
-        memset(s->glu, 0, n * sizeof *s->glu);
-        memset(s->und, 0, n * sizeof *s->und);
-        memset(s->undp, 0, n * sizeof *s->undp);
-        memset(s->pend, 0, n * sizeof *s->pend);
-        for (size_t k = 0; k < n; k++) {
-            s->cov[k] = (eng_cov){-INFINITY, {0.0, 0.0, 0.0}, 0.0, {0.0, 0.0, 0.0}};
-            s->und[k].partner = ENG_NONE; /* (nothing to undo) */
-            s->undp[k].partner = ENG_NONE;
-        }
+    if (s->narrow && s->def.frame->per_ball && !(s->pb = eng_perball_alloc(n))) {
+        st = RC_ENOMEM;
+        goto fail;
     }
     if (s->periodic && !(s->img = eng_alloc(3 * n * sizeof *s->img))) {
         st = RC_ENOMEM;

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "private.h"
+#include "model.h"
 #include "relcol/status.h"
 
 /* A ball's state at ts, and the segment it was taken on: the kink time that began it and
@@ -85,7 +86,7 @@ static int take(const rc_sim *s, const struct eng_slice *sl, int32_t k, int trut
     slice_ball *e = &sl->e[s->id[k]];
     const int ahead = eng_ball_at(s, (size_t)k, sl->ts, &e->b, truth);
     wrap_all(s, &e->b);
-    e->tk = ahead ? NAN : s->cov ? s->cov[k].t_k : -INFINITY;
+    e->tk = ahead ? NAN : s->pb ? s->pb->cov[k].t_k : -INFINITY;
     return ahead;
 }
 
@@ -104,13 +105,13 @@ static double gamma_now(const rc_sim *s)
     double g = 1.0;
     for (size_t k = 0; k < s->n; k++) {
         g = fmax(g, seg_gamma(s, (int32_t)k));
-        const eng_pend *r = &s->pend[k];
+        const eng_pend *r = &s->pb->pend[k];
         for (int q = 0; q < r->depth; q++)
             g = fmax(g, gamma_of(s, r->l[q].m, r->l[q].p));
-        if (s->und[k].partner != ENG_NONE)
-            g = fmax(g, gamma_of(s, s->und[k].in.m, s->und[k].in.p));
-        if (s->undp[k].partner != ENG_NONE) /* (a chain undo's, engine/undo.c) */
-            g = fmax(g, gamma_of(s, s->undp[k].in.m, s->undp[k].in.p));
+        if (s->pb->und[k].partner != ENG_NONE)
+            g = fmax(g, gamma_of(s, s->pb->und[k].in.m, s->pb->und[k].in.p));
+        if (s->pb->undp[k].partner != ENG_NONE) /* (a chain undo's, engine/perball/undo.c) */
+            g = fmax(g, gamma_of(s, s->pb->undp[k].in.m, s->pb->undp[k].in.p));
     }
     return g;
 }
@@ -142,7 +143,7 @@ int rc_sim_slice_request(rc_sim *s, double ts, uint32_t *id)
         s->slc = p;
         s->slc_cap = cap;
     }
-    if (s->glue && !s->slc_mark) {
+    if (s->model->per_ball && !s->slc_mark) {
         s->slc_dirty = malloc(s->n * sizeof *s->slc_dirty);
         s->slc_mark = calloc(s->n, 1);
         s->slc_nd = 0;
@@ -160,7 +161,7 @@ int rc_sim_slice_request(rc_sim *s, double ts, uint32_t *id)
         return RC_ENOMEM;
     for (size_t k = 0; k < s->n; k++)
         sl.rmax = fmax(sl.rmax, s->b[k].r);
-    if (s->glue) {
+    if (s->model->per_ball) {
         /* every ball's line at ts now; the hooks keep it (a ball with three kinks ahead of
          * ts has no recorded line there) */
         for (size_t k = 0; k < s->n; k++)
@@ -175,7 +176,7 @@ int rc_sim_slice_request(rc_sim *s, double ts, uint32_t *id)
     s->slc[s->slc_n++] = sl;
     s->slc_next_id++;
     *id = sl.id;
-    if (!s->glue)
+    if (!s->model->per_ball)
         set_due(s);
     return RC_OK;
 }
@@ -188,7 +189,7 @@ int rc_sim_slice_ready(const rc_sim *s, uint32_t id, rc_sim_slice_info *info)
     if (!sl)
         return RC_ENOSLICE;
     double t_final = sl->ts;
-    if (s->glue) {
+    if (s->model->per_ball) {
         const double g = s->slc_gmax;
         t_final = sl->ts + 2.0 * sl->rmax * s->inv_c * (1.0 + 3.0 * sqrt((g - 1.0) * (g + 1.0)));
     }
@@ -296,7 +297,7 @@ void eng_slice_flush(rc_sim *s)
         const int32_t k = (int32_t)s->slot[i];
         s->slc_mark[i] = 0;
         s->slc_gmax = fmax(s->slc_gmax, seg_gamma(s, k));
-        const double tk = s->cov[k].t_k;
+        const double tk = s->pb->cov[k].t_k;
         const eng_aux *a = &s->a[k];
         for (size_t q = 0; q < s->slc_n; q++) {
             struct eng_slice *sl = &s->slc[q];

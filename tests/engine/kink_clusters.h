@@ -142,7 +142,7 @@ static inline int kc_init(kc_state *k, const rc_sim *s)
     }
     for (size_t i = 0; i < k->n; i++) {
         const uint32_t b = s->slot[i];
-        k->last[i] = (kc_kink){s->cov[b].t_k, s->glu[b].v_in, s->b[b].v, UINT32_MAX};
+        k->last[i] = (kc_kink){s->pb->cov[b].t_k, s->pb->glu[b].v_in, s->b[b].v, UINT32_MAX};
     }
     return 0;
 }
@@ -156,7 +156,7 @@ static inline int kc_step(kc_state *k, const rc_sim *s, int policy)
     uint32_t node = UINT32_MAX;
     for (size_t i = 0; i < k->n; i++) {
         const uint32_t b = s->slot[i];
-        const double t = s->cov[b].t_k;
+        const double t = s->pb->cov[b].t_k;
         const rc_vec3 v = s->b[b].v;
         if (t == k->last[i].t && v.x == k->last[i].v_out.x && v.y == k->last[i].v_out.y &&
             v.z == k->last[i].v_out.z)
@@ -181,7 +181,7 @@ static inline int kc_step(kc_state *k, const rc_sim *s, int policy)
             node = (uint32_t)k->nodes++;
             k->policy[node] = (uint8_t)(policy != 0);
         }
-        const rc_vec3 vin = s->glu[b].v_in;
+        const rc_vec3 vin = s->pb->glu[b].v_in;
         /* the kink this one follows: pop those an undo took back (their out-velocity is not
          * this kink's in-velocity) */
         while (k->hn[i] > 0 && !kc_same_v(k->hk[i][k->hn[i] - 1].v_out, vin)) {
@@ -197,7 +197,7 @@ static inline int kc_step(kc_state *k, const rc_sim *s, int policy)
             const double r = s->b[b].r;
             const int model = !k->policy[node] && !k->policy[p->node];
             const int cross =
-                s->glu[b].r == 0.0 || !(dtau >= kc_cross_tau(k->inv_c2, r, p->v_in, vin, v));
+                s->pb->glu[b].r == 0.0 || !(dtau >= kc_cross_tau(k->inv_c2, r, p->v_in, vin, v));
             k->pairs++;
             k->pairs_model += (uint64_t)model;
             k->crossing += (uint64_t)cross;

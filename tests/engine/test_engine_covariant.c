@@ -80,23 +80,23 @@ static void conserve(int dim, int periodic, double eps, double v, double packing
     /* and chains were undone (papers/covariant-frame.md section 3): a member's later
      * collision first, then the ball's -- so the sums above hold through two collisions
      * taken back in one undo, and the previous records are kept and used */
-    ENSURE_MSG(s->bk.chain_rollbacks > 0, "%dD per %d eps %g: no chain undone", dim, periodic,
+    ENSURE_MSG(s->pb->tally.chain_rollbacks > 0, "%dD per %d eps %g: no chain undone", dim, periodic,
                eps);
     /* and overlap-policy decisions were undone (papers/covariant-frame.md section 3): solved
      * again with the contact that met a ball's tube before its kink, so the sums above
      * hold through a decision's record too */
-    ENSURE_MSG(s->bk.policy_rollbacks > 0, "%dD per %d eps %g: no policy decision undone", dim,
+    ENSURE_MSG(s->pb->tally.policy_rollbacks > 0, "%dD per %d eps %g: no policy decision undone", dim,
                periodic, eps);
     /* and, with walls, collisions undone for a wall met on the incoming side of a ball's
      * hyperplane and solved with that wall's contact */
-    ENSURE_MSG(periodic || s->bk.wall_rollbacks > 0, "%dD walls eps %g: no wall conflict undone",
+    ENSURE_MSG(periodic || s->pb->tally.wall_rollbacks > 0, "%dD walls eps %g: no wall conflict undone",
                dim, eps);
     printf("  %d-D periodic %d eps %g: %llu collisions, %llu undone, %llu of them chains "
            "(%llu wider than two), %llu overlap-policy decisions, %llu for a wall; %llu by the "
            "overlap policy\n", dim, periodic, eps, (unsigned long long)d1.collisions,
-           (unsigned long long)d1.rollbacks, (unsigned long long)s->bk.chain_rollbacks,
-           (unsigned long long)s->bk.wide_chains, (unsigned long long)s->bk.policy_rollbacks,
-           (unsigned long long)s->bk.wall_rollbacks, (unsigned long long)d1.overlaps);
+           (unsigned long long)d1.rollbacks, (unsigned long long)s->pb->tally.chain_rollbacks,
+           (unsigned long long)s->pb->tally.wide_chains, (unsigned long long)s->pb->tally.policy_rollbacks,
+           (unsigned long long)s->pb->tally.wall_rollbacks, (unsigned long long)d1.overlaps);
     if (!periodic)
         ENSURE(d1.events[RC_SIM_EV_WALL] > 0);
     free(m0);
@@ -122,10 +122,10 @@ static void test_dense_policy(void)
     printf("  2-D periodic, packing 0.7, rms 0.9c: %llu of %llu collisions by the overlap "
            "policy (%.1f %%), %llu decisions undone\n", (unsigned long long)d1.overlaps,
            (unsigned long long)d1.collisions, 100.0 * share,
-           (unsigned long long)s->bk.policy_rollbacks);
+           (unsigned long long)s->pb->tally.policy_rollbacks);
     ENSURE(d1.collisions >= 4000);
     ENSURE_MSG(share < 0.5, "share %.3f", share);
-    ENSURE(s->bk.policy_rollbacks > 0);
+    ENSURE(s->pb->tally.policy_rollbacks > 0);
     /* 1e-12 as test_conservation's (4000 collisions of ~1/N of the totals each) */
     ENSURE_REL(d1.energy, d0.energy, 1e-12);
     ENSURE_REL(d1.mass_rel, d0.mass_rel, 1e-12);
@@ -181,7 +181,7 @@ static void test_dilute_share(void)
                (unsigned long long)dg.overlaps, (unsigned long long)dg.collisions);
     printf("  3-D periodic, packing 0.05, rms 0.5c: %llu of %llu collisions by the overlap "
            "policy, %llu chains undone\n", (unsigned long long)dg.overlaps,
-           (unsigned long long)dg.collisions, (unsigned long long)s->bk.chain_rollbacks);
+           (unsigned long long)dg.collisions, (unsigned long long)s->pb->tally.chain_rollbacks);
     rc_sim_free(&s);
 }
 
@@ -267,11 +267,11 @@ static void test_chain_scene(void)
     rc_sim *s = scene_run(&d, 6.0555197805654402, 4, b0, 7.5555197805654402, &d0, &d1);
     if (!s)
         return;
-    ENSURE_MSG(d1.overlaps == 0 && d1.rollbacks == 1 && s->bk.chain_rollbacks == 1 &&
+    ENSURE_MSG(d1.overlaps == 0 && d1.rollbacks == 1 && s->pb->tally.chain_rollbacks == 1 &&
                    d1.collisions == 3,
                "overlaps %llu rollbacks %llu chains %llu collisions %llu",
                (unsigned long long)d1.overlaps, (unsigned long long)d1.rollbacks,
-               (unsigned long long)s->bk.chain_rollbacks, (unsigned long long)d1.collisions);
+               (unsigned long long)s->pb->tally.chain_rollbacks, (unsigned long long)d1.collisions);
     ENSURE(d1.max_group >= 3); /* (the three contacts together) */
     rc_sim_free(&s);
 }
@@ -315,11 +315,11 @@ static void test_wide_chain_scene(void)
     rc_sim *s = scene_run(&d, 47.0, 5, b0, 48.5, &d0, &d1);
     if (!s)
         return;
-    ENSURE_MSG(d1.overlaps == 0 && d1.rollbacks == 1 && s->bk.chain_rollbacks == 1 &&
-                   s->bk.wide_chains == 1,
+    ENSURE_MSG(d1.overlaps == 0 && d1.rollbacks == 1 && s->pb->tally.chain_rollbacks == 1 &&
+                   s->pb->tally.wide_chains == 1,
                "overlaps %llu rollbacks %llu chains %llu (wider than two %llu)",
                (unsigned long long)d1.overlaps, (unsigned long long)d1.rollbacks,
-               (unsigned long long)s->bk.chain_rollbacks, (unsigned long long)s->bk.wide_chains);
+               (unsigned long long)s->pb->tally.chain_rollbacks, (unsigned long long)s->pb->tally.wide_chains);
     ENSURE(d1.max_group >= 4); /* (the four contacts together) */
     rc_sim_free(&s);
 }
@@ -408,9 +408,9 @@ static void test_deep_scene(void)
     rc_sim *s = scene_run(&d, 40.07, 16, b0, 41.95, &d0, &d1);
     if (!s)
         return;
-    ENSURE(s->bk.chain_rollbacks >= 1);
+    ENSURE(s->pb->tally.chain_rollbacks >= 1);
     /* (the contacts of Q, L and w-k together) */
-    scene_verdict(s, &d1, s->bk.deep_rollbacks, "deep", 3);
+    scene_verdict(s, &d1, s->pb->tally.deep_rollbacks, "deep", 3);
 }
 
 /* (a) A group whose contacts close a cycle undone, in a scene of 15 balls (the 3-D
@@ -492,7 +492,7 @@ static void test_cycle_scene(void)
     if (!s)
         return;
     /* (the cycle's contacts and the new one together) */
-    scene_verdict(s, &d1, s->bk.cycle_rollbacks, "cycles undone", 4);
+    scene_verdict(s, &d1, s->pb->tally.cycle_rollbacks, "cycles undone", 4);
 }
 
 /* (a') A ball and a partner of its earlier collision meeting again, in a scene of 11
@@ -558,7 +558,7 @@ static void test_rejoin_scene(void)
     if (!s)
         return;
     /* (G's and L's contacts together) */
-    scene_verdict(s, &d1, s->bk.rejoins, "rejoins", 3);
+    scene_verdict(s, &d1, s->pb->tally.rejoins, "rejoins", 3);
 }
 
 /* (a) Both balls' last collisions undone, with a chain: a contact found on the incoming
@@ -598,7 +598,7 @@ static void test_both_chain_scene(void)
     rc_sim *s = scene_run(&d, 0.40, 6, b0, 1.26, &d0, &d1);
     if (!s)
         return;
-    scene_verdict(s, &d1, s->bk.both_chains, "both-chains", 5);
+    scene_verdict(s, &d1, s->pb->tally.both_chains, "both-chains", 5);
 }
 
 /* (a'''''''') The records an undo keeps: a ball with one collision undone gets back the
@@ -642,7 +642,7 @@ static void test_records_kept(void)
         for (size_t i = 0; i < n; i++) {
             if (s->cnt[i] == c0[i])
                 continue;
-            const eng_undo *u = &s->und[i], *p = &s->undp[i];
+            const eng_undo *u = &s->pb->und[i], *p = &s->pb->undp[i];
             const int hu = u->partner != ENG_NONE && u->nm > 0, hp = p->partner != ENG_NONE && p->nm > 0;
             uint32_t c;
             if (hu) {

@@ -18,7 +18,7 @@
 #include "rc_quad.h"
 #include "rc_test.h"
 #include "relcol/relcol.h"
-#include "../../lib/engine/resolve.h"
+#include "../../lib/engine/perball/model.h"
 #include "../../lib/glue_section.h"
 #include "../../lib/toi_private.h"
 
@@ -230,7 +230,7 @@ static q128 covariant_cross(q128 k, double r, const rc_particle *S)
     return E[1] / S[1].m * r * sqrtq(k) * sqrtq(h2 > 0 ? h2 : 0);
 }
 
-/* eng_kinks_cross (lib/engine/resolve.h): a ball slow in R before, between and after two
+/* eng_kinks_cross (lib/engine/perball/model.h): a ball slow in R before, between and after two
  * kinks, R at gamma 10 .. 1e8; the new kink's centre later than the last one's by f times
  * the exact support (f log-uniform 0.5 .. 2: both verdicts, some near the tie). The
  * verdict (cross: the interval below the support) must be the exact one on the double
@@ -244,6 +244,7 @@ static void test_kinks_cross(void)
     static eng_ball bl;
     static eng_cov cv;
     static rc_glue gl;
+    static eng_perball pb;
     for (int it = 0; it < 20000; it++) {
         double c, rad;
         q128 k;
@@ -272,8 +273,9 @@ static void test_kinks_cross(void)
         cv.t_k = 0.0;
         cv.kappa = gl.kappa;
         s.b = &bl;
-        s.cov = &cv;
-        s.glu = &gl;
+        pb.cov = &cv;
+        pb.glu = &gl;
+        s.pb = &pb;
         rc_vec3 kap;
         (void)eng_kink_time(&s, 0, &S[1], &S[2], 0.0, rc_v3(0, 0, 0), &kap);
         const int got = eng_kinks_cross(&s, 0, te, kap, &S[1], &S[2]);
@@ -301,7 +303,7 @@ static void test_kinks_cross(void)
     ENSURE_MSG(worst_cov <= 1e-12, "rest-frame crossing support off by %.3g", worst_cov);
 }
 
-/* eng_glue_side (lib/engine/private.h): is a contact event X, at table time tx and offset
+/* eng_glue_side (lib/engine/perball_state.h): is a contact event X, at table time tx and offset
  * dxb from the ball's centre then (a point of its contracted surface), on the future side
  * of the hyperplane of its last kink (at t_k = 0), (tx - t_k)(1 - kappa.v) >= kappa.dxb?
  * The ball slow in R before and after the kink, R at gamma 10 .. 1e8; tx - t_k f times the

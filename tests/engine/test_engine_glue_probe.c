@@ -103,9 +103,14 @@ static void test_memo(void)
 {
     rc_rng g = {78};
     rc_sim *s = calloc(1, sizeof *s);
-    ENSURE(s != NULL);
-    if (!s)
+    eng_perball *pb = calloc(1, sizeof *pb);
+    ENSURE(s != NULL && pb != NULL);
+    if (!s || !pb) {
+        free(s);
+        free(pb);
         return;
+    }
+    s->pb = pb; /* (the memo is the per-ball model's scratch) */
     s->toi = rc_toi_params_default();
     s->toi.c = 1.0;
     ENSURE(rc_toi_workspace_create(&s->ws) == RC_OK);
@@ -124,9 +129,9 @@ static void test_memo(void)
         double ta, tb;
         rc_vec3 ya, yb, na, nb;
         int a0, a1, b0, b1;
-        const uint32_t next_before = s->t2m_next;
+        const uint32_t next_before = s->pb->t2m_next;
         const int sa = toi2_memo(s, &q0[i], &q1[i], qt[i], &ta, &ya, &na, &a0, &a1);
-        recalled += s->t2m_next == next_before; /* (nothing stored: recalled) */
+        recalled += s->pb->t2m_next == next_before; /* (nothing stored: recalled) */
         const int sb = rc_glue_toi2(&q0[i], &q1[i], &s->toi, s->ws, qt[i], &tb, &yb, &nb, &b0, &b1);
         ENSURE_MSG(sa == sb, "step %d: memo %d, solver %d", step, sa, sb);
         if (sa != RC_OK || sb != RC_OK)
@@ -140,17 +145,18 @@ static void test_memo(void)
     rc_vec3 y, n;
     int p0, p1;
     toi2_memo(s, &q0[0], &q1[0], qt[0], &t, &y, &n, &p0, &p1);
-    const uint32_t next = s->t2m_next;
+    const uint32_t next = s->pb->t2m_next;
     toi2_memo(s, &q0[0], &q1[0], qt[0], &t, &y, &n, &p0, &p1);
-    ENSURE(s->t2m_next == next);
+    ENSURE(s->pb->t2m_next == next);
     /* the same tubes at another time are another question */
     toi2_memo(s, &q0[0], &q1[0], qt[0] + 1e-9, &t, &y, &n, &p0, &p1);
-    ENSURE(s->t2m_next == (next + 1) % ENG_T2_MEMO);
+    ENSURE(s->pb->t2m_next == (next + 1) % ENG_T2_MEMO);
     printf("  %d questions asked %d times (%ld answers recalled), %ld contacts compared to "
            "the bit\n", NQ, 4 * NQ, recalled, contacts);
     /* both paths taken: answers recalled, and more computed than the memo holds */
     ENSURE(contacts > 20 && recalled > 0 && 4 * NQ - recalled > ENG_T2_MEMO);
     rc_toi_workspace_free(&s->ws);
+    free(pb);
     free(s);
 }
 

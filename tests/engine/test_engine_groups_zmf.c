@@ -6,7 +6,7 @@
  * ZMF, are one group of two contacts whether run from the table, from the group's ZMF or
  * from a frame moving at 0.6 c, and the outcomes agree. (At the issue's +30 and -45 deg
  * each contact lies on the incoming side of the other's hyperplane, and undoing the first
- * (engine/undo.c) made the group from every frame already; at +6 and -66 the second
+ * (engine/perball/undo.c) made the group from every frame already; at +6 and -66 the second
  * contact lies on the future side of the first's, and only table-time formation in the
  * table made it.) Placed so that they are simultaneous in the table instead, the covariant
  * frame resolves them one after the other, while the table frame, with its own contact

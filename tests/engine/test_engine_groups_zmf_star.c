@@ -306,7 +306,7 @@ static double first_event(const rc_sim_ball b[NB])
  * (the three runs differ by sim_tol r in a wall's place, ~1e-10 of the scale). Beyond
  * the tolerance (gap = 2 sim_tol r) the wall is an event of its own after the group, met
  * by ball 0's shape on the incoming side of its new hyperplane: the group is undone and
- * solved with the wall contact (engine/undo.c, a wall's tube conflict) -- one group of 4,
+ * solved with the wall contact (engine/perball/undo.c, a wall's tube conflict) -- one group of 4,
  * one undo, no overlap-policy decision (before walls were undone: 3 decisions), and the
  * same outcome as the others to 1e-12. */
 static void test_star_wall(void)

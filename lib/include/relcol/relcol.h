@@ -10,6 +10,7 @@
 #include "relcol/contacts.h"
 #include "relcol/toi.h"
 #include "relcol/sim.h"
+#include "relcol/perball.h"
 #include "relcol/moments.h"
 #include "relcol/soft.h"
 #include "relcol/gas1d.h"

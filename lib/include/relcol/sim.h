@@ -1,26 +1,13 @@
 /* relcol/sim.h — the event-driven N-ball engine: balls in a 2-D table or 3-D box, exact
  * event times, any c, ball and wall restitution, simultaneous contacts solved together.
- *
- * Lifecycle (Box2D style): fill an rc_sim_def made by rc_sim_def_default(), rc_sim_create,
- * rc_sim_set_balls, then rc_sim_advance as often as wanted, read the state with
- * rc_sim_get_ball / rc_sim_diagnostics, and rc_sim_free. The engine never prints.
- *
- * Overlap policy (contracted shapes change shape when their speed changes, so a collision
- * can leave a ball overlapping a neighbour): a pair found overlapping (RC_EOVERLAP from
- * the frame, or spheres deeper than round-off) whose bounding spheres approach collides
- * at once along the centre line, and is counted in rc_sim_diag.overlaps; an overlapping
- * pair that separates is left to separate.
- *
- * Event times are pure functions of the two balls' stored states (position at the ball's
- * own clock, momentum, rest mass), never of when they were asked for; so a run can be
- * written out and continued bit-identically (rc_sim_sync, then rc_sim_get_ball: see
- * rc_sim_sync).
- *
- * Cost per event does not grow with N: balls are grouped in cells at least one bounding
- * diameter wide, each ball keeps only its own earliest event in a calendar queue,
- * events made stale by a partner's later collision are detected by per-ball collision
- * counters, and every ball keeps its own clock (its state is stored at the time it was
- * last touched and advanced lazily), so an event touches only its balls. */
+ * Lifecycle (Box2D style): rc_sim_def_default(), rc_sim_create, rc_sim_set_balls,
+ * rc_sim_advance as often as wanted, rc_sim_get_ball / rc_sim_diagnostics, rc_sim_free.
+ * The engine never prints. Event times are pure functions of the two balls' stored states,
+ * so a run written out as a checkpoint continues bit-identically; the cost per event does
+ * not grow with N (cells, one event per ball in a calendar queue, stale events dropped by
+ * counters, every ball on its own clock). The overlap policy, the per-ball model and the
+ * rules for groups: papers/relcol.md, papers/shape-change.md,
+ * papers/simultaneous-contacts.md. The per-ball model's read-outs: relcol/perball.h. */
 #ifndef RELCOL_SIM_H
 #define RELCOL_SIM_H
 
@@ -35,483 +22,168 @@
 extern "C" {
 #endif
 
+/// An engine (opaque).
 typedef struct rc_sim rc_sim;
 
-/* Lanes of the neighbour test (rc_sim_def.simd). All give the same bits (the lanes do the
- * scalar operations in the same order); the choice exists to show that and to time them. */
+/// Lanes of the neighbour test (rc_sim_def.simd); all give the same bits.
 typedef enum rc_sim_simd {
-    RC_SIM_SIMD_AUTO = 0, /* the widest the CPU has: AVX-512 (eight pairs), AVX2 (four) */
-    RC_SIM_SIMD_AVX512,   /* at most AVX-512 (the same as AUTO today) */
-    RC_SIM_SIMD_AVX2,     /* at most AVX2 */
-    RC_SIM_SIMD_SCALAR    /* the scalar loop */
+    RC_SIM_SIMD_AUTO = 0, ///< the widest the CPU has
+    RC_SIM_SIMD_AVX512,   ///< at most AVX-512
+    RC_SIM_SIMD_AVX2,     ///< at most AVX2
+    RC_SIM_SIMD_SCALAR    ///< the scalar loop
 } rc_sim_simd;
 
-/* Deferred root finds (rc_sim_def.defer): a contact frame whose contact times the broad
- * phase bounds from below (the table frame) may store a candidate's bound as its event and
- * ask the frame only when it comes up in the queue. The same bits either way. */
+/// Deferred root finds (rc_sim_def.defer): a frame whose contact the broad phase bounds is asked only when the bound comes up; the same bits either way.
 typedef enum rc_sim_defer {
-    RC_SIM_DEFER_AUTO = 0, /* defer where the frame allows it */
-    RC_SIM_DEFER_ON,       /* defer; RC_EINVAL if the frame does not allow it */
-    RC_SIM_DEFER_OFF       /* ask the frame at once */
+    RC_SIM_DEFER_AUTO = 0, ///< defer where the frame allows it
+    RC_SIM_DEFER_ON,       ///< defer; RC_EINVAL if the frame does not allow it
+    RC_SIM_DEFER_OFF       ///< ask the frame at once
 } rc_sim_defer;
 
-/* Boundary of one axis of the box (rc_sim_def.boundary). */
+/// Boundary of one axis of the box (rc_sim_def.boundary).
 enum rc_sim_boundary {
-    RC_SIM_WALLS = 0,   /* hard walls at 0 and L (restitution eps_wall) */
-    RC_SIM_PERIODIC = 1 /* the faces 0 and L are one: a ball leaving through one comes back
-                           through the other, and balls meet across it (nearest image).
-                           Periodic in the box frame, which is the table frame: its
-                           simultaneity decides the identification. The axis needs at least
-                           four cells (rc_sim_def.cell_size, or automatic: at least one
-                           largest bounding diameter each, so that the nearest image is the
-                           copy two neighbours can meet), so the box edge must be >= 4 cell
-                           edges: RC_EINVAL from rc_sim_create (cell_size given) or
-                           rc_sim_set_balls (automatic cells) otherwise. Positions are kept
-                           in [0, L); rc_sim_ball.image counts the wraps. */
+    RC_SIM_WALLS = 0,   ///< hard walls at 0 and L (restitution eps_wall)
+    RC_SIM_PERIODIC = 1 ///< faces 0 and L identified in the table frame (nearest image); needs at least four cell edges per box edge (RC_EINVAL otherwise); x kept in [0, L), image counts wraps
 };
 
-/* Definition of a simulation. Make one with rc_sim_def_default() and change fields. */
+/// Definition of a simulation: make one with rc_sim_def_default() and change fields.
 typedef struct rc_sim_def {
-    int dim;            /* 2 (table: z ignored, kept 0) or 3 */
-    rc_vec3 box;        /* box edge lengths; the box is [0, box.x] x [0, box.y] (x [0, box.z]) */
-    double c;           /* speed of light, > 0; INFINITY is the exact classical case */
-    double eps_ball;    /* ball-ball restitution in [0, 1] */
-    double eps_wall;    /* ball-wall restitution in [0, 1] */
-    /* TC model against inelastic collapse: a contact in which a ball's proper time since
-     * its previous collision is < t_c is elastic. Proper time, time units; 0 = off. */
-    double t_c;
-    /* two-ball law (rc_law_zmf by default, see relcol/law.h); a group of simultaneous
-     * contacts goes to its group solver (law->group), or without one is resolved one
-     * contact at a time (rc_sim_diag.group_sequential). A law's failure (a negative code
-     * from collide) ends rc_sim_advance with that code. */
-    const rc_law *law;
-    /* Contact geometry (relcol/toi.h), chosen by the frame's declared properties: NULL or
-     * a frame with contracted = 0 (sphere) = uncontracted spheres (the engine's own
-     * inlined exact kernel, toi never called); a contracted frame (table, zmf, or a
-     * user's) is called as the narrow phase after the exact bounding-sphere test says
-     * the balls can touch first, and gives the contact normal -- through its direct
-     * solver frame->shapes if it declares one, its root finds deferred if it declares
-     * deferrable. Walls see the contracted support r sqrt(1 - (v.n)^2/c^2) when
-     * frame->wall_contracted. toi holds the frame's tolerances; its c is NAN
-     * (rc_sim_def_default: the engine's c) or must equal c (RC_EINVAL otherwise). */
-    const rc_toi_frame *frame;
-    rc_toi_params toi;
-    /* Simultaneous contacts: at an event, every other contact whose surface gap is at
-     * most sim_tol * (ri + rj) (walls: sim_tol * r) and which is approaching is resolved
-     * together with it (relative, dimensionless; default 1e-9: far above the 1e-16
-     * round-off of a computed contact, far below any physical gap). A per_ball frame
-     * (covariant) at a ball-ball contact of the model instead groups the approaching
-     * ball contacts whose contact events lie within sim_tol * (ri + rj) / c of the first
-     * one's in the ZMF of the group's balls, and its members' walls by the gap rule at
-     * the event's table time (papers/simultaneous-contacts.md). */
-    double sim_tol;
-    /* How such a group is resolved by a law with a group solver (rc_group_rule in
-     * relcol/law.h: RC_GROUPS_SIMULTANEOUS, the default, RC_GROUPS_SEQUENTIAL or
-     * RC_GROUPS_DROP; RC_EINVAL otherwise). The group itself is found at one table time
-     * (the covariant frame's ball contacts: in the group's ZMF, sim_tol above); the
-     * sequential rule orders it in the group's ZMF. */
-    int groups;
-    /* A touching pair whose normal approach speed is below approach_tol times its relative
-     * speed scale counts as not approaching (dimensionless, default 1e-10): this stops the
-     * zero-time re-collisions that round-off would otherwise create after an eps = 0 or a
-     * grazing contact; the overlap it allows is <= approach_tol * (ri + rj) per free time. */
-    double approach_tol;
-    /* An overlap deeper than overlap_tol * (ri + rj) is counted in rc_sim_diag.overlaps
-     * (dimensionless, default 1e-9; shallower ones are round-off of contact positions). */
-    double overlap_tol;
-    double cell_size;   /* cell edge, >= the largest ball diameter; 0 = automatic */
-    double density;     /* rest mass of a ball given with m <= 0: density * r^3 (default 1) */
-    /* restart != 0: the balls given to rc_sim_set_balls are a state an engine wrote
-     * (rc_sim_get_ball after rc_sim_sync), to be continued. Such a state may hold shapes
-     * that overlap by the frame's own geometry — shape change after a collision, and in
-     * the zmf frame shapes judged at one table time — which the engine itself produced
-     * and handles (see the overlap policy above), so with contracted shapes the overlap
-     * check is skipped and a contracted shape may cross a wall as long as its centre is
-     * inside the box; every other check stays, and uncontracted spheres (c = inf, the
-     * sphere frame), which no shape change moves, are checked as always. Default 0:
-     * overlapping input is rejected. */
-    int restart;
-    rc_sim_simd simd;   /* lanes of the neighbour test (default RC_SIM_SIMD_AUTO) */
-    rc_sim_defer defer; /* deferred root finds (default RC_SIM_DEFER_AUTO) */
-    /* per axis (x, y, z; z ignored in 2-D): RC_SIM_WALLS (the default) or RC_SIM_PERIODIC.
-     * Walls and periodic axes mix freely; no wall event and no wall impulse on a periodic
-     * axis (with every axis periodic total momentum is conserved to round-off). */
-    int boundary[3];
+    int dim;            ///< 2 (table: z ignored, kept 0) or 3
+    rc_vec3 box;        ///< box edge lengths: [0, box.x] x [0, box.y] (x [0, box.z])
+    double c;           ///< speed of light, > 0; INFINITY is the exact classical case
+    double eps_ball;    ///< ball-ball restitution in [0, 1]
+    double eps_wall;    ///< ball-wall restitution in [0, 1]
+    double t_c;         ///< TC model: a contact within proper time t_c of a ball's previous collision is elastic (0 = off)
+    const rc_law *law;  ///< two-ball law (rc_law_zmf by default); groups go to law->group, or one contact at a time without one; a law's failure ends rc_sim_advance with its code
+    const rc_toi_frame *frame; ///< contact geometry (relcol/toi.h), chosen by its declared properties: NULL or uncontracted = the engine's exact sphere kernel; a contracted frame is the narrow phase after the bounding-sphere test
+    rc_toi_params toi;  ///< the frame's tolerances; toi.c NAN (the default: the engine's c) or equal to c
+    double sim_tol;     ///< contacts within sim_tol (ri + rj) of touching and approaching are resolved together (default 1e-9); the per-ball frame groups ball contacts by sim_tol (ri + rj) / c in the group's ZMF
+    int groups;         ///< how a law with a group solver resolves a group (rc_group_rule: RC_GROUPS_SIMULTANEOUS, the default, _SEQUENTIAL or _DROP)
+    double approach_tol; ///< a touching pair approaching slower than approach_tol times its speed scale counts as not approaching (default 1e-10)
+    double overlap_tol; ///< overlaps deeper than overlap_tol (ri + rj) are counted in rc_sim_diag.overlaps (default 1e-9)
+    double cell_size;   ///< cell edge, >= the largest ball diameter; 0 = automatic
+    double density;     ///< rest mass of a ball given with m <= 0: density r^3 (default 1)
+    int restart;        ///< the balls are a state an engine wrote: contracted shapes may overlap as the engine left them (not checked); default 0, overlapping input rejected
+    rc_sim_simd simd;   ///< lanes of the neighbour test (default RC_SIM_SIMD_AUTO)
+    rc_sim_defer defer; ///< deferred root finds (default RC_SIM_DEFER_AUTO)
+    int boundary[3];    ///< per axis RC_SIM_WALLS (default) or RC_SIM_PERIODIC; mixed freely (z ignored in 2-D)
 } rc_sim_def;
 
+/// The default definition.
 rc_sim_def rc_sim_def_default(void);
 
-/* A ball as given to and read from the engine (at the engine's current time). */
+/// A ball as given to and read from the engine, at the engine's time.
 typedef struct rc_sim_ball {
-    rc_vec3 x;   /* centre position */
-    rc_vec3 p;   /* momentum */
-    double r;    /* rest radius > 0 */
-    double m;    /* rest mass; <= 0 on input: density * r^3 */
-    double tau;  /* proper time */
-    /* TC-model memory: collided != 0 means the ball's last collision happened at its
-     * proper time tau_last (a zero-initialised ball has not collided yet). Read back by
-     * rc_sim_get_ball so that a written state continues exactly. */
-    int collided;
-    double tau_last;
-    /* Periodic axes: how many times the ball has wrapped across the far face (minus those
-     * across the near one), so that x + image * L is its unwrapped position (diffusion,
-     * mean square displacement). x itself is always in [0, L) on a periodic axis (input
-     * outside: RC_EINVAL). Read only on periodic axes, read back as 0 on walled ones. */
-    int32_t image[3];
+    rc_vec3 x;          ///< centre position
+    rc_vec3 p;          ///< momentum
+    double r;           ///< rest radius > 0
+    double m;           ///< rest mass; <= 0 on input: density r^3
+    double tau;         ///< proper time
+    int collided;       ///< the TC memory: nonzero if the ball has collided, at proper time tau_last
+    double tau_last;    ///< proper time of its last collision (read back so a written state continues exactly)
+    int32_t image[3];   ///< periodic axes: wraps across the far face minus the near one (x + image L unwrapped); 0 on walled axes
 } rc_sim_ball;
 
-/* Event kinds, for rc_sim_diag.events[]. */
+/// Event kinds, for rc_sim_diag.events[].
 enum rc_sim_event_kind {
-    RC_SIM_EV_BALL = 0,   /* two-ball collision resolved alone */
-    RC_SIM_EV_WALL,       /* ball-wall collision resolved alone */
-    RC_SIM_EV_MULTI,      /* a group of simultaneous contacts resolved together */
-    RC_SIM_EV_CELL,       /* cell crossing (bookkeeping) */
-    RC_SIM_EV_STALE,      /* queue entry invalidated by a partner's collision */
-    RC_SIM_EV_TC,         /* contacts made elastic by the TC model */
-    RC_SIM_EV_NKINDS
+    RC_SIM_EV_BALL = 0, ///< two-ball collision resolved alone
+    RC_SIM_EV_WALL,     ///< ball-wall collision resolved alone
+    RC_SIM_EV_MULTI,    ///< a group of simultaneous contacts resolved together
+    RC_SIM_EV_CELL,     ///< cell crossing (bookkeeping)
+    RC_SIM_EV_STALE,    ///< queue entry invalidated by a partner's collision
+    RC_SIM_EV_TC,       ///< contacts made elastic by the TC model
+    RC_SIM_EV_NKINDS    ///< (the number of kinds)
 };
 
+/// Diagnostics at the engine's time (rc_sim_diagnostics).
 typedef struct rc_sim_diag {
-    double time;            /* engine time */
-    double mass_rel;        /* sum of M = E/c^2: conserved exactly when c is finite */
-    double kinetic;         /* sum of kinetic energies */
-    double heat;            /* kinetic energy turned into internal energy so far */
-    double energy;          /* kinetic + heat: conserved for every c and restitution */
-    double rest_mass;       /* sum of rest masses */
-    rc_vec3 momentum;       /* sum of ball momenta */
-    rc_vec3 wall_impulse;   /* momentum taken by the walls so far (all walls together) */
-    /* ... and by each wall, w = 2 d + side (side 1 the far wall x_d = L_d): the component
-     * along e_d of the momentum wall w took (negative on the near walls of a gas pushing
-     * out). Exact per axis; see wall_shared for the one case where two walls share it. */
-    double wall_impulse_by_wall[6];
-    uint64_t wall_shared;   /* groups that touched both walls of one axis (a chain of balls
-                               across the box): the axis's momentum was split between them
-                               by the group solver's impulses, the rest-mass step's share
-                               equally -- a choice, not a measurement */
-    uint64_t pinned;        /* approaching wall contacts of a ball jammed along the wall's
-                               axis (its shape exactly as wide as the box): resolved
-                               perfectly plastic along that axis, whatever the walls'
-                               restitution -- a model choice, the rigid-wall limit
-                               (papers/relcol.md, "Limits") */
-    /* What collisions carried across space so far (papers/pressure.md): virial[3 a + b] =
-     * sum over collision events of sum_j r_j,a dp_j,b over the event's balls, r_j the
-     * centre of ball j minus that of the event's first ball (nearest image) at the
-     * event's table time -- for a two-ball contact r_01,a dp_1,b, the collisional
-     * virial; a lone ball's wall contact adds nothing (a group with walls adds its
-     * members' moments about its first ball). virial_energy[a]: the same with the
-     * kinetic energy change dE_j. Its rate over the volume is the collisional part of the
-     * pressure tensor (rc_sim_moments). helfand_wrap, helfand_wrap_energy: the same sums
-     * with r_j replaced by (nearest image - unwrapped separation), whole box lengths
-     * where a pair meets across a periodic face, 0 otherwise: the jump that makes the
-     * unwrapped moment sum_i x_i p_i a Helfand moment (relcol/moments.h). */
-    double virial[9], virial_energy[3];
-    double helfand_wrap[9], helfand_wrap_energy[3];
-    double momentum_scale;  /* sum of |p_i| (scale for relative momentum checks) */
-    double max_overlap;     /* deepest sphere overlap now, relative to ri + rj (0 if none;
-                               NAN with a contracted frame, whose bounding spheres may
-                               overlap while the shapes do not) */
-    uint64_t overlaps;      /* overlaps deeper than overlap_tol met by the engine: contacts
-                               decided by the overlap policy, not found by the contact model */
-    uint64_t overlaps_by_kind[3]; /* the same by the contact's kind: [0] the event's own
-                               ball contact, [1] a ball-wall contact, [2] another ball
-                               contact of a group of simultaneous contacts */
-    uint64_t collisions;    /* contacts resolved (each contact of a group counts) */
-    uint64_t events[RC_SIM_EV_NKINDS];
-    size_t max_group;       /* most contacts resolved together */
-    uint64_t group_fallbacks; /* groups whose joint solve failed (singular normals, or no
-                                 rest-mass-keeping outcome): only the event's own contact
-                                 was resolved, the rest follow as events of their own */
-    /* Groups resolved one contact at a time because the law declares no group solver
-     * (rc_law.group == NULL): the contacts in the group's order -- the event's own
-     * first, then as the engine found them (each member in the order it joined: its
-     * walls by axis, then its neighbours in the engine's cell order) -- each on the
-     * states the previous ones left. What it costs: the outcome depends on that order
-     * (a ball between two others ends differently if either contact goes first), which
-     * is not physical; each group counted here is one where that happened. */
-    uint64_t group_sequential;
-    /* Frames whose balls change velocity at their own events (rc_toi_frame.per_ball: the
-     * covariant frame; papers/shape-change.md). Each ball's worldline kinks where the
-     * hyperplane H through the contact event X with normal u_in + u_out meets it, so its
-     * world tube is the glued one and its stored state may be at a time after or before
-     * the engine's; events are still popped in table-time order, keyed max(t_X, now).
-     * rollbacks: contacts before a ball's last kink along its tube -- predicted on the
-     * incoming side of its last H, an overlap the frame reports, or a new kink that would
-     * come before the last -- where that kink's collision was a single contact of the
-     * model or a group an earlier undo solved (up to eight balls), none of whose balls
-     * has collided since, or once since (a chain: those later collisions undone first):
-     * the collision is undone (its books too; both balls' where the contact lies before
-     * both kinks, with either's chain, the ball's two last ones where it lies before
-     * both of those) and its contacts and the new one are solved together by the group
-     * rule -- without a new one where the two balls were in contact in the chain
-     * already -- each ball's kink on its own worldline (papers/shape-change.md, sections
-     * 7 and 8). Otherwise:
-     * tube_conflicts: predicted contacts on the incoming side of a ball's last H (with
-     * the incoming piece of its glued tube, which the table-time schedule cannot order),
-     * resolved by the overlap policy, counted in overlaps too (a wall's as kind [1]);
-     * one whose pieces part there (a ball met on its incoming piece moving with its
-     * incoming velocity) is left to separate. Where the straight cylinder of a ball's
-     * stored line overlaps or meets a neighbour inside the ball's window, its glued tube
-     * is asked instead (rc_glue_toi: first table time of contact) -- for one ball in its
-     * window; with both balls inside theirs, the two glued tubes (rc_glue_toi2), whose
-     * contact is taken where it lies on neither incoming piece, or their miss; an
-     * overlap of the two tubes, or an incoming piece met, is left to the straight
-     * cylinders, and such a contact can pass uncounted (papers/shape-change.md sections
-     * 8 and 10: 9 overlaps in 24 audited 2-D elastic runs of 3000-4000 events before the
-     * two tubes were asked, 11 after, depth 4e-4 .. 0.018 r).
-     * order_conflicts: kinks whose hyperplane crosses the ball's previous one inside it
-     * (collisions less than a glue window apart, where the glued tube of the two is not
-     * defined), not undone: counted; one that would come before the previous kink along
-     * the worldline, a model rule, is put at the previous kink instead. At a ball-ball
-     * contact of the model a group is formed by simultaneity in its own ZMF (sim_tol
-     * below), solved by the group rule, each member's kink at its own event (the latest
-     * along its worldline of its contacts' events); a group met at a wall contact or by
-     * the overlap policy is formed and kinked at one table time as in the other frames.
-     * rc_sim_get_ball gives the table-time picture of the collisions processed so far: a
-     * ball whose kink lies after the engine's time on the line it is still on
-     * (rc_sim_kink_ahead; rc_sim_get_ball_latest for the other read-out); the diagnostics'
-     * sums (momentum, energy, rest mass) are over every ball's latest segment, which is
-     * what collisions conserve. rc_sim_sync keeps the hyperplanes, tubes and kinks ahead
-     * and changes nothing; rc_sim_set_c makes every kink still ahead at once and forgets
-     * the hyperplanes (both below; a checkpoint keeps everything). */
-    uint64_t tube_conflicts, order_conflicts, rollbacks;
-    /* After rc_sim_advance returned RC_ESTALL: the ball whose event was next (caller's
-     * index) and its partner (a ball's index, -1 - w for wall w = 2 d + side, or a large
-     * negative number for a cell crossing). */
-    int64_t stall_ball, stall_partner;
+    double time;            ///< engine time
+    double mass_rel;        ///< sum of M = E/c^2: conserved exactly when c is finite
+    double kinetic;         ///< sum of kinetic energies
+    double heat;            ///< kinetic energy turned into internal energy so far
+    double energy;          ///< kinetic + heat: conserved for every c and restitution
+    double rest_mass;       ///< sum of rest masses
+    rc_vec3 momentum;       ///< sum of ball momenta
+    rc_vec3 wall_impulse;   ///< momentum taken by the walls so far
+    double wall_impulse_by_wall[6]; ///< ... by wall w = 2 d + side (side 1 the far wall): its component along e_d
+    uint64_t wall_shared;   ///< groups touching both walls of one axis, whose share between them is the solver's split (a choice)
+    uint64_t pinned;        ///< wall contacts of a ball as wide as the box, made plastic along the axis (a model choice: papers/relcol.md, "Limits")
+    double virial[9], virial_energy[3]; ///< sum over events of r_j,a dp_j,b (r from the event's first ball, nearest image) and r_j,a dE_j: the collisional transfer (papers/pressure.md)
+    double helfand_wrap[9], helfand_wrap_energy[3]; ///< the same with r replaced by nearest image minus unwrapped separation (relcol/moments.h)
+    double momentum_scale;  ///< sum of |p_i| (scale for relative momentum checks)
+    double max_overlap;     ///< deepest sphere overlap now, relative to ri + rj (NAN with a contracted frame)
+    uint64_t overlaps;      ///< contacts decided by the overlap policy (overlaps deeper than overlap_tol met)
+    uint64_t overlaps_by_kind[3]; ///< the same by kind: [0] the event's own ball contact, [1] a wall's, [2] a group's other ball contact
+    uint64_t collisions;    ///< contacts resolved (each contact of a group counts)
+    uint64_t events[RC_SIM_EV_NKINDS]; ///< events by kind
+    size_t max_group;       ///< most contacts resolved together
+    uint64_t group_fallbacks; ///< groups whose joint solve failed: the event's own contact resolved, the rest events of their own
+    uint64_t group_sequential; ///< groups resolved one contact at a time by a law without a group solver (the outcome depends on the order: a choice)
+    uint64_t tube_conflicts, order_conflicts, rollbacks; ///< per-ball frames: contacts on a glued tube's incoming piece left to the overlap policy; kinks put at the previous one by the order rule; collisions undone and solved again (papers/shape-change.md)
+    int64_t stall_ball, stall_partner; ///< after RC_ESTALL: the next event's ball (caller's index) and partner (a ball, -1 - w for wall w, or a large negative number for a cell crossing)
 } rc_sim_diag;
 
-/* A new engine. Its neighbour test runs in the widest lanes the CPU has up to def->simd;
- * the table frame's root finds are deferred as def->defer says. RC_EINVAL for a simd or
- * defer that is not one of its enum's values, or RC_SIM_DEFER_ON with a frame that cannot
- * defer. */
+/// A new engine; RC_EINVAL for a bad definition (simd, defer, a frame that cannot defer with RC_SIM_DEFER_ON).
 int rc_sim_create(const rc_sim_def *def, rc_sim **out);
-/* Frees and sets *s to NULL (NULL and *s == NULL are fine). */
+/// Frees the engine and sets *s to NULL (NULL and *s == NULL are fine).
 void rc_sim_free(rc_sim **s);
-
-/* Set the engine's time (finite) before any balls are placed, e.g. to continue a run
- * that stopped at t: RC_EINVAL once balls are set. The default is 0. */
+/// Set the engine's time (finite) before any balls are placed; RC_EINVAL once balls are set.
 int rc_sim_set_time(rc_sim *s, double t);
-
-/* Place n balls at the engine's time (replaces any previous set). Rejects non-finite
- * input, r <= 0, |v| >= c (impossible from a finite p), a ball whose shape is not inside
- * the box (RC_EINVAL) and balls overlapping by more than overlap_tol (RC_EOVERLAP;
- * touching is fine), both judged in the contact frame's own geometry (contracted shapes
- * for table and zmf at finite c). With contracted shapes an overlapping pair that is
- * separating is accepted: shape change after a collision produces exactly such states
- * (see the overlap policy above), and a restart must read them back. On a periodic axis
- * the centre must lie in [0, L) (the shape may reach across the face), overlaps are
- * judged between nearest images, image[] is taken as given, and a box edge below four
- * cell edges is RC_EINVAL. *bad (may be NULL) gets the index. */
+/// Place n balls at the engine's time, judged in the frame's own geometry: RC_EINVAL (non-finite, r <= 0, |v| >= c, outside the box, a periodic box under four cells), RC_EOVERLAP (deeper than overlap_tol, unless separating contracted shapes); *bad (may be NULL) the index.
 int rc_sim_set_balls(rc_sim *s, size_t n, const rc_sim_ball *balls, size_t *bad);
-
-/* Bring every ball to the engine's time and plan all events afresh from that state alone
- * (diagnostic counters are kept). Afterwards the run's future depends only on what
- * rc_sim_get_ball returns, so a state written now and loaded into a new engine with
- * rc_sim_set_time + rc_sim_set_balls continues bit for bit as this engine does. But the
- * re-planning itself rounds event times differently: the run after a sync differs in its
- * bits from the run without one. To stop and continue a run without changing it, use a
- * checkpoint (below); advancing in pieces, and reading balls or diagnostics between
- * them, gives the same bits as advancing in one go. */
-/* A frame whose balls change velocity at their own events (rc_toi_frame.per_ball:
- * covariant) at finite c is the exception: a ball's state at now does not carry its
- * hyperplane, its glued tube or a kink still ahead of now, and the frame's predictions
- * depend on the time they are asked at, so re-planning would change the run. There
- * rc_sim_sync keeps the engine's whole state and plans nothing afresh: the run continues
- * with the same bits as without it (test_engine_covariant), and a state to continue from
- * is a checkpoint, not the balls. */
+/// Bring every ball to the engine's time and plan all events afresh (counters kept): the run then depends only on rc_sim_get_ball's states (its bits differ from a run without the sync); per-ball frames keep everything and plan nothing (use a checkpoint to continue).
 int rc_sim_sync(rc_sim *s);
-
-/* Change the speed of light during a run, at the engine's time: every ball keeps its
- * position, momentum, rest mass, proper time and TC memory; its velocity p / M and its
- * contracted shape follow the new c (with a finite p every speed stays below any c > 0).
- * Events are planned afresh, as by rc_sim_sync (so the run's bits differ from one that
- * never changed c); the diagnostic counters continue. The kinetic energy is a function
- * of c, so rc_sim_diag.energy changes at the call: conservation holds from here on, with
- * the new value as its reference. A shape that grows (c raised) can overlap a neighbour
- * or a wall; such pairs are left to the overlap policy above and counted in
- * rc_sim_diag.overlaps. RC_EINVAL for a NULL engine, RC_ESPEEDOFLIGHT for c <= 0, NaN
- * or out of range as rc_inv_c2 says (c = INFINITY is the classical case), RC_ENOMEM; on
- * failure the engine keeps its old c and its balls. */
-/* With a frame whose balls change velocity at their own events (covariant) the glued
- * tubes are functions of c (the hyperplane's tilt is (g0 v0 + g1 v1) / (c^2 (g0 + g1))),
- * so at the call every kink still ahead of the engine's time is made at once, at the
- * ball's true centre and proper time now (rc_sim_get_ball), with the momentum and rest
- * mass of its latest segment -- the one-instant rule, as the overlap policy's kinks;
- * total momentum and energy are those of the latest segments, so they are kept -- and
- * every hyperplane and glued tube is forgotten: the new c's collisions start new ones.
- * The engine then holds nothing the balls do not (set_c equals a new engine at the new
- * c given the balls read after it; test_engine_covariant). */
+/// Change c at the engine's time: positions, momenta, rest masses, clocks kept, events planned afresh; per-ball frames make every kink ahead now and forget the hyperplanes; RC_EINVAL, RC_ESPEEDOFLIGHT, RC_ENOMEM (the old c kept).
 int rc_sim_set_c(rc_sim *s, double c);
 
-/* ---- checkpoints: stopping and continuing without changing the run -------------- */
+/* ---- checkpoints: the engine's whole state as bytes, read back into an engine of an
+ * equal definition it continues bit for bit (test_engine_checkpoint); this machine's byte
+ * order and layout, checksummed: foreign or damaged bytes are RC_EMISMATCH, RC_ECORRUPT.
+ * Delayed slices are not carried. */
 
-/* The engine's whole state as bytes: every ball at its own clock, every scheduled event,
- * the cells' order, the numbering, the bookkeeping (diagnostics continue too). Read into
- * an engine made from an equal definition (every field that changes the physics or the
- * event order: dim, box, c, restitutions, t_c, law and frame by name, tolerances, cell
- * size, density), it continues bit for bit as the engine that wrote it: a run stopped,
- * written, read and continued equals the run that never stopped, in every bit
- * (test_engine_checkpoint). The bytes are for machines of this one's byte order and
- * record layout, carry a checksum, and are checked ball by ball on reading, so damaged or
- * foreign bytes are refused (RC_ECORRUPT, RC_EMISMATCH), never run.
- *   size: the bytes a checkpoint of s takes now;
- *   write: exactly that many into buf;
- *   read: replaces s's balls and time; on failure s holds no balls. */
+/// The bytes a checkpoint of s takes now.
 int rc_sim_checkpoint_size(const rc_sim *s, size_t *bytes);
+/// Write exactly that many into buf.
 int rc_sim_checkpoint_write(const rc_sim *s, void *buf, size_t bytes);
+/// Replace s's balls and time by a checkpoint's; on failure s holds no balls.
 int rc_sim_checkpoint_read(rc_sim *s, const void *buf, size_t bytes);
 
-/* Process events in time order until the next one would be later than t_end (then all
- * balls are at t_end) or max_events events were processed (0 = no limit). A collision law
- * that fails (a negative code other than from its group solver) stops the run with its
- * code; the event's balls keep their states from before it. A run whose time no longer
- * moves -- more than 10000 + 64 N events in a row at one instant: a chain of touching
- * balls exactly as wide as the box pushed against both walls, which the group solver
- * cannot resolve and the fallback resolves one wall after the other for ever (a single
- * ball as wide as the box is jammed, not stalled: rc_sim_diag.pinned), or a clock so
- * large that an event's step rounds to nothing -- stops with RC_ESTALL before the next
- * event, its state whole (it can be read and written), and rc_sim_diag.stall_ball and
- * stall_partner name that event; advancing again stalls again. */
+/// Process events in time order until the next is later than t_end (then every ball is at t_end) or max_events were processed (0 = no limit); a law's failure returns its code (the event's balls as before it); RC_ESTALL when more than 10000 + 64 N events come at one instant (state whole, stall_ball names it).
 int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events);
 
+/// Number of balls.
 size_t rc_sim_count(const rc_sim *s);
+/// The engine's time.
 double rc_sim_time(const rc_sim *s);
-/* Ball i as it is at the engine's time. With a frame whose balls change velocity at their
- * own events (rc_toi_frame.per_ball: covariant, finite c) a ball's latest kink may lie
- * after the engine's time: the state given is then the one it really has at the engine's
- * time -- centre, momentum, rest mass, proper time and TC memory on the line it is still
- * on -- and rc_sim_kink_ahead says so. */
+/// Ball i as it is at the engine's time (per-ball frames: on the line it is still on where its kink lies ahead, rc_sim_kink_ahead).
 int rc_sim_get_ball(const rc_sim *s, size_t i, rc_sim_ball *out);
-/* Ball i's latest segment taken to the engine's time: every collision processed so far
- * applied, as if its change came at the table time of its contact event -- the same as
- * rc_sim_get_ball in every frame but per_ball ones (covariant), where a ball's kink can lie
- * after (or before) that time. The sums over these states are the ones collisions conserve
- * (rc_sim_diagnostics). Why both: events are processed in the table time of their contact
- * events, and a ball's kink may come up to a glue window before its contact event too --
- * such a collision is not processed yet at the engine's time, so rc_sim_get_ball still
- * gives that ball's incoming line there: it is the table-time picture of the collisions
- * decided so far, and the slice at a time t is complete only for collisions whose contact
- * events lie before t (papers/shape-change.md, section 6; the complete slice, read later:
- * rc_sim_slice_request below). This read-out applies every change at its contact event
- * instead, for both balls alike. */
-int rc_sim_get_ball_latest(const rc_sim *s, size_t i, rc_sim_ball *out);
-/* Every ball at once, out[i] for i < n = rc_sim_count(s) (RC_EINVAL otherwise): what
- * rc_sim_get_ball (latest = 0) or rc_sim_get_ball_latest (latest != 0) gives, bit for
- * bit, read in the engine's storage order (n single calls each land on a random place of
- * the engine's arrays). ahead (may be NULL, n entries, latest = 0): rc_sim_kink_ahead of
- * each ball. */
+/// Every ball at once, out[i] for i < n = rc_sim_count(s) (RC_EINVAL otherwise): rc_sim_get_ball's (latest = 0) or rc_sim_get_ball_latest's (latest != 0) states bit for bit, read in the engine's storage order; ahead (may be NULL, n entries, latest = 0) gets rc_sim_kink_ahead of each ball.
 int rc_sim_get_balls(const rc_sim *s, size_t n, rc_sim_ball *out, int latest, int8_t *ahead);
-/* per_ball frames (covariant): ball i's glued world tube through its latest kink
- * (relcol/toi.h: rc_glue; its section at a time t is the incoming cylinder's part not yet
- * reached by H and the outgoing one's part reached), in table coordinates: on a walled
- * axis those of rc_sim_get_ball's x, on a periodic one up to whole box lengths. out->r = 0:
- * none -- no kink yet, c infinite, or a kink the order rule put at the ball's previous one
- * (where no glued tube is defined). RC_EINVAL for a bad index or another frame. */
-int rc_sim_get_glue(const rc_sim *s, size_t i, rc_glue *out);
-/* Whether ball i's latest kink lies after the engine's time (per_ball frames; 0 in every
- * other frame): 0 no, rc_sim_get_ball gives its latest segment; 1 yes, rc_sim_get_ball
- * gives the line it is still on (the incoming one); 2 yes, but the ball has more kinks
- * ahead at once than the engine records (six) and the line it is on now was not
- * recorded: rc_sim_get_ball then
- * gives its latest segment taken back to now (position and proper time off by up to a
- * glue window's travel) -- flagged here so that it is not taken for the truth. A state
- * read while any ball's kink lies ahead does not carry the change still to come:
- * continuing from the balls alone loses it (use a checkpoint). Negative: RC_EINVAL. */
-int rc_sim_kink_ahead(const rc_sim *s, size_t i);
-/* ---- delayed table-time slices: every ball's state at one table time ts ------------- */
 
-/* A per_ball frame (covariant) changes a ball's velocity at its own kink E, up to a glue
- * window before or after the contact event X whose table time orders the events, and a
- * later collision can undo a kink and place new ones (papers/shape-change.md, sections
- * 6-8). So no read-out at the engine's time gives the table-time slice: rc_sim_get_ball
- * misses collisions whose X lies after now but whose kink lies before it, and
- * rc_sim_get_ball_latest applies every change at X. A slice asked for ahead of time is
- * kept by the engine -- every ball's state at ts on the segment of its worldline that
- * holds ts, brought up to date whenever a kink at or before ts is placed or undone -- and
- * can be read once no later event can place or undo a kink at or before ts: from the
- * engine's time ts + W on,
- *     W = (2 r_max / c) (1 + 3 sqrt(G^2 - 1)),
- * r_max the largest rest radius and G the largest Lorentz factor of any ball's segment
- * since the slice was asked for (it grows as the run makes faster balls), which bounds a
- * single contact's reach (its X before now, its kink before X) and a rollback's (the kink
- * it undoes, the collision that kink belonged to, its partner's new kink:
- * papers/shape-change.md, section 9). In every other frame (and at infinite c) a ball's
- * velocity changes at its event's table time: W = 0, and the slice is the one
- * rc_sim_get_ball gives with the engine's time at ts (taken as the engine passes ts, bit
- * for bit). A slice is not a conserved sum: its balls are taken at one table time, not
- * across the hyperplanes on which collisions exchange momentum, so its total momentum and
- * energy differ from rc_sim_diagnostics'. Reading never changes the run. The engine's work
- * per slice is O(N) when asked (and, other frames, when taken) and O(1) per kink it must
- * follow; its memory O(N) per slice held. Slices are not part of a checkpoint:
- * rc_sim_checkpoint_read, rc_sim_set_balls and rc_sim_set_c drop every slice held
- * (afterwards their ids give RC_ENOSLICE); a checkpoint written while slices are held
- * does not carry them (ask again after reading it). rc_sim_sync keeps them. */
-
-/* What rc_sim_slice_ready reports. */
-typedef struct rc_sim_slice_info {
-    double ts;      /* the slice's table time */
-    double t_final; /* engine time from which it is final, as W is bounded now (it can
-                       grow while the run makes faster balls) */
-    int final;      /* 1: final, it can be read */
-    /* changes to the slice after it was first read final: a later event reached back
-     * before ts, beyond W (W's bound holds for single contacts and tube-conflict
-     * rollbacks; a rollback for an overlap the frame reported undoes the later kink of the
-     * pair, which is not bounded): the values read then were not the final ones. The
-     * engine keeps the slice up to date while it is held, so a read after it is. */
-    uint64_t late;
-    /* the largest engine time minus ts at which an event changed the slice (-inf: none
-     * since it was asked for): how much of W the run has used */
-    double reach;
-} rc_sim_slice_info;
-
-/* Ask for the slice at table time ts >= the engine's time; *id names it. RC_EINVAL for
- * NULL arguments, no balls, ts NaN, infinite or before the engine's time, or (per_ball
- * frames) a ball with more kinks after ts than the engine records (six) whose line at ts
- * was therefore not recorded (rc_sim_kink_ahead = 2: ask for a later ts); RC_ENOMEM. */
-int rc_sim_slice_request(rc_sim *s, double ts, uint32_t *id);
-/* 1 if slice id is final, 0 if not yet; *info (may be NULL) filled. RC_EINVAL for a NULL
- * engine, RC_ENOSLICE for an id not held. */
-int rc_sim_slice_ready(const rc_sim *s, uint32_t id, rc_sim_slice_info *info);
-/* Ball i of slice id: centre (in [0, L) with image counted on periodic axes, as
- * rc_sim_get_ball), momentum, rest mass, proper time and TC memory at ts on the segment of
- * its worldline that holds ts. RC_ENOTREADY before the slice is final (nothing written),
- * RC_ENOSLICE for an id not held, RC_EINVAL for a NULL argument or a bad index. The first
- * read marks the slice read (rc_sim_slice_info.late counts changes after it). */
-int rc_sim_slice_get(rc_sim *s, uint32_t id, size_t i, rc_sim_ball *out);
-/* Drop slice id (its memory and the engine's work for it). RC_ENOSLICE if not held. */
-int rc_sim_slice_release(rc_sim *s, uint32_t id);
-
-/* Diagnostics at the engine's time (O(N); max_overlap is O(N) with the cells). */
+/// Diagnostics at the engine's time (O(N)).
 int rc_sim_diagnostics(const rc_sim *s, rc_sim_diag *d);
-/* FNV-1a hash of every ball's state bits at the engine's time (determinism tests). */
+/// FNV-1a hash of every ball's state bits at the engine's time (determinism tests).
 uint64_t rc_sim_hash(const rc_sim *s);
-/* Bytes of memory held by the engine. */
+/// Bytes of memory held by the engine.
 size_t rc_sim_bytes(const rc_sim *s);
 
 /* ---- simultaneous contacts: relcol/contacts.h (the zmf law's group solver) ---- */
 
 /* ---- initial states ------------------------------------------------------------- */
 
+/// A gas to start from (rc_sim_gas_init).
 typedef struct rc_sim_gas_def {
-    int dim;          /* 2 or 3 */
-    size_t n;         /* number of balls */
-    double radius;    /* rest radius of every ball */
-    double packing;   /* packing fraction: < 0.52 in 3-D, < 0.78 in 2-D (lattice start) */
-    double v_rms;     /* rms speed (< c) */
-    double c;         /* speed of light (INFINITY classical) */
-    double density;   /* rest mass = density * r^3 */
-    uint64_t seed;
+    int dim;          ///< 2 or 3
+    size_t n;         ///< number of balls
+    double radius;    ///< rest radius of every ball
+    double packing;   ///< packing fraction: < 0.52 in 3-D, < 0.78 in 2-D (lattice start)
+    double v_rms;     ///< rms speed (< c)
+    double c;         ///< speed of light (INFINITY classical)
+    double density;   ///< rest mass = density r^3
+    uint64_t seed;    ///< the random stream's seed
 } rc_sim_gas_def;
 
-/* n equal balls on a random subset of the sites of a square / cubic lattice filling a
- * cubic box whose edge makes the packing fraction exact, with isotropic random momenta
- * scaled so the rms speed is v_rms and total momentum is zero. Where that lattice (side^dim
- * >= n sites) has no room for n <= 64 balls, they are placed at random instead (random
- * sequential addition, from the seed; RC_EOVERLAP if no placement is found within a
- * bounded number of tries). Melt it with rc_sim_advance before measuring anything that
- * needs a fluid. balls: n entries.
- * RC_EINVAL also for n = 1 with v_rms > 0 (zero total momentum leaves one ball at rest),
- * RC_ENONFINITE for a v_rms whose momenta would overflow. */
+/// n equal balls on random sites of a lattice filling a cubic box of the exact packing (n <= 64 without room: random placement, RC_EOVERLAP if none), isotropic momenta of rms speed v_rms and zero total; RC_EINVAL (n = 1 with v_rms > 0), RC_ENONFINITE. Melt it before measuring a fluid.
 int rc_sim_gas_init(const rc_sim_gas_def *g, rc_vec3 *box, rc_sim_ball *balls);
 
 #ifdef __cplusplus

@@ -1,4 +1,4 @@
-/* engine/zmf_group.c — per_ball frames: a group of contacts formed by simultaneity in the
+/* engine/perball/zmf_group.c — per_ball frames: a group of contacts formed by simultaneity in the
  * group's zero-momentum frame rather than at one table time (papers/simultaneous-contacts.md,
  * "Forming the group in its ZMF"). A further contact of a member joins the event's when
  * the frame's contact event of that pair lies within sim_tol light-crossing times of the
@@ -7,10 +7,11 @@
  * (eng_solve_at_events). */
 #include <math.h>
 
-#include "pair_zmf.h"
-#include "resolve.h"
-#include "walk.h"
-#include "../toi_private.h"
+#include "../group.h"
+#include "../pair_zmf.h"
+#include "../walk.h"
+#include "../../toi_private.h"
+#include "model.h"
 #include "relcol/status.h"
 
 /* A contact found: members a, b (local), normal from a to b, its event relative to ball
@@ -290,7 +291,7 @@ int eng_zmf_group(rc_sim *s, int32_t i, int32_t bp, double T, double tx0, rc_vec
     eng_pend_snap ps[ENG_EVGROUP_NMAX];
     size_t nps = 0, nm = 2, nc = 1;
     for (size_t q = 2; q < g.nm; q++) {
-        if (s->pend)
+        if (s->pb)
             ps[nps++] = eng_pend_take(s, g.mem[q]);
         if (eng_member_of(s, &nm, g.mem[q], T) < 0)
             return RC_ENOMEM;

@@ -1,21 +1,21 @@
-/* engine/records.c — per_ball frames: the records a collision leaves so that a later
+/* engine/perball/records.c — per_ball frames: the records a collision leaves so that a later
  * conflict can undo it (eng_undo: each member's state, hyperplane, tube and clock before,
  * its contact, the collision's members and their counters after it), written by the
- * single-contact path and by the groups the undo solves (engine/undo.c reads them;
+ * single-contact path and by the groups the undo solves (engine/perball/undo.c reads them;
  * papers/shape-change.md, sections 7 and 8). */
 #include <string.h>
 
-#include "resolve.h"
+#include "model.h"
 
 /* A ball's record about to be written: the one it holds becomes its previous one (a chain
  * undo's, chain_set). */
 static inline void undo_shift(rc_sim *s, int32_t b)
 {
-    if (s->und[b].partner != ENG_NONE) {
-        s->undp[b] = s->und[b];
+    if (s->pb->und[b].partner != ENG_NONE) {
+        s->pb->undp[b] = s->pb->und[b];
     } else {
-        s->undp[b].partner = ENG_NONE;
-        s->undp[b].nm = 0;
+        s->pb->undp[b].partner = ENG_NONE;
+        s->pb->undp[b].nm = 0;
     }
 }
 
@@ -26,7 +26,7 @@ static inline void undo_shift(rc_sim *s, int32_t b)
 static eng_undo *undo_open(rc_sim *s, int32_t b, int ok, size_t nm, const rc_particle *in,
                            const eng_cov *cov, const rc_glue *glu, double tau_last)
 {
-    eng_undo *u = &s->und[b];
+    eng_undo *u = &s->pb->und[b];
     undo_shift(s, b);
     if (!ok) {
         u->partner = ENG_NONE;
@@ -65,7 +65,7 @@ void eng_write_undo(rc_sim *s, size_t nm, int32_t bp, int record, int policy,
         eng_undo *u = undo_open(s, b, ok, nm, &P[j], &gat[j], &uat[j], cat[j].tau_last);
         if (!u)
             continue;
-        const double te = s->cov[b].t_k; /* (its kink E: X - E, the same on both lines) */
+        const double te = s->pb->cov[b].t_k; /* (its kink E: X - E, the same on both lines) */
         u->n = j == 0 ? n0 : rc_v3_scale(-1.0, n0);
         u->dt = tx[j] - te;
         u->dx = rc_v3_axpy(dX[j], tx[j] - te, vold[j]);
@@ -157,7 +157,7 @@ void eng_write_group(rc_sim *s, size_t nm, size_t nc, const rc_particle *B, cons
         if (ct) {
             /* (the normal from this member to its parent or wall) */
             u->n = ct->a == (int)m ? ct->n : rc_v3_scale(-1.0, ct->n);
-            u->dt = ct->t - s->cov[b].t_k;
+            u->dt = ct->t - s->pb->cov[b].t_k;
             u->dx = eng_image(s, rc_v3_sub(ct->x, s->b[b].x));
         } else {
             u->n = rc_v3(0, 0, 0);

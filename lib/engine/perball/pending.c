@@ -1,13 +1,13 @@
-/* engine/pending.c — per_ball frames: the read-out's record of the lines a ball is still
+/* engine/perball/pending.c — per_ball frames: the read-out's record of the lines a ball is still
  * on before kinks that lie after the engine's time (eng_pend, read by engine/diag.c); kept
  * after each event and after an undo. Reads the engine, changes nothing a run reads. */
 #include <math.h>
 
-#include "resolve.h"
+#include "model.h"
 
 eng_pend_snap eng_pend_take(const rc_sim *s, int32_t b)
 {
-    const eng_pend_snap p = {b, s->cnt[b], s->cov[b].t_k, {s->a[b].m, s->a[b].p}, s->clk[b].tau_last};
+    const eng_pend_snap p = {b, s->cnt[b], s->pb->cov[b].t_k, {s->a[b].m, s->a[b].p}, s->clk[b].tau_last};
     return p;
 }
 
@@ -21,8 +21,8 @@ void eng_pend_note(rc_sim *s, const eng_pend_snap *p)
     const int32_t b = p->b;
     if (s->cnt[b] == p->cnt)
         return; /* (no change: no kink) */
-    eng_pend *r = &s->pend[b];
-    const double te = s->cov[b].t_k, now = s->now;
+    eng_pend *r = &s->pb->pend[b];
+    const double te = s->pb->cov[b].t_k, now = s->now;
     while (r->depth >= 2 && r->l[0].t <= now) {
         /* the first recorded line has ended: the next is the one the ball is on, from
          * that kink (its centre and proper time there) */
@@ -80,3 +80,41 @@ void eng_pend_undo(eng_pend *r, double te)
         r->depth = 0;
 }
 
+/* per_ball frames: ball i's state at now (t >= now) where its latest kink lies ahead of
+ * it, from the lines eng_pend recorded: 1 (*x in the wrap coordinates *img, p, m, tau, TC
+ * memory set), 2 if the line it is on then was not recorded, 0 if the ball is on its
+ * stored line. */
+int eng_pend_read(const rc_sim *s, size_t i, double now, rc_sim_ball *o, const int32_t **img)
+{
+    if (!s->pb || !(s->pb->cov[i].t_k > now))
+        return 0;
+    const eng_pend *r = &s->pb->pend[i];
+    int k = 0;
+    while (k < r->depth && !(now < r->l[k].t))
+        k++;
+    if (k == r->depth)
+        return 2;
+    /* line k: from the first recorded kink (k = 0: back from it), else along the lines
+     * between to kink k - 1 */
+    double t0 = r->l[0].t, tau0 = r->tau, tau_last = r->tau_last;
+    rc_vec3 x0 = r->x;
+    for (int q = 1; q < k; q++) {
+        const double M = eng_mass_rel(r->l[q].m, r->l[q].p, s->inv_c2), h = r->l[q].t - t0;
+        x0 = rc_v3_axpy(x0, h, rc_v3_scale(1.0 / M, r->l[q].p));
+        tau0 += h * (r->l[q].m / M);
+        t0 = r->l[q].t;
+    }
+    if (k >= 1)
+        tau_last = tau0;
+    const rc_vec3 p = r->l[k].p;
+    const double m = r->l[k].m;
+    const double h = now - t0, M = eng_mass_rel(m, p, s->inv_c2);
+    o->x = rc_v3_axpy(x0, h, rc_v3_scale(1.0 / M, p));
+    o->p = p;
+    o->m = m;
+    o->tau = tau0 + h * (m / M);
+    o->collided = isfinite(tau_last);
+    o->tau_last = o->collided ? tau_last : 0.0;
+    *img = r->img;
+    return 1;
+}

@@ -1,9 +1,8 @@
-/* engine/kink.c — per_ball frames: where a ball's velocity changes on its worldline (its
+/* engine/perball/kink.c — per_ball frames: where a ball's velocity changes on its worldline (its
  * kink, through the glued tube's hyperplane, and the order rule where kinks cross), and a
  * wall's contact event of the model (papers/shape-change.md, sections 2, 6 and 8). Used
- * by the event loop (engine/core.c) and the undo (engine/undo.c). */
-#include "private.h"
-#include "resolve.h"
+ * by the event loop (engine/core.c) and the undo (engine/perball/undo.c). */
+#include "model.h"
 #include "relcol/status.h"
 
 /* per_ball frames: ball b's velocity changes from `in` to `out` through the contact event
@@ -20,22 +19,21 @@
  * policy's, a group's). Such a kink before a kink still pending (ahead of now) overtakes
  * it: put where the order rule would, at the pending kink, it would leave the ball's line
  * up to there, and so the geometry that called the policy, as it was, and the same
- * contact would come up again at the same instant for ever (RC_ESTALL, a 3-D covariant gas
- * at packing 0.2). It is kept at the event's time instead (counted with the order
+ * contact would come up again at the same instant for ever (RC_ESTALL). It is kept at the event's time instead (counted with the order
  * conflicts; the ball's centre there is its stored line's). te, kappa: eng_kink_time's. */
 void eng_glue_kink_at(rc_sim *s, int32_t b, const rc_particle *in, const rc_particle *out,
                       double tx, rc_vec3 dx, double te, rc_vec3 kappa, int at_event)
 {
-    eng_cov *cv = &s->cov[b];
+    eng_cov *cv = &s->pb->cov[b];
     /* the tube, for a neighbour met while the ball is in its window (X at the origin) */
     if (rc_glue_make(s->inv_c2, s->b[b].r, in, out, tx, rc_v3_scale(-1.0, dx),
-                     rc_v3(0.0, 0.0, 0.0), &s->glu[b]) != RC_OK)
-        s->glu[b].r = 0.0;
+                     rc_v3(0.0, 0.0, 0.0), &s->pb->glu[b]) != RC_OK)
+        s->pb->glu[b].r = 0.0;
     if (!(te >= cv->t_k)) {
         if (!(at_event && cv->t_k > s->now))
             te = cv->t_k;
         s->bk.order_conflicts++;
-        s->glu[b].r = 0.0; /* (the stored line is no longer the tube's outgoing one) */
+        s->pb->glu[b].r = 0.0; /* (the stored line is no longer the tube's outgoing one) */
     }
     eng_advance_ball(s, b, te);
     cv->t_k = te;
@@ -67,5 +65,5 @@ int eng_wall_event_point(const rc_sim *s, int32_t i, int w, double *tx, rc_vec3 
     rc_v3_set(&e, d, up ? 1.0 : -1.0);
     const double bn = rc_v3_get(beta, d) * (up ? 1.0 : -1.0);
     *dx = rc_v3_scale(b->r * b->r / h, rc_v3_axpy(e, -bn, beta));
-    return eng_glue_side(&s->cov[i], &s->glu[i], b->v, *tx, *dx);
+    return eng_glue_side(&s->pb->cov[i], &s->pb->glu[i], b->v, *tx, *dx);
 }

@@ -1,0 +1,207 @@
+/* engine/perball/ops.c — the per-ball model's ops (engine/model.h): what the event loop
+ * asks it at each named point of an event -- the contact event of a contact predicted,
+ * the undo or the group its own frame forms, each member's kink before and after a
+ * resolve, and the read-out of a ball whose kink lies ahead (papers/shape-change.md). */
+#include <math.h>
+#include <string.h>
+
+#include "../model.h"
+#include "model.h"
+#include "relcol/status.h"
+
+/* A collision reads ball b's cold records -- its hyperplane, its glued
+ * tube (copied whole for the undo record), whether its undo record is live, the read-out's
+ * record -- in that order as it goes; asked for at once, their lines come in parallel
+ * instead of one miss after another. (Always inlined: out of line GCC finds the function
+ * free of side effects and drops its calls.) */
+__attribute__((always_inline)) static inline void glue_prefetch(const rc_sim *s, int32_t b)
+{
+    const char *g = (const char *)&s->pb->glu[b];
+    __builtin_prefetch(&s->pb->cov[b]);
+    /* (five lines: the array is line-aligned, so a record starts at most 56 bytes into
+     * its first line) */
+    for (size_t o = 0; o < sizeof(rc_glue); o += 64)
+        __builtin_prefetch(g + o);
+    __builtin_prefetch(&s->pb->und[b].partner);
+    /* (the record a new one shifts into the previous one: whole, written at once) */
+    const char *u = (const char *)&s->pb->und[b], *up = (const char *)&s->pb->undp[b];
+    for (size_t o = 0; o < sizeof(eng_undo); o += 64) {
+        __builtin_prefetch(u + o);
+        __builtin_prefetch(up + o, 1);
+    }
+    __builtin_prefetch(&s->pb->pend[b].depth);
+}
+
+static void event_begin(rc_sim *s, int32_t i, int32_t bp)
+{
+    glue_prefetch(s, i);
+    if (bp >= 0)
+        glue_prefetch(s, bp);
+    eng_event_rec *e = &s->pb->event;
+    e->np = bp >= 0 ? 2 : 1;
+    e->ps[0] = eng_pend_take(s, i);
+    if (e->np == 2)
+        e->ps[1] = eng_pend_take(s, bp);
+    e->rollbacks = s->bk.rollbacks;
+}
+
+/* The read-out's records of the event's balls (an undo noted its own). */
+static void event_end(rc_sim *s)
+{
+    const eng_event_rec *e = &s->pb->event;
+    for (int j = 0; j < e->np && s->bk.rollbacks == e->rollbacks; j++)
+        eng_pend_note(s, &e->ps[j]);
+}
+
+/* The contact event as the prediction found it (a ball's), or the wall's from the stored
+ * state; a contact on the incoming side of a hyperplane (a tube conflict), or an overlap
+ * the frame reported, is first offered to an undo, else left to the overlap policy at T
+ * through the centres (counted). */
+static int contact_event(rc_sim *s, int32_t i, int32_t bp, double T, eng_event_x *ev)
+{
+    if (bp >= 0) {
+        const rc_vec3 n = s->ev_n[i];
+        if (!isnan(n.x)) {
+            ev->tx[0] = s->pb->cov[i].ev_tx;
+            ev->dX[0] = s->pb->cov[i].ev_dx;
+            ev->model = 1;
+        } else {
+            const int st = eng_undo_conflict(s, i, bp, T, n.y == 1.0);
+            if (st != 0)
+                return st;
+            if (n.y == 1.0)
+                s->bk.tube_conflicts++;
+        }
+        return 0;
+    }
+    ev->model = eng_wall_event_point(s, i, ENG_WALL_INDEX(bp), &ev->tx[0], &ev->dX[0]);
+    ev->wall_tube = !ev->model;
+    if (ev->wall_tube) {
+        /* the shape met the wall on the incoming side of the ball's hyperplane: its last
+         * collision undone and solved with the wall's contact, as a ball's, else the
+         * overlap policy */
+        const int st = eng_undo_wall(s, i, bp, T, ev->tx[0]);
+        if (st != 0)
+            return st;
+        s->bk.tube_conflicts++;
+        ev->tx[0] = T;
+        ev->dX[0] = rc_v3(0, 0, 0);
+    }
+    return 0;
+}
+
+static int group_of_model(rc_sim *s, int32_t i, int32_t bp, double T, const eng_event_x *ev)
+{
+    return eng_zmf_group(s, i, bp, T, ev->tx[0], ev->dX[0]);
+}
+
+/* Each changed member's kink (time, H's normal), once, and whether its hyperplane would
+ * reach some point of the ball before the last one did (eng_kinks_cross; the centre's
+ * order is the order rule's). (A member's kink moves only its own record, so the other's
+ * is the same before and after it.) Such a ball met its new partner within its last
+ * kink's window: the last collision is undone if it can be, else the order rule. */
+static int before_resolve(rc_sim *s, size_t nm, const rc_particle *P, const rc_particle *Q,
+                          const int *changed, const eng_event_x *ev, int undo_order)
+{
+    eng_single_rec *r = &s->pb->single;
+    for (size_t j = 0; j < nm; j++) {
+        r->cross[j] = 0;
+        r->te[j] = 0.0;
+        r->kap[j] = rc_v3(0, 0, 0);
+        if (changed[j]) {
+            const int32_t b = s->grp_ball[j];
+            r->te[j] = eng_kink_time(s, b, &P[j], &Q[j], ev->tx[j], ev->dX[j], &r->kap[j]);
+            r->cross[j] = eng_kinks_cross(s, b, r->te[j], r->kap[j], &P[j], &Q[j]);
+        }
+    }
+    for (size_t j = 0; j < nm && ev->model && undo_order && nm > 1; j++)
+        if (changed[j] && r->cross[j] && eng_undoable(s, s->grp_ball[j], s->grp_ball[1 - j]))
+            return (int)j;
+    return -1;
+}
+
+static int undo_member(rc_sim *s, int32_t w, int32_t k, double T, const eng_event_x *ev)
+{
+    return eng_rollback(s, w, k, T, ev->tx[0]);
+}
+
+static void resolve_member(rc_sim *s, size_t j, const rc_particle *P, const rc_particle *Q,
+                           int changed, const eng_event_x *ev)
+{
+    eng_single_rec *r = &s->pb->single;
+    const int32_t b = s->grp_ball[j];
+    r->b[j] = s->b[b];
+    r->c[j] = s->clk[b];
+    r->g[j] = s->pb->cov[b];
+    r->u[j] = s->pb->glu[b];
+    /* (no change, no kink: a contact the law found nothing to resolve keeps the ball's
+     * line and its hyperplane) */
+    r->kinked[j] = 0;
+    if (!changed)
+        return;
+    /* hyperplanes crossing inside the ball though the centres' kinks come in order (not
+     * undone): the tube of the two is not defined there, counted with the order conflicts
+     * (the collision can still be undone: its kink is where the model puts it) */
+    if (r->te[j] >= s->pb->cov[b].t_k && r->cross[j])
+        s->bk.order_conflicts++;
+    const uint64_t oc = s->bk.order_conflicts;
+    eng_glue_kink_at(s, b, &P[j], &Q[j], ev->tx[j], ev->dX[j], r->te[j], r->kap[j], !ev->model);
+    r->kinked[j] = s->bk.order_conflicts == oc && s->pb->glu[b].r > 0.0;
+}
+
+static const eng_ball *member_before(const rc_sim *s, size_t j) { return &s->pb->single.b[j]; }
+
+static void take_back(rc_sim *s, size_t j)
+{
+    const eng_single_rec *r = &s->pb->single;
+    const int32_t b = s->grp_ball[j];
+    s->b[b] = r->b[j];
+    s->clk[b] = r->c[j];
+    s->pb->cov[b] = r->g[j];
+    s->pb->glu[b] = r->u[j];
+}
+
+/* An overlap-policy decision between two balls leaves a record too, so that a later
+ * conflict with either ball's tube before its kink undoes it and solves it with the new
+ * contact (one decision, still counted once) instead of handing that conflict to the
+ * policy as well. Its contact event, for the undo's group: one event for both, on the
+ * centre line at T where spheres of the rest radii would touch. */
+static void after_resolve(rc_sim *s, size_t nm, int32_t bp, const rc_particle *P,
+                          const rc_vec3 *vold, const eng_event_x *ev, int tc)
+{
+    const eng_single_rec *r = &s->pb->single;
+    const int policy_pair = !ev->model && nm == 2;
+    rc_vec3 dXp[2];
+    if (policy_pair) {
+        const int32_t b0 = s->grp_ball[0], b1 = s->grp_ball[1];
+        const rc_vec3 d = eng_image(s, rc_v3_sub(r->b[1].x, r->b[0].x));
+        dXp[0] = rc_v3_scale(s->b[b0].r / (s->b[b0].r + s->b[b1].r), d);
+        dXp[1] = rc_v3_sub(dXp[0], d);
+    }
+    eng_write_undo(s, nm, bp, ev->model || policy_pair, policy_pair, P, vold, r->c, r->g, r->u,
+                   ev->tx, policy_pair ? dXp : ev->dX, r->kinked, tc);
+}
+
+/* A group at one table time: every kink at the group's time (members are there),
+ * through the centre. */
+static void group_member(rc_sim *s, int32_t b, const rc_particle *in, const rc_particle *out)
+{
+    eng_glue_kink(s, b, in, out, s->b[b].t, rc_v3(0, 0, 0), 1);
+}
+
+const eng_model_ops eng_model_glued = {
+    .name = "glued tubes",
+    .per_ball = 1,
+    .event_begin = event_begin,
+    .event_end = event_end,
+    .contact_event = contact_event,
+    .group_of_model = group_of_model,
+    .before_resolve = before_resolve,
+    .undo_member = undo_member,
+    .resolve_member = resolve_member,
+    .member_before = member_before,
+    .take_back = take_back,
+    .after_resolve = after_resolve,
+    .group_member = group_member,
+    .ball_at = eng_pend_read,
+};
