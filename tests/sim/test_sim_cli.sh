@@ -308,8 +308,9 @@ for f in ".summary.txt.relcol-$dead.AbCdEf" ".frames.dat.relcol-$dead.x1y2z3" \
 done
 sed 's/"t_end": 40/"t_end": 2/; s/"snapshots": \[10, 20\], //' "$tmp/run.json" > "$tmp/stale.json"
 "$sim" "$tmp/stale.json" --out "$tmp/stale" > /dev/null 2> "$tmp/err"
-left=$(ls -A "$tmp/stale" | grep '^\.' | sort | tr '\n' ' ')
-[ "$left" = ".relcol_sim_outputs .summary.txt.keep .summary.txt.relcol-$$.LiVeOn " ] \
+# (.relcol-run and .relcol-run.XXXXXX: the published run, simout_publish.c)
+left=$(ls -A "$tmp/stale" | grep '^\.' | grep -v '^\.relcol-run' | sort | tr '\n' ' ')
+[ "$left" = ".summary.txt.keep .summary.txt.relcol-$$.LiVeOn " ] \
     && ok "stale temporaries of a dead writer removed, a live one's kept" \
     || ko "temporaries left: $left $(cat "$tmp/err")"
 
