@@ -585,6 +585,26 @@ int scn_parse(const char *text, const char *name, scn_scenario *s, char *err)
     return scn_parse_ext(text, name, NULL, s, err);
 }
 
+/* The first \u0000 escape inside a JSON string (a key or a value), or NULL: cJSON decodes
+ * it to a NUL and so cuts the string there ("zmf\u0000x" would read as "zmf"). */
+static const char *nul_escape(const char *text)
+{
+    int in_str = 0;
+    for (const char *p = text; *p; p++) {
+        if (!in_str) {
+            in_str = *p == '"';
+        } else if (*p == '"') {
+            in_str = 0;
+        } else if (*p == '\\') {
+            if (p[1] == 'u' && strncmp(p + 2, "0000", 4) == 0)
+                return p;
+            if (p[1])
+                p++;
+        }
+    }
+    return NULL;
+}
+
 int scn_parse_ext(const char *text, const char *name, const scn_tables *extra,
                   scn_scenario *s, char *err)
 {
@@ -597,6 +617,18 @@ int scn_parse_ext(const char *text, const char *name, const scn_tables *extra,
     ctx c = {name, err};
     /* a UTF-8 byte order mark (editors and spreadsheets write one) is not JSON: skipped */
     const char *body = strncmp(text, "\xef\xbb\xbf", 3) == 0 ? text + 3 : text;
+    const char *nul = nul_escape(body);
+    if (nul) {
+        long line = 1, col = 1;
+        for (const char *p = text; p < nul; p++, col++)
+            if (*p == '\n') {
+                line++;
+                col = 0;
+            }
+        bad(&c, "(document)", "line %ld, column %ld: a string holds \\u0000 (a NUL "
+            "character), which no key, name or path can contain", line, col);
+        return -1;
+    }
     const char *end = NULL;
     cJSON *root = cJSON_ParseWithOpts(body, &end, 0);
     int rc = -1;

@@ -90,6 +90,10 @@ def collide(m0, p0, m1, p1, n, c=math.inf, eps=1.0, law="zmf", alpha=None, azimu
     prm = ffi.new("rc_collision_params *", lib.rc_collision_params_default())
     prm.c = float(c)
     prm.eps = float(eps)
+    # (NaN is the library's "no angle given", which is said with None here: an explicit
+    # NaN is refused as relcol-collide --alpha refuses it)
+    if alpha is not None and math.isnan(float(alpha)):
+        raise RelcolError(-2, "collide: alpha")
     prm.alpha = math.nan if alpha is None else float(alpha)
     prm.azimuth = float(azimuth)
     status = np.zeros(npair, dtype=np.intc)
