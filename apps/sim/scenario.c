@@ -428,7 +428,7 @@ static int parse_generate(const ctx *c, const cJSON *g, const cJSON *jbox, scn_s
         s->balls = calloc(s->n, sizeof *s->balls);
         if (!s->balls)
             return bad(c, "generate.n", "out of memory for %zu balls: their description "
-                       "alone needs %zu bytes (%.3g GiB), and the engine about as much again",
+                       "alone needs %zu bytes (%.3g GiB), before the engine's own",
                        s->n, s->n * sizeof *s->balls,
                        (double)(s->n * sizeof *s->balls) / (1024.0 * 1024.0 * 1024.0));
         int st = rc_sim_gas_init(&gd, &s->box, s->balls);
