@@ -25,6 +25,7 @@ const char *rc_strerror(int status)
     case RC_ESTALL: return "simulated time stands still: events keep coming at one instant";
     case RC_ENOTREADY: return "slice not final yet: advance the engine past its final time";
     case RC_ENOSLICE: return "no slice held under that id (released, or dropped with the balls, c or a checkpoint read)";
+    case RC_ESCALE: return "positions too far from the origin for their doubles to resolve the radii";
     default: return "unknown status code";
     }
 }

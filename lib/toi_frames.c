@@ -2,6 +2,7 @@
  * parameters and the validating entry point rc_toi(). A built-in frame: its entry with
  * its declared properties (relcol/toi.h) and one line in rc_toi_frames[] (the zmf frame
  * lives in toi_zmf.c). */
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -111,6 +112,21 @@ static int check_ball(const rc_toi_ball *a)
     return rc_particle_check(&b);
 }
 
+/* Whether the doubles of the centres' positions, at time 0 and at t, are finer than a
+ * thousandth of the smaller radius: beyond, the contact's geometry is rounding (a 1-D pair
+ * 1e17 radii apart meets at a point where both centres are the same double). A choice:
+ * it refuses boxes wider than ~4.5e12 radii, which no gas of the engine comes near. */
+static int resolvable(const rc_toi_ball *a, const rc_toi_ball *b, double k, double t)
+{
+    double s = fmax(rc_v3_norm(a->x), rc_v3_norm(b->x));
+    if (t != 0.0) {
+        rc_vec3 xa = rc_v3_add(a->x, rc_v3_scale(t, rc_velocity(a->m, a->p, k)));
+        rc_vec3 xb = rc_v3_add(b->x, rc_v3_scale(t, rc_velocity(b->m, b->p, k)));
+        s = fmax(s, fmax(rc_v3_norm(xa), rc_v3_norm(xb)));
+    }
+    return DBL_EPSILON * s <= 1e-3 * fmin(a->r, b->r);
+}
+
 int rc_toi(const rc_toi_frame *frame, const rc_toi_params *prm, const rc_toi_ball *a,
            const rc_toi_ball *b, rc_toi_workspace *ws, rc_toi_contact *out)
 {
@@ -125,5 +141,13 @@ int rc_toi(const rc_toi_frame *frame, const rc_toi_params *prm, const rc_toi_bal
     int st;
     if ((st = check_ball(a)) != RC_OK || (st = check_ball(b)) != RC_OK)
         return st;
-    return frame->toi(prm, a, b, ws, out);
+    if (!resolvable(a, b, k, 0.0))
+        return RC_ESCALE;
+    if ((st = frame->toi(prm, a, b, ws, out)) != RC_OK)
+        return st;
+    const double nn = rc_v3_dot(out->n, out->n);
+    if (!isfinite(out->t) || !rc_v3_isfinite(out->x) || !(fabs(nn - 1.0) < 1e-6) ||
+        !resolvable(a, b, k, out->t))
+        return RC_ESCALE;
+    return RC_OK;
 }

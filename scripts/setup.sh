@@ -7,10 +7,11 @@ set -euo pipefail
 # mpi-default-dev and openmpi-bin come with libsundials-dev already; they are named
 # because relcol-sweep's MPI build and its mpirun test use them directly. libhdf5-dev is
 # the serial HDF5 of relcol-sim's H5MD trajectory; the python3 packages read its outputs in
-# the tests (h5py: H5MD, ase: extended XYZ, numpy: CSV).
+# the tests (h5py: H5MD, ase: extended XYZ, numpy: CSV). strace: the publish test's fault
+# injection (tests/sim/test_sim_publish.sh fails each system call of a run in turn).
 RELCOL_PACKAGES=(gcc libc6-dev meson ninja-build pkg-config libgsl-dev libsundials-dev
                  gnuplot-nox libcjson-dev mpi-default-dev openmpi-bin help2man libhdf5-dev
-                 python3-numpy python3-h5py python3-ase)
+                 python3-numpy python3-h5py python3-ase strace)
 # The Python package (python/, meson option -Dpython): its build needs cffi, numpy and the
 # Python headers, its tests pytest, the README's example and the notebooks (python/examples)
 # matplotlib, the notebooks' test nbclient and ipykernel (and jupyter-nbconvert for HTML),
@@ -26,6 +27,11 @@ fi
 # parser; dpkg-dev: apt-get source unpacks cJSON's source for it) and Chromium for the
 # page's test. Installed by web/build.sh and web/test.sh, not by every configuration.
 RELCOL_WEB_PACKAGES=(emscripten node-acorn dpkg-dev chromium)
+# node and npm for the page's test (npm ci of web/package-lock.json): Debian 12's nodejs is
+# 18, which playwright-core 1.61 (the lock's pin) supports. web/test.sh installs them only
+# when the commands are missing, so a node from elsewhere (nodesource, which bundles npm and
+# conflicts with Debian's npm package) is left as it is.
+RELCOL_NODE_PACKAGES=(nodejs npm)
 
 relcol_install_packages() {
     relcol_install_list "${RELCOL_PACKAGES[@]}"

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # web/test.sh SRC BUILD RELCOL_SIM — meson test 'web' (suite web): build the page in
 # WebAssembly under BUILD/web-wasm (web/build.sh: installs emscripten and chromium if
-# missing), install playwright-core from web/package-lock.json into BUILD/web-node (npm ci;
+# missing), node and npm if missing (scripts/setup.sh RELCOL_NODE_PACKAGES), install
+# playwright-core from web/package-lock.json into BUILD/web-node (npm ci;
 # no browser download: it drives Debian's /usr/bin/chromium), and run web/test_web.mjs
 # against the page headless. The screenshots go next to the test log (BUILD/meson-logs).
 # When the tools cannot be had (no root to install them, no network): SKIP (77) if CI is
@@ -25,10 +26,16 @@ site="$(bash "$src/web/build.sh" "$build/web-wasm")"
 rc=$?
 [ $rc -eq 0 ] || cannot "the WebAssembly build failed or its tools could not be installed (web/build.sh: $rc)"
 
+if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+    . "$src/scripts/setup.sh"
+    set +e  # setup.sh sets -e; this script reports its own failures through cannot
+    relcol_install_list "${RELCOL_NODE_PACKAGES[@]}" >&2 ||
+        cannot "node and npm are needed (playwright-core drives chromium from node) and could not be installed"
+fi
 command -v node >/dev/null 2>&1 && command -v npm >/dev/null 2>&1 ||
     cannot "node and npm are needed (playwright-core drives chromium from node)"
-node -e 'process.exit(Number(process.versions.node.split(".")[0]) >= 20 ? 0 : 1)' ||
-    cannot "node >= 20 is needed by playwright-core (found $(node --version))"
+node -e 'process.exit(Number(process.versions.node.split(".")[0]) >= 18 ? 0 : 1)' ||
+    cannot "node >= 18 is needed by playwright-core 1.61 (found $(node --version))"
 [ -x "${CHROMIUM:-/usr/bin/chromium}" ] || cannot "no chromium at ${CHROMIUM:-/usr/bin/chromium}"
 
 nodedir="$build/web-node"

@@ -1,8 +1,10 @@
 /* collide.c — relcol-collide: one two-ball collision from a CSV table on stdin, at any c,
  * with any law of the library's table; the command-line face of rc_collide(). Exit status:
  * 0 collided, 2 bad input (one line on stderr), 3 no collision (separating), 1 I/O error. */
+#include <errno.h>
 #include <math.h>
 #include <stdlib.h>
+#include <stdio_ext.h>
 #include <string.h>
 
 #include <cjson/cJSON.h>
@@ -352,8 +354,14 @@ int main(int argc, char **argv)
             fprintf(out, ",%.17g\n", E[i]);
         }
     }
+    errno = 0;
     if (fflush(out) != 0 || ferror(out)) {
-        fprintf(stderr, "%s: cannot write to stdout\n", prog);
+        fprintf(stderr, "%s: cannot write to standard output: %s\n", prog,
+                errno ? strerror(errno) : "a write failed");
+        /* (said once: what is left unwritten dropped, so that the exit handler's check of
+         * stdout has nothing to fail on again) */
+        __fpurge(out);
+        clearerr(out);
         rc = 1;
         goto out;
     }

@@ -427,7 +427,10 @@ static int parse_generate(const ctx *c, const cJSON *g, const cJSON *jbox, scn_s
         s->n = (size_t)n;
         s->balls = calloc(s->n, sizeof *s->balls);
         if (!s->balls)
-            return bad(c, "generate.n", "out of memory for %zu balls", s->n);
+            return bad(c, "generate.n", "out of memory for %zu balls: their description "
+                       "alone needs %zu bytes (%.3g GiB), before the engine's own",
+                       s->n, s->n * sizeof *s->balls,
+                       (double)(s->n * sizeof *s->balls) / (1024.0 * 1024.0 * 1024.0));
         int st = rc_sim_gas_init(&gd, &s->box, s->balls);
         if (st == RC_ENONFINITE)
             return bad(c, "generate.v_rms", "too large: the momenta would overflow");
@@ -585,6 +588,38 @@ int scn_parse(const char *text, const char *name, scn_scenario *s, char *err)
     return scn_parse_ext(text, name, NULL, s, err);
 }
 
+/* The line and column (from 1) of at in text. */
+static void line_col(const char *text, const char *at, long *line, long *col)
+{
+    *line = 1;
+    *col = 1;
+    for (const char *p = text; p < at; p++, (*col)++)
+        if (*p == '\n') {
+            (*line)++;
+            *col = 0;
+        }
+}
+
+/* The first \u0000 escape inside a JSON string (a key or a value), or NULL: cJSON decodes
+ * it to a NUL and so cuts the string there ("zmf\u0000x" would read as "zmf"). */
+static const char *nul_escape(const char *text)
+{
+    int in_str = 0;
+    for (const char *p = text; *p; p++) {
+        if (!in_str) {
+            in_str = *p == '"';
+        } else if (*p == '"') {
+            in_str = 0;
+        } else if (*p == '\\') {
+            if (p[1] == 'u' && strncmp(p + 2, "0000", 4) == 0)
+                return p;
+            if (p[1])
+                p++;
+        }
+    }
+    return NULL;
+}
+
 int scn_parse_ext(const char *text, const char *name, const scn_tables *extra,
                   scn_scenario *s, char *err)
 {
@@ -597,6 +632,14 @@ int scn_parse_ext(const char *text, const char *name, const scn_tables *extra,
     ctx c = {name, err};
     /* a UTF-8 byte order mark (editors and spreadsheets write one) is not JSON: skipped */
     const char *body = strncmp(text, "\xef\xbb\xbf", 3) == 0 ? text + 3 : text;
+    const char *nul = nul_escape(body);
+    if (nul) {
+        long line, col;
+        line_col(text, nul, &line, &col);
+        bad(&c, "(document)", "line %ld, column %ld: a string holds \\u0000 (a NUL "
+            "character), which no key, name or path can contain", line, col);
+        return -1;
+    }
     const char *end = NULL;
     cJSON *root = cJSON_ParseWithOpts(body, &end, 0);
     int rc = -1;
@@ -606,12 +649,8 @@ int scn_parse_ext(const char *text, const char *name, const scn_tables *extra,
         while (*end == ' ' || *end == '\t' || *end == '\n' || *end == '\r')
             end++;
         if (*end) {
-            long line = 1, col = 1;
-            for (const char *p = text; p < end; p++, col++)
-                if (*p == '\n') {
-                    line++;
-                    col = 0;
-                }
+            long line, col;
+            line_col(text, end, &line, &col);
             bad(&c, "(document)", "text after the scenario's closing brace at line %ld, "
                 "column %ld", line, col);
             goto done;

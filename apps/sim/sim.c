@@ -14,6 +14,7 @@
 
 #include "app.h"
 #include "scenario.h"
+#include "clock.h"
 #include "simout.h"
 
 static const char *const prog = "relcol-sim";
@@ -148,6 +149,10 @@ int main(int argc, char **argv)
         return 0;
     }
 
+    if (sim_check_clock(&s, err)) {
+        scn_free(&s);
+        return fail(2, "%s: %s", builtin ? builtin : file, err);
+    }
     rc_sim_def def = scn_sim_def(&s);
     rc_sim *sim = NULL;
     int st = rc_sim_create(&def, &sim);

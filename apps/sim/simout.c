@@ -602,7 +602,10 @@ out:
         }
         return -1;
     }
-    r = simout_stage_publish(o->s->out.dir, o->dir, err);
+    char warn[APP_ERR_LEN];
+    r = simout_stage_publish(o->s->out.dir, o->dir, err, warn);
     o->dir = NULL;
+    if (!r && warn[0])
+        fprintf(stderr, "%s: warning: %s\n", o->prog, warn);
     return r;
 }

@@ -49,11 +49,12 @@ int simout_close(sim_output *o, const rc_sim *sim, double wall_seconds, int inte
                  char *err);
 
 /* simout_publish.c: the staging folder (malloc'ed path) in dir, after removing the
- * staging folders of killed runs; its files moved into dir, replacing those the previous
- * run published there (listed in dir/.relcol_sim_outputs), and the folder removed; and
- * the folder removed without moving anything. publish and discard free stage. */
+ * staging folders of killed runs; its files published in dir by one rename (dir/NAME are
+ * links through dir/.relcol-run, switched to the run's folder), the previous run's folder
+ * removed after (a failure there: 0, with the reason in warn, of APP_ERR_LEN); and the
+ * folder removed without publishing anything. publish and discard free stage. */
 int simout_stage_open(const char *dir, char **stage, char *err);
-int simout_stage_publish(const char *dir, char *stage, char *err);
+int simout_stage_publish(const char *dir, char *stage, char *err, char *warn);
 void simout_stage_discard(char *stage);
 
 #endif

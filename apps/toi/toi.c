@@ -265,6 +265,14 @@ int main(int argc, char **argv)
         rc = 0;
         goto out;
     }
+    if (st == RC_ESCALE) {
+        const double far = fmax(rc_v3_norm(ball[0].x), rc_v3_norm(ball[1].x));
+        fail("lines %ld and %ld (balls 0 and 1): the contact cannot be resolved: the centres "
+             "lie %g from the origin (or reach farther before they meet), where doubles are "
+             "coarser than a thousandth of the radii %g and %g (shift the origin near the "
+             "balls, or scale the lengths)", t.line[0], t.line[1], far, ball[0].r, ball[1].r);
+        goto out;
+    }
     if (st != RC_OK) {
         fail("%s", rc_strerror(st));
         goto out;

@@ -21,6 +21,7 @@ typedef struct rc_vec3 { double x, y, z; } rc_vec3;
 typedef struct rc_particle { double m; rc_vec3 p; } rc_particle;
 
 int rc_inv_c2(double c, double *inv_c2);
+int rc_particle_check(const rc_particle *b);
 int rc_momentum_from_velocity(double m, rc_vec3 v, double inv_c2, rc_vec3 *p);
 
 /* laws */

@@ -14,9 +14,27 @@ def inv_c2(c):
     return out[0]
 
 
+def _check_balls(m, p, what):
+    """Each (m, p) through the library's rc_particle_check (0 < m < inf, finite p): the
+    check the C functions make, not a copy of it; RelcolError naming the first bad one."""
+    p = np.asarray(p, dtype=float)
+    ms = np.broadcast_to(np.asarray(m, float), p.shape[:-1]).ravel()
+    ps = p.reshape(-1, p.shape[-1]) if p.ndim else p.reshape(1, 1)
+    b = ffi.new("rc_particle *")
+    for i in range(ms.size):
+        b.m = ms[i]
+        q = [0.0, 0.0, 0.0]
+        q[:min(3, ps.shape[-1])] = ps[i][:3]
+        b.p.x, b.p.y, b.p.z = q
+        st = lib.rc_particle_check(b)
+        if st != 0:
+            raise RelcolError(st, what, i if ms.size > 1 else None)
+
+
 def mass_rel(m, p, c=np.inf):
     """M = E/c^2 = sqrt(m^2 + |p|^2/c^2) (m classically)."""
     p = np.asarray(p, dtype=float)
+    _check_balls(m, p, "mass_rel")
     return np.sqrt(np.asarray(m, float) ** 2 + np.sum(p * p, axis=-1) * inv_c2(c))
 
 

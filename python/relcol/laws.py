@@ -89,6 +89,10 @@ def collide(m0, p0, m1, p1, n, c=math.inf, eps=1.0, law="zmf", alpha=None, azimu
     # the normals are only read: used as they are when they already have the layout
     nn = n if (d == 3 and n.shape == (npair, 3) and n.flags.c_contiguous) else _columns(n, npair, d)
     prm = ffi.new("rc_collision_params *", lib.rc_collision_params_default())
+    # (NaN is the library's "no angle given", which is said with None here: an explicit
+    # NaN is refused as relcol-collide --alpha refuses it)
+    if alpha is not None and math.isnan(float(alpha)):
+        raise RelcolError(-2, "collide: alpha")
     prm.alpha = math.nan if alpha is None else float(alpha)
     prm.azimuth = float(azimuth)
     # c and eps: one number for every pair, or one per pair (they broadcast as the masses)

@@ -29,4 +29,7 @@ for app in "$@"; do
         bad "$name run > /dev/full: exit $st, stderr: $(cat "$T/err")"
     fi
 done
+# one failure, one message (relcol-collide said it twice: its own and the exit handler's)
+printf 'm,vx\n1,0.6\n1,-0.6\n' | "$1" --c 1 > /dev/full 2> "$T/err"
+[ "$(wc -l < "$T/err")" -eq 1 ] && ok || bad "relcol-collide > /dev/full: $(wc -l < "$T/err") lines: $(cat "$T/err")"
 summary "stdout full"

@@ -8,6 +8,7 @@ import csv
 import json
 import math
 import os
+import re
 import subprocess
 import sys
 
@@ -179,7 +180,8 @@ for name, sc in cases.items():
     snaps = check_h5md(name, out, sc, n)
     check_ase(name, out, snaps, sc["dim"])
     check_csv_readers(name, out, n, sc["dim"])
-    left = [x for x in os.listdir(out) if "relcol-" in x]
+    # (.NAME.relcol-PID.XXXXXX; .relcol-run and its folder are the published run)
+    left = [x for x in os.listdir(out) if re.search(r"\.relcol-[0-9]", x)]
     check(not left, f"{name}: no temporary files left ({left})")
 
 print(f"{failures} failed" if failures else "all passed")

@@ -66,7 +66,7 @@ done
 [ $bad -eq 0 ] && ok "50 kill -9 at random points: every file under a final name whole" \
     || ko "$bad of 50 kills left a cut file under a final name"
 "$sim" "$tmp/run.json" > /dev/null 2> "$tmp/err"; st=$?
-left=$(ls -A "$tmp/out" "$tmp/out/snapshots" | grep -c 'relcol-') || true
+left=$(ls -A "$tmp/out" "$tmp/out/snapshots" | grep -c 'relcol-[0-9]') || true
 [ $st -eq 0 ] && [ "$left" -eq 0 ] && whole "$tmp/out" > /dev/null \
     && ok "the next complete run: exit 0, no temporary left, every file whole" \
     || ko "after the kills: exit $st, $left temporaries left: $(cat "$tmp/err")"
@@ -82,7 +82,7 @@ else
     ko "full disk: exit $st, stderr '$(cat "$tmp/err")', files changed: $([ "$before" = "$after" ] && echo no || echo yes)"
 fi
 "$sim" "$tmp/run.json" > /dev/null 2>&1
-left=$(ls -A "$tmp/out" "$tmp/out/snapshots" | grep -c 'relcol-') || true
+left=$(ls -A "$tmp/out" "$tmp/out/snapshots" | grep -c 'relcol-[0-9]') || true
 [ "$left" -eq 0 ] && ok "no temporary left after the full disk and one more run" \
     || ko "$left temporaries left after the full disk"
 

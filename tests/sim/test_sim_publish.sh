@@ -1,0 +1,214 @@
+#!/bin/bash
+# test_sim_publish.sh RELCOL_SIM [FILES] [KILLS] — relcol-sim publishes a run's files by one
+# switch (apps/sim/simout_publish.c, apps/sim/SCENARIO.md "Files written"):
+# 1. a link planted at every output name (snapshots/, final.json, .relcol-run, ...) and an
+#    earlier scheme's manifest naming paths outside: no file outside the output folder
+#    changes its bytes, appears or disappears, over a run and a second run that writes
+#    fewer files;
+# 2. KILLS (100; the benchmark publish: 200) kill -9 at random instants across two runs' ends into one folder, run A
+#    (FILES snapshots, default 40) and run B (FILES/2 snapshots and a trajectory): after each,
+#    the folder's names show exactly one run's whole set (every file's bytes those of the
+#    uninterrupted A or B), and relcol-sim accepts its final.json as a continuation;
+# 3. with strace's fault injection (skipped where ptrace is not allowed): each invocation
+#    of every rename, write, unlink, link and fsync system call of run B into A's folder
+#    made to fail (EIO), then to be a SIGKILL: the same two checks, and the exit is 0 when
+#    B is shown, 1 with a message when A is;
+# 4. the folder an earlier relcol-sim wrote (its files in DIR, .relcol_sim_outputs) is
+#    converted: one run's set, the user's files kept.
+# The 4 000-file loop is the benchmark 'publish' (bench_publish.sh runs this with 4000).
+sim="$1"; files="${2:-40}"; kills="${3:-100}"
+# (on tmpfs where there is one: the runs are fsync-bound on a disk, ten times slower)
+tmp=$(mktemp -d -p /dev/shm 2>/dev/null || mktemp -d); trap 'rm -rf "$tmp"' EXIT
+fails=0; n=0
+ok() { n=$((n + 1)); echo "ok: $1"; }
+ko() { n=$((n + 1)); fails=$((fails + 1)); echo "FAILED: $1"; }
+
+# scen NAME SEED T_END SNAP_EVERY XYZ : a small gas whose run is all file writing
+scen() {
+    cat > "$tmp/$1.json" <<JSON
+{"relcol": 1, "dim": 2, "c": 2, "seed": $2, "t_end": $3,
+ "generate": {"kind": "gas", "n": 12, "radius": 1, "packing": 0.2, "v_rms": 0.5},
+ "outputs": {"snapshots": {"every": $4}, "xyz_every": $5, "plots": false, "gif": false}}
+JSON
+}
+scen A 1 "$files" 1 0
+scen B 2 "$((files / 2))" 1 0.5
+
+# view DIR: what DIR's names show (links followed, hidden names not), one line a file with
+# its checksum; the summaries without their wall-clock lines, final.json without the name
+# of its continuation's folder
+view() {
+    (cd "$1" 2>/dev/null || exit 0
+     for f in summary.txt summary.json; do
+         [ -f "$f" ] && echo "$f $(grep -v 'wall.clock' "$f" | cksum)"
+     done
+     [ -f final.json ] && echo "final.json $(sed 's/"dir":"[^"]*"//' final.json | cksum)"
+     cksum $(ls -d * snapshots/* 2>/dev/null | grep -v '^summary\.\|^final\.json$') 2>/dev/null
+    ) | sort
+}
+# refs A B: the views of the uninterrupted runs A and B (viewA, viewB)
+refs() {
+    rm -rf "$tmp/refA" "$tmp/refB"
+    "$sim" "$tmp/$1.json" --out "$tmp/refA" > /dev/null 2>&1 && "$sim" "$tmp/$2.json" --out "$tmp/refB" > /dev/null 2>&1 ||
+        { echo "FAILED: the reference runs"; exit 1; }
+    viewA=$(view "$tmp/refA"); viewB=$(view "$tmp/refB")
+    [ "$viewA" != "$viewB" ] && [ -f "$tmp/refB/trajectory.xyz" ] && [ ! -e "$tmp/refA/trajectory.xyz" ] ||
+        { echo "FAILED: the two reference runs are not told apart"; exit 1; }
+}
+refs A B
+
+# whole DIR WHAT: DIR shows exactly A's or B's files (prints which) and its final.json
+# continues; else prints why and fails
+whole() {
+    local v; v=$(view "$1")
+    if [ "$v" = "$viewA" ]; then echo A; elif [ "$v" = "$viewB" ]; then echo B; else
+        echo "a mix: $(echo "$v" | wc -l) names, $(echo "$v" | grep -c snap-) snapshots, $(echo "$v" | grep -Fxf <(echo "$viewA") | wc -l) of A's, $(echo "$v" | grep -Fxf <(echo "$viewB") | wc -l) of B's"
+        return 1
+    fi
+    # (accepted: its checkpoint read and one time unit run)
+    local t; t=$(sed -n 's/.*"time":\([^,]*\),.*/\1/p' "$1/final.json")
+    rm -rf "$tmp/cont"
+    "$sim" "$1/final.json" --out "$tmp/cont" --no-plots --t-end "$(awk "BEGIN{print $t + 1}")" > /dev/null 2> "$tmp/cont.err" ||
+        { echo "continuation refused: $(cat "$tmp/cont.err")"; return 1; }
+}
+
+# 1. planted links
+mkdir -p "$tmp/pl" "$tmp/outside/snapdir" "$tmp/outside/rundir"
+for f in snap-0000.csv snap-0001.csv; do echo "precious $f" > "$tmp/outside/snapdir/$f"; done
+ln -s "$tmp/outside/snapdir" "$tmp/pl/snapshots"
+ln -s "$tmp/outside/rundir" "$tmp/pl/.relcol-run"
+for f in final.json final.ckpt summary.txt summary.json trajectory.xyz frames.dat trajectory.h5 \
+         trajectories.gp trajectories.png paths.dat table.gp table.gif; do
+    echo "precious $f" > "$tmp/outside/$f"
+    ln -s "$tmp/outside/$f" "$tmp/pl/$f"
+done
+printf '../outside/final.json\n%s/outside/summary.txt\nsnapshots/../../outside/final.ckpt\nsnapshots/snap-0000.csv\nfinal.json\n' "$tmp" \
+    > "$tmp/pl/.relcol_sim_outputs"
+outside() { (cd "$tmp/outside" && find . | sort && find . -type f | sort | xargs cksum); }
+before=$(outside)
+sed 's/"xyz_every": 0,/"xyz_every": 0.5, "h5md_every": 1,/; s/"plots": false, "gif": false/"plots": true, "gif": true/' \
+    "$tmp/A.json" > "$tmp/Aplots.json"
+"$sim" "$tmp/Aplots.json" --out "$tmp/pl" > /dev/null 2> "$tmp/err"; st1=$?
+mid=$(outside)
+"$sim" "$tmp/B.json" --out "$tmp/pl" > /dev/null 2> "$tmp/err2"; st2=$?
+after=$(outside)
+shown=$(whole "$tmp/pl")
+if [ $st1 -eq 0 ] && [ $st2 -eq 0 ] && [ "$before" = "$mid" ] && [ "$before" = "$after" ] && [ "$shown" = B ]; then
+    ok "links planted at 14 output names and a manifest pointing outside: the $(echo "$before" | grep -c '^[0-9]') files outside keep their bytes and existence over two runs; the folder shows run B"
+else
+    ko "planted links: exit $st1, $st2 ($(cat "$tmp/err" "$tmp/err2")), outside changed: $([ "$before" = "$mid" ] && [ "$before" = "$after" ] && echo no || echo yes), folder: $shown"
+fi
+
+# 2. kill -9 at random instants across the ends of runs into one folder
+d="$tmp/k"
+"$sim" "$tmp/A.json" --out "$d" > /dev/null 2>&1
+t0=$(date +%s%N); "$sim" "$tmp/B.json" --out "$d" > /dev/null 2>&1; t1=$(date +%s%N)
+"$sim" "$tmp/A.json" --out "$d" > /dev/null 2>&1
+span=$(( (t1 - t0) / 1000 )) # microseconds, one run
+bad=0; seen_a=0; seen_b=0; RANDOM=37
+for k in $(seq 1 "$kills"); do
+    s=A; [ $((k % 2)) -eq 0 ] && s=B
+    # uniform over 30 % .. 130 % of a run: most of the kills land in its last third and after
+    delay=$(( span * (30 + RANDOM % 100) / 100 ))
+    "$sim" "$tmp/$s.json" --out "$d" > /dev/null 2>&1 &
+    pid=$!
+    sleep "$(printf '%d.%06d' $((delay / 1000000)) $((delay % 1000000)))"
+    kill -9 $pid 2>/dev/null
+    wait $pid 2>/dev/null
+    if r=$(whole "$d"); then
+        [ "$r" = A ] && seen_a=$((seen_a + 1)) || seen_b=$((seen_b + 1))
+    else
+        bad=$((bad + 1)); echo "after kill $k ($s, at $delay us of $span): $r"
+    fi
+done
+[ $bad -eq 0 ] && [ $seen_a -gt 0 ] && [ $seen_b -gt 0 ] &&
+    ok "$kills kill -9 at random instants (run of $span us, A: $files snapshots, B: $((files / 2)) and a trajectory): each time one run whole ($seen_a A, $seen_b B) and its continuation accepted" ||
+    ko "$bad of $kills kills left the folder not one run's whole set (A $seen_a, B $seen_b)"
+
+# 3. every system call of the publish failed, then killed (strace)
+if ! command -v strace > /dev/null 2>&1 || ! strace -f -qq -o /dev/null true 2> /dev/null; then
+    echo "skip: strace cannot trace here (not installed, or ptrace not allowed): no fault injection"
+else
+    # (fewer files: each injection is a run under strace; the calls are the same)
+    scen A6 1 6 1 0; scen B3 2 3 1 0.5; refs A6 B3
+    mkdir -p "$tmp/base"; "$sim" "$tmp/A6.json" --out "$tmp/base/d" > /dev/null 2>&1
+    calls="rename renameat renameat2 unlink unlinkat symlink symlinkat link linkat write fsync mkdir mkdirat flock"
+    total=0; badf=0; summary=""
+    for sc in $calls; do
+        rm -rf "$tmp/f"; cp -a "$tmp/base/d" "$tmp/f"
+        strace -f -qq -e trace="$sc" -o "$tmp/trace" "$sim" "$tmp/B3.json" --out "$tmp/f" > /dev/null 2>&1
+        count=$(grep -c "$sc(" "$tmp/trace")
+        [ "$count" -gt 0 ] || continue
+        summary="$summary $sc $count,"
+        for how in error=EIO signal=KILL; do
+            # (a kill at a write, an fsync or the lock is a kill while the run is staged,
+            # before the publish: the random kills cover those)
+            case "$sc:$how" in write:signal* | fsync:signal* | flock:signal*) continue ;; esac
+            for i in $(seq 1 "$count"); do
+                total=$((total + 1))
+                rm -rf "$tmp/f"; cp -a "$tmp/base/d" "$tmp/f"
+                # (in a subshell: bash's own "Killed" line goes nowhere)
+                st=$( (strace -f -qq -o /dev/null -e trace="$sc" -e inject="$sc:$how:when=$i" \
+                    "$sim" "$tmp/B3.json" --out "$tmp/f" > /dev/null 2> "$tmp/err"; echo $?) 2> /dev/null)
+                r=$(whole "$tmp/f") || { badf=$((badf + 1)); echo "$sc #$i $how: exit $st: $r"; continue; }
+                if [ "$how" = error=EIO ]; then
+                    # B shown: its exit is 0 (a failure after the switch is a warning); A: 1,
+                    # with a message
+                    # (or 1 after a failed write of its result line to standard output)
+                    if { [ "$r" = B ] && [ $st -ne 0 ] && ! grep -q 'standard output' "$tmp/err"; } ||
+                       { [ "$r" = A ] && { [ $st -ne 1 ] || [ ! -s "$tmp/err" ]; }; }; then
+                        badf=$((badf + 1)); echo "$sc #$i failed: the folder shows $r, exit $st: $(cat "$tmp/err")"
+                    fi
+                fi
+            done
+        done
+    done
+    [ $badf -eq 0 ] && [ $total -gt 0 ] &&
+        ok "strace: $total runs, each invocation of every call (${summary%,}) failed with EIO, and each of the publish's killed: one run whole each time, its continuation accepted, exit 0 with B shown and 1 with A" ||
+        ko "strace: $badf of $total injected faults left a mix or a wrong exit"
+fi
+
+# 4. a folder of the earlier scheme: files in DIR, .relcol_sim_outputs listing them
+refs A B
+o="$tmp/old"; mkdir -p "$o/snapshots"
+cp -L "$tmp/refA"/final.json "$tmp/refA"/final.ckpt "$tmp/refA"/summary.txt "$tmp/refA"/summary.json "$o/"
+cp -L "$tmp/refA"/snapshots/* "$o/snapshots/"
+(cd "$o" && ls final.json final.ckpt summary.txt summary.json && ls snapshots | sed 's|^|snapshots/|') > "$o/.relcol_sim_outputs"
+echo mine > "$o/snapshots/my-notes.txt"
+v0=$(view "$o")
+"$sim" "$tmp/B.json" --out "$o" > /dev/null 2> "$tmp/err"; st1=$?
+v1=$(view "$o")
+rm "$o/snapshots/my-notes.txt"
+"$sim" "$tmp/B.json" --out "$o" > /dev/null 2> "$tmp/err2"; st2=$?
+r=$(whole "$o")
+[ $st1 -eq 1 ] && grep -q 'not a run.s.*nothing was changed' "$tmp/err" && [ "$v0" = "$v1" ] &&
+    [ $st2 -eq 0 ] && [ "$r" = B ] && [ ! -e "$o/.relcol_sim_outputs" ] &&
+    ok "an earlier relcol-sim's folder: refused, unchanged, while its snapshots/ holds a file of the user's; then converted: run B whole" ||
+    ko "earlier folder: exit $st1 ($(cat "$tmp/err")), unchanged: $([ "$v0" = "$v1" ] && echo yes || echo no); exit $st2 ($(cat "$tmp/err2")), folder $r"
+# ... and killed at every step of its conversion (strace), the names show A or B whole
+if command -v strace > /dev/null 2>&1 && strace -f -qq -o /dev/null true 2> /dev/null; then
+    scen A6 1 6 1 0; scen B3 2 3 1 0.5; refs A6 B3
+    rm -rf "$o"; mkdir -p "$o/snapshots"
+    cp -L "$tmp/refA"/final.json "$tmp/refA"/final.ckpt "$tmp/refA"/summary.txt "$tmp/refA"/summary.json "$o/"
+    cp -L "$tmp/refA"/snapshots/* "$o/snapshots/"
+    (cd "$o" && ls final.json final.ckpt summary.txt summary.json && ls snapshots | sed 's|^|snapshots/|') > "$o/.relcol_sim_outputs"
+    rm -rf "$tmp/old0"; cp -a "$o" "$tmp/old0"
+    badc=0; totc=0
+    for sc in linkat renameat renameat2 symlinkat unlinkat; do
+        rm -rf "$o"; cp -a "$tmp/old0" "$o"
+        strace -f -qq -e trace="$sc" -o "$tmp/trace" "$sim" "$tmp/B3.json" --out "$o" > /dev/null 2>&1
+        count=$(grep -c "$sc(" "$tmp/trace")
+        for i in $(seq 1 "$count"); do
+            totc=$((totc + 1))
+            rm -rf "$o"; cp -a "$tmp/old0" "$o"
+            st=$( (strace -f -qq -o /dev/null -e trace="$sc" -e inject="$sc:signal=KILL:when=$i" \
+                "$sim" "$tmp/B3.json" --out "$o" > /dev/null 2>&1; echo $?) 2> /dev/null)
+            r=$(whole "$o") || { badc=$((badc + 1)); echo "conversion, $sc #$i killed: $r"; }
+        done
+    done
+    [ $badc -eq 0 ] && [ $totc -gt 0 ] && ok "an earlier relcol-sim's folder killed at each of $totc calls of its conversion and publish: one run whole each time" ||
+        ko "conversion: $badc of $totc kills left a mix"
+fi
+
+echo "$((n - fails)) passed, $fails failed"
+[ $fails -eq 0 ]
