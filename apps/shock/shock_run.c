@@ -91,34 +91,29 @@ static double mfp(int dim, double r, double n)
     return 1.0 / (M_SQRT2 * n * sigma);
 }
 
-/* the right shock's position in a profile: with x_a inside the right plateau (halfway
- * between the contact and the fluid's shock), n* the profile's mean over
- * [x_c + w/4, x_a] (w = x_a - x_c), the crossing of the level halfway between n* and the
- * undisturbed n_R, on a three-bin running mean, nearest the fluid's shock: the middle of
- * the shock's own structure (a precursor of fast balls ahead of it, or balls back from
- * the far wall, do not move it as they would a count of balls) */
+/* the right shock's position in a profile, by its balls: with x_a inside the right
+ * plateau (halfway between the contact and the fluid's shock) and x_b as far beyond the
+ * fluid's shock (or the far wall), the step from the plateau's density n* (the
+ * profile's mean over [x_c + w/4, x_a], w = x_a - x_c) to the undisturbed n_R that holds
+ * as many balls in [x_a, x_b] as the profile does: the equal-area front, which a steady
+ * shock structure of any width does not move while its balls stay in the window (the
+ * estimator's readings beside a mid-level crossing's: papers/shock-tube.md, section 6) */
 static double shock_pos(const double *N0, const double *xc, int nb, double dx, double xcon,
-                        double xa, double expect, double nR)
+                        double xa, double xb, double nR)
 {
-    double star = 0.0, best = NAN;
+    double star = 0.0, in = 0.0;
     int ns = 0;
-    for (int k = 0; k < nb; k++)
+    for (int k = 0; k < nb; k++) {
         if (xc[k] - 0.5 * dx >= xcon + 0.25 * (xa - xcon) && xc[k] + 0.5 * dx <= xa)
             star += N0[k], ns++;
+        const double lo = fmax(xc[k] - 0.5 * dx, xa), hi = fmin(xc[k] + 0.5 * dx, xb);
+        if (hi > lo)
+            in += N0[k] * (hi - lo);
+    }
     if (!ns)
         return NAN;
-    const double level = 0.5 * (star / ns + nR);
-    for (int k = 2; k < nb - 1; k++) {
-        if (xc[k] < xa)
-            continue;
-        const double u = (N0[k - 2] + N0[k - 1] + N0[k]) / 3.0, v = (N0[k - 1] + N0[k] + N0[k + 1]) / 3.0;
-        if (u >= level && v < level) {
-            const double x = xc[k - 1] + dx * (u - level) / (u - v);
-            if (!(fabs(x - expect) >= fabs(best - expect)))
-                best = x;
-        }
-    }
-    return best;
+    star /= ns;
+    return xa + (in - nR * (xb - xa)) / (star - nR);
 }
 
 /* the jackknife error of x[S * stride + j] from its leave-one-out values x[s * stride + j] */
@@ -320,7 +315,8 @@ int sh_run(const sh_opts *o, sh_result *r, int progress, char *err)
                         acc += per[(size_t)s * cells + sh_idx(r, j, k, SH_RAW)];
                 prof[k] = acc / (so_ < S ? S - 1 : S);
             }
-            xs[(size_t)so_ * nt + j] = shock_pos(prof, r->xc, nb, dx, xcon, xa, expect, mr.N0);
+            xs[(size_t)so_ * nt + j] = shock_pos(prof, r->xc, nb, dx, xcon, xa,
+                                                 fmin(2.0 * expect - xa, tb->box.x), mr.N0);
         }
         r->xshock[j] = xs[(size_t)S * nt + j];
         r->xshock_err[j] = jackknife(xs, S, nt, j);
