@@ -178,24 +178,19 @@ int fs_moments(const fs_def *d, double x, double t, sh_mom *out)
     return 0;
 }
 
+typedef struct {
+    const fs_def *d;
+    double t;
+} fs_at_ctx;
+
+static int fs_at(double x, void *v, sh_mom *out)
+{
+    const fs_at_ctx *q = v;
+    return fs_moments(q->d, x, q->t, out);
+}
+
 int fs_moments_bin(const fs_def *d, double xa, double xb, double t, sh_mom *out)
 {
-    static const double gx[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
-                                 0.9602898564975363};
-    static const double gw[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
-                                 0.1012285362903763};
-    sh_mom s = {0};
-    const double mid = 0.5 * (xa + xb), half = 0.5 * (xb - xa);
-    for (int i = 0; i < 8; i++) {
-        const double x = mid + (i < 4 ? -1.0 : 1.0) * half * gx[i % 4];
-        const double w = 0.5 * gw[i % 4];
-        sh_mom m;
-        int rc = fs_moments(d, x, t, &m);
-        if (rc)
-            return rc;
-        s.N0 += w * m.N0, s.Nx += w * m.Nx, s.g += w * m.g;
-        s.K += w * m.K, s.Pxx += w * m.Pxx, s.Pyy += w * m.Pyy;
-    }
-    *out = s;
-    return 0;
+    fs_at_ctx q = {d, t};
+    return sh_mom_bin(fs_at, &q, xa, xb, out);
 }

@@ -29,6 +29,10 @@ void sh_derive(int dim, double c, const sh_mom *m, double *derived);
 /* the moments of an ideal fluid state (rho = n, p = n T) under equation of state e */
 void sh_fluid_moments(int dim, double c, const rs_eos *e, rs_state s, sh_mom *m);
 
+/* the average of at(x) over [xa, xb] (Gauss-Legendre, 8 points): the references' bins */
+typedef int (*sh_mom_at)(double x, void *ctx, sh_mom *out);
+int sh_mom_bin(sh_mom_at at, void *ctx, double xa, double xb, sh_mom *out);
+
 /* T from the internal energy per ball eint (m = 1) of the d-D Juttner gas at c (Maxwell
  * at c = inf: T = 2 eint / d) */
 double sh_T_from_eint(int dim, double c, double eint);

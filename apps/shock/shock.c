@@ -154,15 +154,24 @@ static int parse(int argc, char **argv, cli *c)
     return 0;
 }
 
-static int write_csv(const char *dir, const sh_opts *o, const sh_result *r, char *err)
+/* dir/name opened for an atomic write */
+static int open_out(const char *dir, const char *name, app_atomic *a, char *err)
 {
-    char *path = app_path_join(dir, "profiles.csv");
-    app_atomic a;
-    if (!path || app_atomic_open(&a, path, err)) {
-        free(path);
+    char *path = app_path_join(dir, name);
+    if (!path) {
+        app_errf(err, "out of memory");
         return -1;
     }
+    int rc = app_atomic_open(a, path, err);
     free(path);
+    return rc;
+}
+
+static int write_csv(const char *dir, const sh_opts *o, const sh_result *r, char *err)
+{
+    app_atomic a;
+    if (open_out(dir, "profiles.csv", &a, err))
+        return -1;
     fprintf(a.f, "t,x,xi");
     for (int q = 0; q < SH_NQ; q++)
         fprintf(a.f, ",%s,%s_err", sh_q_names[q], sh_q_names[q]);
@@ -211,13 +220,9 @@ static int write_summary(const char *dir, const cli *c, const sh_result *r, char
 {
     const sh_opts *o = &c->o;
     const sh_tube *t = &o->tube;
-    char *path = app_path_join(dir, "summary.json");
     app_atomic a;
-    if (!path || app_atomic_open(&a, path, err)) {
-        free(path);
+    if (open_out(dir, "summary.json", &a, err))
         return -1;
-    }
-    free(path);
     FILE *f = a.f;
     fprintf(f, "{\n  \"relcol\": 1, \"program\": \"%s\",\n  \"parameters\": {", prog);
     fprintf(f, "\"dim\": %d, ", t->dim);
@@ -276,13 +281,9 @@ static int col_free(int q) { return 4 + 3 * SH_NQ + q; }
 
 static int write_gp(const char *dir, const sh_opts *o, char *err)
 {
-    char *path = app_path_join(dir, "shock.gp");
     app_atomic a;
-    if (!path || app_atomic_open(&a, path, err)) {
-        free(path);
+    if (open_out(dir, "shock.gp", &a, err))
         return -1;
-    }
-    free(path);
     FILE *f = a.f;
     app_gnuplot_head(f, "shock.png", "size 1500,900 enhanced font 'Sans,11' linewidth 1.3", 0);
     static const int panels[6] = {SH_N, SH_V, SH_P, SH_TP, SH_RAW + 3, SH_RAW + 2};

@@ -58,29 +58,28 @@ static int seed_bins(rc_sim *s, const sh_tube *tb, int nb, sh_mom *m, char *err)
     return 0;
 }
 
-/* the fluid's moments averaged over a bin (Gauss-Legendre, 8 points, in xi) */
+typedef struct {
+    const sh_result *r;
+    const sh_tube *tb;
+    double t;
+} fluid_ctx;
+
+static int fluid_at(double x, void *v, sh_mom *out)
+{
+    const fluid_ctx *q = v;
+    rs_state st;
+    int rc = rs_sample(&q->r->sol, (x - q->tb->x0) / q->t, &st);
+    if (!rc)
+        sh_fluid_moments(q->tb->dim, q->tb->c, &q->r->eos, st, out);
+    return rc;
+}
+
+/* the fluid's moments averaged over a bin */
 static int fluid_bin(const sh_result *r, const sh_tube *tb, double xa, double xb, double t,
                      sh_mom *out)
 {
-    static const double gx[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
-                                 0.9602898564975363};
-    static const double gw[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
-                                 0.1012285362903763};
-    sh_mom s = {0};
-    const double mid = 0.5 * (xa + xb), half = 0.5 * (xb - xa);
-    for (int i = 0; i < 8; i++) {
-        const double x = mid + (i < 4 ? -1.0 : 1.0) * half * gx[i % 4], w = 0.5 * gw[i % 4];
-        rs_state st;
-        int rc = rs_sample(&r->sol, (x - tb->x0) / t, &st);
-        if (rc)
-            return rc;
-        sh_mom m;
-        sh_fluid_moments(tb->dim, tb->c, &r->eos, st, &m);
-        s.N0 += w * m.N0, s.Nx += w * m.Nx, s.g += w * m.g;
-        s.K += w * m.K, s.Pxx += w * m.Pxx, s.Pyy += w * m.Pyy;
-    }
-    *out = s;
-    return 0;
+    fluid_ctx q = {r, tb, t};
+    return sh_mom_bin(fluid_at, &q, xa, xb, out);
 }
 
 /* mean free path of a dilute hard-ball gas at rest density n (Boltzmann's, table units):
