@@ -19,7 +19,7 @@
 #include "relcol/status.h"
 
 #define CK_MAGIC "relcolck"
-#define CK_VERSION 15u /* 2: the bookkeeping as one record (eng_books); 3: with pinned and the
+#define CK_VERSION 16u /* 2: the bookkeeping as one record (eng_books); 3: with pinned and the
                          transfer moments; 4: with the per_ball counters and hyperplanes;
                          5: with the per_ball undo records and rollbacks;
                          6: with the per_ball lines before kinks ahead (eng_pend);
@@ -37,7 +37,8 @@
                          contact (rejoins);
                          14: undo records of up to eight members;
                          15: the count of undos of both balls' collisions with
-                         a chain (both_chains) */
+                         a chain (both_chains);
+                         16: the validity report's kink clusters (per_ball) */
 #define CK_ORDER 0x01020304u
 
 typedef struct ck_header {
@@ -186,6 +187,7 @@ static void write_all(const rc_sim *s, ck_cursor *c, const int32_t *next)
         put(c, s->und, n * sizeof *s->und);
         put(c, s->undp, n * sizeof *s->undp);
         put(c, s->pend, n * sizeof *s->pend);
+        c->at += eng_validity_bytes(s, c->p ? c->p + c->at : NULL);
     }
     if (n) {
         put(c, s->g.slot, s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot);
@@ -431,6 +433,10 @@ static int read_all(rc_sim *s, ck_cursor *c)
                      get(c, s->undp, n * sizeof *s->undp) ||
                      get(c, s->pend, n * sizeof *s->pend))))
         return RC_ECORRUPT;
+    size_t vb = 0;
+    if (s->cov && (st = eng_validity_read(s, c->q + c->at, c->size - c->at, &vb)) != RC_OK)
+        return st;
+    c->at += vb;
     if (n && (get(c, s->g.slot, s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot) ||
               get(c, s->g.next, n * sizeof *s->g.next)))
         return RC_ECORRUPT;

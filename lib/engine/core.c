@@ -214,6 +214,7 @@ static void count_overlaps(rc_sim *s, size_t from, size_t nc)
                 continue;
         }
         s->bk.overlaps++;
+        eng_validity_policy(s);
         s->bk.overlap_kind[kind]++;
     }
 }
@@ -432,6 +433,7 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
         const rc_vec3 n = s->ev_n[i];
         if (isnan(n.x)) {
             s->bk.overlaps++;
+            eng_validity_policy(s);
             s->bk.overlap_kind[0]++;
         } else {
             n0 = n;
@@ -453,6 +455,7 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
             n0 = len > 0.0 ? rc_v3_scale(1.0 / len, dx) : rc_v3(1.0, 0.0, 0.0);
         if (!s->narrow && len < (s->b[i].r + s->b[bp].r) * (1.0 - s->def.overlap_tol)) {
             s->bk.overlaps++;
+            eng_validity_policy(s);
             s->bk.overlap_kind[0]++;
         }
         if (add_contact(s, &nc, 0, 1, n0) != RC_OK)
@@ -467,6 +470,7 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
         count_overlaps(s, 0, 1); /* (before the collision changes the shape) */
         if (wall_tube && s->bk.overlaps == ov) { /* (the overlap policy decides it) */
             s->bk.overlaps++;
+            eng_validity_policy(s);
             s->bk.overlap_kind[1]++;
         }
     }

@@ -477,6 +477,10 @@ struct rc_sim {
      * windows_contact), by their whole input */
     eng_t2_memo t2m[ENG_T2_MEMO];
     uint32_t t2m_n, t2m_next;
+    /* per_ball frames: the validity report's kink clusters (engine/validity.c; NULL until
+     * the first hook), and whether it once ran out of memory before it had a state */
+    struct eng_validity *val;
+    int val_failed;
 };
 
 /* A per-ball array of `bytes` (engine/mem.c): cache-line aligned, on transparent huge
@@ -645,5 +649,17 @@ void eng_moments_add(rc_sim *s, size_t nm, const int32_t *mem, const rc_particle
                      const rc_particle *after);
 /* Support distance of ball i's shape along the wall normal e_d. */
 double eng_wall_support(const rc_sim *s, int32_t i, int d);
+
+/* The validity report's hooks (engine/validity.c): a kink about to be placed on ball b
+ * (storage slot), a contact resolved by the overlap policy, ball b about to be put back
+ * by an undo. Each is one line at its point; none changes the run. */
+typedef struct eng_validity eng_validity;
+void eng_validity_kink(rc_sim *s, int32_t b);
+void eng_validity_policy(rc_sim *s);
+void eng_validity_undone(rc_sim *s, int32_t b);
+void eng_validity_free(rc_sim *s);
+/* checkpoint: the state as bytes (p NULL: only counted), and back (*used: bytes read) */
+size_t eng_validity_bytes(const rc_sim *s, unsigned char *p);
+int eng_validity_read(rc_sim *s, const unsigned char *q, size_t size, size_t *used);
 
 #endif

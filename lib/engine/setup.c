@@ -193,6 +193,7 @@ static void release_balls(rc_sim *s)
     s->pend = NULL;
     free(s->img);
     s->img = NULL;
+    eng_validity_free(s);
     s->b = NULL;
     s->a = NULL;
     s->id = NULL;

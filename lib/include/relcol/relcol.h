@@ -9,6 +9,7 @@
 #include "relcol/law.h"
 #include "relcol/toi.h"
 #include "relcol/sim.h"
+#include "relcol/validity.h"
 #include "relcol/moments.h"
 #include "relcol/soft.h"
 #include "relcol/gas1d.h"
