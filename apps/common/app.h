@@ -269,4 +269,16 @@ void app_progress_done(app_progress *p);
  * it warned, else 0. */
 int app_rules_warn(FILE *f, const char *prog, const rc_sim_diag *d, const rc_sim_diag *d0);
 
+/* ---- where a run stands against the model's regime (validity.c) ------------------- */
+
+/* Note run s's validity report (call before freeing it; thread-safe). */
+void app_validity_note(const rc_sim *s);
+/* ... or its report, read already (rc_sim_validity). */
+void app_validity_note_report(const rc_validity *v);
+/* The runs noted so far that were `outside`. */
+size_t app_validity_outside(void);
+/* One line "prog: warning: ... outside the rigid-ball model's regime ..." on f when a
+ * noted run was outside (the numbers of the run of largest p_model); 1 if it warned. */
+int app_validity_warn(FILE *f, const char *prog);
+
 #endif

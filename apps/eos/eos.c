@@ -285,6 +285,7 @@ int main(int argc, char **argv)
                 break;
             }
             clock_gettime(CLOCK_MONOTONIC, &t1);
+            app_validity_note_report(&r.val);
             const double sec = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
             const double eta = in.packing;
             const double zt = z_theory(in.dim, eta),
@@ -342,5 +343,7 @@ int main(int argc, char **argv)
     }
     free(csv);
     free(gp);
+    if (rc == 0)
+        app_validity_warn(stderr, prog);
     return rc == 0 && fflush(stdout) != 0 ? 1 : rc;
 }

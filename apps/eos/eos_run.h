@@ -40,6 +40,7 @@ typedef struct eos_out {
     double d, d_se, eta, eta_se, lambda, lambda_se;
     uint64_t collisions, overlaps;
     double seconds_engine;         /* (the caller times; kept for reports) */
+    rc_validity val;               /* the run's validity report (relcol/validity.h) */
 } eos_out;
 
 static inline double eos_mean_se(const double *x, int k, double *se)
@@ -289,6 +290,8 @@ out:
     free(eb);
     free(lb);
     free(series);
+    if (s)
+        rc_sim_validity(s, &o->val);
     rc_sim_free(&s);
     return rc;
 }

@@ -695,7 +695,7 @@ int main(int argc, char **argv)
            o.dim == 1 ? "\n" : "");
     if (o.dim != 1)
         printf(", %llu overlaps (shape change)\n", (unsigned long long)S.overlaps);
-    if (o.dim != 1 && S.have_end)
+    if (o.dim != 1 && S.have_end && !app_validity_warn(stderr, prog)) /* (one line) */
         app_rules_warn(stderr, prog, &S.end, NULL);
     if (S.slices_read > 0) {
         printf("slices: %llu read final, %llu changed after the read (each held a further "

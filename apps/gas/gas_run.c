@@ -276,6 +276,7 @@ int gas_run_sim(const options *o, samples *S, char *err)
     if (sid && st == RC_OK)
         st = release_slices(s, S, sid, &held, next, 1);
     free(sid);
+    app_validity_note(s);
     rc_sim_free(&s);
     if (st != RC_OK) {
         app_errf(err, "engine: %s", rc_strerror(st));

@@ -331,7 +331,8 @@ int main(int argc, char **argv)
     }
     if (!rc)
         printf("%s: t = %.9g, %s\n", prog, rc_sim_time(sim), o.line);
-    if (!rc && o.have_d0) {
+    app_validity_note(sim);
+    if (!rc && !app_validity_warn(stderr, prog) && o.have_d0) { /* (one warning line) */
         rc_sim_diag d;
         if (rc_sim_diagnostics(sim, &d) == RC_OK)
             app_rules_warn(stderr, prog, &d, &o.d0);
