@@ -30,6 +30,10 @@ typedef struct eos_in {
     int transport;            /* also D, eta, lambda (stores the positions) */
     double lag;               /* transport: the lag, in mean free times, at which the
                                  moments' variance growth is read (<= the block length) */
+    int groups;               /* rule for simultaneous contacts (rc_group_rule; default 0) */
+    double move;              /* --sensitivity: the start moved by move_balls(b, n, dim,
+                                 move) when move_balls is set */
+    void (*move_balls)(rc_sim_ball *b, size_t n, int dim, double move);
 } eos_in;
 
 typedef struct eos_out {
@@ -112,6 +116,9 @@ static inline int eos_start(const eos_in *in, rc_sim **out, double *box_edge, ch
     d.box = box;
     d.c = in->c;
     d.frame = in->frame;
+    d.groups = in->groups;
+    if (in->move_balls && in->move != 0.0)
+        in->move_balls(b, in->n, in->dim, in->move);
     for (int k = 0; k < 3; k++)
         d.boundary[k] = RC_SIM_PERIODIC;
     rc_sim *s = NULL;

@@ -115,6 +115,9 @@ int gas_sim_start(const options *o, samples *S, rc_sim **out, char *err)
     d.box = box;
     d.c = o->c;
     d.frame = o->frame;
+    d.groups = o->groups;
+    if (o->sens_move != 0.0)
+        app_sens_move(b, n, o->dim, o->sens_move);
     for (int k = 0; k < 3; k++)
         d.boundary[k] = o->periodic ? RC_SIM_PERIODIC : RC_SIM_WALLS;
     rc_sim *s = NULL;
