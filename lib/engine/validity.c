@@ -13,8 +13,8 @@
  * is each event's net change, as tests/engine/kink_clusters.h counts it between
  * rc_sim_advance(s, INFINITY, 1) calls: the two agree exactly (test_validity).
  *
- * Memory: each ball keeps its last VAL_DEPTH kinks (an undo takes back at most a ball's
- * last one or two); nodes no ball's kinks name any more can join nothing, so they are
+ * Memory: each ball keeps its last VAL_DEPTH kinks (undos, chains included, took back up
+ * to three of one ball's in test_validity's gases: four keeps the offline count there); nodes no ball's kinks name any more can join nothing, so they are
  * dropped from the union-find when it fills (their clusters' sizes are kept in the
  * largest seen), which bounds the union-find by the balls' kinks, not the run's length. */
 #include <math.h>
@@ -35,6 +35,18 @@ typedef struct val_kink {
     uint32_t node, pad;
 } val_kink;
 
+/* per caller's ball, one block of five cache lines: its kink time and velocity when last
+ * read and its last VAL_DEPTH kinks, oldest first (a hook asks for the block, which the
+ * next event's flush reads: a ball's block is otherwise cold) */
+typedef struct val_ball {
+    double last_t;
+    rc_vec3 last_v;
+    uint32_t hn, pad0;
+    val_kink hk[VAL_DEPTH];
+    unsigned char pad[320 - 40 - VAL_DEPTH * sizeof(val_kink)];
+} val_ball;
+_Static_assert(sizeof(val_ball) == 320, "a ball's block is five cache lines");
+
 /* union-find over nodes: all links, and the model's (neither end a policy decision) */
 typedef struct val_uf {
     uint32_t *parent, *size;
@@ -52,11 +64,8 @@ typedef struct val_books {
 
 struct eng_validity {
     val_books k;
-    double *last_t; /* per caller's ball: its kink time and velocity when last read */
-    rc_vec3 *last_v;
-    val_kink *hk;   /* VAL_DEPTH per ball, oldest first */
-    uint8_t *hn;
-    uint8_t *mark;  /* listed in dirty */
+    val_ball *ball;
+    uint8_t *mark;  /* per caller's ball: listed in dirty */
     uint32_t *dirty;
     uint8_t *pol;   /* per node: an overlap-policy decision */
     val_uf all, model;
@@ -79,10 +88,7 @@ const char *rc_sim_verdict_name(rc_sim_verdict v)
 static void state_free(eng_validity *V)
 {
     if (V) {
-        free(V->last_t);
-        free(V->last_v);
-        free(V->hk);
-        free(V->hn);
+        free(V->ball);
         free(V->mark);
         free(V->dirty);
         free(V->pol);
@@ -126,13 +132,12 @@ static eng_validity *state_new(size_t n, size_t cap)
         return NULL;
     const size_t m = n ? n : 1;
     V->k.n = n;
-    V->last_t = malloc(m * sizeof *V->last_t);
-    V->last_v = malloc(m * sizeof *V->last_v);
-    V->hk = malloc(m * VAL_DEPTH * sizeof *V->hk);
-    V->hn = calloc(m, 1);
+    V->ball = aligned_alloc(64, m * sizeof *V->ball);
+    if (V->ball)
+        memset(V->ball, 0, m * sizeof *V->ball);
     V->mark = calloc(m, 1);
     V->dirty = malloc(m * sizeof *V->dirty);
-    if (!V->last_t || !V->last_v || !V->hk || !V->hn || !V->mark || !V->dirty ||
+    if (!V->ball || !V->mark || !V->dirty ||
         nodes_alloc(V, cap) != RC_OK) {
         state_free(V);
         return NULL;
@@ -152,8 +157,8 @@ static int start(rc_sim *s)
     }
     for (size_t i = 0; i < s->n; i++) {
         const uint32_t b = s->slot[i];
-        V->last_t[i] = s->cov[b].t_k;
-        V->last_v[i] = s->b[b].v;
+        V->ball[i].last_t = s->cov[b].t_k;
+        V->ball[i].last_v = s->b[b].v;
     }
     s->val = V;
     return RC_OK;
@@ -204,8 +209,8 @@ static int compact(eng_validity *V)
     for (size_t x = 0; x < 3 * nodes; x++)
         map[x] = VAL_NONE;
     for (size_t i = 0; i < n; i++)
-        for (size_t j = 0; j < V->hn[i]; j++)
-            map[V->hk[i * VAL_DEPTH + j].node] = 0;
+        for (size_t j = 0; j < V->ball[i].hn; j++)
+            map[V->ball[i].hk[j].node] = 0;
     uint32_t live = 0;
     for (size_t x = 0; x < nodes; x++)
         if (map[x] == 0)
@@ -255,8 +260,8 @@ static int compact(eng_validity *V)
         V->model.size[y] = sz[2 * y + 1];
     }
     for (size_t i = 0; i < n; i++)
-        for (size_t j = 0; j < V->hn[i]; j++)
-            V->hk[i * VAL_DEPTH + j].node = map[V->hk[i * VAL_DEPTH + j].node];
+        for (size_t j = 0; j < V->ball[i].hn; j++)
+            V->ball[i].hk[j].node = map[V->ball[i].hk[j].node];
     V->k.nodes = live;
     free(first_a);
     free(sz);
@@ -282,21 +287,18 @@ static uint32_t new_node(eng_validity *V, int policy)
     return x;
 }
 
-/* u_a . u_b of two unit four-velocities from three-velocities */
-static double dot4(double inv_c2, rc_vec3 a, rc_vec3 b)
-{
-    const double ga = 1.0 / sqrt(1.0 - rc_v3_dot(a, a) * inv_c2);
-    const double gb = 1.0 / sqrt(1.0 - rc_v3_dot(b, b) * inv_c2);
-    return ga * gb * (1.0 - rc_v3_dot(a, b) * inv_c2);
-}
-
 /* The proper time below which successive kinks (velocities v0, v1 between, v2) of a ball
  * of radius r cross inside it: (r/c) sqrt((C01-1)/(C01+1) + (C21-1)/(C21+1)
- * - 2 (C01 C21 - C02)/((1+C01)(1+C21))) (papers/shape-change.md section 8). */
+ * - 2 (C01 C21 - C02)/((1+C01)(1+C21))), C_ab = u_a . u_b = g_a g_b (1 - v_a . v_b / c^2)
+ * (papers/shape-change.md section 8). */
 static double cross_tau(double inv_c2, double r, rc_vec3 v0, rc_vec3 v1, rc_vec3 v2)
 {
-    const double c01 = dot4(inv_c2, v0, v1), c21 = dot4(inv_c2, v2, v1);
-    const double c02 = dot4(inv_c2, v0, v2);
+    const double g0 = 1.0 / sqrt(1.0 - rc_v3_dot(v0, v0) * inv_c2);
+    const double g1 = 1.0 / sqrt(1.0 - rc_v3_dot(v1, v1) * inv_c2);
+    const double g2 = 1.0 / sqrt(1.0 - rc_v3_dot(v2, v2) * inv_c2);
+    const double c01 = g0 * g1 * (1.0 - rc_v3_dot(v0, v1) * inv_c2);
+    const double c21 = g2 * g1 * (1.0 - rc_v3_dot(v2, v1) * inv_c2);
+    const double c02 = g0 * g2 * (1.0 - rc_v3_dot(v0, v2) * inv_c2);
     const double q = (c01 - 1.0) / (c01 + 1.0) + (c21 - 1.0) / (c21 + 1.0) -
                      2.0 * (c01 * c21 - c02) / ((1.0 + c01) * (1.0 + c21));
     return r * sqrt(inv_c2) * sqrt(q > 0.0 ? q : 0.0);
@@ -316,11 +318,11 @@ static void flush(const rc_sim *s, eng_validity *V)
     uint32_t node = VAL_NONE;
     for (size_t q = 0; q < V->k.nd; q++) {
         const uint32_t i = V->dirty[q], b = s->slot[i];
+        val_ball *B = &V->ball[i];
         V->mark[i] = 0;
         const double t = s->cov[b].t_k;
         const rc_vec3 v = s->b[b].v;
-        if (t == V->last_t[i] && v.x == V->last_v[i].x && v.y == V->last_v[i].y &&
-            v.z == V->last_v[i].z)
+        if (t == B->last_t && v.x == B->last_v.x && v.y == B->last_v.y && v.z == B->last_v.z)
             continue;
         if (node == VAL_NONE) {
             node = new_node(V, (int)V->k.cur_policy);
@@ -329,15 +331,15 @@ static void flush(const rc_sim *s, eng_validity *V)
                 break;
             }
         }
-        val_kink *h = &V->hk[(size_t)i * VAL_DEPTH];
+        val_kink *h = B->hk;
         const rc_vec3 vin = s->glu[b].v_in;
-        while (V->hn[i] > 0 && !same_v(h[V->hn[i] - 1].v_out, vin)) {
-            link_nodes(V, node, h[V->hn[i] - 1].node);
-            V->hn[i]--;
+        while (B->hn > 0 && !same_v(h[B->hn - 1].v_out, vin)) {
+            link_nodes(V, node, h[B->hn - 1].node);
+            B->hn--;
             V->k.popped++;
         }
-        if (V->hn[i] > 0) {
-            const val_kink *p = &h[V->hn[i] - 1];
+        if (B->hn > 0) {
+            const val_kink *p = &h[B->hn - 1];
             const double g1 = 1.0 / sqrt(1.0 - rc_v3_dot(vin, vin) * s->inv_c2);
             const double dtau = (t - p->t) / g1;
             const int model = !V->pol[node] && !V->pol[p->node];
@@ -350,13 +352,13 @@ static void flush(const rc_sim *s, eng_validity *V)
             if (cross)
                 link_nodes(V, node, p->node);
         }
-        if (V->hn[i] == VAL_DEPTH) { /* (the oldest can no longer be undone) */
+        if (B->hn == VAL_DEPTH) { /* (the oldest can no longer be undone) */
             memmove(h, h + 1, (VAL_DEPTH - 1) * sizeof *h);
-            V->hn[i]--;
+            B->hn--;
         }
-        h[V->hn[i]++] = (val_kink){t, vin, v, node, 0};
-        V->last_t[i] = t;
-        V->last_v[i] = v;
+        h[B->hn++] = (val_kink){t, vin, v, node, 0};
+        B->last_t = t;
+        B->last_v = v;
     }
     for (size_t q = 0; q < V->k.nd; q++)
         V->mark[V->dirty[q]] = 0;
@@ -387,6 +389,8 @@ static void mark(rc_sim *s, int32_t b)
     const uint32_t i = s->id[b];
     if (!V->mark[i]) {
         V->mark[i] = 1;
+        for (size_t l = 0; l < sizeof(val_ball); l += 64)
+            __builtin_prefetch((const char *)&V->ball[i] + l);
         V->dirty[V->k.nd++] = i;
     }
 }
@@ -468,10 +472,7 @@ size_t eng_validity_bytes(const rc_sim *s, unsigned char *p)
     at = put(p, at, &V->k, sizeof V->k);
     const uint64_t big[2] = {V->all.big, V->model.big};
     at = put(p, at, big, sizeof big);
-    at = put(p, at, V->last_t, n * sizeof *V->last_t);
-    at = put(p, at, V->last_v, n * sizeof *V->last_v);
-    at = put(p, at, V->hk, n * VAL_DEPTH * sizeof *V->hk);
-    at = put(p, at, V->hn, n);
+    at = put(p, at, V->ball, n * sizeof *V->ball);
     at = put(p, at, V->pol, nodes);
     at = put(p, at, V->all.parent, nodes * sizeof(uint32_t));
     at = put(p, at, V->all.size, nodes * sizeof(uint32_t));
@@ -518,10 +519,8 @@ int eng_validity_read(rc_sim *s, const unsigned char *q, size_t size, size_t *us
     V->all.big = big[0];
     V->model.big = big[1];
     const size_t n = (size_t)k.n, nodes = (size_t)k.nodes;
-    int st = take(q, size, &at, V->last_t, n * sizeof *V->last_t) ||
-             take(q, size, &at, V->last_v, n * sizeof *V->last_v) ||
-             take(q, size, &at, V->hk, n * VAL_DEPTH * sizeof *V->hk) ||
-             take(q, size, &at, V->hn, n) || take(q, size, &at, V->pol, nodes) ||
+    int st = take(q, size, &at, V->ball, n * sizeof *V->ball) ||
+             take(q, size, &at, V->pol, nodes) ||
              take(q, size, &at, V->all.parent, nodes * sizeof(uint32_t)) ||
              take(q, size, &at, V->all.size, nodes * sizeof(uint32_t)) ||
              take(q, size, &at, V->model.parent, nodes * sizeof(uint32_t)) ||
@@ -529,10 +528,10 @@ int eng_validity_read(rc_sim *s, const unsigned char *q, size_t size, size_t *us
                  ? RC_ECORRUPT
                  : RC_OK;
     for (size_t i = 0; i < n && st == RC_OK; i++) {
-        if (V->hn[i] > VAL_DEPTH)
+        if (V->ball[i].hn > VAL_DEPTH)
             st = RC_ECORRUPT;
-        for (size_t j = 0; j < V->hn[i] && st == RC_OK; j++)
-            if (V->hk[i * VAL_DEPTH + j].node >= nodes)
+        for (size_t j = 0; j < V->ball[i].hn && st == RC_OK; j++)
+            if (V->ball[i].hk[j].node >= nodes)
                 st = RC_ECORRUPT;
     }
     for (size_t x = 0; x < nodes && st == RC_OK; x++)
