@@ -104,6 +104,7 @@ void eng_validity_free(rc_sim *s)
 {
     state_free(s->val);
     s->val = NULL;
+    s->val_failed = 0; /* (new balls: a new count) */
 }
 
 static int nodes_alloc(eng_validity *V, size_t cap)
