@@ -257,6 +257,7 @@ int gas_run_sim(const options *o, samples *S, char *err)
         S->overlaps = dg.overlaps;
         S->end = dg;
         S->have_end = 1;
+        app_validity_note(s); /* (the run as measured: the slices' further W after) */
         /* the energy at t = 0 is n m gamma0 exactly: compare with the end too */
         const double e_start = (double)n * S->gamma0;
         S->energy_drift = fmax(S->energy_drift, fabs(dg.mass_rel - e_start) / e_start);
@@ -279,7 +280,6 @@ int gas_run_sim(const options *o, samples *S, char *err)
     if (sid && st == RC_OK)
         st = release_slices(s, S, sid, &held, next, 1);
     free(sid);
-    app_validity_note(s);
     rc_sim_free(&s);
     if (st != RC_OK) {
         app_errf(err, "engine: %s", rc_strerror(st));
