@@ -12,7 +12,10 @@
   const WD = { TIME: 0, COLL: 1, ENERGY: 2, EERR: 3, PERR: 4, OVERLAPS: 5, OVSHARE: 6,
                MEANG: 7, VMAX: 8, C: 9, KINETIC: 10, HEAT: 11, GROUPSEQ: 12, MAXGROUP: 13,
                N: 14, BOXX: 15, BOXY: 16, PCLASS: 17, EPS: 18, FRAME: 19, LAW: 20,
-               CONTRACTED: 21, GROUPS: 22, COUNT: 23 };
+               CONTRACTED: 21, GROUPS: 22, VERDICT: 23, PMODEL: 24, COUNT: 25 };
+  // rc_sim_verdict (relcol/validity.h)
+  const VERDICTS = ['defined', 'outside (p_model > 1e-3: depends on the model’s rules)',
+                    'non-covariant model (counted, not bounded)'];
   const C_DECADES = 3;   // the c slider spans c_min .. c_min 10^3, then its last notch is inf
   const C_POS_MAX = 1000;
   const HIST_BINS = 32;
@@ -422,6 +425,8 @@
     $('r-eerr').textContent = d[WD.EERR].toExponential(2);
     $('r-perr').textContent = d[WD.PERR].toExponential(2);
     $('r-ov').textContent = (100 * d[WD.OVSHARE]).toFixed(3) + ' % (' + d[WD.OVERLAPS] + ')';
+    $('r-verdict').textContent = (VERDICTS[d[WD.VERDICT]] || '?') +
+      (d[WD.VERDICT] === 1 || d[WD.PMODEL] > 0 ? ', p_model ' + d[WD.PMODEL].toPrecision(3) : '');
     $('r-gamma').textContent = d[WD.MEANG].toFixed(6);
     $('r-vmax').textContent = fmt(d[WD.VMAX], 4) + (isFinite(d[WD.C]) ? ' = ' + (d[WD.VMAX] / d[WD.C]).toFixed(4) + ' c' : '');
     $('r-fps').textContent = app.fps.toFixed(0);

@@ -24,7 +24,8 @@ enum { WB_X, WB_Y, WB_PX, WB_PY, WB_R, WB_M, WB_TAU, WB_GAMMA, WB_SPEED, WB_A, W
 /* values in web_diag's array */
 enum { WD_TIME, WD_COLL, WD_ENERGY, WD_EERR, WD_PERR, WD_OVERLAPS, WD_OVSHARE, WD_MEANG,
        WD_VMAX, WD_C, WD_KINETIC, WD_HEAT, WD_GROUPSEQ, WD_MAXGROUP, WD_N, WD_BOXX, WD_BOXY,
-       WD_PCLASS, WD_EPS, WD_FRAME, WD_LAW, WD_CONTRACTED, WD_GROUPS, WD_COUNT };
+       WD_PCLASS, WD_EPS, WD_FRAME, WD_LAW, WD_CONTRACTED, WD_GROUPS, WD_VERDICT, WD_PMODEL,
+       WD_COUNT };
 
 typedef struct web_world {
     scn_scenario sc; /* as read: reset starts from it */
@@ -331,6 +332,11 @@ WEB_EXPORT double *web_update(web_world *w)
     x[WD_LAW] = index_of_law(w->sc.law);
     x[WD_CONTRACTED] = contracted;
     x[WD_GROUPS] = w->sc.groups;
+    /* the validity report of the engine as it stands (relcol/validity.h): rc_sim_verdict */
+    rc_validity val;
+    rc_sim_validity(w->s, &val);
+    x[WD_VERDICT] = (double)val.verdict;
+    x[WD_PMODEL] = val.p_model;
     return x;
 }
 

@@ -158,6 +158,8 @@ async function checksRun() {
   check(d.perr < 1e-12, 'momentum (balls + walls) error < 1e-12', d.perr.toExponential(3));
   check(d.coll > 20, 'the break happened', d.coll + ' collisions');
   check(s.frames > 100, 'frames drawn', s.frames + ' frames, ' + s.fps.toFixed(1) + ' fps');
+  const verdict = await page.textContent('#r-verdict');
+  check(verdict.startsWith('defined'), 'the page shows the model verdict (classical rack: defined)', verdict);
 
   // the c slider at 1.5 x the fastest ball (its speed at c = inf, |p|/m: with momenta
   // kept every speed falls below it): contracted semi-axes from the page's state

@@ -269,4 +269,43 @@ void app_progress_done(app_progress *p);
  * it warned, else 0. */
 int app_rules_warn(FILE *f, const char *prog, const rc_sim_diag *d, const rc_sim_diag *d0);
 
+/* ---- where a run stands against the model's regime (validity.c) ------------------- */
+
+/* Note run s's validity report (call before freeing it; thread-safe). */
+void app_validity_note(const rc_sim *s);
+/* ... or its report, read already (rc_sim_validity). */
+void app_validity_note_report(const rc_validity *v);
+/* The runs noted so far that were `outside`. */
+size_t app_validity_outside(void);
+/* One line "prog: warning: ... outside the rigid-ball model's regime ..." on f when a
+ * noted run was outside (the numbers of the run of largest p_model); 1 if it warned. */
+int app_validity_warn(FILE *f, const char *prog);
+
+/* ---- --sensitivity: which results move with the model's rules (sensitivity.c) ------ */
+
+/* One rerun of a scenario: positions moved by `move` of a radius (app_sens_move), the
+ * group rule and the contact frame to use. */
+typedef struct app_sens_variant {
+    char name[48];
+    double move;
+    int groups;
+    const rc_toi_frame *frame;
+} app_sens_variant;
+/* An app's run of its scenario under variant v: its nobs observables into x[] and their
+ * statistical errors into se[] (0 where it has none); 0, or -1 with err set. */
+typedef int (*app_sens_run_fn)(void *ctx, const app_sens_variant *v, double *x, double *se,
+                               char *err);
+/* The variants a run offers (at most cap): the base run, the 1e-15 move, the other group
+ * rule, and the other contracted frames when the run's frame is contracted at finite c
+ * (sensitivity.c says why these). Returns how many. */
+size_t app_sens_variants(const rc_toi_frame *frame, int groups, double c, int dim,
+                         app_sens_variant *v, size_t cap);
+/* Move each ball's coordinates by +-move times its radius (a fixed pattern of signs). */
+void app_sens_move(rc_sim_ball *b, size_t n, int dim, double move);
+/* Run every variant (v[0] the base, v[1] the move), print the table on f and write
+ * dir/sensitivity.csv and dir/sensitivity.json (each written whole, then renamed): the
+ * number of observables flagged (a shift above 3 errors), or -1 with err set. */
+int app_sensitivity(FILE *f, const char *dir, const app_sens_variant *v, size_t nv, size_t nobs,
+                    const char *const *names, app_sens_run_fn run, void *ctx, char *err);
+
 #endif

@@ -81,6 +81,7 @@ typedef struct cov_run_out {
     uint64_t open;       /* pairs whose lines may still meet after t_end (cov_may_meet) */
     int walls;           /* a ball reached a wall (the cluster is no longer open) */
     int running;         /* on failure: 0 the engine refused the start, 1 it failed later */
+    rc_validity val;     /* the run's validity report (relcol/validity.h) */
 } cov_run_out;
 
 /* A frame's comparison. */
@@ -95,6 +96,7 @@ typedef struct cov_result {
     int walls;           /* a ball of some run reached a wall */
     double dp_frames, dp_roundoff; /* max_i |p_i - q_i| / rms |p| */
     double dx_frames, dx_roundoff; /* max_i |x_i - y_i| / r at table time t_end */
+    rc_validity val[3];  /* per run: its validity report */
 } cov_result;
 
 static inline double cov_urand(unsigned *s) { return (double)rand_r(s) / ((double)RAND_MAX + 1.0); }
@@ -187,6 +189,8 @@ static inline int cov_run(const cov_def *d, const rc_toi_frame *fr, const rc_sim
         o->walls = g.events[RC_SIM_EV_WALL] > 0 ||
                    rc_v3_norm(g.wall_impulse) > 1e-9 * g.momentum_scale;
     }
+    if (s)
+        rc_sim_validity(s, &o->val);
     rc_sim_free(&s);
     return st;
 }
@@ -386,6 +390,7 @@ static int cov_compare(const cov_def *d, const rc_toi_frame *fr, const cov_clust
         res->order[k] = o[k].order_conflicts;
         res->undone[k] = o[k].rollbacks;
         res->open[k] = o[k].open;
+        res->val[k] = o[k].val;
         res->walls |= o[k].walls;
     }
     /* the moving run back to the table frame */

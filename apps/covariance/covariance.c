@@ -641,6 +641,8 @@ int main(int argc, char **argv)
                             *q = ';';
                     continue;
                 }
+                for (int k = 0; k < 3; k++)
+                    app_validity_note_report(&w->r.val[k]);
                 if (w->r.early[0] != 0) {
                     snprintf(w->note, sizeof w->note, "a collision before the moving frame's start (table run)");
                     continue;
@@ -722,6 +724,7 @@ int main(int argc, char **argv)
         printf("wrote %s (no figure: gnuplot is not installed)\n", gpc);
     free(gpc);
     rc = fflush(stdout) == 0 ? 0 : 1;
+    app_validity_warn(stderr, prog);
 out:
     free(rows);
     free(csv);

@@ -31,6 +31,10 @@ typedef struct eos_in {
     int transport;            /* also D, eta, lambda (stores the positions) */
     double lag;               /* transport: the lag, in mean free times, at which the
                                  moments' variance growth is read (<= the block length) */
+    int groups;               /* rule for simultaneous contacts (rc_group_rule; default 0) */
+    double move;              /* --sensitivity: the start moved by move_balls(b, n, dim,
+                                 move) when move_balls is set */
+    void (*move_balls)(rc_sim_ball *b, size_t n, int dim, double move);
 } eos_in;
 
 typedef struct eos_out {
@@ -41,6 +45,7 @@ typedef struct eos_out {
     double d, d_se, eta, eta_se, lambda, lambda_se;
     uint64_t collisions, overlaps;
     double seconds_engine;         /* (the caller times; kept for reports) */
+    rc_validity val;               /* the run's validity report (relcol/validity.h) */
 } eos_out;
 
 static inline double eos_mean_se(const double *x, int k, double *se)
@@ -138,6 +143,9 @@ static inline int eos_start(const eos_in *in, rc_sim **out, double *box_edge, ch
     d.box = box;
     d.c = in->c;
     d.frame = in->frame;
+    d.groups = in->groups;
+    if (in->move_balls && in->move != 0.0)
+        in->move_balls(b, in->n, in->dim, in->move);
     for (int k = 0; k < 3; k++)
         d.boundary[k] = RC_SIM_PERIODIC;
     rc_sim *s = NULL;
@@ -316,6 +324,8 @@ out:
     free(eb);
     free(lb);
     free(series);
+    if (s)
+        rc_sim_validity(s, &o->val);
     rc_sim_free(&s);
     return rc;
 }

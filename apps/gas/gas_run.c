@@ -115,6 +115,9 @@ int gas_sim_start(const options *o, samples *S, rc_sim **out, char *err)
     d.box = box;
     d.c = o->c;
     d.frame = o->frame;
+    d.groups = o->groups;
+    if (o->sens_move != 0.0)
+        app_sens_move(b, n, o->dim, o->sens_move);
     for (int k = 0; k < 3; k++)
         d.boundary[k] = o->periodic ? RC_SIM_PERIODIC : RC_SIM_WALLS;
     rc_sim *s = NULL;
@@ -254,6 +257,7 @@ int gas_run_sim(const options *o, samples *S, char *err)
         S->overlaps = dg.overlaps;
         S->end = dg;
         S->have_end = 1;
+        app_validity_note(s); /* (the run as measured: the slices' further W after) */
         /* the energy at t = 0 is n m gamma0 exactly: compare with the end too */
         const double e_start = (double)n * S->gamma0;
         S->energy_drift = fmax(S->energy_drift, fabs(dg.mass_rel - e_start) / e_start);

@@ -35,6 +35,9 @@ typedef struct options {
     uint64_t seed;
     const rc_toi_frame *frame;
     const char *out;
+    int sensitivity;   /* --sensitivity (apps/common/sensitivity.c) */
+    int groups;        /* rule for simultaneous contacts (rc_group_rule; the default 0) */
+    double sens_move;  /* positions moved by this much of a radius at the start */
 } options;
 
 /* What the run gives back: per snapshot and ball, the species and u = gamma^2 - 1

@@ -5,6 +5,7 @@
  * state and exits cleanly. Every file is written atomically (temporary name, rename).
  * Exit status: 0 done, 2 bad scenario or option, 1 run or I/O failure, 130 interrupted. */
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <signal.h>
 #include <stdlib.h>
@@ -30,7 +31,7 @@ static void usage(FILE *f)
 {
     fprintf(f,
 "usage: relcol-sim SCENARIO.json | --builtin rack|gas  [--out DIR] [--t-end T]\n"
-"                  [--frame NAME] [--no-plots] [--dump]\n"
+"                  [--frame NAME] [--no-plots] [--dump] [--sensitivity]\n"
 "\n"
 "Run an event-driven simulation of hard balls at any c. The scenario format is\n"
 "SCENARIO.md (installed as share/relcol/SCENARIO.md, in the source apps/sim/); the\n"
@@ -43,6 +44,11 @@ static void usage(FILE *f)
 "  --frame NAME    contact frame (overrides contact_frame; listed below)\n"
 "  --no-plots      write data only, no gnuplot figures\n"
 "  --dump          print the scenario as relcol reads it (JSON) and exit\n"
+"  --sensitivity   instead of the outputs: the scenario run again with its positions moved\n"
+"                  by 1e-15 of a radius and under each other rule its frame offers (group\n"
+"                  rule; other contracted frames), each final momentum (8 balls at most)\n"
+"                  and total's shift in units of its error, flagged above 3 errors;\n"
+"                  sensitivity.csv and sensitivity.json in the output folder\n"
 "\n"
 "Writes into the output folder: snapshots/snap-NNNN.csv at the scenario's snapshot times,\n"
 "trajectory.xyz (extended XYZ, when outputs.xyz_every > 0), trajectory.h5 (H5MD, when\n"
@@ -78,12 +84,102 @@ static double now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+/* --sensitivity: the scenario run to t_end under variant v; observables: each ball's final
+ * momentum (up to 8 balls), the rms momentum, the collisions, the heat and the kinetic
+ * energy. A single run has no statistical error: its error is a round-off allowance,
+ * 64 ulp of the run's momentum (energy) scale per collision, so that a conserved total
+ * rounded otherwise is not called a rule's effect. */
+#define SENS_BALLS 8
+typedef struct sens_ctx {
+    const scn_scenario *s;
+    size_t nobs;
+    char names[3 * SENS_BALLS + 4][24];
+    const char *name[3 * SENS_BALLS + 4];
+} sens_ctx;
+
+static int sens_run(void *ctx, const app_sens_variant *v, double *x, double *se, char *err)
+{
+    const sens_ctx *k = ctx;
+    scn_scenario s = *k->s;
+    s.frame = v->frame;
+    s.groups = v->groups;
+    rc_sim_def def = scn_sim_def(&s);
+    rc_sim_ball *b = malloc((s.n ? s.n : 1) * sizeof *b);
+    rc_sim *sim = NULL;
+    if (!b) {
+        app_errf(err, "out of memory");
+        return -1;
+    }
+    memcpy(b, s.balls, s.n * sizeof *b);
+    app_sens_move(b, s.n, s.dim, v->move);
+    int st = rc_sim_create(&def, &sim);
+    if (st == RC_OK)
+        st = rc_sim_set_time(sim, s.time);
+    if (st == RC_OK)
+        st = rc_sim_set_balls(sim, s.n, b, NULL);
+    if (st == RC_OK)
+        st = rc_sim_advance(sim, s.t_end, 0);
+    rc_sim_diag d;
+    if (st == RC_OK)
+        st = rc_sim_diagnostics(sim, &d);
+    size_t j = 0;
+    double p2 = 0.0;
+    for (size_t i = 0; st == RC_OK && i < s.n; i++) {
+        rc_sim_ball o;
+        rc_sim_get_ball(sim, i, &o);
+        p2 += rc_v3_norm2(o.p);
+        for (int a = 0; i < SENS_BALLS && a < s.dim; a++)
+            x[j++] = rc_v3_get(o.p, a);
+    }
+    if (st == RC_OK) {
+        x[j++] = sqrt(p2 / (double)(s.n ? s.n : 1));
+        x[j++] = (double)d.collisions;
+        x[j++] = d.heat;
+        x[j++] = d.kinetic;
+    }
+    const double ulp = 64.0 * DBL_EPSILON * (1.0 + (st == RC_OK ? (double)d.collisions : 0.0));
+    for (size_t q = 0; q < k->nobs; q++)
+        se[q] = q + 3 < k->nobs ? ulp * sqrt(p2) : q + 3 == k->nobs ? 0.0
+                                                                   : ulp * fabs(d.energy);
+    rc_sim_free(&sim);
+    free(b);
+    if (st != RC_OK) {
+        app_errf(err, "engine: %s", rc_strerror(st));
+        return -1;
+    }
+    return 0;
+}
+
+static int sensitivity(const scn_scenario *s, char *err)
+{
+    sens_ctx k;
+    k.s = s;
+    k.nobs = 0;
+    for (size_t i = 0; i < s->n && i < SENS_BALLS; i++)
+        for (int a = 0; a < s->dim; a++)
+            snprintf(k.names[k.nobs++], sizeof k.names[0], "p%zu.%c", i, "xyz"[a]);
+    static const char *const agg[4] = {"p_rms", "collisions", "heat", "kinetic_energy"};
+    for (int a = 0; a < 4; a++)
+        snprintf(k.names[k.nobs++], sizeof k.names[0], "%s", agg[a]);
+    for (size_t q = 0; q < k.nobs; q++)
+        k.name[q] = k.names[q];
+    app_sens_variant v[16];
+    const size_t nv = app_sens_variants(s->frame, s->groups, s->c, s->dim, v, 16);
+    if (app_mkdir_p(s->out.dir, err) != 0)
+        return 1;
+    const int fl = app_sensitivity(stdout, s->out.dir, v, nv, k.nobs, k.name, sens_run, &k, err);
+    if (fl < 0)
+        return 1;
+    printf("%s: wrote %s/sensitivity.csv, %s/sensitivity.json\n", prog, s->out.dir, s->out.dir);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     app_init(prog);
     const char *file = NULL, *builtin = NULL, *out_dir = NULL, *frame = NULL;
     double t_end = NAN;
-    int no_plots = 0, dump = 0;
+    int no_plots = 0, dump = 0, sens = 0;
     char err[APP_ERR_LEN];
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -108,6 +204,8 @@ int main(int argc, char **argv)
             no_plots = 1;
         } else if (!strcmp(a, "--dump")) {
             dump = 1;
+        } else if (!strcmp(a, "--sensitivity")) {
+            sens = 1;
         } else if (a[0] == '-' && a[1]) {
             return fail(2, "unknown option %s (see --help)", a);
         } else if (file) {
@@ -143,6 +241,16 @@ int main(int argc, char **argv)
     }
     if (no_plots)
         s.out.plots = s.out.gif = 0;
+    if (sens) {
+        if (s.checkpoint) {
+            scn_free(&s);
+            return fail(2, "option --sensitivity: a scenario that continues a checkpoint "
+                           "cannot be moved or rerun under other rules (give its balls)");
+        }
+        const int r = sensitivity(&s, err);
+        scn_free(&s);
+        return r ? fail(1, "%s", err) : 0;
+    }
     if (dump) {
         scn_write(stdout, &s, s.time, s.t_end, s.n, s.balls);
         scn_free(&s);
@@ -240,7 +348,8 @@ int main(int argc, char **argv)
     }
     if (!rc)
         printf("%s: t = %.9g, %s\n", prog, rc_sim_time(sim), o.line);
-    if (!rc && o.have_d0) {
+    app_validity_note(sim);
+    if (!rc && !app_validity_warn(stderr, prog) && o.have_d0) { /* (one warning line) */
         rc_sim_diag d;
         if (rc_sim_diagnostics(sim, &d) == RC_OK)
             app_rules_warn(stderr, prog, &d, &o.d0);

@@ -333,6 +333,31 @@ static int write_summary_json(const sim_output *o, const rc_sim *sim, const rc_s
     cJSON_AddItemToObject(j, "events", x = cJSON_CreateObject());
     for (int k = 0; k < RC_SIM_EV_NKINDS; k++)
         add(x, ev[k], (double)(d->events[k] - d0->events[k]));
+    /* where the run stands against the rigid-ball model's regime (relcol/validity.h): the
+     * whole run since its balls were set, carried through checkpoints */
+    rc_validity v;
+    if (rc_sim_validity(sim, &v) == RC_OK) {
+        cJSON_AddItemToObject(j, "model", x = cJSON_CreateObject());
+        cJSON_AddStringToObject(x, "verdict", v.verdict_name);
+        add(x, "threshold_p_model", v.threshold);
+        cJSON_AddBoolToObject(x, "covariant", v.covariant);
+        add(x, "p_model", v.p_model);
+        add(x, "p_all", v.p_all);
+        add(x, "largest_cluster", v.largest_model);
+        add(x, "largest_cluster_all", v.largest_all);
+        add(x, "nu_r_c", v.nu_r_c);
+        add(x, "policy_share", v.policy_share);
+        add(x, "policy", (double)v.policy);
+        add(x, "collisions", (double)v.collisions);
+        add(x, "tube_conflicts", (double)v.tube_conflicts);
+        add(x, "order_conflicts", (double)v.order_conflicts);
+        add(x, "undone", (double)v.undone);
+        add(x, "kink_events", (double)v.kink_events);
+        add(x, "kink_pairs", (double)v.kink_pairs);
+        add(x, "kink_pairs_model", (double)v.kink_pairs_model);
+        add(x, "crossing", (double)v.crossing);
+        add(x, "crossing_model", (double)v.crossing_model);
+    }
     add(j, "wall_clock_seconds", wall);
     char *text = cJSON_Print(j);
     cJSON_Delete(j);

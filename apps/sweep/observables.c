@@ -178,6 +178,7 @@ static int eval_engine(const sweep_setup *s, double c, double *out, char *err)
     }
     if (st == RC_OK)
         out[8] = dg.heat;
+    app_validity_note(sim);
     rc_sim_free(&sim);
     if (st != RC_OK) {
         app_errf(err, "engine run: %s", rc_strerror(st));

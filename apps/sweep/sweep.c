@@ -370,6 +370,8 @@ int main(int argc, char **argv)
     }
 #endif
     int rc = run(argc, argv);
+    if (rc == 0) /* (under MPI, each rank for the runs it made) */
+        app_validity_warn(stderr, prog);
 #ifdef RELCOL_HAVE_MPI
     if (mpi) {
         /* every rank returns the same code: rank 0 decides */

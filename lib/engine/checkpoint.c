@@ -19,7 +19,7 @@
 #include "relcol/status.h"
 
 #define CK_MAGIC "relcolck"
-#define CK_VERSION 16u /* the format's number: raised by every change of layout; another is RC_EMISMATCH */
+#define CK_VERSION 17u /* the format's number: raised by every change of layout; another is RC_EMISMATCH */
 #define CK_ORDER 0x01020304u
 
 typedef struct ck_header {
@@ -168,6 +168,7 @@ static void write_all(const rc_sim *s, ck_cursor *c, const int32_t *next)
         put(c, s->pb->und, n * sizeof *s->pb->und);
         put(c, s->pb->undp, n * sizeof *s->pb->undp);
         put(c, s->pb->pend, n * sizeof *s->pb->pend);
+        c->at += eng_validity_bytes(s, c->p ? c->p + c->at : NULL);
     }
     if (n) {
         put(c, s->g.slot, s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot);
@@ -413,6 +414,10 @@ static int read_all(rc_sim *s, ck_cursor *c)
                      get(c, s->pb->undp, n * sizeof *s->pb->undp) ||
                      get(c, s->pb->pend, n * sizeof *s->pb->pend))))
         return RC_ECORRUPT;
+    size_t vb = 0;
+    if (s->pb && (st = eng_validity_read(s, c->q + c->at, c->size - c->at, &vb)) != RC_OK)
+        return st;
+    c->at += vb;
     if (n && (get(c, s->g.slot, s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot) ||
               get(c, s->g.next, n * sizeof *s->g.next)))
         return RC_ECORRUPT;

@@ -180,6 +180,7 @@ static inline void eng_finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec
 static inline void eng_note_overlap(rc_sim *s, int kind)
 {
     s->bk.overlaps++;
+    eng_validity_policy(s);
     s->bk.overlap_kind[kind]++;
 }
 

@@ -239,6 +239,8 @@ struct rc_sim {
     int32_t *img;        ///< periodic boxes (else NULL): three wrap counters per ball
     rc_vec3 *ev_n;       ///< contracted frames (else NULL): the frame's normal of each ball's scheduled event (NAN: overlap; eng_defer's mark: deferred)
     eng_perball *pb;     ///< the per-ball model's state (engine/perball_state.h); NULL in other frames
+    struct eng_validity *val; ///< the validity report's kink clusters (engine/validity.c); NULL until its first hook
+    int val_failed;      ///< the report once ran out of memory before it had a state
     struct eng_slice *slc; ///< delayed table-time slices asked for (engine/slice.c) ...
     size_t slc_n, slc_cap; ///< ... how many (0: no hook does more than test slc_n), room
     uint32_t slc_next_id;  ///< the next slice's id
@@ -441,5 +443,17 @@ void eng_moments_add(rc_sim *s, size_t nm, const int32_t *mem, const rc_particle
                      const rc_particle *after);
 /// Support distance of ball i's shape along the wall normal e_d.
 double eng_wall_support(const rc_sim *s, int32_t i, int d);
+
+/* The validity report's hooks (engine/validity.c): a kink about to be placed on ball b
+ * (storage slot), a contact resolved by the overlap policy, ball b about to be put back
+ * by an undo. Each is one line at its point; none changes the run. */
+typedef struct eng_validity eng_validity;
+void eng_validity_kink(rc_sim *s, int32_t b);
+void eng_validity_policy(rc_sim *s);
+void eng_validity_undone(rc_sim *s, int32_t b);
+void eng_validity_free(rc_sim *s);
+/* checkpoint: the state as bytes (p NULL: only counted), and back (*used: bytes read) */
+size_t eng_validity_bytes(const rc_sim *s, unsigned char *p);
+int eng_validity_read(rc_sim *s, const unsigned char *q, size_t size, size_t *used);
 
 #endif

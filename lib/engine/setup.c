@@ -185,6 +185,7 @@ static void release_balls(rc_sim *s)
     eng_perball_free(&s->pb);
     free(s->img);
     s->img = NULL;
+    eng_validity_free(s);
     s->b = NULL;
     s->a = NULL;
     s->id = NULL;

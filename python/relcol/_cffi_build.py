@@ -122,6 +122,18 @@ int rc_sim_slice_ready(const rc_sim *s, uint32_t id, rc_sim_slice_info *info);
 int rc_sim_slice_get(rc_sim *s, uint32_t id, size_t i, rc_sim_ball *out);
 int rc_sim_slice_release(rc_sim *s, uint32_t id);
 int rc_sim_diagnostics(const rc_sim *s, rc_sim_diag *d);
+typedef enum { RC_VERDICT_DEFINED = 0, RC_VERDICT_OUTSIDE = 1,
+               RC_VERDICT_NON_COVARIANT = 2 } rc_sim_verdict;
+typedef struct rc_validity {
+    uint64_t collisions; uint64_t policy; double policy_share;
+    uint64_t tube_conflicts; uint64_t order_conflicts; uint64_t undone;
+    uint64_t kink_events; uint64_t kink_pairs; uint64_t kink_pairs_model;
+    uint64_t crossing; uint64_t crossing_model; uint64_t kinks_popped;
+    double p_all; double p_model; double largest_all; double largest_model;
+    double nu_r_c; double threshold; int covariant; rc_sim_verdict verdict;
+    const char *verdict_name;
+} rc_validity;
+int rc_sim_validity(const rc_sim *s, rc_validity *out);
 uint64_t rc_sim_hash(const rc_sim *s);
 int rc_sim_set_c(rc_sim *s, double c);
 int rc_sim_checkpoint_size(const rc_sim *s, size_t *bytes);

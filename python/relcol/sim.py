@@ -300,7 +300,9 @@ class Sim:
         (contacts resolved) and events by kind, overlaps (contacts the overlap policy
         decided) by kind, heat, rest_mass_total, energy, kinetic_energy, momentum,
         wall_impulse, max_group, group_fallbacks, group_sequential, time, and for the
-        covariant frame tube_conflicts, order_conflicts and rollbacks (relcol/sim.h)."""
+        covariant frame tube_conflicts, order_conflicts and rollbacks (relcol/sim.h); and
+        "model", the validity report as summary.json's model block words it (the whole
+        run: relcol/validity.h)."""
         d, d0 = self._diag(), self._d0
         de = d.energy - d0.energy
         dp = np.array([d.momentum.x + d.wall_impulse.x - d0.momentum.x - d0.wall_impulse.x,
@@ -331,6 +333,23 @@ class Sim:
             "tube_conflicts": int(d.tube_conflicts - d0.tube_conflicts),
             "order_conflicts": int(d.order_conflicts - d0.order_conflicts),
             "rollbacks": int(d.rollbacks - d0.rollbacks),
+            "model": self._model(),
+        }
+
+    def _model(self):
+        v = ffi.new("rc_validity *")
+        check(lib.rc_sim_validity(self._sim, v), "validity")
+        return {
+            "verdict": ffi.string(v.verdict_name).decode(),
+            "threshold_p_model": v.threshold, "covariant": bool(v.covariant),
+            "p_model": v.p_model, "p_all": v.p_all, "largest_cluster": v.largest_model,
+            "largest_cluster_all": v.largest_all, "nu_r_c": v.nu_r_c,
+            "policy_share": v.policy_share, "policy": int(v.policy),
+            "collisions": int(v.collisions), "tube_conflicts": int(v.tube_conflicts),
+            "order_conflicts": int(v.order_conflicts), "undone": int(v.undone),
+            "kink_events": int(v.kink_events), "kink_pairs": int(v.kink_pairs),
+            "kink_pairs_model": int(v.kink_pairs_model), "crossing": int(v.crossing),
+            "crossing_model": int(v.crossing_model),
         }
 
     def hash(self):

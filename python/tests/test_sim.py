@@ -175,3 +175,26 @@ def test_slices():
     sl = cov.slice_state(sid)
     assert sl["t"] == 2.0 and cov.slice_ready(sid)["late"] == 0
     assert sl["x"].shape == (100, 2) and np.all((sl["x"] >= 0) & (sl["x"] < box[0]))
+
+
+def test_diagnostics_model_block():
+    # the validity report (relcol/validity.h), as summary.json's model block: the dense
+    # covariant gas is outside the rigid-ball model's regime, the zmf frame is a
+    # non-covariant model, c = inf is defined
+    box, balls = relcol.gas_init(2, 100, 1.0, 0.3, 0.5, c=1.0, seed=3)
+    keys = {"verdict", "threshold_p_model", "covariant", "p_model", "p_all",
+            "largest_cluster", "largest_cluster_all", "nu_r_c", "policy_share", "policy",
+            "collisions", "tube_conflicts", "order_conflicts", "undone", "kink_events",
+            "kink_pairs", "kink_pairs_model", "crossing", "crossing_model"}
+    for frame, want in (("covariant", "outside"), ("zmf", "non_covariant")):
+        sim = relcol.Sim(dim=2, box=box, c=1.0, balls=balls, contact_frame=frame,
+                         boundary="periodic")
+        sim.advance(20.0)
+        m = sim.diagnostics()["model"]
+        assert set(m) == keys and m["verdict"] == want and m["threshold_p_model"] == 1e-3
+        assert (m["p_model"] > 1e-3) == (want == "outside")
+        assert m["policy"] == sim.diagnostics()["overlaps"]
+    box, balls = relcol.gas_init(2, 100, 1.0, 0.3, 0.5, c=math.inf, seed=3)
+    sim = relcol.Sim(dim=2, box=box, c=math.inf, balls=balls, boundary="periodic")
+    sim.advance(5.0)
+    assert sim.diagnostics()["model"]["verdict"] == "defined"

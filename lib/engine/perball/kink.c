@@ -24,6 +24,7 @@
 void eng_glue_kink_at(rc_sim *s, int32_t b, const rc_particle *in, const rc_particle *out,
                       double tx, rc_vec3 dx, double te, rc_vec3 kappa, int at_event)
 {
+    eng_validity_kink(s, b);
     eng_cov *cv = &s->pb->cov[b];
     /* the tube, for a neighbour met while the ball is in its window (X at the origin) */
     if (rc_glue_make(s->inv_c2, s->b[b].r, in, out, tx, rc_v3_scale(-1.0, dx),

@@ -211,6 +211,7 @@ static void lift(rc_sim *s, ugroup *G, int slices)
 {
     for (size_t m = 0; m < G->nm; m++) {
         const int32_t b = G->sl[m];
+        eng_validity_undone(s, b);
         const eng_undo *u = &s->pb->und[b];
         G->b[m] = s->b[b];
         G->a[m] = s->a[b];

@@ -11,6 +11,7 @@
 #include "relcol/toi.h"
 #include "relcol/sim.h"
 #include "relcol/perball.h"
+#include "relcol/validity.h"
 #include "relcol/moments.h"
 #include "relcol/soft.h"
 #include "relcol/gas1d.h"

@@ -1,0 +1,549 @@
+/* engine/validity.c — the validity report (relcol/validity.h): the overlap policy's share,
+ * and the clusters of collisions joined by kinks that cross inside a ball, counted online.
+ *
+ * Two successive kinks of a ball cross inside it when the proper time between them is
+ * below (r/c)|tanh(phi_0/2) w_0 - tanh(phi_2/2) w_2| (papers/shape-change.md section 8):
+ * there the glued tube of the two is not defined. Each event that places kinks is a node;
+ * a ball's kink joins its node to the node of the kink it follows when they cross, and to
+ * each kink an undo took back. The engine calls three hooks (private.h): a kink about to
+ * be placed on ball b, a contact resolved by the overlap policy, a ball put back by an
+ * undo. A hook names the event by its (still_t, still_count) stamp, which the event loop
+ * makes unique per event; the balls a hook marked are read when the next event's first
+ * hook comes (or at a report or checkpoint), after their event, so that what is counted
+ * is each event's net change, as tests/engine/kink_clusters.h counts it between
+ * rc_sim_advance(s, INFINITY, 1) calls: the two agree exactly (test_validity).
+ *
+ * Memory: each ball keeps its last VAL_DEPTH kinks (undos, chains included, took back up
+ * to three of one ball's in test_validity's gases: four keeps the offline count there); nodes no ball's kinks name any more can join nothing, so they are
+ * dropped from the union-find when it fills (their clusters' sizes are kept in the
+ * largest seen), which bounds the union-find by the balls' kinks, not the run's length. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "perball_state.h"
+#include "private.h"
+#include "relcol/status.h"
+#include "relcol/validity.h"
+
+#define VAL_DEPTH 4
+#define VAL_NONE UINT32_MAX
+#define VAL_MAGIC 0x31564c4156ULL /* "VALV1" */
+
+typedef struct val_kink {
+    double t;
+    rc_vec3 v_in, v_out;
+    uint32_t node, pad;
+} val_kink;
+
+/* per caller's ball, one block of five cache lines: its kink time and velocity when last
+ * read and its last VAL_DEPTH kinks, oldest first (a hook asks for the block, which the
+ * next event's flush reads: a ball's block is otherwise cold) */
+typedef struct val_ball {
+    double last_t;
+    rc_vec3 last_v;
+    uint32_t hn, pad0;
+    val_kink hk[VAL_DEPTH];
+    unsigned char pad[320 - 40 - VAL_DEPTH * sizeof(val_kink)];
+} val_ball;
+_Static_assert(sizeof(val_ball) == 320, "a ball's block is five cache lines");
+
+/* union-find over nodes: all links, and the model's (neither end a policy decision) */
+typedef struct val_uf {
+    uint32_t *parent, *size;
+    uint64_t big;
+} val_uf;
+
+/* the counters and the current event, as stored in a checkpoint (no padding) */
+typedef struct val_books {
+    uint64_t n, nodes, cap, nd;
+    uint64_t events, pairs, pairs_model, crossing, crossing_model, popped;
+    uint64_t big_all, big_model;
+    double cur_t;
+    uint64_t cur_count, have_cur, cur_policy;
+} val_books;
+
+struct eng_validity {
+    val_books k;
+    val_ball *ball;
+    uint8_t *mark;  /* per caller's ball: listed in dirty */
+    uint32_t *dirty;
+    uint8_t *pol;   /* per node: an overlap-policy decision */
+    val_uf all, model;
+    int failed; /* out of memory once: the clusters are short of some events */
+};
+
+const char *rc_sim_verdict_name(rc_sim_verdict v)
+{
+    switch (v) {
+    case RC_VERDICT_DEFINED:
+        return "defined";
+    case RC_VERDICT_OUTSIDE:
+        return "outside";
+    case RC_VERDICT_NON_COVARIANT:
+        return "non_covariant";
+    }
+    return "?";
+}
+
+static void state_free(eng_validity *V)
+{
+    if (V) {
+        free(V->ball);
+        free(V->mark);
+        free(V->dirty);
+        free(V->pol);
+        free(V->all.parent);
+        free(V->all.size);
+        free(V->model.parent);
+        free(V->model.size);
+        free(V);
+    }
+}
+
+void eng_validity_free(rc_sim *s)
+{
+    state_free(s->val);
+    s->val = NULL;
+    s->val_failed = 0; /* (new balls: a new count) */
+}
+
+static int nodes_alloc(eng_validity *V, size_t cap)
+{
+    uint32_t *p[4];
+    uint32_t **f[4] = {&V->all.parent, &V->all.size, &V->model.parent, &V->model.size};
+    for (int j = 0; j < 4; j++) {
+        p[j] = realloc(*f[j], cap * sizeof *p[j]);
+        if (!p[j])
+            return RC_ENOMEM;
+        *f[j] = p[j];
+    }
+    uint8_t *q = realloc(V->pol, cap);
+    if (!q)
+        return RC_ENOMEM;
+    V->pol = q;
+    V->k.cap = cap;
+    return RC_OK;
+}
+
+/* A zeroed state for s's balls; the per-ball "last" is filled by the caller. */
+static eng_validity *state_new(size_t n, size_t cap)
+{
+    eng_validity *V = calloc(1, sizeof *V);
+    if (!V)
+        return NULL;
+    const size_t m = n ? n : 1;
+    V->k.n = n;
+    V->ball = aligned_alloc(64, m * sizeof *V->ball);
+    if (V->ball)
+        memset(V->ball, 0, m * sizeof *V->ball);
+    V->mark = calloc(m, 1);
+    V->dirty = malloc(m * sizeof *V->dirty);
+    if (!V->ball || !V->mark || !V->dirty ||
+        nodes_alloc(V, cap) != RC_OK) {
+        state_free(V);
+        return NULL;
+    }
+    return V;
+}
+
+/* The kinks already placed are the starting point and join nothing (kc_init's). */
+static int start(rc_sim *s)
+{
+    if (s->val || s->val_failed)
+        return s->val ? RC_OK : RC_ENOMEM;
+    eng_validity *V = state_new(s->n, 1024);
+    if (!V) {
+        s->val_failed = 1;
+        return RC_ENOMEM;
+    }
+    for (size_t i = 0; i < s->n; i++) {
+        const uint32_t b = s->slot[i];
+        V->ball[i].last_t = s->pb->cov[b].t_k;
+        V->ball[i].last_v = s->b[b].v;
+    }
+    s->val = V;
+    return RC_OK;
+}
+
+static uint32_t uf_find(val_uf *u, uint32_t a)
+{
+    while (u->parent[a] != a) {
+        u->parent[a] = u->parent[u->parent[a]];
+        a = u->parent[a];
+    }
+    return a;
+}
+
+static void uf_union(val_uf *u, uint32_t a, uint32_t b)
+{
+    a = uf_find(u, a);
+    b = uf_find(u, b);
+    if (a == b)
+        return;
+    if (u->size[a] < u->size[b]) {
+        const uint32_t t = a;
+        a = b;
+        b = t;
+    }
+    u->parent[b] = a;
+    u->size[a] += u->size[b];
+    if (u->size[a] > u->big)
+        u->big = u->size[a];
+}
+
+static void link_nodes(eng_validity *V, uint32_t a, uint32_t b)
+{
+    uf_union(&V->all, a, b);
+    if (!V->pol[a] && !V->pol[b])
+        uf_union(&V->model, a, b);
+}
+
+/* Keep only the nodes some ball's kinks name, renumbered in their old order; each cluster
+ * keeps its size on its new root. RC_OK or RC_ENOMEM (nothing changed). */
+static int compact(eng_validity *V)
+{
+    const size_t nodes = (size_t)V->k.nodes, n = (size_t)V->k.n;
+    uint32_t *map = malloc(3 * (nodes ? nodes : 1) * sizeof *map);
+    if (!map)
+        return RC_ENOMEM;
+    uint32_t *rep_a = map + nodes, *rep_m = rep_a + nodes;
+    for (size_t x = 0; x < 3 * nodes; x++)
+        map[x] = VAL_NONE;
+    for (size_t i = 0; i < n; i++)
+        for (size_t j = 0; j < V->ball[i].hn; j++)
+            map[V->ball[i].hk[j].node] = 0;
+    uint32_t live = 0;
+    for (size_t x = 0; x < nodes; x++)
+        if (map[x] == 0)
+            map[x] = live++;
+        else
+            map[x] = VAL_NONE;
+    /* (the roots before anything is rewritten: finds read the old arrays) */
+    for (size_t x = 0; x < nodes; x++)
+        if (map[x] != VAL_NONE) {
+            rep_a[x] = uf_find(&V->all, (uint32_t)x);
+            rep_m[x] = uf_find(&V->model, (uint32_t)x);
+        }
+    /* in place: new index y = map[x] <= x, so a slot is read before it is overwritten,
+     * except the roots' sizes, read from their old slots first */
+    uint32_t *sz = malloc(2 * (live ? live : 1) * sizeof *sz);
+    if (!sz) {
+        free(map);
+        return RC_ENOMEM;
+    }
+    for (size_t x = 0; x < nodes; x++)
+        if (map[x] != VAL_NONE) {
+            sz[2 * map[x]] = V->all.size[rep_a[x]];
+            sz[2 * map[x] + 1] = V->model.size[rep_m[x]];
+        }
+    /* the first live node of each old root becomes the new root */
+    uint32_t *first_a = malloc(2 * (nodes ? nodes : 1) * sizeof *first_a);
+    if (!first_a) {
+        free(sz);
+        free(map);
+        return RC_ENOMEM;
+    }
+    uint32_t *first_m = first_a + nodes;
+    for (size_t x = 0; x < 2 * nodes; x++)
+        first_a[x] = VAL_NONE;
+    for (size_t x = 0; x < nodes; x++) {
+        if (map[x] == VAL_NONE)
+            continue;
+        const uint32_t y = map[x];
+        V->pol[y] = V->pol[x];
+        if (first_a[rep_a[x]] == VAL_NONE)
+            first_a[rep_a[x]] = y;
+        if (first_m[rep_m[x]] == VAL_NONE)
+            first_m[rep_m[x]] = y;
+        V->all.parent[y] = first_a[rep_a[x]];
+        V->model.parent[y] = first_m[rep_m[x]];
+        V->all.size[y] = sz[2 * y];
+        V->model.size[y] = sz[2 * y + 1];
+    }
+    for (size_t i = 0; i < n; i++)
+        for (size_t j = 0; j < V->ball[i].hn; j++)
+            V->ball[i].hk[j].node = map[V->ball[i].hk[j].node];
+    V->k.nodes = live;
+    free(first_a);
+    free(sz);
+    free(map);
+    return RC_OK;
+}
+
+static uint32_t new_node(eng_validity *V, int policy)
+{
+    if (V->k.nodes == V->k.cap) {
+        if (compact(V) != RC_OK)
+            return VAL_NONE;
+        if (2 * V->k.nodes > V->k.cap && nodes_alloc(V, 2 * (size_t)V->k.cap) != RC_OK)
+            return VAL_NONE;
+    }
+    const uint32_t x = (uint32_t)V->k.nodes++;
+    V->all.parent[x] = V->model.parent[x] = x;
+    V->all.size[x] = V->model.size[x] = 1;
+    V->all.big = V->all.big ? V->all.big : 1;
+    V->model.big = V->model.big ? V->model.big : 1;
+    V->pol[x] = (uint8_t)(policy != 0);
+    V->k.events++;
+    return x;
+}
+
+/* The proper time below which successive kinks (velocities v0, v1 between, v2) of a ball
+ * of radius r cross inside it: (r/c) sqrt((C01-1)/(C01+1) + (C21-1)/(C21+1)
+ * - 2 (C01 C21 - C02)/((1+C01)(1+C21))), C_ab = u_a . u_b = g_a g_b (1 - v_a . v_b / c^2)
+ * (papers/shape-change.md section 8). */
+static double cross_tau(double inv_c2, double r, rc_vec3 v0, rc_vec3 v1, rc_vec3 v2)
+{
+    const double g0 = 1.0 / sqrt(1.0 - rc_v3_dot(v0, v0) * inv_c2);
+    const double g1 = 1.0 / sqrt(1.0 - rc_v3_dot(v1, v1) * inv_c2);
+    const double g2 = 1.0 / sqrt(1.0 - rc_v3_dot(v2, v2) * inv_c2);
+    const double c01 = g0 * g1 * (1.0 - rc_v3_dot(v0, v1) * inv_c2);
+    const double c21 = g2 * g1 * (1.0 - rc_v3_dot(v2, v1) * inv_c2);
+    const double c02 = g0 * g2 * (1.0 - rc_v3_dot(v0, v2) * inv_c2);
+    const double q = (c01 - 1.0) / (c01 + 1.0) + (c21 - 1.0) / (c21 + 1.0) -
+                     2.0 * (c01 * c21 - c02) / ((1.0 + c01) * (1.0 + c21));
+    return r * sqrt(inv_c2) * sqrt(q > 0.0 ? q : 0.0);
+}
+
+/* an undone ball comes back on its stored line, its velocity bit for bit; round-off
+ * allowed in case a rebuild recomputes it */
+static int same_v(rc_vec3 a, rc_vec3 b)
+{
+    const double d = rc_v3_norm(rc_v3_sub(a, b)), sc = rc_v3_norm(a) + rc_v3_norm(b);
+    return d <= 1e-12 * (sc > 1e-300 ? sc : 1.0);
+}
+
+/* The marked balls' net change in the event just past. */
+static void flush(const rc_sim *s, eng_validity *V)
+{
+    uint32_t node = VAL_NONE;
+    for (size_t q = 0; q < V->k.nd; q++) {
+        const uint32_t i = V->dirty[q], b = s->slot[i];
+        val_ball *B = &V->ball[i];
+        V->mark[i] = 0;
+        const double t = s->pb->cov[b].t_k;
+        const rc_vec3 v = s->b[b].v;
+        if (t == B->last_t && v.x == B->last_v.x && v.y == B->last_v.y && v.z == B->last_v.z)
+            continue;
+        if (node == VAL_NONE) {
+            node = new_node(V, (int)V->k.cur_policy);
+            if (node == VAL_NONE) {
+                V->failed = 1;
+                break;
+            }
+        }
+        val_kink *h = B->hk;
+        const rc_vec3 vin = s->pb->glu[b].v_in;
+        while (B->hn > 0 && !same_v(h[B->hn - 1].v_out, vin)) {
+            link_nodes(V, node, h[B->hn - 1].node);
+            B->hn--;
+            V->k.popped++;
+        }
+        if (B->hn > 0) {
+            const val_kink *p = &h[B->hn - 1];
+            const double g1 = 1.0 / sqrt(1.0 - rc_v3_dot(vin, vin) * s->inv_c2);
+            const double dtau = (t - p->t) / g1;
+            const int model = !V->pol[node] && !V->pol[p->node];
+            const int cross = s->pb->glu[b].r == 0.0 ||
+                              !(dtau >= cross_tau(s->inv_c2, s->b[b].r, p->v_in, vin, v));
+            V->k.pairs++;
+            V->k.pairs_model += (uint64_t)model;
+            V->k.crossing += (uint64_t)cross;
+            V->k.crossing_model += (uint64_t)(cross && model);
+            if (cross)
+                link_nodes(V, node, p->node);
+        }
+        if (B->hn == VAL_DEPTH) { /* (the oldest can no longer be undone) */
+            memmove(h, h + 1, (VAL_DEPTH - 1) * sizeof *h);
+            B->hn--;
+        }
+        h[B->hn++] = (val_kink){t, vin, v, node, 0};
+        B->last_t = t;
+        B->last_v = v;
+    }
+    for (size_t q = 0; q < V->k.nd; q++)
+        V->mark[V->dirty[q]] = 0;
+    V->k.nd = 0;
+}
+
+/* The event the hook is called from: the one before it, if any, is over. */
+static eng_validity *enter(rc_sim *s)
+{
+    if (!(s->pb && s->inv_c2 > 0.0) || start(s) != RC_OK)
+        return NULL;
+    eng_validity *V = s->val;
+    if (!V->k.have_cur || V->k.cur_t != s->bk.still_t || V->k.cur_count != s->bk.still_count) {
+        flush(s, V);
+        V->k.cur_t = s->bk.still_t;
+        V->k.cur_count = s->bk.still_count;
+        V->k.have_cur = 1;
+        V->k.cur_policy = 0;
+    }
+    return V;
+}
+
+static void mark(rc_sim *s, int32_t b)
+{
+    eng_validity *V = enter(s);
+    if (!V)
+        return;
+    const uint32_t i = s->id[b];
+    if (!V->mark[i]) {
+        V->mark[i] = 1;
+        for (size_t l = 0; l < sizeof(val_ball); l += 64)
+            __builtin_prefetch((const char *)&V->ball[i] + l);
+        V->dirty[V->k.nd++] = i;
+    }
+}
+
+void eng_validity_kink(rc_sim *s, int32_t b) { mark(s, b); }
+
+void eng_validity_undone(rc_sim *s, int32_t b) { mark(s, b); }
+
+void eng_validity_policy(rc_sim *s)
+{
+    eng_validity *V = enter(s);
+    if (V)
+        V->k.cur_policy = 1;
+}
+
+int rc_sim_validity(const rc_sim *s, rc_validity *out)
+{
+    if (!s || !out)
+        return RC_EINVAL;
+    memset(out, 0, sizeof *out);
+    const eng_books *bk = &s->bk;
+    out->collisions = bk->collisions;
+    out->policy = bk->overlaps;
+    out->policy_share = bk->collisions ? (double)bk->overlaps / (double)bk->collisions : 0.0;
+    out->tube_conflicts = bk->tube_conflicts;
+    out->order_conflicts = bk->order_conflicts;
+    out->undone = bk->rollbacks;
+    out->threshold = RC_VALIDITY_P_MODEL_MAX;
+    out->covariant = s->def.frame && s->def.frame->per_ball;
+    if (s->val) {
+        eng_validity *V = s->val;
+        flush(s, V); /* (the event last resolved: its balls are final) */
+        const val_books *k = &V->k;
+        out->kink_events = k->events;
+        out->kink_pairs = k->pairs;
+        out->kink_pairs_model = k->pairs_model;
+        out->crossing = k->crossing;
+        out->crossing_model = k->crossing_model;
+        out->kinks_popped = k->popped;
+        out->p_all = k->pairs ? (double)k->crossing / (double)k->pairs : 0.0;
+        out->p_model = k->pairs_model ? (double)k->crossing_model / (double)k->pairs_model : 0.0;
+        out->largest_all = k->events ? (double)V->all.big / (double)k->events : 0.0;
+        out->largest_model = k->events ? (double)V->model.big / (double)k->events : 0.0;
+    }
+    double rsum = 0.0;
+    for (size_t j = 0; j < s->n; j++)
+        rsum += s->b[j].r;
+    if (s->n && s->now > 0.0 && s->inv_c > 0.0)
+        out->nu_r_c = (double)bk->collisions / ((double)s->n * s->now) * (rsum / (double)s->n) *
+                      s->inv_c;
+    if (s->inv_c2 == 0.0)
+        out->verdict = RC_VERDICT_DEFINED;
+    else if (!out->covariant)
+        out->verdict = RC_VERDICT_NON_COVARIANT;
+    else
+        out->verdict = out->p_model > out->threshold ? RC_VERDICT_OUTSIDE : RC_VERDICT_DEFINED;
+    out->verdict_name = rc_sim_verdict_name(out->verdict);
+    return s->val_failed || (s->val && s->val->failed) ? RC_ENOMEM : RC_OK;
+}
+
+/* ---- checkpoint (engine/checkpoint.c) ------------------------------------------------ */
+
+static size_t put(unsigned char *p, size_t at, const void *x, size_t bytes)
+{
+    if (p && bytes)
+        memcpy(p + at, x, bytes);
+    return at + bytes;
+}
+
+size_t eng_validity_bytes(const rc_sim *s, unsigned char *p)
+{
+    eng_validity *V = s->val;
+    uint64_t head[2] = {VAL_MAGIC, V ? 1u : 0u};
+    size_t at = put(p, 0, head, sizeof head);
+    if (!V)
+        return at;
+    flush(s, V); /* (one form for one state: what a report would read) */
+    const size_t n = (size_t)V->k.n, nodes = (size_t)V->k.nodes;
+    at = put(p, at, &V->k, sizeof V->k);
+    const uint64_t big[2] = {V->all.big, V->model.big};
+    at = put(p, at, big, sizeof big);
+    at = put(p, at, V->ball, n * sizeof *V->ball);
+    at = put(p, at, V->pol, nodes);
+    at = put(p, at, V->all.parent, nodes * sizeof(uint32_t));
+    at = put(p, at, V->all.size, nodes * sizeof(uint32_t));
+    at = put(p, at, V->model.parent, nodes * sizeof(uint32_t));
+    at = put(p, at, V->model.size, nodes * sizeof(uint32_t));
+    return at;
+}
+
+static int take(const unsigned char *q, size_t size, size_t *at, void *x, size_t bytes)
+{
+    if (bytes > size - *at)
+        return RC_ECORRUPT;
+    if (bytes)
+        memcpy(x, q + *at, bytes);
+    *at += bytes;
+    return RC_OK;
+}
+
+int eng_validity_read(rc_sim *s, const unsigned char *q, size_t size, size_t *used)
+{
+    eng_validity_free(s);
+    s->val_failed = 0;
+    size_t at = 0;
+    uint64_t head[2];
+    if (take(q, size, &at, head, sizeof head) || head[0] != VAL_MAGIC || head[1] > 1)
+        return RC_ECORRUPT;
+    if (head[1] == 0) {
+        *used = at;
+        return RC_OK;
+    }
+    val_books k;
+    uint64_t big[2];
+    if (take(q, size, &at, &k, sizeof k) || take(q, size, &at, big, sizeof big))
+        return RC_ECORRUPT;
+    /* the sizes must add up before anything is allocated for them */
+    if (k.n != s->n || k.nd != 0 || k.nodes > k.cap || k.cap == 0 || k.cap > UINT32_MAX ||
+        k.have_cur > 1 || k.cur_policy > 1 ||
+        k.nodes > (size - at) / (1 + 4 * sizeof(uint32_t)))
+        return RC_ECORRUPT;
+    eng_validity *V = state_new((size_t)k.n, (size_t)k.cap);
+    if (!V)
+        return RC_ENOMEM;
+    V->k = k;
+    V->all.big = big[0];
+    V->model.big = big[1];
+    const size_t n = (size_t)k.n, nodes = (size_t)k.nodes;
+    int st = take(q, size, &at, V->ball, n * sizeof *V->ball) ||
+             take(q, size, &at, V->pol, nodes) ||
+             take(q, size, &at, V->all.parent, nodes * sizeof(uint32_t)) ||
+             take(q, size, &at, V->all.size, nodes * sizeof(uint32_t)) ||
+             take(q, size, &at, V->model.parent, nodes * sizeof(uint32_t)) ||
+             take(q, size, &at, V->model.size, nodes * sizeof(uint32_t))
+                 ? RC_ECORRUPT
+                 : RC_OK;
+    for (size_t i = 0; i < n && st == RC_OK; i++) {
+        if (V->ball[i].hn > VAL_DEPTH)
+            st = RC_ECORRUPT;
+        for (size_t j = 0; j < V->ball[i].hn && st == RC_OK; j++)
+            if (V->ball[i].hk[j].node >= nodes)
+                st = RC_ECORRUPT;
+    }
+    for (size_t x = 0; x < nodes && st == RC_OK; x++)
+        if (V->all.parent[x] >= nodes || V->model.parent[x] >= nodes || V->pol[x] > 1)
+            st = RC_ECORRUPT;
+    if (st != RC_OK) {
+        state_free(V);
+        return st;
+    }
+    s->val = V;
+    *used = at;
+    return RC_OK;
+}
