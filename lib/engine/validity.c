@@ -21,7 +21,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "perball_state.h"
 #include "private.h"
 #include "relcol/status.h"
 #include "relcol/validity.h"
