@@ -7,8 +7,9 @@
  * leans on them is measured, not guessed: at packing 0.05 the covariant gas's
  * finite-density split moved by up to a factor two between three such rules with 1.5 %
  * of its collisions policy decisions (papers/finite-density.md, section 5.1). So a run
- * says so on stderr when either share passes issue 16's bound on the policy, 0.1 % (a
- * choice: no run has shown where below it a result stops leaning on the rules). */
+ * says so on stderr when either share passes 0.1 %, the share the covariant frame keeps
+ * where its own crossing kinks are rare (papers/model-regime.md, section 4; a choice for a
+ * warning, not a bound). */
 #include "app.h"
 
 int app_rules_warn(FILE *f, const char *prog, const rc_sim_diag *d, const rc_sim_diag *d0)
@@ -29,6 +30,6 @@ int app_rules_warn(FILE *f, const char *prog, const rc_sim_diag *d, const rc_sim
                    "crossing the ball's previous one: collisions less than a glue window "
                    "apart, where the glued tube is not defined)", 100.0 * so);
     fprintf(f, ": above %g %%, results that depend on the collisions depend on these rules "
-               "(papers/shape-change.md, section 8)\n", 100.0 * APP_RULES_SHARE);
+               "(papers/model-regime.md, section 4)\n", 100.0 * APP_RULES_SHARE);
     return 1;
 }
