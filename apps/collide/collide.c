@@ -130,12 +130,10 @@ static void usage(FILE *f)
 "tangent) along the normal, nothing printed on stdout; 1 I/O error.\n");
 }
 
-static const app_cli cli = {prog, opts, usage, "input is read from stdin; see --help",
-                            EXIT_BAD_INPUT};
-
 /* The checks between options, after the table's parse: 0, else an exit code. */
-static int check_options(const options *o)
+static int check_options(const void *opts)
 {
+    const options *o = opts;
     char err[APP_ERR_LEN];
     char f[APP_FMT_LEN];
     if (app_check_c(o->c, err) != 0)
@@ -156,6 +154,9 @@ static int check_options(const options *o)
         return fail("--azimuth: only with a numeric --alpha (random draws the azimuth too)");
     return 0;
 }
+
+static const app_cli cli = {prog, opts, usage, "input is read from stdin; see --help",
+                            EXIT_BAD_INPUT, check_options};
 
 static cJSON *json_num(double x)
 {
@@ -184,8 +185,6 @@ int main(int argc, char **argv)
     memset(&o, 0, sizeof o);
     int st = app_start(&cli, argc, argv, &o);
     if (st >= 0)
-        return st;
-    if ((st = check_options(&o)) != 0)
         return st;
 
     char err[APP_ERR_LEN], f[APP_FMT_LEN];

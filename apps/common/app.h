@@ -118,14 +118,16 @@ typedef struct app_opt {
 #define APP_GIVEN(type, field) (offsetof(type, field) + 1)
 
 /* What app_start needs of an app: its name, its table, its whole help (which prints the
- * options with app_opts_help), the hint for stray arguments and the exit status of a bad
- * option. */
+ * options with app_opts_help), the hint for stray arguments, the exit status of a bad
+ * option and the app's checks between options after the parse (0, or an exit status
+ * after its error line; NULL for none). */
 typedef struct app_cli {
     const char *prog;
     const app_opt *tab;
     void (*usage)(FILE *f);
     const char *stray_hint;
     int bad;
+    int (*check)(const void *opts);
 } app_cli;
 
 /* The table's defaults into opts (-1 with the reason in err: a table's own bug). */
@@ -142,8 +144,8 @@ int app_opt_law(const char *val, void *dst, char *err);
 int app_opt_toi_frame(const char *val, void *dst, char *err);
 /* APP_T_CUSTOM: an output folder (const char *), not empty: "empty folder name". */
 int app_opt_dir(const char *val, void *dst, char *err);
-/* Every app's main() prologue: app_init, the defaults, the parse, --help. Returns -1 to
- * go on, else the status main returns at once (0 after --help, cli->bad after an error). */
+/* Every app's main() prologue: app_init, the defaults, the parse, --help, cli->check.
+ * Returns -1 to go on, else the status main returns at once (0 after --help). */
 int app_start(const app_cli *cli, int argc, char **argv, void *opts);
 
 /* A usable speed of light: c > 0 and 1/c^2 representable (c = inf is fine). Errors:

@@ -155,6 +155,8 @@ int app_start(const app_cli *cli, int argc, char **argv, void *opts)
     int st = app_opts_parse(cli, argc, argv, opts);
     if (st < 0)
         return app_help(cli->usage);
+    if (st == 0 && cli->check)
+        st = cli->check(opts);
     return st == 0 ? -1 : st;
 }
 

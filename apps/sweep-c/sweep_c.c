@@ -92,11 +92,10 @@ static void usage(FILE *f)
 "exit status: 0 ok; 2 bad input; 3 the balls do not collide; 1 I/O error.\n");
 }
 
-static const app_cli cli = {prog, opts, usage, "see --help", EXIT_BAD_INPUT};
-
 /* The checks between options, after the table's parse: 0, else an exit code. */
-static int check_options(const options *o)
+static int check_options(const void *opts)
 {
+    const options *o = opts;
     char f[APP_FMT_LEN];
     if (o->example && o->input)
         return fail("--example: conflicts with --input");
@@ -108,6 +107,9 @@ static int check_options(const options *o)
         return fail("--eps: eps = %s outside [0, 1]", app_fmt(o->eps, f));
     return 0;
 }
+
+static const app_cli cli = {prog, opts, usage, "see --help", EXIT_BAD_INPUT,
+                            check_options};
 
 /* One collision at c; outputs the final states. Returns an rc_status. */
 static int collide_at(const options *o, const app_balls *b, rc_vec3 n, double c,
@@ -177,8 +179,6 @@ int main(int argc, char **argv)
     memset(&o, 0, sizeof o);
     int st = app_start(&cli, argc, argv, &o);
     if (st >= 0)
-        return st;
-    if ((st = check_options(&o)) != 0)
         return st;
 
     char err[APP_ERR_LEN];

@@ -82,12 +82,10 @@ static void usage(FILE *f)
 "0 (one line on stderr naming the row, column or option and the reason); 1 I/O error.\n");
 }
 
-static const app_cli cli = {prog, opts, usage, "input is read from stdin; see --help",
-                            EXIT_BAD_INPUT};
-
 /* The checks after the table's parse: 0, else an exit code. */
-static int check_options(const options *o)
+static int check_options(const void *opts)
 {
+    const options *o = opts;
     char err[APP_ERR_LEN], f1[APP_FMT_LEN], f2[APP_FMT_LEN];
     if (o->n_wall % 2 != 0)
         return fail("--wall: %d numbers; give pairs X0,X1[,Y0,Y1[,Z0,Z1]]", o->n_wall);
@@ -99,6 +97,9 @@ static int check_options(const options *o)
         return fail("--c: %s", err);
     return 0;
 }
+
+static const app_cli cli = {prog, opts, usage, "input is read from stdin; see --help",
+                            EXIT_BAD_INPUT, check_options};
 
 static void print_row(int dim, double t, rc_vec3 x, rc_vec3 n)
 {
@@ -126,8 +127,6 @@ int main(int argc, char **argv)
     memset(&o, 0, sizeof o);
     int st = app_start(&cli, argc, argv, &o);
     if (st >= 0)
-        return st;
-    if ((st = check_options(&o)) != 0)
         return st;
 
     char err[APP_ERR_LEN], f[APP_FMT_LEN], rn[48];
