@@ -45,8 +45,9 @@ typedef struct options {
     uint64_t seed;
 } options;
 
-static int parse_alpha(const char *val, void *dst, char *err)
+static int parse_alpha(const char *val, void *dst, void *opts, char *err)
 {
+    (void)opts;
     char why[APP_ERR_LEN];
     struct angle *alpha = dst;
     alpha->random = strcmp(val, "random") == 0;
@@ -131,7 +132,7 @@ static void usage(FILE *f)
 }
 
 /* The checks between options, after the table's parse: 0, else an exit code. */
-static int check_options(const void *opts)
+static int check_options(void *opts)
 {
     const options *o = opts;
     char err[APP_ERR_LEN];

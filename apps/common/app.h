@@ -91,12 +91,14 @@ typedef enum app_opt_type {
     APP_T_DOUBLE,     /* double, finite */
     APP_T_DOUBLE_INF, /* double, finite or inf */
     APP_T_INT,        /* int in [lo, hi] (app_parse_long's wording) */
+    APP_T_LONG,       /* long in [lo, hi] */
     APP_T_U64,        /* uint64_t */
     APP_T_STRING,     /* const char *, pointing into argv */
     APP_T_CHOICE,     /* int: the index in choices; "unknown WHAT 'x' (a, b or c)" */
     APP_T_FLAG,       /* int set to 1; no value */
     APP_T_LIST,       /* double[hi], 1..hi comma-separated numbers, the count in int `count` */
-    APP_T_CUSTOM,     /* parse(value, destination, err): 0, or -1 with the reason in err */
+    APP_T_CUSTOM,     /* parse(value, destination, opts, err): 0, or -1 with the reason in
+                       * err; opts (the whole struct) for an option that sets two fields */
     APP_T_HELP,       /* --help: a help line only (app_opts_next handles it) */
 } app_opt_type;
 typedef struct app_opt {
@@ -111,7 +113,7 @@ typedef struct app_opt {
                                  * help NULL it prints the entry's text from its first line */
     const char *const *choices; /* APP_T_CHOICE: NULL-terminated names */
     const char *what;   /* APP_T_CHOICE: "format" in "unknown format 'x' (csv or json)" */
-    int (*parse)(const char *val, void *dst, char *err); /* APP_T_CUSTOM */
+    int (*parse)(const char *val, void *dst, void *opts, char *err); /* APP_T_CUSTOM */
     size_t count;       /* APP_T_LIST: offsetof the int count */
     size_t given;       /* offsetof + 1 of an int set to 1 when the option is given (0: none) */
 } app_opt;
@@ -127,7 +129,7 @@ typedef struct app_cli {
     void (*usage)(FILE *f);
     const char *stray_hint;
     int bad;
-    int (*check)(const void *opts);
+    int (*check)(void *opts);
 } app_cli;
 
 /* The table's defaults into opts (-1 with the reason in err: a table's own bug). */
@@ -140,10 +142,10 @@ int app_opts_parse(const app_cli *cli, int argc, char **argv, void *opts);
 void app_opts_help(FILE *f, const app_opt *tab, int col);
 /* APP_T_CUSTOM parsers of a law (const rc_law *) and a contact frame
  * (const rc_toi_frame *) by name: "unknown law 'x' (known: zmf, ...)". */
-int app_opt_law(const char *val, void *dst, char *err);
-int app_opt_toi_frame(const char *val, void *dst, char *err);
+int app_opt_law(const char *val, void *dst, void *opts, char *err);
+int app_opt_toi_frame(const char *val, void *dst, void *opts, char *err);
 /* APP_T_CUSTOM: an output folder (const char *), not empty: "empty folder name". */
-int app_opt_dir(const char *val, void *dst, char *err);
+int app_opt_dir(const char *val, void *dst, void *opts, char *err);
 /* Every app's main() prologue: app_init, the defaults, the parse, --help, cli->check.
  * Returns -1 to go on, else the status main returns at once (0 after --help). */
 int app_start(const app_cli *cli, int argc, char **argv, void *opts);

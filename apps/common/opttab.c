@@ -40,6 +40,8 @@ static int set_value(const app_opt *o, const char *val, void *opts, char *err)
             return -1;
         *(int *)dst = (int)l;
         return 0;
+    case APP_T_LONG:
+        return app_parse_long(val, (long)o->lo, (long)o->hi, (long *)dst, err);
     case APP_T_U64:
         return app_parse_u64(val, (uint64_t *)dst, err);
     case APP_T_STRING:
@@ -59,7 +61,7 @@ static int set_value(const app_opt *o, const char *val, void *opts, char *err)
         return app_parse_list(val, (double *)dst, (int)o->hi, (int *)((char *)opts + o->count),
                               err);
     case APP_T_CUSTOM:
-        return o->parse(val, dst, err);
+        return o->parse(val, dst, opts, err);
     case APP_T_FLAG:
     case APP_T_HELP:
         break;
@@ -160,8 +162,9 @@ int app_start(const app_cli *cli, int argc, char **argv, void *opts)
     return st == 0 ? -1 : st;
 }
 
-int app_opt_law(const char *val, void *dst, char *err)
+int app_opt_law(const char *val, void *dst, void *opts, char *err)
 {
+    (void)opts;
     if ((*(const rc_law **)dst = rc_law_find(val)))
         return 0;
     char list[256];
@@ -169,8 +172,9 @@ int app_opt_law(const char *val, void *dst, char *err)
     return -1;
 }
 
-int app_opt_toi_frame(const char *val, void *dst, char *err)
+int app_opt_toi_frame(const char *val, void *dst, void *opts, char *err)
 {
+    (void)opts;
     if ((*(const rc_toi_frame **)dst = rc_toi_frame_find(val)))
         return 0;
     char list[256];
@@ -178,8 +182,9 @@ int app_opt_toi_frame(const char *val, void *dst, char *err)
     return -1;
 }
 
-int app_opt_dir(const char *val, void *dst, char *err)
+int app_opt_dir(const char *val, void *dst, void *opts, char *err)
 {
+    (void)opts;
     if (!*val) {
         app_errf(err, "empty folder name");
         return -1;

@@ -82,7 +82,7 @@ static void usage(FILE *f)
 }
 
 /* The checks between options, after the table's parse: 0, else an exit code. */
-static int check_options(const void *opts)
+static int check_options(void *opts)
 {
     const options *o = opts;
     char f[APP_FMT_LEN];

@@ -30,8 +30,9 @@ typedef struct options {
     const rc_law *law;
 } options;
 
-static int parse_law(const char *val, void *dst, char *err)
+static int parse_law(const char *val, void *dst, void *opts, char *err)
 {
+    (void)opts;
     if ((*(const rc_law **)dst = rc_law_find(val)))
         return 0;
     char list[256];
@@ -93,7 +94,7 @@ static void usage(FILE *f)
 }
 
 /* The checks between options, after the table's parse: 0, else an exit code. */
-static int check_options(const void *opts)
+static int check_options(void *opts)
 {
     const options *o = opts;
     char f[APP_FMT_LEN];

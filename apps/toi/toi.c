@@ -83,7 +83,7 @@ static void usage(FILE *f)
 }
 
 /* The checks after the table's parse: 0, else an exit code. */
-static int check_options(const void *opts)
+static int check_options(void *opts)
 {
     const options *o = opts;
     char err[APP_ERR_LEN], f1[APP_FMT_LEN], f2[APP_FMT_LEN];
