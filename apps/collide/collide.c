@@ -79,7 +79,8 @@ static const char *const formats[] = {"csv", "json", NULL};
 static const app_opt opts[] = {
     {"--c", "C|inf", APP_T_DOUBLE_INF, OFF(c), "inf",
      .help = "speed of light, > 0 (default %D: exact classical mechanics)"},
-    {"--eps", "E", APP_T_DOUBLE, OFF(eps), "1", .help = "restitution in [0, 1] (default %D: elastic)"},
+    {"--eps", "E", APP_T_DOUBLE, OFF(eps), "1",
+     .help = "restitution in [0, 1] (default %D: elastic)"},
     {"--law", "LAW", APP_T_CUSTOM, OFF(law), "zmf", .parse = app_opt_law,
      .help = "collision law (default %D):", .help_more = law_lines},
     {"--normal", "X[,Y[,Z]]", APP_T_LIST, OFF(normal), .hi = 3, .count = OFF(n_normal),
@@ -157,7 +158,7 @@ static int check_options(void *opts)
 }
 
 static const app_cli cli = {prog, opts, usage, "input is read from stdin; see --help",
-                            EXIT_BAD_INPUT, check_options};
+                            EXIT_BAD_INPUT, check_options, NULL};
 
 static cJSON *json_num(double x)
 {

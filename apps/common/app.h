@@ -6,8 +6,8 @@
  * Error convention: functions that can fail return 0 on success and -1 on failure, and
  * write one line of text (no program name, no newline) into the caller's buffer `err` of
  * size APP_ERR_LEN; the app prefixes its name and prints it (app_fail). Nothing here
- * prints, except app_fail, app_help, app_opts_next (its own errors), app_gnuplot_run (a
- * note when gnuplot is absent) and the progress bar. */
+ * prints, except app_fail, app_help, app_opts_next and app_opts_parse (their own errors,
+ * --list-options), app_gnuplot_run (a note when gnuplot is absent) and the progress bar. */
 #ifndef RELCOL_APP_H
 #define RELCOL_APP_H
 
@@ -63,7 +63,10 @@ int app_version(void);
  *   app_opts it;
  *   app_opts_init(&it, prog, argc, argv, valued, NULL, "see --help");
  *   while ((k = app_opts_next(&it, &name, &val)) != APP_OPT_END) { switch (k) ... } */
-enum { APP_OPT_END = 0, APP_OPT_VALUE, APP_OPT_FLAG, APP_OPT_HELP, APP_OPT_ERROR };
+/* With it->positional set (relcol-sim's scenario file), an argument that does not start
+ * with '-' (or is "-") comes back as APP_OPT_ARG in *value, "-x" is an unknown option, and
+ * a missing value is "option --NAME: needs a value" (that app's wording). */
+enum { APP_OPT_END = 0, APP_OPT_VALUE, APP_OPT_FLAG, APP_OPT_HELP, APP_OPT_ERROR, APP_OPT_ARG };
 typedef struct app_opts {
     const char *prog;
     int argc;
@@ -73,6 +76,7 @@ typedef struct app_opts {
     const char *const *flags;   /* NULL-terminated "--name"s without a value, or NULL */
     const char *stray_hint;     /* e.g. "see --help" */
     char name[32];              /* the current option's name (without "=value") */
+    int positional;             /* arguments that are not options are the app's (above) */
 } app_opts;
 void app_opts_init(app_opts *it, const char *prog, int argc, char **argv,
                    const char *const *valued, const char *const *flags,
@@ -130,6 +134,9 @@ typedef struct app_cli {
     const char *stray_hint;
     int bad;
     int (*check)(void *opts);
+    /* NULL, or the app's plain arguments (a scenario file): 0, or an exit status after its
+     * error line; then value errors read "option --NAME: reason" (relcol-sim's wording) */
+    int (*arg)(const char *arg, void *opts);
 } app_cli;
 
 /* The table's defaults into opts (-1 with the reason in err: a table's own bug). */

@@ -6,6 +6,7 @@
 
 #include "app.h"
 
+/* the most options a table holds (app_opts_parse refuses a longer one) */
 #define MAX_OPTS 64
 
 static const app_opt *find(const app_opt *tab, const char *name)
@@ -89,7 +90,10 @@ int app_opts_parse(const app_cli *cli, int argc, char **argv, void *opts)
 {
     const char *valued[MAX_OPTS + 1], *flags[MAX_OPTS + 2];
     int nv = 0, nf = 0;
-    for (const app_opt *o = cli->tab; o->name && nv < MAX_OPTS && nf < MAX_OPTS; o++) {
+    for (const app_opt *o = cli->tab; o->name; o++) {
+        if (nv == MAX_OPTS || nf == MAX_OPTS)
+            return app_fail(cli->prog, 1, "internal: more than %d options in the table",
+                            MAX_OPTS);
         if (o->type == APP_T_FLAG)
             flags[nf++] = o->name;
         else if (o->type != APP_T_HELP)
@@ -100,12 +104,18 @@ int app_opts_parse(const app_cli *cli, int argc, char **argv, void *opts)
     char err[APP_ERR_LEN];
     app_opts it;
     app_opts_init(&it, cli->prog, argc, argv, valued, flags, cli->stray_hint);
+    it.positional = cli->arg != NULL;
     const char *name, *val;
     for (int kind; (kind = app_opts_next(&it, &name, &val)) != APP_OPT_END;) {
         if (kind == APP_OPT_HELP)
             return -1;
         if (kind == APP_OPT_ERROR)
             return cli->bad;
+        int st;
+        if (kind == APP_OPT_ARG && (st = cli->arg(val, opts)) != 0)
+            return st;
+        if (kind == APP_OPT_ARG)
+            continue;
         if (strcmp(name, "--list-options") == 0) {
             list_options(cli->tab);
             exit(0);
@@ -116,7 +126,8 @@ int app_opts_parse(const app_cli *cli, int argc, char **argv, void *opts)
         if (o->type == APP_T_FLAG)
             *(int *)((char *)opts + o->off) = 1;
         else if (set_value(o, val, opts, err) != 0)
-            return app_fail(cli->prog, cli->bad, "%s: %s", name, err);
+            return app_fail(cli->prog, cli->bad, "%s%s: %s", cli->arg ? "option " : "", name,
+                            err);
     }
     return 0;
 }
@@ -128,7 +139,10 @@ void app_opts_help(FILE *f, const app_opt *tab, int col)
         snprintf(head, sizeof head, "%s%s%s", o->name, o->meta ? " " : "", o->meta ? o->meta : "");
         fprintf(f, "  %-*s ", col - 3, head);
         if (!o->help) { /* (help_more words the whole entry) */
-            o->help_more(f);
+            if (o->help_more)
+                o->help_more(f);
+            else
+                fputc('\n', f);
             continue;
         }
         /* the help's lines, continuation lines under the first; "%D" is the default */

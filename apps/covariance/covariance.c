@@ -310,7 +310,7 @@ static int check_options(void *opts)
 }
 
 static const app_cli cli = {prog, opts, usage, "see --help", EXIT_BAD_INPUT,
-                            check_options};
+                            check_options, NULL};
 
 /* The cluster of one density at one c, its runs' end doubled dbl times. */
 static cov_def cluster_def(const options *o, double density, double c, int dbl)

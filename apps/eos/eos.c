@@ -127,7 +127,7 @@ static int check_options(void *opts)
     return 0;
 }
 
-static const app_cli cli = {prog, opts, usage, "see --help", EXIT_BAD_INPUT, check_options};
+static const app_cli cli = {prog, opts, usage, "see --help", EXIT_BAD_INPUT, check_options, NULL};
 
 static double z_theory(int dim, double eta) { return dim == 3 ? eos_z_kolafa(eta) : eos_z_disc_virial(eta); }
 

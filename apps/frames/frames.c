@@ -97,7 +97,7 @@ static int check_options(void *opts)
 }
 
 static const app_cli cli = {prog, opts, usage, "see --help", EXIT_BAD_INPUT,
-                            check_options};
+                            check_options, NULL};
 
 /* The outcome of one collision with one contact frame. */
 typedef struct outcome {

@@ -267,7 +267,7 @@ static int check_options(void *opts)
     return 0;
 }
 
-static const app_cli cli = {prog, opts, usage, "see --help", EXIT_BAD_INPUT, check_options};
+static const app_cli cli = {prog, opts, usage, "see --help", EXIT_BAD_INPUT, check_options, NULL};
 
 /* ---- statistics ------------------------------------------------------------------- */
 

@@ -110,7 +110,7 @@ static int check_options(void *opts)
 }
 
 static const app_cli cli = {prog, opts, usage, "see --help", EXIT_BAD_INPUT,
-                            check_options};
+                            check_options, NULL};
 
 /* One collision at c; outputs the final states. Returns an rc_status. */
 static int collide_at(const options *o, const app_balls *b, rc_vec3 n, double c,

@@ -99,7 +99,7 @@ static int check_options(void *opts)
 }
 
 static const app_cli cli = {prog, opts, usage, "input is read from stdin; see --help",
-                            EXIT_BAD_INPUT, check_options};
+                            EXIT_BAD_INPUT, check_options, NULL};
 
 static void print_row(int dim, double t, rc_vec3 x, rc_vec3 n)
 {
