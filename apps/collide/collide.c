@@ -28,9 +28,80 @@ static const char *angle_laws(char *buf, size_t n)
     return buf[0] ? buf : "(none)";
 }
 
-static void usage(FILE *f)
+/* every input error: "relcol-collide: message" and exit status 2 */
+#define fail(...) app_fail(prog, EXIT_BAD_INPUT, __VA_ARGS__)
+
+/* --alpha: a number, or 'random' */
+struct angle {
+    double a;
+    int random;
+};
+
+typedef struct options {
+    double c, eps, azimuth;
+    struct angle alpha;
+    const rc_law *law;
+    double normal[3];
+    int n_normal; /* 0: not given */
+    int alpha_given, azimuth_given, seed_given, json;
+    uint64_t seed;
+} options;
+
+static int parse_alpha(const char *val, void *dst, void *opts, char *err)
+{
+    (void)opts;
+    char why[APP_ERR_LEN];
+    struct angle *alpha = dst;
+    alpha->random = strcmp(val, "random") == 0;
+    if (alpha->random || app_parse_double(val, 0, &alpha->a, why) == 0)
+        return 0;
+    app_errf(err, "%s (radians, or 'random')", why);
+    return -1;
+}
+
+static void law_lines(FILE *f)
+{
+    for (size_t i = 0; rc_laws[i]; i++)
+        fprintf(f, "                      %-13s %s\n", rc_laws[i]->name, rc_laws[i]->summary);
+}
+
+static void alpha_help(FILE *f)
 {
     char al[256];
+    fprintf(f,
+"--law %s only (laws that take an impact angle): impact\n"
+"                    angle in radians, |A| < pi/2, between ball 0's ZMF direction of\n"
+"                    motion and the ZMF normal (replaces the normal); 'random' draws it\n"
+"                    for a uniform impact parameter (rc_impact_angle_draw) from --seed N\n"
+"                    (default 1). Must be 0 in 1-D.\n", angle_laws(al, sizeof al));
+}
+
+static const char *const formats[] = {"csv", "json", NULL};
+#define OFF(field) offsetof(options, field)
+static const app_opt opts[] = {
+    {"--c", "C|inf", APP_T_DOUBLE_INF, OFF(c), "inf",
+     .help = "speed of light, > 0 (default %D: exact classical mechanics)"},
+    {"--eps", "E", APP_T_DOUBLE, OFF(eps), "1",
+     .help = "restitution in [0, 1] (default %D: elastic)"},
+    {"--law", "LAW", APP_T_CUSTOM, OFF(law), "zmf", .parse = app_opt_law,
+     .help = "collision law (default %D):", .help_more = law_lines},
+    {"--normal", "X[,Y[,Z]]", APP_T_LIST, OFF(normal), .hi = 3, .count = OFF(n_normal),
+     .help = "contact normal from ball 0 to ball 1 (any length > 0; missing\n"
+             "components are 0, more than the dimension is an error)"},
+    {"--alpha", "A", APP_T_CUSTOM, OFF(alpha), .parse = parse_alpha,
+     .given = APP_GIVEN(options, alpha_given), .help_more = alpha_help},
+    {"--seed", "N", APP_T_U64, OFF(seed), "1", .given = APP_GIVEN(options, seed_given),
+     .help = "with --alpha random: the seed of the draw (default %D)"},
+    {"--azimuth", "PHI", APP_T_DOUBLE, OFF(azimuth), .given = APP_GIVEN(options, azimuth_given),
+     .help = "3-D only, with a numeric --alpha: azimuth of the normal (radians)"},
+    {"--format", "csv|json", APP_T_CHOICE, OFF(json), "csv", .choices = formats,
+     .what = "format", .help = "output format (default %D)"},
+    {"--help", NULL, APP_T_HELP, .help = "this text"},
+    {NULL},
+};
+
+static void usage(FILE *f)
+{
     fprintf(f,
 "usage: relcol-collide [--c C|inf] [--eps E] [--law LAW] [--normal X[,Y[,Z]]]\n"
 "                      [--alpha A|random [--seed N] [--azimuth PHI]] [--format csv|json]\n"
@@ -47,23 +118,9 @@ static void usage(FILE *f)
 "come in any order; spaces around fields, CRLF line ends, blank lines and lines\n"
 "starting with # are ignored.\n"
 "\n"
-"options:\n"
-"  --c C|inf         speed of light, > 0 (default inf: exact classical mechanics)\n"
-"  --eps E           restitution in [0, 1] (default 1: elastic)\n"
-"  --law LAW         collision law (default zmf):\n");
-    for (size_t i = 0; rc_laws[i]; i++)
-        fprintf(f, "                      %-13s %s\n", rc_laws[i]->name, rc_laws[i]->summary);
+"options:\n");
+    app_opts_help(f, opts, 20);
     fprintf(f,
-"  --normal X[,Y[,Z]] contact normal from ball 0 to ball 1 (any length > 0; missing\n"
-"                    components are 0, more than the dimension is an error)\n"
-"  --alpha A         --law %s only (laws that take an impact angle): impact\n"
-"                    angle in radians, |A| < pi/2, between ball 0's ZMF direction of\n"
-"                    motion and the ZMF normal (replaces the normal); 'random' draws it\n"
-"                    for a uniform impact parameter (rc_impact_angle_draw) from --seed N\n"
-"                    (default 1). Must be 0 in 1-D.\n"
-"  --azimuth PHI     3-D only, with a numeric --alpha: azimuth of the normal (radians)\n"
-"  --format csv|json output format (default csv)\n"
-"  --help            this text\n"
 "\n"
 "stdout (csv): header ball,m,px[,py[,pz]],vx[,vy[,vz]],E then two rows, numbers %%.17g.\n"
 "  m is the rest mass after the collision (it grows when eps < 1 and c is finite);\n"
@@ -74,80 +131,14 @@ static void usage(FILE *f)
 "\n"
 "exit status: 0 collided; 2 bad input or option (one line on stderr naming the row,\n"
 "column or option and the reason); 3 no collision: the balls are separating (or\n"
-"tangent) along the normal, nothing printed on stdout; 1 I/O error.\n",
-            angle_laws(al, sizeof al));
+"tangent) along the normal, nothing printed on stdout; 1 I/O error.\n");
 }
 
-/* every input error: "relcol-collide: message" and exit status 2 */
-#define fail(...) app_fail(prog, EXIT_BAD_INPUT, __VA_ARGS__)
-
-typedef struct options {
-    double c, eps, alpha, azimuth;
-    const rc_law *law;
-    double normal[3];
-    int n_normal; /* 0: not given */
-    int alpha_given, alpha_random, azimuth_given, seed_given, json;
-    uint64_t seed;
-} options;
-
-/* Parse the command line; returns -1 to print help, 0 on success, else an exit code. */
-static int parse_options(int argc, char **argv, options *o)
+/* The checks between options, after the table's parse: 0, else an exit code. */
+static int check_options(void *opts)
 {
+    const options *o = opts;
     char err[APP_ERR_LEN];
-    o->c = INFINITY;
-    o->eps = 1.0;
-    o->law = rc_law_find("zmf");
-    o->seed = 1;
-    static const char *const known[] = {"--c", "--eps", "--law", "--normal", "--alpha",
-                                        "--seed", "--azimuth", "--format", NULL};
-    app_opts it;
-    app_opts_init(&it, prog, argc, argv, known, NULL, "input is read from stdin; see --help");
-    const char *name, *val;
-    for (int kind; (kind = app_opts_next(&it, &name, &val)) != APP_OPT_END;) {
-        if (kind == APP_OPT_HELP)
-            return -1;
-        if (kind == APP_OPT_ERROR)
-            return EXIT_BAD_INPUT;
-        if (strcmp(name, "--c") == 0) {
-            if (app_parse_double(val, 1, &o->c, err) != 0)
-                return fail("--c: %s", err);
-        } else if (strcmp(name, "--eps") == 0) {
-            if (app_parse_double(val, 0, &o->eps, err) != 0)
-                return fail("--eps: %s", err);
-        } else if (strcmp(name, "--law") == 0) {
-            o->law = rc_law_find(val);
-            if (!o->law) {
-                char list[256];
-                return fail("--law: unknown law '%s' (known: %s)", val,
-                            app_law_list(list, sizeof list));
-            }
-        } else if (strcmp(name, "--normal") == 0) {
-            if (app_parse_list(val, o->normal, 3, &o->n_normal, err) != 0)
-                return fail("--normal: %s", err);
-        } else if (strcmp(name, "--alpha") == 0) {
-            o->alpha_given = 1;
-            if (strcmp(val, "random") == 0)
-                o->alpha_random = 1;
-            else if (app_parse_double(val, 0, &o->alpha, err) != 0)
-                return fail("--alpha: %s (radians, or 'random')", err);
-        } else if (strcmp(name, "--seed") == 0) {
-            o->seed_given = 1;
-            if (app_parse_u64(val, &o->seed, err) != 0)
-                return fail("--seed: %s", err);
-        } else if (strcmp(name, "--azimuth") == 0) {
-            o->azimuth_given = 1;
-            if (app_parse_double(val, 0, &o->azimuth, err) != 0)
-                return fail("--azimuth: %s", err);
-        } else if (strcmp(name, "--format") == 0) {
-            if (strcmp(val, "csv") == 0)
-                o->json = 0;
-            else if (strcmp(val, "json") == 0)
-                o->json = 1;
-            else
-                return fail("--format: unknown format '%s' (csv or json)", val);
-        }
-    }
-    /* checks that need no input */
     char f[APP_FMT_LEN];
     if (app_check_c(o->c, err) != 0)
         return fail("--c: %s", err);
@@ -159,14 +150,17 @@ static int parse_options(int argc, char **argv, options *o)
                     o->law->name);
     if (o->alpha_given && o->n_normal > 0)
         return fail("--alpha: conflicts with --normal (the impact angle fixes the normal)");
-    if (o->alpha_given && !o->alpha_random && !(fabs(o->alpha) < M_PI / 2))
-        return fail("--alpha: |alpha| = %s must be < pi/2 (radians)", app_fmt(fabs(o->alpha), f));
-    if (o->seed_given && !o->alpha_random)
+    if (o->alpha_given && !o->alpha.random && !(fabs(o->alpha.a) < M_PI / 2))
+        return fail("--alpha: |alpha| = %s must be < pi/2 (radians)", app_fmt(fabs(o->alpha.a), f));
+    if (o->seed_given && !o->alpha.random)
         return fail("--seed: only with --alpha random");
-    if (o->azimuth_given && (!o->alpha_given || o->alpha_random))
+    if (o->azimuth_given && (!o->alpha_given || o->alpha.random))
         return fail("--azimuth: only with a numeric --alpha (random draws the azimuth too)");
     return 0;
 }
+
+static const app_cli cli = {prog, opts, usage, "input is read from stdin; see --help",
+                            EXIT_BAD_INPUT, check_options, NULL};
 
 static cJSON *json_num(double x)
 {
@@ -191,13 +185,10 @@ static void print_vec(FILE *out, rc_vec3 v, int dim, const char *sep)
 
 int main(int argc, char **argv)
 {
-    app_init(prog);
     options o;
     memset(&o, 0, sizeof o);
-    int st = parse_options(argc, argv, &o);
-    if (st < 0)
-        return app_help(usage);
-    if (st != 0)
+    int st = app_start(&cli, argc, argv, &o);
+    if (st >= 0)
         return st;
 
     char err[APP_ERR_LEN], f[APP_FMT_LEN];
@@ -221,9 +212,9 @@ int main(int argc, char **argv)
         fail("--normal: %d components, but the input is %d-D", o.n_normal, dim);
         goto out;
     }
-    if (o.alpha_given && !o.alpha_random && dim == 1 && o.alpha != 0.0) {
+    if (o.alpha_given && !o.alpha.random && dim == 1 && o.alpha.a != 0.0) {
         fail("--alpha: alpha = %s, but a 1-D collision is head-on (alpha must be 0)",
-             app_fmt(o.alpha, f));
+             app_fmt(o.alpha.a, f));
         goto out;
     }
     if (o.azimuth_given && dim != 3) {
@@ -253,7 +244,7 @@ int main(int argc, char **argv)
         }
     }
     if (o.alpha_given) {
-        if (o.alpha_random) {
+        if (o.alpha.random) {
             gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
             if (!r) {
                 fail("out of memory");
@@ -266,7 +257,7 @@ int main(int argc, char **argv)
             gsl_rng_free(r);
             rc_impact_angle_draw(dim, u1, u2, &prm.alpha, &prm.azimuth);
         } else {
-            prm.alpha = o.alpha;
+            prm.alpha = o.alpha.a;
             prm.azimuth = o.azimuth_given ? o.azimuth : 0.0;
         }
     }

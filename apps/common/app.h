@@ -6,8 +6,8 @@
  * Error convention: functions that can fail return 0 on success and -1 on failure, and
  * write one line of text (no program name, no newline) into the caller's buffer `err` of
  * size APP_ERR_LEN; the app prefixes its name and prints it (app_fail). Nothing here
- * prints, except app_fail, app_help, app_opts_next (its own errors), app_gnuplot_run (a
- * note when gnuplot is absent) and the progress bar. */
+ * prints, except app_fail, app_help, app_opts_next and app_opts_parse (their own errors,
+ * --list-options), app_gnuplot_run (a note when gnuplot is absent) and the progress bar. */
 #ifndef RELCOL_APP_H
 #define RELCOL_APP_H
 
@@ -63,7 +63,10 @@ int app_version(void);
  *   app_opts it;
  *   app_opts_init(&it, prog, argc, argv, valued, NULL, "see --help");
  *   while ((k = app_opts_next(&it, &name, &val)) != APP_OPT_END) { switch (k) ... } */
-enum { APP_OPT_END = 0, APP_OPT_VALUE, APP_OPT_FLAG, APP_OPT_HELP, APP_OPT_ERROR };
+/* With it->positional set (relcol-sim's scenario file), an argument that does not start
+ * with '-' (or is "-") comes back as APP_OPT_ARG in *value, "-x" is an unknown option, and
+ * a missing value is "option --NAME: needs a value" (that app's wording). */
+enum { APP_OPT_END = 0, APP_OPT_VALUE, APP_OPT_FLAG, APP_OPT_HELP, APP_OPT_ERROR, APP_OPT_ARG };
 typedef struct app_opts {
     const char *prog;
     int argc;
@@ -73,6 +76,7 @@ typedef struct app_opts {
     const char *const *flags;   /* NULL-terminated "--name"s without a value, or NULL */
     const char *stray_hint;     /* e.g. "see --help" */
     char name[32];              /* the current option's name (without "=value") */
+    int positional;             /* arguments that are not options are the app's (above) */
 } app_opts;
 void app_opts_init(app_opts *it, const char *prog, int argc, char **argv,
                    const char *const *valued, const char *const *flags,
@@ -80,6 +84,78 @@ void app_opts_init(app_opts *it, const char *prog, int argc, char **argv,
 /* The next argument: APP_OPT_VALUE (*name, *value set), APP_OPT_FLAG (*name), APP_OPT_HELP,
  * APP_OPT_ERROR (already printed) or APP_OPT_END. *name stays valid until the next call. */
 int app_opts_next(app_opts *it, const char **name, const char **value);
+
+/* ---- option tables ---------------------------------------------------------------- */
+
+/* An app's options as data: one app_opt per option, in help order, ended by {NULL}. The
+ * parser (app_opts_parse) and the options section of --help (app_opts_help) both walk it,
+ * so the help cannot name an option the parser lacks, nor the reverse. A value's error is
+ * "--NAME: reason" (exit status cli->bad); checks between options stay in the app. */
+typedef enum app_opt_type {
+    APP_T_DOUBLE,     /* double, finite */
+    APP_T_DOUBLE_INF, /* double, finite or inf */
+    APP_T_INT,        /* int in [lo, hi] (app_parse_long's wording) */
+    APP_T_LONG,       /* long in [lo, hi] */
+    APP_T_U64,        /* uint64_t */
+    APP_T_STRING,     /* const char *, pointing into argv */
+    APP_T_CHOICE,     /* int: the index in choices; "unknown WHAT 'x' (a, b or c)" */
+    APP_T_FLAG,       /* int set to 1; no value */
+    APP_T_LIST,       /* double[hi], 1..hi comma-separated numbers, the count in int `count` */
+    APP_T_CUSTOM,     /* parse(value, destination, opts, err): 0, or -1 with the reason in
+                       * err; opts (the whole struct) for an option that sets two fields */
+    APP_T_HELP,       /* --help: a help line only (app_opts_next handles it) */
+} app_opt_type;
+typedef struct app_opt {
+    const char *name;   /* "--c" */
+    const char *meta;   /* the value's name in the help ("C|inf"), NULL for none */
+    app_opt_type type;
+    size_t off;         /* offsetof the destination in the app's options struct */
+    const char *deflt;  /* the default as command-line text, parsed before argv (NULL: none) */
+    double lo, hi;      /* APP_T_INT's range; APP_T_LIST: hi = the most numbers */
+    const char *help;   /* help lines ('\n' between them); "%D" prints deflt */
+    void (*help_more)(FILE *f); /* further help lines (a list of laws), or NULL; with
+                                 * help NULL it prints the entry's text from its first line */
+    const char *const *choices; /* APP_T_CHOICE: NULL-terminated names */
+    const char *what;   /* APP_T_CHOICE: "format" in "unknown format 'x' (csv or json)" */
+    int (*parse)(const char *val, void *dst, void *opts, char *err); /* APP_T_CUSTOM */
+    size_t count;       /* APP_T_LIST: offsetof the int count */
+    size_t given;       /* offsetof + 1 of an int set to 1 when the option is given (0: none) */
+} app_opt;
+#define APP_GIVEN(type, field) (offsetof(type, field) + 1)
+
+/* What app_start needs of an app: its name, its table, its whole help (which prints the
+ * options with app_opts_help), the hint for stray arguments, the exit status of a bad
+ * option and the app's checks between options after the parse (0, or an exit status
+ * after its error line; NULL for none). */
+typedef struct app_cli {
+    const char *prog;
+    const app_opt *tab;
+    void (*usage)(FILE *f);
+    const char *stray_hint;
+    int bad;
+    int (*check)(void *opts);
+    /* NULL, or the app's plain arguments (a scenario file): 0, or an exit status after its
+     * error line; then value errors read "option --NAME: reason" (relcol-sim's wording) */
+    int (*arg)(const char *arg, void *opts);
+} app_cli;
+
+/* The table's defaults into opts (-1 with the reason in err: a table's own bug). */
+int app_opts_defaults(const app_opt *tab, void *opts, char *err);
+/* Parse argv into opts: 0, -1 for --help, else cli->bad after one error line. A hidden
+ * --list-options prints the table's names (and --version) one a line and exits 0. */
+int app_opts_parse(const app_cli *cli, int argc, char **argv, void *opts);
+/* The options section of --help: "  --NAME META  help" per entry, the help from column
+ * col (0-based; continuation lines too), help_more after. */
+void app_opts_help(FILE *f, const app_opt *tab, int col);
+/* APP_T_CUSTOM parsers of a law (const rc_law *) and a contact frame
+ * (const rc_toi_frame *) by name: "unknown law 'x' (known: zmf, ...)". */
+int app_opt_law(const char *val, void *dst, void *opts, char *err);
+int app_opt_toi_frame(const char *val, void *dst, void *opts, char *err);
+/* APP_T_CUSTOM: an output folder (const char *), not empty: "empty folder name". */
+int app_opt_dir(const char *val, void *dst, void *opts, char *err);
+/* Every app's main() prologue: app_init, the defaults, the parse, --help, cli->check.
+ * Returns -1 to go on, else the status main returns at once (0 after --help). */
+int app_start(const app_cli *cli, int argc, char **argv, void *opts);
 
 /* A usable speed of light: c > 0 and 1/c^2 representable (c = inf is fine). Errors:
  * "c = -1 must be > 0", "c = 1e-200 is out of range (1/c^2 under- or overflows; use inf)". */

@@ -110,7 +110,11 @@ int app_opts_next(app_opts *it, const char **name, const char **value)
         *name = a;
         return APP_OPT_FLAG;
     }
-    if (strncmp(a, "--", 2) != 0) {
+    if (it->positional && (a[0] != '-' || !a[1])) {
+        *value = a;
+        return APP_OPT_ARG;
+    }
+    if (strncmp(a, "--", 2) != 0 && !it->positional) {
         app_fail(it->prog, 0, "unexpected argument '%s' (%s)", a, it->stray_hint);
         return APP_OPT_ERROR;
     }
@@ -132,7 +136,8 @@ int app_opts_next(app_opts *it, const char **name, const char **value)
     else if (it->i < it->argc)
         *value = it->argv[it->i++];
     else {
-        app_fail(it->prog, 0, "%s: missing value", it->name);
+        app_fail(it->prog, 0, it->positional ? "option %s: needs a value" : "%s: missing value",
+                 it->name);
         return APP_OPT_ERROR;
     }
     *name = it->name;

@@ -44,7 +44,107 @@ enum { EXIT_BAD_INPUT = 2 };
 #define T_END_DOUBLINGS 3
 #define DENSITY_MAX_3D 0.025
 
-static void usage(FILE *f)
+#define fail(...) app_fail(prog, EXIT_BAD_INPUT, __VA_ARGS__)
+
+typedef struct options {
+    const rc_toi_frame *frames[MAXFRAMES];
+    int nframes;
+    long n, dim;
+    double density[MAXLIST], c[MAXLIST];
+    int ndensity, nc, density_given;
+    double boost, v_rms;
+    uint64_t seed;
+    const char *out;
+} options;
+
+/* --frames: comma-separated names, each once */
+static int parse_frames(const char *val, void *dst, void *opts, char *err)
+{
+    (void)dst;
+    options *o = opts;
+    char *copy = strdup(val), *save = NULL, list[256];
+    if (!copy) {
+        app_errf(err, "out of memory");
+        return -1;
+    }
+    o->nframes = 0;
+    int rc = 0;
+    for (char *tok = strtok_r(copy, ",", &save); tok && rc == 0; tok = strtok_r(NULL, ",", &save)) {
+        while (*tok == ' ')
+            tok++;
+        const rc_toi_frame *fr = rc_toi_frame_find(tok);
+        if (!fr) {
+            app_errf(err, "unknown frame '%s' (known: %s)", tok,
+                     app_toi_frame_list(list, sizeof list));
+            rc = -1;
+            break;
+        }
+        for (int j = 0; j < o->nframes && rc == 0; j++)
+            if (o->frames[j] == fr) {
+                app_errf(err, "'%s' given twice", tok);
+                rc = -1;
+            }
+        if (rc == 0 && o->nframes == MAXFRAMES) {
+            app_errf(err, "more than %d frames", MAXFRAMES);
+            rc = -1;
+        }
+        if (rc == 0)
+            o->frames[o->nframes++] = fr;
+    }
+    free(copy);
+    if (rc == 0 && o->nframes == 0) {
+        app_errf(err, "no frame named in '%s'", val);
+        rc = -1;
+    }
+    return rc;
+}
+
+/* --c: comma-separated speeds of light, inf too (app_parse_list takes finite numbers
+ * only: the items one by one) */
+static int parse_c(const char *val, void *dst, void *opts, char *err)
+{
+    (void)dst;
+    options *o = opts;
+    char *copy = strdup(val), *save = NULL;
+    if (!copy) {
+        app_errf(err, "out of memory");
+        return -1;
+    }
+    o->nc = 0;
+    int rc = 0;
+    for (char *tok = strtok_r(copy, ",", &save); tok && rc == 0;
+         tok = strtok_r(NULL, ",", &save)) {
+        double c;
+        if (o->nc == MAXLIST) {
+            app_errf(err, "more than %d values", MAXLIST);
+            rc = -1;
+        } else if (app_parse_double(tok, 1, &c, err) != 0 || app_check_c(c, err) != 0)
+            rc = -1;
+        else
+            o->c[o->nc++] = c;
+    }
+    free(copy);
+    if (rc == 0 && o->nc == 0) {
+        app_errf(err, "no value in '%s'", val);
+        rc = -1;
+    }
+    return rc;
+}
+
+static int parse_seed(const char *val, void *dst, void *opts, char *err)
+{
+    (void)opts;
+    uint64_t *seed = dst;
+    if (app_parse_u64(val, seed, err) != 0)
+        return -1;
+    if (*seed > UINT_MAX) {
+        app_errf(err, "%s is above %u (the draw's state is an unsigned int)", val, UINT_MAX);
+        return -1;
+    }
+    return 0;
+}
+
+static void frames_help(FILE *f)
 {
     /* (the default frame list, as the library's table has it) */
     char names[256] = "";
@@ -56,6 +156,68 @@ static void usage(FILE *f)
             strncat(names, ",", sizeof names - strlen(names) - 1);
         strncat(names, fr->name, sizeof names - strlen(names) - 1);
     }
+    fprintf(f, "contact frames, comma-separated (default: every frame of the library\n"
+               "                  that declares contracted or pointlike contact: %s)\n", names);
+}
+
+static void density_help(FILE *f)
+{
+    fprintf(f,
+"packing fractions of the shell: N ball volumes over the shell's\n"
+"                  volume, which fixes R (default 0.002,0.005,0.01,0.02,0.04 in 2-D,\n"
+"                  0.001,0.002,0.005,0.01 in 3-D; at most %g in 2-D, %g in 3-D)\n",
+            DENSITY_MAX_2D, DENSITY_MAX_3D);
+}
+
+#define OFF(field) offsetof(options, field)
+static const app_opt opts[] = {
+    {"--frames", "LIST", APP_T_CUSTOM, OFF(frames), .parse = parse_frames,
+     .help_more = frames_help},
+    /* (the cluster: at least 50 balls, so a few collisions per ball) */
+    {"--n", "N", APP_T_LONG, OFF(n), "64", 50, 1000000,
+     .help = "balls, at least 50 (default %D)"},
+    {"--dim", "D", APP_T_LONG, OFF(dim), "2", 2, 3,
+     .help = "2 (discs; default) or 3 (spheres)"},
+    {"--density", "LIST", APP_T_LIST, OFF(density), .hi = MAXLIST, .count = OFF(ndensity),
+     .given = APP_GIVEN(options, density_given), .help_more = density_help},
+    {"--c", "LIST", APP_T_CUSTOM, OFF(c), "1,1.5,3,inf", .parse = parse_c,
+     .help = "speeds of light, 'inf' for classical (default %D); each\n"
+             "above U and above every ball's speed"},
+    {"--boost", "U", APP_T_DOUBLE, OFF(boost), "0.6",
+     .help = "the moving frame's speed along x (default %D; 0 < |U| < every c,\n"
+             "|U| <= 1000 V)"},
+    {"--v-rms", "V", APP_T_DOUBLE, OFF(v_rms), "0.5",
+     .help = "rms table speed of the balls, in [1e-6, 1e6] (default %D, that is\n"
+             "0.5c at c = 1)"},
+    {"--seed", "S", APP_T_CUSTOM, OFF(seed), "16", .parse = parse_seed,
+     .help = "seed of the draw (default %D: with --n 64 --dim 2 the ring of the\n"
+             "covariance_cluster benchmark's recipe)"},
+    {"--out", "DIR", APP_T_CUSTOM, OFF(out), "out/covariance", .parse = app_opt_dir,
+     .help = "output folder (default %D)"},
+    {"--help", NULL, APP_T_HELP, .help = "this text"},
+    {NULL},
+};
+
+static int cmp_double(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Sort a list in increasing order (the figures draw lines through it; inf last) and
+ * name a value given twice. */
+static int sort_list(const char *opt, double *v, int n)
+{
+    char f[APP_FMT_LEN];
+    qsort(v, (size_t)n, sizeof *v, cmp_double);
+    for (int i = 1; i < n; i++)
+        if (v[i] == v[i - 1])
+            return fail("%s: %s given twice", opt, isinf(v[i]) ? "inf" : app_fmt(v[i], f));
+    return 0;
+}
+
+static void usage(FILE *f)
+{
     fprintf(f,
 "usage: relcol-covariance [--frames LIST] [--n N] [--dim 2|3] [--density LIST]\n"
 "                         [--c LIST] [--boost U] [--v-rms V] [--seed S] [--out DIR]\n"
@@ -66,24 +228,8 @@ static void usage(FILE *f)
 "a frame moving at U along x whose initial data are the same worldlines cut at its\n"
 "t' = 0 (a draw is taken only if both runs start before any collision). The moving\n"
 "run's final state is transformed back and compared ball by ball with the table run's.\n"
-"The same balls (table velocities) at every c, so that U/c and v/c are what changes.\n"
-"  --frames LIST   contact frames, comma-separated (default: every frame of the library\n"
-"                  that declares contracted or pointlike contact: %s)\n"
-"  --n N           balls, at least 50 (default 64)\n"
-"  --dim D         2 (discs; default) or 3 (spheres)\n"
-"  --density LIST  packing fractions of the shell: N ball volumes over the shell's\n"
-"                  volume, which fixes R (default 0.002,0.005,0.01,0.02,0.04 in 2-D,\n"
-"                  0.001,0.002,0.005,0.01 in 3-D; at most %g in 2-D, %g in 3-D)\n"
-"  --c LIST        speeds of light, 'inf' for classical (default 1,1.5,3,inf); each\n"
-"                  above U and above every ball's speed\n"
-"  --boost U       the moving frame's speed along x (default 0.6; 0 < |U| < every c,\n"
-"                  |U| <= 1000 V)\n"
-"  --v-rms V       rms table speed of the balls, in [1e-6, 1e6] (default 0.5, that is\n"
-"                  0.5c at c = 1)\n"
-"  --seed S        seed of the draw (default 16: with --n 64 --dim 2 the ring of the\n"
-"                  covariance_cluster benchmark's recipe)\n"
-"  --out DIR       output folder (default out/covariance)\n",
-            names, DENSITY_MAX_2D, DENSITY_MAX_3D);
+"The same balls (table velocities) at every c, so that U/c and v/c are what changes.\n");
+    app_opts_help(f, opts, 18);
     /* (two calls: one string would pass the length a C compiler must support) */
     fprintf(f,
 "Each run ends at time 10 R / V of its own frame, long after the cluster has flown\n"
@@ -122,150 +268,11 @@ static void usage(FILE *f)
             T_END_DOUBLINGS);
 }
 
-#define fail(...) app_fail(prog, EXIT_BAD_INPUT, __VA_ARGS__)
-
-typedef struct options {
-    const rc_toi_frame *frames[MAXFRAMES];
-    int nframes;
-    long n, dim;
-    double density[MAXLIST], c[MAXLIST];
-    int ndensity, nc, density_given;
-    double boost, v_rms;
-    uint64_t seed;
-    const char *out;
-} options;
-
-static int parse_frames(const char *val, options *o)
+/* The checks between options, after the table's parse: 0, else an exit code. */
+static int check_options(void *opts)
 {
-    char *copy = strdup(val), *save = NULL, list[256];
-    if (!copy)
-        return fail("out of memory");
-    o->nframes = 0;
-    int rc = 0;
-    for (char *tok = strtok_r(copy, ",", &save); tok && rc == 0; tok = strtok_r(NULL, ",", &save)) {
-        while (*tok == ' ')
-            tok++;
-        const rc_toi_frame *fr = rc_toi_frame_find(tok);
-        if (!fr) {
-            rc = fail("--frames: unknown frame '%s' (known: %s)", tok,
-                      app_toi_frame_list(list, sizeof list));
-            break;
-        }
-        for (int j = 0; j < o->nframes && rc == 0; j++)
-            if (o->frames[j] == fr)
-                rc = fail("--frames: '%s' given twice", tok);
-        if (rc == 0 && o->nframes == MAXFRAMES)
-            rc = fail("--frames: more than %d frames", MAXFRAMES);
-        if (rc == 0)
-            o->frames[o->nframes++] = fr;
-    }
-    free(copy);
-    if (rc == 0 && o->nframes == 0)
-        rc = fail("--frames: no frame named in '%s'", val);
-    return rc;
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-    const double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-/* Sort a list in increasing order (the figures draw lines through it; inf last) and
- * name a value given twice. */
-static int sort_list(const char *opt, double *v, int n)
-{
-    char f[APP_FMT_LEN];
-    qsort(v, (size_t)n, sizeof *v, cmp_double);
-    for (int i = 1; i < n; i++)
-        if (v[i] == v[i - 1])
-            return fail("%s: %s given twice", opt, isinf(v[i]) ? "inf" : app_fmt(v[i], f));
-    return 0;
-}
-
-static int parse_options(int argc, char **argv, options *o)
-{
-    char err[APP_ERR_LEN], f1[APP_FMT_LEN], f2[APP_FMT_LEN];
-    memset(o, 0, sizeof *o);
-    o->n = 64;
-    o->dim = 2;
-    o->boost = 0.6;
-    o->v_rms = 0.5;
-    o->seed = 16;
-    o->out = "out/covariance";
-    const double cdef[] = {1.0, 1.5, 3.0, INFINITY};
-    o->nc = 4;
-    memcpy(o->c, cdef, sizeof cdef);
-    for (size_t i = 0; rc_toi_frames[i] && o->nframes < MAXFRAMES; i++)
-        if (rc_toi_frames[i]->contracted || rc_toi_frames[i]->pointlike)
-            o->frames[o->nframes++] = rc_toi_frames[i];
-    static const char *const known[] = {"--frames", "--n", "--dim", "--density", "--c",
-                                        "--boost", "--v-rms", "--seed", "--out", NULL};
-    app_opts it;
-    app_opts_init(&it, prog, argc, argv, known, NULL, "see --help");
-    const char *name, *val;
-    for (int kind; (kind = app_opts_next(&it, &name, &val)) != APP_OPT_END;) {
-        if (kind == APP_OPT_HELP)
-            return -1;
-        if (kind == APP_OPT_ERROR)
-            return EXIT_BAD_INPUT;
-        if (strcmp(name, "--frames") == 0) {
-            int rc = parse_frames(val, o);
-            if (rc != 0)
-                return rc;
-        } else if (strcmp(name, "--n") == 0) {
-            /* (the cluster: at least 50 balls, so a few collisions per ball) */
-            if (app_parse_long(val, 50, 1000000, &o->n, err) != 0)
-                return fail("--n: %s", err);
-        } else if (strcmp(name, "--dim") == 0) {
-            if (app_parse_long(val, 2, 3, &o->dim, err) != 0)
-                return fail("--dim: %s", err);
-        } else if (strcmp(name, "--density") == 0) {
-            if (app_parse_list(val, o->density, MAXLIST, &o->ndensity, err) != 0)
-                return fail("--density: %s", err);
-            o->density_given = 1;
-        } else if (strcmp(name, "--c") == 0) {
-            /* (app_parse_list takes finite numbers only: the items one by one, inf too) */
-            char *copy = strdup(val), *save = NULL;
-            if (!copy)
-                return fail("out of memory");
-            o->nc = 0;
-            int rc = 0;
-            for (char *tok = strtok_r(copy, ",", &save); tok && rc == 0;
-                 tok = strtok_r(NULL, ",", &save)) {
-                double c;
-                if (o->nc == MAXLIST)
-                    rc = fail("--c: more than %d values", MAXLIST);
-                else if (app_parse_double(tok, 1, &c, err) != 0)
-                    rc = fail("--c: %s", err);
-                else if (app_check_c(c, err) != 0)
-                    rc = fail("--c: %s", err);
-                else
-                    o->c[o->nc++] = c;
-            }
-            free(copy);
-            if (rc != 0)
-                return rc;
-            if (o->nc == 0)
-                return fail("--c: no value in '%s'", val);
-        } else if (strcmp(name, "--boost") == 0) {
-            if (app_parse_double(val, 0, &o->boost, err) != 0)
-                return fail("--boost: %s", err);
-        } else if (strcmp(name, "--v-rms") == 0) {
-            if (app_parse_double(val, 0, &o->v_rms, err) != 0)
-                return fail("--v-rms: %s", err);
-        } else if (strcmp(name, "--seed") == 0) {
-            if (app_parse_u64(val, &o->seed, err) != 0)
-                return fail("--seed: %s", err);
-            if (o->seed > UINT_MAX)
-                return fail("--seed: %s is above %u (the draw's state is an unsigned int)",
-                            val, UINT_MAX);
-        } else if (strcmp(name, "--out") == 0) {
-            if (!*val)
-                return fail("--out: empty folder name");
-            o->out = val;
-        }
-    }
+    options *o = opts;
+    char f1[APP_FMT_LEN], f2[APP_FMT_LEN];
     const double dmax = o->dim == 2 ? DENSITY_MAX_2D : DENSITY_MAX_3D;
     if (!o->density_given) {
         const double d2[] = {0.002, 0.005, 0.01, 0.02, 0.04}, d3[] = {0.001, 0.002, 0.005, 0.01};
@@ -301,6 +308,9 @@ static int parse_options(int argc, char **argv, options *o)
     }
     return 0;
 }
+
+static const app_cli cli = {prog, opts, usage, "see --help", EXIT_BAD_INPUT,
+                            check_options, NULL};
 
 /* The cluster of one density at one c, its runs' end doubled dbl times. */
 static cov_def cluster_def(const options *o, double density, double c, int dbl)
@@ -544,12 +554,14 @@ static int write_script_c(const char *path, const options *o, const row *rows,
 
 int main(int argc, char **argv)
 {
-    app_init(prog);
     options o;
-    int st = parse_options(argc, argv, &o);
-    if (st < 0)
-        return app_help(usage);
-    if (st != 0)
+    memset(&o, 0, sizeof o);
+    /* (the default frames, as the library's table has them) */
+    for (size_t i = 0; rc_toi_frames[i] && o.nframes < MAXFRAMES; i++)
+        if (rc_toi_frames[i]->contracted || rc_toi_frames[i]->pointlike)
+            o.frames[o.nframes++] = rc_toi_frames[i];
+    int st = app_start(&cli, argc, argv, &o);
+    if (st >= 0)
         return st;
 
     char err[APP_ERR_LEN];

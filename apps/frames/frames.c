@@ -26,6 +26,28 @@ static const char *const obs_name[NOBS] = {"angle", "vel", "heat"};
  * to 1e-4 relative; smaller ones drift towards the round-off floor and bias the slope. */
 #define FIT_FLOOR 1e-12
 
+/* every option error: "relcol-frames: message" and exit status 2 */
+#define fail(...) app_fail(prog, EXIT_BAD_INPUT, __VA_ARGS__)
+
+typedef struct options {
+    const char *out;
+    int points;
+    double from, to, eps;
+} options;
+
+#define OFF(field) offsetof(options, field)
+static const app_opt opts[] = {
+    {"--out", "DIR", APP_T_CUSTOM, OFF(out), "out/frames", .parse = app_opt_dir,
+     .help = "output folder, created if missing (default %D)"},
+    {"--points", "N", APP_T_INT, OFF(points), "33", 5, 100000,
+     .help = "number of values of c (default %D, at least 5)"},
+    {"--from", "F", APP_T_DOUBLE, OFF(from), "1.25", .help = "smallest c / v, > 1 (default %D)"},
+    {"--to", "T", APP_T_DOUBLE, OFF(to), "1e4", .help = "largest c / v, >= 100 (default %D)"},
+    {"--eps", "E", APP_T_DOUBLE, OFF(eps), "0.5", .help = "restitution in [0, 1] (default %D)"},
+    {"--help", NULL, APP_T_HELP, .help = "this text"},
+    {NULL},
+};
+
 static void usage(FILE *f)
 {
     fprintf(f,
@@ -47,13 +69,9 @@ static void usage(FILE *f)
 "  heat   max over balls |Q_A - Q_B| / (m v^2 / 2), Q = (m' - m) c^2 the heat that became\n"
 "         rest mass (computed without cancellation from ZMF momenta; 0 when E = 1)\n"
 "\n"
-"options:\n"
-"  --out DIR     output folder, created if missing (default out/frames)\n"
-"  --points N    number of values of c (default 33, at least 5)\n"
-"  --from F      smallest c / v, > 1 (default 1.25)\n"
-"  --to T        largest c / v, >= 100 (default 1e4)\n"
-"  --eps E       restitution in [0, 1] (default 0.5)\n"
-"  --help        this text\n"
+"options:\n");
+    app_opts_help(f, opts, 16);
+    fprintf(f,
 "\n"
 "writes, atomically, DIR/frames.csv, DIR/frames.gp and (with gnuplot) DIR/frames.png,\n"
 "then prints, per impact parameter, observable and pair of frames, the fitted order p\n"
@@ -63,51 +81,11 @@ static void usage(FILE *f)
             FIT_FROM, FIT_FLOOR);
 }
 
-/* every option error: "relcol-frames: message" and exit status 2 */
-#define fail(...) app_fail(prog, EXIT_BAD_INPUT, __VA_ARGS__)
-
-typedef struct options {
-    const char *out;
-    long points;
-    double from, to, eps;
-} options;
-
-static int parse_options(int argc, char **argv, options *o)
+/* The checks between options, after the table's parse: 0, else an exit code. */
+static int check_options(void *opts)
 {
-    char err[APP_ERR_LEN], f[APP_FMT_LEN];
-    o->out = "out/frames";
-    o->points = 33;
-    o->from = 1.25;
-    o->to = 1e4;
-    o->eps = 0.5;
-    static const char *const known[] = {"--out", "--points", "--from", "--to", "--eps",
-                                        NULL};
-    app_opts it;
-    app_opts_init(&it, prog, argc, argv, known, NULL, "see --help");
-    const char *name, *val;
-    for (int kind; (kind = app_opts_next(&it, &name, &val)) != APP_OPT_END;) {
-        if (kind == APP_OPT_HELP)
-            return -1;
-        if (kind == APP_OPT_ERROR)
-            return EXIT_BAD_INPUT;
-        if (strcmp(name, "--out") == 0) {
-            if (!*val)
-                return fail("--out: empty folder name");
-            o->out = val;
-        } else if (strcmp(name, "--points") == 0) {
-            if (app_parse_long(val, 5, 100000, &o->points, err) != 0)
-                return fail("--points: %s", err);
-        } else if (strcmp(name, "--from") == 0) {
-            if (app_parse_double(val, 0, &o->from, err) != 0)
-                return fail("--from: %s", err);
-        } else if (strcmp(name, "--to") == 0) {
-            if (app_parse_double(val, 0, &o->to, err) != 0)
-                return fail("--to: %s", err);
-        } else if (strcmp(name, "--eps") == 0) {
-            if (app_parse_double(val, 0, &o->eps, err) != 0)
-                return fail("--eps: %s", err);
-        }
-    }
+    const options *o = opts;
+    char f[APP_FMT_LEN];
     if (!(o->from > 1.0))
         return fail("--from: %s must be > 1 (c must exceed the speed)", app_fmt(o->from, f));
     if (!(o->to >= 100.0) || !(o->to > o->from))
@@ -117,6 +95,9 @@ static int parse_options(int argc, char **argv, options *o)
         return fail("--eps: eps = %s outside [0, 1]", app_fmt(o->eps, f));
     return 0;
 }
+
+static const app_cli cli = {prog, opts, usage, "see --help", EXIT_BAD_INPUT,
+                            check_options, NULL};
 
 /* The outcome of one collision with one contact frame. */
 typedef struct outcome {
@@ -250,8 +231,8 @@ static int write_script(const char *path, const options *o, size_t nf, char *err
     for (int ob = 0; ob < nobs; ob++) {
         fprintf(f, "set ylabel '%s'\n", ylab[ob]);
         /* references over the first block of rows only (one pass over c) */
-        fprintf(f, "plot 'frames.csv' skip 1 every ::0::%ld using 3:(1/$3**2) with lines lw 2 "
-                   "dt 3 lc rgb '#888888' notitle, \\\n     '' skip 1 every ::0::%ld using "
+        fprintf(f, "plot 'frames.csv' skip 1 every ::0::%d using 3:(1/$3**2) with lines lw 2 "
+                   "dt 3 lc rgb '#888888' notitle, \\\n     '' skip 1 every ::0::%d using "
                    "3:(1/$3**4) with lines lw 2 dt 3 lc rgb '#888888' notitle",
                 o->points - 1, o->points - 1);
         for (int ib = 1; ib < NB; ib++) {
@@ -282,13 +263,10 @@ static int write_script(const char *path, const options *o, size_t nf, char *err
 
 int main(int argc, char **argv)
 {
-    app_init(prog);
     options o;
     memset(&o, 0, sizeof o);
-    int st = parse_options(argc, argv, &o);
-    if (st < 0)
-        return app_help(usage);
-    if (st != 0)
+    int st = app_start(&cli, argc, argv, &o);
+    if (st >= 0)
         return st;
     char err[APP_ERR_LEN];
     const size_t N = (size_t)o.points;

@@ -19,6 +19,48 @@ static const char example_csv[] = "m,vx,vy,x,y\n"
                                   "2,-0.6,0.5,1.8,1\n";
 static const double example_eps = 0.8;
 
+/* every input error: "relcol-sweep-c: message" and exit status 2 */
+#define fail(...) app_fail(prog, EXIT_BAD_INPUT, __VA_ARGS__)
+
+typedef struct options {
+    const char *input, *out;
+    int example, eps_given;
+    int points;
+    double from, to, eps;
+    const rc_law *law;
+} options;
+
+static int parse_law(const char *val, void *dst, void *opts, char *err)
+{
+    (void)opts;
+    if ((*(const rc_law **)dst = rc_law_find(val)))
+        return 0;
+    char list[256];
+    app_errf(err, "unknown law '%s' (expected %s)", val, app_law_list(list, sizeof list));
+    return -1;
+}
+
+#define OFF(field) offsetof(options, field)
+static const app_opt opts[] = {
+    {"--input", "FILE", APP_T_STRING, OFF(input), .help = "the input CSV (default stdin)"},
+    {"--example", NULL, APP_T_FLAG, OFF(example), .help = "the built-in example above"},
+    {"--out", "DIR", APP_T_CUSTOM, OFF(out), "out/sweep-c", .parse = app_opt_dir,
+     .help = "output folder, created if missing (default %D)"},
+    {"--points", "N", APP_T_INT, OFF(points), "41", 3, 1000000,
+     .help = "number of values of c, log-spaced (default %D, at least 3)"},
+    {"--from", "F", APP_T_DOUBLE, OFF(from), "10",
+     .help = "smallest c as a multiple of the fastest speed, > 1 (default %D)"},
+    {"--to", "T", APP_T_DOUBLE, OFF(to), "1e6",
+     .help = "largest c as a multiple of the fastest speed (default %D)"},
+    /* (the default 1 is the app's: 0.8 for the example) */
+    {"--eps", "E", APP_T_DOUBLE, OFF(eps), "1", .given = APP_GIVEN(options, eps_given),
+     .help = "restitution in [0, 1] (default 0.8 for the example, else %D)"},
+    {"--law", "LAW", APP_T_CUSTOM, OFF(law), "zmf", .parse = parse_law,
+     .help = "collision law, as in relcol-collide (default %D)"},
+    {"--help", NULL, APP_T_HELP, .help = "this text"},
+    {NULL},
+};
+
 static void usage(FILE *f)
 {
     fprintf(f,
@@ -33,13 +75,10 @@ static void usage(FILE *f)
 "  from --input FILE or stdin. With --example, or with no --input and stdin a terminal,\n"
 "  a built-in oblique 2-D example (eps = 0.8):\n"
 "%s"
-"options:\n"
-"  --out DIR     output folder, created if missing (default out/sweep-c)\n"
-"  --points N    number of values of c, log-spaced (default 41, at least 3)\n"
-"  --from F      smallest c as a multiple of the fastest speed, > 1 (default 10)\n"
-"  --to T        largest c as a multiple of the fastest speed (default 1e6)\n"
-"  --eps E       restitution in [0, 1] (default 0.8 for the example, else 1)\n"
-"  --law LAW     collision law, as in relcol-collide (default zmf)\n"
+"options:\n",
+            example_csv);
+    app_opts_help(f, opts, 16);
+    fprintf(f,
 "\n"
 "per c it computes\n"
 "  dev_velocity  max over balls |v'(c) - v'(inf)| / max over balls |v'(inf)|\n"
@@ -51,72 +90,13 @@ static void usage(FILE *f)
 "                column is empty and not plotted.\n"
 "and writes, atomically, DIR/sweep-c.csv, DIR/sweep-c.gp and, if gnuplot is installed,\n"
 "DIR/sweep-c.png; then prints the fitted log-log slopes (expect -2).\n"
-"exit status: 0 ok; 2 bad input; 3 the balls do not collide; 1 I/O error.\n",
-            example_csv);
+"exit status: 0 ok; 2 bad input; 3 the balls do not collide; 1 I/O error.\n");
 }
 
-/* every input error: "relcol-sweep-c: message" and exit status 2 */
-#define fail(...) app_fail(prog, EXIT_BAD_INPUT, __VA_ARGS__)
-
-typedef struct options {
-    const char *input, *out;
-    int example, eps_given;
-    long points;
-    double from, to, eps;
-    const rc_law *law;
-} options;
-
-static int parse_options(int argc, char **argv, options *o)
+/* The checks between options, after the table's parse: 0, else an exit code. */
+static int check_options(void *opts)
 {
-    char err[APP_ERR_LEN];
-    o->out = "out/sweep-c";
-    o->points = 41;
-    o->from = 10.0;
-    o->to = 1e6;
-    o->eps = 1.0;
-    o->law = rc_law_find("zmf");
-    static const char *const known[] = {"--input", "--out", "--points", "--from", "--to",
-                                        "--eps", "--law", NULL};
-    static const char *const flags[] = {"--example", NULL};
-    app_opts it;
-    app_opts_init(&it, prog, argc, argv, known, flags, "see --help");
-    const char *name, *val;
-    for (int kind; (kind = app_opts_next(&it, &name, &val)) != APP_OPT_END;) {
-        if (kind == APP_OPT_HELP)
-            return -1;
-        if (kind == APP_OPT_ERROR)
-            return EXIT_BAD_INPUT;
-        if (kind == APP_OPT_FLAG) {
-            o->example = 1; /* --example, the only flag */
-            continue;
-        }
-        if (strcmp(name, "--input") == 0) {
-            o->input = val;
-        } else if (strcmp(name, "--out") == 0) {
-            if (!*val)
-                return fail("--out: empty folder name");
-            o->out = val;
-        } else if (strcmp(name, "--points") == 0) {
-            if (app_parse_long(val, 3, 1000000, &o->points, err) != 0)
-                return fail("--points: %s", err);
-        } else if (strcmp(name, "--from") == 0) {
-            if (app_parse_double(val, 0, &o->from, err) != 0)
-                return fail("--from: %s", err);
-        } else if (strcmp(name, "--to") == 0) {
-            if (app_parse_double(val, 0, &o->to, err) != 0)
-                return fail("--to: %s", err);
-        } else if (strcmp(name, "--eps") == 0) {
-            if (app_parse_double(val, 0, &o->eps, err) != 0)
-                return fail("--eps: %s", err);
-            o->eps_given = 1;
-        } else if (strcmp(name, "--law") == 0) {
-            o->law = rc_law_find(val);
-            char list[256];
-            if (!o->law)
-                return fail("--law: unknown law '%s' (expected %s)", val,
-                            app_law_list(list, sizeof list));
-        }
-    }
+    const options *o = opts;
     char f[APP_FMT_LEN];
     if (o->example && o->input)
         return fail("--example: conflicts with --input");
@@ -128,6 +108,9 @@ static int parse_options(int argc, char **argv, options *o)
         return fail("--eps: eps = %s outside [0, 1]", app_fmt(o->eps, f));
     return 0;
 }
+
+static const app_cli cli = {prog, opts, usage, "see --help", EXIT_BAD_INPUT,
+                            check_options, NULL};
 
 /* One collision at c; outputs the final states. Returns an rc_status. */
 static int collide_at(const options *o, const app_balls *b, rc_vec3 n, double c,
@@ -193,13 +176,10 @@ static int write_script(const char *path, const options *o, const app_balls *b,
 
 int main(int argc, char **argv)
 {
-    app_init(prog);
     options o;
     memset(&o, 0, sizeof o);
-    int st = parse_options(argc, argv, &o);
-    if (st < 0)
-        return app_help(usage);
-    if (st != 0)
+    int st = app_start(&cli, argc, argv, &o);
+    if (st >= 0)
         return st;
 
     char err[APP_ERR_LEN];

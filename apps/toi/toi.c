@@ -13,6 +13,39 @@ static const char *const prog = "relcol-toi";
 
 enum { EXIT_BAD_INPUT = 2 };
 
+/* every input error: "relcol-toi: message" and exit status 2 */
+#define fail(...) app_fail(prog, EXIT_BAD_INPUT, __VA_ARGS__)
+
+typedef struct options {
+    double c;
+    const rc_toi_frame *frame;
+    double wall[6];
+    int n_wall; /* 0: no --wall */
+} options;
+
+static void frame_lines(FILE *f)
+{
+    for (size_t i = 0; rc_toi_frames[i]; i++)
+        fprintf(f, "                      %-9s %s\n", rc_toi_frames[i]->name,
+                rc_toi_frames[i]->summary);
+}
+
+#define OFF(field) offsetof(options, field)
+static const app_opt opts[] = {
+    {"--c", "C|inf", APP_T_DOUBLE_INF, OFF(c), "inf",
+     .help = "speed of light, > 0 (default %D: no contraction)"},
+    /* (table: the default of every app) */
+    {"--frame", "FRAME", APP_T_CUSTOM, OFF(frame), "table", .parse = app_opt_toi_frame,
+     .help = "where contact is decided (default %D):", .help_more = frame_lines},
+    {"--wall", "X0,X1[,Y0,Y1[,Z0,Z1]]", APP_T_LIST, OFF(wall), .hi = 6, .count = OFF(n_wall),
+     .help = " box walls x = X0, x = X1, ... (X0 < X1); axes not\n"
+             "given are open. The ball must start inside. Walls see the\n"
+             "contracted ball in frames table and zmf (a wall's rest frame is\n"
+             "the table and the ball-wall ZMF), the sphere in frame sphere."},
+    {"--help", NULL, APP_T_HELP, .help = "this text"},
+    {NULL},
+};
+
 static void usage(FILE *f)
 {
     fprintf(f,
@@ -33,18 +66,9 @@ static void usage(FILE *f)
 "must have as many. Columns may come in any order; spaces, CRLF, blank lines and lines\n"
 "starting with # are ignored.\n"
 "\n"
-"options:\n"
-"  --c C|inf         speed of light, > 0 (default inf: no contraction)\n"
-"  --frame FRAME     where contact is decided (default table):\n");
-    for (size_t i = 0; rc_toi_frames[i]; i++)
-        fprintf(f, "                      %-9s %s\n", rc_toi_frames[i]->name,
-                rc_toi_frames[i]->summary);
+"options:\n");
+    app_opts_help(f, opts, 20);
     fprintf(f,
-"  --wall X0,X1[,Y0,Y1[,Z0,Z1]]  box walls x = X0, x = X1, ... (X0 < X1); axes not\n"
-"                    given are open. The ball must start inside. Walls see the\n"
-"                    contracted ball in frames table and zmf (a wall's rest frame is\n"
-"                    the table and the ball-wall ZMF), the sphere in frame sphere.\n"
-"  --help            this text\n"
 "\n"
 "stdout: header t,cx[,cy[,cz]],nx[,ny[,nz]] (with --wall: plus side, one of x0 x1 y0 y1\n"
 "  z0 z1) and one row, numbers %%.17g: the table-frame time and point of the contact\n"
@@ -58,58 +82,24 @@ static void usage(FILE *f)
 "0 (one line on stderr naming the row, column or option and the reason); 1 I/O error.\n");
 }
 
-/* every input error: "relcol-toi: message" and exit status 2 */
-#define fail(...) app_fail(prog, EXIT_BAD_INPUT, __VA_ARGS__)
-
-typedef struct options {
-    double c;
-    const rc_toi_frame *frame;
-    double wall[6];
-    int n_wall; /* 0: no --wall */
-} options;
-
-/* Parse the command line; returns -1 to print help, 0 on success, else an exit code. */
-static int parse_options(int argc, char **argv, options *o)
+/* The checks after the table's parse: 0, else an exit code. */
+static int check_options(void *opts)
 {
+    const options *o = opts;
     char err[APP_ERR_LEN], f1[APP_FMT_LEN], f2[APP_FMT_LEN];
-    o->c = INFINITY;
-    o->frame = rc_toi_frame_find("table"); /* (the default of every app) */
-    static const char *const known[] = {"--c", "--frame", "--wall", NULL};
-    app_opts it;
-    app_opts_init(&it, prog, argc, argv, known, NULL, "input is read from stdin; see --help");
-    const char *name, *val;
-    for (int kind; (kind = app_opts_next(&it, &name, &val)) != APP_OPT_END;) {
-        if (kind == APP_OPT_HELP)
-            return -1;
-        if (kind == APP_OPT_ERROR)
-            return EXIT_BAD_INPUT;
-        if (strcmp(name, "--c") == 0) {
-            if (app_parse_double(val, 1, &o->c, err) != 0)
-                return fail("--c: %s", err);
-        } else if (strcmp(name, "--frame") == 0) {
-            o->frame = rc_toi_frame_find(val);
-            if (!o->frame) {
-                char list[128];
-                return fail("--frame: unknown frame '%s' (known: %s)", val,
-                            app_toi_frame_list(list, sizeof list));
-            }
-        } else {
-            if (app_parse_list(val, o->wall, 6, &o->n_wall, err) != 0)
-                return fail("--wall: %s", err);
-            if (o->n_wall % 2 != 0)
-                return fail("--wall: %d numbers; give pairs X0,X1[,Y0,Y1[,Z0,Z1]]",
-                            o->n_wall);
-            for (int k = 0; k < o->n_wall; k += 2)
-                if (!(o->wall[k] < o->wall[k + 1]))
-                    return fail("--wall: %c0 = %s must be < %c1 = %s", 'x' + k / 2,
-                                app_fmt(o->wall[k], f1), 'x' + k / 2,
-                                app_fmt(o->wall[k + 1], f2));
-        }
-    }
+    if (o->n_wall % 2 != 0)
+        return fail("--wall: %d numbers; give pairs X0,X1[,Y0,Y1[,Z0,Z1]]", o->n_wall);
+    for (int k = 0; k < o->n_wall; k += 2)
+        if (!(o->wall[k] < o->wall[k + 1]))
+            return fail("--wall: %c0 = %s must be < %c1 = %s", 'x' + k / 2,
+                        app_fmt(o->wall[k], f1), 'x' + k / 2, app_fmt(o->wall[k + 1], f2));
     if (app_check_c(o->c, err) != 0)
         return fail("--c: %s", err);
     return 0;
 }
+
+static const app_cli cli = {prog, opts, usage, "input is read from stdin; see --help",
+                            EXIT_BAD_INPUT, check_options, NULL};
 
 static void print_row(int dim, double t, rc_vec3 x, rc_vec3 n)
 {
@@ -133,13 +123,10 @@ static void print_header(int dim, int wall)
 
 int main(int argc, char **argv)
 {
-    app_init(prog);
     options o;
     memset(&o, 0, sizeof o);
-    int st = parse_options(argc, argv, &o);
-    if (st < 0)
-        return app_help(usage);
-    if (st != 0)
+    int st = app_start(&cli, argc, argv, &o);
+    if (st >= 0)
         return st;
 
     char err[APP_ERR_LEN], f[APP_FMT_LEN], rn[48];
