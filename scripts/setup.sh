@@ -7,10 +7,10 @@ set -euo pipefail
 # mpi-default-dev and openmpi-bin come with libsundials-dev already; they are named
 # because relcol-sweep's MPI build and its mpirun test use them directly. libhdf5-dev is
 # the serial HDF5 of relcol-sim's H5MD trajectory; the python3 packages read its outputs in
-# the tests (h5py: H5MD, ase: extended XYZ, numpy: CSV).
+# the tests (h5py and mdanalysis: H5MD, ase: extended XYZ, numpy: CSV).
 RELCOL_PACKAGES=(gcc libc6-dev meson ninja-build pkg-config libgsl-dev libsundials-dev
                  gnuplot-nox libcjson-dev mpi-default-dev openmpi-bin help2man libhdf5-dev
-                 python3-numpy python3-h5py python3-ase)
+                 python3-numpy python3-h5py python3-ase python3-mdanalysis)
 # The Python package (python/, meson option -Dpython): its build needs cffi, numpy and the
 # Python headers, its tests pytest, the README's example matplotlib. RELCOL_PYTHON=disabled
 # leaves them out and configures without it (default auto: built when they are there).

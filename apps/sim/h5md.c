@@ -2,7 +2,9 @@
  * creator), /particles/all with the box and one time-dependent group per quantity (step,
  * time and value datasets, extensible along time, chunked one frame at a time), and
  * /parameters with c and the scenario. The standard elements are position, velocity, mass,
- * species and image; relcol's own are rest_mass, momentum, proper_time and radius.
+ * species and image; relcol's own are rest_mass, momentum, proper_time and radius. Every
+ * dimensionful dataset has a unit attribute; the box edges are a time series (constant)
+ * sharing the position's step and time, the form MDAnalysis' H5MD reader reads.
  *
  * mass is the relativistic mass M = E/c^2 = gamma m (rest_mass holds m), so that
  * momentum = mass * velocity, the relation every reader assumes; with c = inf, M = m.
@@ -28,10 +30,17 @@ enum { E_POS, E_VEL, E_MASS, E_REST, E_MOM, E_TAU, E_IMAGE, E_N };
 static const char *const e_name[E_N] = {"position",  "velocity", "mass",  "rest_mass",
                                         "momentum",  "proper_time", "image"};
 static const int e_vector[E_N] = {1, 1, 0, 0, 1, 0, 1};
+/* H5MD's unit strings (its units module), in the GROMACS system nm, ps, u: relcol's hard
+ * balls are scale free (a run in any length unit L, time unit T and mass unit M is the
+ * same numbers), so the labels choose one consistent reading, the one MD readers
+ * (MDAnalysis demands units) convert from; image is dimensionless and has none. */
+static const char *const e_unit[E_N] = {"nm", "nm ps-1", "u", "u", "u nm ps-1", "ps", NULL};
 
 struct sim_h5md {
     hid_t file, all;
     hid_t value[E_N], step, time; /* datasets (H5I_INVALID_HID when absent) */
+    hid_t edges;                  /* box/edges/value, one row a frame */
+    double box[3];
     int dim, periodic;
     size_t n;
     hsize_t frames;
@@ -162,11 +171,13 @@ static void close_all(sim_h5md *h)
         H5Dclose(h->step);
     if (h->time >= 0)
         H5Dclose(h->time);
+    if (h->edges >= 0)
+        H5Dclose(h->edges);
     if (h->all >= 0)
         H5Gclose(h->all);
     for (int e = 0; e < E_N; e++)
         h->value[e] = H5I_INVALID_HID;
-    h->step = h->time = h->all = H5I_INVALID_HID;
+    h->step = h->time = h->all = h->edges = H5I_INVALID_HID;
 }
 
 /* The scenario as relcol read it (the JSON of relcol-sim --dump), malloc'ed. */
@@ -220,10 +231,9 @@ static int build(sim_h5md *h, const scn_scenario *s, const char *prog)
         return -1;
     /* H5MD knows periodic and "none" boundaries: relcol's walls are "none" */
     char bnd[3][9] = {{0}};
-    double edges[3];
     for (int d = 0; d < D; d++) {
         strcpy(bnd[d], s->boundary[d] == RC_SIM_PERIODIC ? "periodic" : "none");
-        edges[d] = rc_v3_get(s->box, d);
+        h->box[d] = rc_v3_get(s->box, d);
     }
     hid_t bt = H5Tcopy(H5T_C_S1);
     r = bt >= 0 ? H5Tset_size(bt, sizeof bnd[0]) : -1;
@@ -233,8 +243,14 @@ static int build(sim_h5md *h, const scn_scenario *s, const char *prog)
         H5Tclose(bt);
     if (r >= 0)
         r = attr_numbers(box, "dimension", H5T_STD_I32LE, H5T_NATIVE_INT, 0, &D);
-    if (r >= 0) /* a box that does not change: edges is a plain dataset */
-        r = dataset_1d(box, "edges", (hsize_t)D, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, edges);
+    /* edges as a time-dependent element (value [F][D]), though the box does not change:
+     * H5MD allows a plain Float[D] too, but MDAnalysis reads only box/edges/value */
+    hid_t eg = r >= 0 ? H5Gcreate2(box, "edges", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT) : -1;
+    hsize_t nd = (hsize_t)D;
+    h->edges = eg >= 0 ? dataset_growing(eg, "value", H5T_IEEE_F64LE, 1, &nd, sizeof(double)) : -1;
+    r = h->edges >= 0 ? attr_string(h->edges, "unit", "nm") : -1;
+    if (eg >= 0)
+        H5Gclose(eg);
     H5Gclose(box);
     if (r < 0)
         return -1;
@@ -251,6 +267,12 @@ static int build(sim_h5md *h, const scn_scenario *s, const char *prog)
     if (r >= 0)
         r = dataset_1d(h->all, "radius", (hsize_t)h->n, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
                        radius);
+    if (r >= 0) {
+        hid_t rd = H5Dopen2(h->all, "radius", H5P_DEFAULT);
+        r = rd >= 0 ? attr_string(rd, "unit", "nm") : -1;
+        if (rd >= 0)
+            H5Dclose(rd);
+    }
     free(zeros);
     free(radius);
     if (r < 0)
@@ -268,9 +290,24 @@ static int build(sim_h5md *h, const scn_scenario *s, const char *prog)
         int rank = e_vector[e] ? 2 : 1;
         h->value[e] = e == E_IMAGE ? dataset_growing(eg, "value", H5T_STD_I32LE, rank, frame, sizeof(int))
                                    : dataset_growing(eg, "value", H5T_IEEE_F64LE, rank, frame, sizeof(double));
+        if (h->value[e] >= 0 && e_unit[e] && attr_string(h->value[e], "unit", e_unit[e]) < 0) {
+            H5Gclose(eg);
+            return -1;
+        }
         if (e == E_POS) {
             h->step = dataset_growing(eg, "step", H5T_STD_I64LE, 0, NULL, 8);
             h->time = dataset_growing(eg, "time", H5T_IEEE_F64LE, 0, NULL, 8);
+            if (h->time >= 0 && attr_string(h->time, "unit", "ps") < 0) {
+                H5Gclose(eg);
+                return -1;
+            }
+            /* the box's edges share the position's step and time */
+            if (h->step < 0 || h->time < 0 ||
+                H5Lcreate_hard(eg, "step", h->all, "box/edges/step", H5P_DEFAULT, H5P_DEFAULT) < 0 ||
+                H5Lcreate_hard(eg, "time", h->all, "box/edges/time", H5P_DEFAULT, H5P_DEFAULT) < 0) {
+                H5Gclose(eg);
+                return -1;
+            }
         } else if (H5Lcreate_hard(h->all, "position/step", eg, "step", H5P_DEFAULT, H5P_DEFAULT) < 0 ||
                    H5Lcreate_hard(h->all, "position/time", eg, "time", H5P_DEFAULT, H5P_DEFAULT) < 0) {
             H5Gclose(eg);
@@ -289,6 +326,8 @@ static int build(sim_h5md *h, const scn_scenario *s, const char *prog)
         return -1;
     char *text = scenario_text(s);
     r = text ? attr_numbers(pg, "c", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0, &s->c) : -1;
+    if (r >= 0) /* (an attribute has no attributes: c's unit is its own) */
+        r = attr_string(pg, "c_unit", "nm ps-1");
     if (r >= 0)
         r = attr_string(pg, "law", s->law->name);
     if (r >= 0)
@@ -309,7 +348,7 @@ int h5md_open(sim_h5md **out, const char *path, const scn_scenario *s, size_t n,
         app_errf(err, "out of memory");
         return -1;
     }
-    h->file = h->all = h->step = h->time = H5I_INVALID_HID;
+    h->file = h->all = h->step = h->time = h->edges = H5I_INVALID_HID;
     for (int e = 0; e < E_N; e++)
         h->value[e] = H5I_INVALID_HID;
     h->dim = s->dim;
@@ -376,6 +415,9 @@ int h5md_frame(sim_h5md *h, const rc_sim *sim, long long step, char *err)
     herr_t r = append(h->step, H5T_NATIVE_INT64, h->frames, 0, NULL, &st);
     if (r >= 0)
         r = append(h->time, H5T_NATIVE_DOUBLE, h->frames, 0, NULL, &t);
+    hsize_t nd = (hsize_t)D;
+    if (r >= 0)
+        r = append(h->edges, H5T_NATIVE_DOUBLE, h->frames, 1, &nd, h->box);
     for (int e = 0; r >= 0 && e < E_N; e++) {
         hsize_t frame[2] = {(hsize_t)h->n, (hsize_t)D};
         if (e == E_IMAGE)
