@@ -3,8 +3,8 @@
  * time and value datasets, extensible along time, chunked one frame at a time), and
  * /parameters with c and the scenario. The standard elements are position, velocity, mass,
  * species and image; relcol's own are rest_mass, momentum, proper_time and radius. Every
- * dimensionful dataset has a unit attribute; the box edges are a time series (constant)
- * sharing the position's step and time, the form MDAnalysis' H5MD reader reads.
+ * dimensionful dataset has a unit attribute; the box edges are a time series (constant) of
+ * D x D matrices sharing the position's step and time, the form MDAnalysis' reader reads.
  *
  * mass is the relativistic mass M = E/c^2 = gamma m (rest_mass holds m), so that
  * momentum = mass * velocity, the relation every reader assumes; with c = inf, M = m.
@@ -39,8 +39,8 @@ static const char *const e_unit[E_N] = {"nm", "nm ps-1", "u", "u", "u nm ps-1", 
 struct sim_h5md {
     hid_t file, all;
     hid_t value[E_N], step, time; /* datasets (H5I_INVALID_HID when absent) */
-    hid_t edges;                  /* box/edges/value, one row a frame */
-    double box[3];
+    hid_t edges;                  /* box/edges/value, one D x D matrix a frame */
+    double box[9];
     int dim, periodic;
     size_t n;
     hsize_t frames;
@@ -58,6 +58,26 @@ static herr_t attr_string(hid_t obj, const char *name, const char *text)
         H5Tset_strpad(t, H5T_STR_NULLTERM) >= 0 &&
         (a = H5Acreate2(obj, name, t, sp, H5P_DEFAULT, H5P_DEFAULT)) >= 0)
         r = H5Awrite(a, t, text);
+    if (a >= 0)
+        H5Aclose(a);
+    if (sp >= 0)
+        H5Sclose(sp);
+    if (t >= 0)
+        H5Tclose(t);
+    return r;
+}
+
+/* A unit attribute: a variable-length string, where H5MD's units module says fixed length,
+ * because h5py hands a fixed-length one over as bytes and MDAnalysis 2.4 matches only str
+ * (its own writer writes them so). */
+static herr_t attr_unit(hid_t obj, const char *text)
+{
+    hid_t t = H5Tcopy(H5T_C_S1), sp = H5Screate(H5S_SCALAR), a = H5I_INVALID_HID;
+    herr_t r = -1;
+    if (t >= 0 && sp >= 0 && H5Tset_size(t, H5T_VARIABLE) >= 0 &&
+        H5Tset_cset(t, H5T_CSET_UTF8) >= 0 &&
+        (a = H5Acreate2(obj, "unit", t, sp, H5P_DEFAULT, H5P_DEFAULT)) >= 0)
+        r = H5Awrite(a, t, &text);
     if (a >= 0)
         H5Aclose(a);
     if (sp >= 0)
@@ -233,7 +253,7 @@ static int build(sim_h5md *h, const scn_scenario *s, const char *prog)
     char bnd[3][9] = {{0}};
     for (int d = 0; d < D; d++) {
         strcpy(bnd[d], s->boundary[d] == RC_SIM_PERIODIC ? "periodic" : "none");
-        h->box[d] = rc_v3_get(s->box, d);
+        h->box[d * D + d] = rc_v3_get(s->box, d);
     }
     hid_t bt = H5Tcopy(H5T_C_S1);
     r = bt >= 0 ? H5Tset_size(bt, sizeof bnd[0]) : -1;
@@ -243,12 +263,13 @@ static int build(sim_h5md *h, const scn_scenario *s, const char *prog)
         H5Tclose(bt);
     if (r >= 0)
         r = attr_numbers(box, "dimension", H5T_STD_I32LE, H5T_NATIVE_INT, 0, &D);
-    /* edges as a time-dependent element (value [F][D]), though the box does not change:
-     * H5MD allows a plain Float[D] too, but MDAnalysis reads only box/edges/value */
+    /* edges as a time-dependent element of D x D matrices (the box's vectors, diagonal),
+     * though the box does not change: H5MD allows a plain Float[D] too, but MDAnalysis
+     * 2.4 reads only box/edges/value[frame] and only as three vectors */
     hid_t eg = r >= 0 ? H5Gcreate2(box, "edges", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT) : -1;
-    hsize_t nd = (hsize_t)D;
-    h->edges = eg >= 0 ? dataset_growing(eg, "value", H5T_IEEE_F64LE, 1, &nd, sizeof(double)) : -1;
-    r = h->edges >= 0 ? attr_string(h->edges, "unit", "nm") : -1;
+    hsize_t nd[2] = {(hsize_t)D, (hsize_t)D};
+    h->edges = eg >= 0 ? dataset_growing(eg, "value", H5T_IEEE_F64LE, 2, nd, sizeof(double)) : -1;
+    r = h->edges >= 0 ? attr_unit(h->edges, "nm") : -1;
     if (eg >= 0)
         H5Gclose(eg);
     H5Gclose(box);
@@ -269,7 +290,7 @@ static int build(sim_h5md *h, const scn_scenario *s, const char *prog)
                        radius);
     if (r >= 0) {
         hid_t rd = H5Dopen2(h->all, "radius", H5P_DEFAULT);
-        r = rd >= 0 ? attr_string(rd, "unit", "nm") : -1;
+        r = rd >= 0 ? attr_unit(rd, "nm") : -1;
         if (rd >= 0)
             H5Dclose(rd);
     }
@@ -290,14 +311,14 @@ static int build(sim_h5md *h, const scn_scenario *s, const char *prog)
         int rank = e_vector[e] ? 2 : 1;
         h->value[e] = e == E_IMAGE ? dataset_growing(eg, "value", H5T_STD_I32LE, rank, frame, sizeof(int))
                                    : dataset_growing(eg, "value", H5T_IEEE_F64LE, rank, frame, sizeof(double));
-        if (h->value[e] >= 0 && e_unit[e] && attr_string(h->value[e], "unit", e_unit[e]) < 0) {
+        if (h->value[e] >= 0 && e_unit[e] && attr_unit(h->value[e], e_unit[e]) < 0) {
             H5Gclose(eg);
             return -1;
         }
         if (e == E_POS) {
             h->step = dataset_growing(eg, "step", H5T_STD_I64LE, 0, NULL, 8);
             h->time = dataset_growing(eg, "time", H5T_IEEE_F64LE, 0, NULL, 8);
-            if (h->time >= 0 && attr_string(h->time, "unit", "ps") < 0) {
+            if (h->time >= 0 && attr_unit(h->time, "ps") < 0) {
                 H5Gclose(eg);
                 return -1;
             }
@@ -415,9 +436,9 @@ int h5md_frame(sim_h5md *h, const rc_sim *sim, long long step, char *err)
     herr_t r = append(h->step, H5T_NATIVE_INT64, h->frames, 0, NULL, &st);
     if (r >= 0)
         r = append(h->time, H5T_NATIVE_DOUBLE, h->frames, 0, NULL, &t);
-    hsize_t nd = (hsize_t)D;
+    hsize_t nd[2] = {(hsize_t)D, (hsize_t)D};
     if (r >= 0)
-        r = append(h->edges, H5T_NATIVE_DOUBLE, h->frames, 1, &nd, h->box);
+        r = append(h->edges, H5T_NATIVE_DOUBLE, h->frames, 2, nd, h->box);
     for (int e = 0; r >= 0 && e < E_N; e++) {
         hsize_t frame[2] = {(hsize_t)h->n, (hsize_t)D};
         if (e == E_IMAGE)

@@ -82,16 +82,19 @@ def check_h5md(name, out, sc, n):
     frames = int(math.floor((t1 - t0) / dt + 1e-9)) + 1
     # the box's edges: a time series (the form MDAnalysis reads), the same box every frame
     ev = box["edges/value"][:]
-    check(ev.shape == (frames, dim) and np.all(ev > 0) and np.all(ev == ev[0]) and
+    L = np.diag(ev[0]) if ev.ndim == 3 else np.zeros(1)
+    check(ev.shape == (frames, dim, dim) and np.all(ev == ev[0]) and np.all(L > 0) and
+          np.array_equal(ev[0], np.diag(L)) and
           box["edges/step"] == f["particles/all/position/step"] and
           box["edges/time"] == f["particles/all/position/time"],
-          f"{name}: box edges value[{frames}][{dim}], constant, position's step and time")
+          f"{name}: box edges value[{frames}][{dim}][{dim}], constant, diagonal, position's"
+          " step and time")
     # units (H5MD's units module strings) on every dimensionful dataset; none on image
     units = {"position/value": "nm", "velocity/value": "nm ps-1", "mass/value": "u",
              "rest_mass/value": "u", "momentum/value": "u nm ps-1", "proper_time/value": "ps",
              "position/time": "ps", "box/edges/value": "nm", "radius": "nm"}
     got = {k: f["particles/all"][k].attrs.get("unit") for k in units}
-    check(all(got[k] == units[k].encode() for k in units) and
+    check(all(got[k] == units[k] for k in units) and
           ("image" not in f["particles/all"] or
            "unit" not in f["particles/all/image/value"].attrs),
           f"{name}: unit attributes {got}")
