@@ -50,14 +50,17 @@ struct sim_h5md {
     app_atomic tmp;   /* the temporary name; its FILE is closed, HDF5 writes the file */
 };
 
-static herr_t attr_string(hid_t obj, const char *name, const char *text)
+/* A string attribute, fixed length; or variable length (vlen), as the unit attributes are,
+ * where H5MD's units module says fixed: h5py hands a fixed-length one over as bytes, and
+ * MDAnalysis 2.4 matches only str (its own writer writes them so). */
+static herr_t attr_text(hid_t obj, const char *name, const char *text, int vlen)
 {
     hid_t t = H5Tcopy(H5T_C_S1), sp = H5Screate(H5S_SCALAR), a = H5I_INVALID_HID;
     herr_t r = -1;
-    if (t >= 0 && sp >= 0 && H5Tset_size(t, strlen(text) + 1) >= 0 &&
-        H5Tset_strpad(t, H5T_STR_NULLTERM) >= 0 &&
+    if (t >= 0 && sp >= 0 && H5Tset_size(t, vlen ? H5T_VARIABLE : strlen(text) + 1) >= 0 &&
+        (vlen ? H5Tset_cset(t, H5T_CSET_UTF8) : H5Tset_strpad(t, H5T_STR_NULLTERM)) >= 0 &&
         (a = H5Acreate2(obj, name, t, sp, H5P_DEFAULT, H5P_DEFAULT)) >= 0)
-        r = H5Awrite(a, t, text);
+        r = vlen ? H5Awrite(a, t, &text) : H5Awrite(a, t, text);
     if (a >= 0)
         H5Aclose(a);
     if (sp >= 0)
@@ -67,24 +70,14 @@ static herr_t attr_string(hid_t obj, const char *name, const char *text)
     return r;
 }
 
-/* A unit attribute: a variable-length string, where H5MD's units module says fixed length,
- * because h5py hands a fixed-length one over as bytes and MDAnalysis 2.4 matches only str
- * (its own writer writes them so). */
+static herr_t attr_string(hid_t obj, const char *name, const char *text)
+{
+    return attr_text(obj, name, text, 0);
+}
+
 static herr_t attr_unit(hid_t obj, const char *text)
 {
-    hid_t t = H5Tcopy(H5T_C_S1), sp = H5Screate(H5S_SCALAR), a = H5I_INVALID_HID;
-    herr_t r = -1;
-    if (t >= 0 && sp >= 0 && H5Tset_size(t, H5T_VARIABLE) >= 0 &&
-        H5Tset_cset(t, H5T_CSET_UTF8) >= 0 &&
-        (a = H5Acreate2(obj, "unit", t, sp, H5P_DEFAULT, H5P_DEFAULT)) >= 0)
-        r = H5Awrite(a, t, &text);
-    if (a >= 0)
-        H5Aclose(a);
-    if (sp >= 0)
-        H5Sclose(sp);
-    if (t >= 0)
-        H5Tclose(t);
-    return r;
+    return attr_text(obj, "unit", text, 1);
 }
 
 /* An attribute of `count` values of type mem (stored as file), a scalar when count = 0. */
@@ -132,22 +125,17 @@ static herr_t dataset_text(hid_t loc, const char *name, const char *text)
     return r;
 }
 
-/* An extensible dataset [0][dims...] (growing along time), chunked one frame at a time
- * (of at most about 1 MiB, so that a large frame is several chunks in HDF5's cache). */
+/* An extensible dataset [0][dims...] (growing along time), chunked one frame at a time:
+ * a whole frame is one chunk, written past HDF5's chunk cache in one piece (chunks of
+ * 1 MiB cut from a frame cost a partly empty last chunk and a cache pass each). */
 static hid_t dataset_growing(hid_t loc, const char *name, hid_t type, int rank_frame,
-                             const hsize_t *frame, size_t item_bytes)
+                             const hsize_t *frame)
 {
     hsize_t dims[3] = {0, 0, 0}, maxd[3] = {H5S_UNLIMITED, 0, 0}, chunk[3] = {1, 1, 1};
-    size_t per_row = item_bytes;
-    for (int k = 0; k < rank_frame; k++) {
+    for (int k = 0; k < rank_frame; k++)
         dims[k + 1] = maxd[k + 1] = chunk[k + 1] = frame[k];
-        if (k > 0)
-            per_row *= frame[k];
-    }
     if (rank_frame == 0) /* step, time: many frames to a chunk */
         chunk[0] = 1024;
-    else if (chunk[1] * per_row > ((size_t)1 << 20))
-        chunk[1] = ((size_t)1 << 20) / per_row ? ((size_t)1 << 20) / per_row : 1;
     if (rank_frame > 0 && chunk[1] == 0)
         chunk[1] = 1; /* (no balls: HDF5 refuses a zero chunk) */
     hid_t sp = H5Screate_simple(rank_frame + 1, dims, maxd);
@@ -268,7 +256,7 @@ static int build(sim_h5md *h, const scn_scenario *s, const char *prog)
      * 2.4 reads only box/edges/value[frame] and only as three vectors */
     hid_t eg = r >= 0 ? H5Gcreate2(box, "edges", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT) : -1;
     hsize_t nd[2] = {(hsize_t)D, (hsize_t)D};
-    h->edges = eg >= 0 ? dataset_growing(eg, "value", H5T_IEEE_F64LE, 2, nd, sizeof(double)) : -1;
+    h->edges = eg >= 0 ? dataset_growing(eg, "value", H5T_IEEE_F64LE, 2, nd) : -1;
     r = h->edges >= 0 ? attr_unit(h->edges, "nm") : -1;
     if (eg >= 0)
         H5Gclose(eg);
@@ -309,15 +297,15 @@ static int build(sim_h5md *h, const scn_scenario *s, const char *prog)
             return -1;
         hsize_t frame[2] = {(hsize_t)h->n, (hsize_t)D};
         int rank = e_vector[e] ? 2 : 1;
-        h->value[e] = e == E_IMAGE ? dataset_growing(eg, "value", H5T_STD_I32LE, rank, frame, sizeof(int))
-                                   : dataset_growing(eg, "value", H5T_IEEE_F64LE, rank, frame, sizeof(double));
+        h->value[e] = e == E_IMAGE ? dataset_growing(eg, "value", H5T_STD_I32LE, rank, frame)
+                                   : dataset_growing(eg, "value", H5T_IEEE_F64LE, rank, frame);
         if (h->value[e] >= 0 && e_unit[e] && attr_unit(h->value[e], e_unit[e]) < 0) {
             H5Gclose(eg);
             return -1;
         }
         if (e == E_POS) {
-            h->step = dataset_growing(eg, "step", H5T_STD_I64LE, 0, NULL, 8);
-            h->time = dataset_growing(eg, "time", H5T_IEEE_F64LE, 0, NULL, 8);
+            h->step = dataset_growing(eg, "step", H5T_STD_I64LE, 0, NULL);
+            h->time = dataset_growing(eg, "time", H5T_IEEE_F64LE, 0, NULL);
             if (h->time >= 0 && attr_unit(h->time, "ps") < 0) {
                 H5Gclose(eg);
                 return -1;
