@@ -47,4 +47,21 @@ cat > "$tmp/sim.json" <<JSON
  "outputs": {"dir": "$tmp/sim", "h5md_every": 1000, "plots": false}}
 JSON
 run sim 130 1 "$sim" "$tmp/sim.json"
+# relcol-sim's bar on a terminal (util-linux's script gives it one): interrupted at a few
+# per cent of a long run, its last drawn percentage is below 100
+if command -v script > /dev/null 2>&1; then
+    sed "s|\"dir\": \"$tmp/sim\", \"h5md_every\": 1000|\"dir\": \"$tmp/bar\"|" "$tmp/sim.json" > "$tmp/bar.json"
+    script -qfc "sh -c '\"$sim\" \"$tmp/bar.json\" & echo \$! > \"$tmp/bar.pid\"; wait'" \
+        "$tmp/bar.ts" < /dev/null > /dev/null 2>&1 &
+    spid=$!
+    k=0
+    until grep -aq '%' "$tmp/bar.ts" 2> /dev/null || [ $k -ge 300 ]; do sleep 0.1; k=$((k + 1)); done
+    kill -INT "$(cat "$tmp/bar.pid")"
+    wait "$spid"
+    last=$(tr '\r' '\n' < "$tmp/bar.ts" | grep -a 'relcol-sim \[' | tail -1)
+    case "$last" in
+        *"100%"*|"") say "FAIL sim bar: last drawn '$last' (want < 100 %)" ;;
+        *) say "ok   sim bar: interrupted, stays at '${last##*]}'" ;;
+    esac
+fi
 exit $fail
