@@ -7,11 +7,11 @@ set -euo pipefail
 # mpi-default-dev and openmpi-bin come with libsundials-dev already; they are named
 # because relcol-sweep's MPI build and its mpirun test use them directly. libhdf5-dev is
 # the serial HDF5 of relcol-sim's H5MD trajectory; the python3 packages read its outputs in
-# the tests (h5py: H5MD, ase: extended XYZ, numpy: CSV). strace: the publish test's fault
-# injection (tests/sim/test_sim_publish.sh fails each system call of a run in turn).
+# the tests (h5py and mdanalysis: H5MD, ase: extended XYZ, numpy: CSV). strace: the publish
+# test's fault injection (tests/sim/test_sim_publish.sh fails each system call of a run in turn).
 RELCOL_PACKAGES=(gcc libc6-dev meson ninja-build pkg-config libgsl-dev libsundials-dev
                  gnuplot-nox libcjson-dev mpi-default-dev openmpi-bin help2man libhdf5-dev
-                 python3-numpy python3-h5py python3-ase strace)
+                 python3-numpy python3-h5py python3-ase python3-mdanalysis strace)
 # The Python package (python/, meson option -Dpython): its build needs cffi, numpy and the
 # Python headers, its tests pytest, the README's example and the notebooks (python/examples)
 # matplotlib, the notebooks' test nbclient and ipykernel (and jupyter-nbconvert for HTML),

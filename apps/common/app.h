@@ -333,6 +333,17 @@ typedef struct app_progress {
 void app_progress_init(app_progress *p, const char *label, size_t total);
 void app_progress_update(app_progress *p, size_t done);
 void app_progress_done(app_progress *p);
+/* An interrupted run's bar: ends the line where the bar stands (not at 100 %). */
+void app_progress_stop(app_progress *p);
+
+/* ---- interrupts (interrupt.c) ----------------------------------------------------- */
+
+/* SIGINT and SIGTERM (even when started ignored, as `cmd &` in a script does) remove the
+ * guarded temporary files and end the process by the signal; app_init installs it. The
+ * atomic writer guards its temporary from open to commit or abort. */
+void app_interrupt_install(void);
+void app_interrupt_guard(const char *tmp);
+void app_interrupt_forget(const char *tmp);
 
 /* ---- how much of a run its rules decided ------------------------------------------ */
 

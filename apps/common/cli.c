@@ -35,6 +35,7 @@ void app_init(const char *prog)
     gsl_set_error_handler_off();
     app_prog = prog;
     atexit(close_stdout);
+    app_interrupt_install();
 }
 
 int app_vfail(const char *prog, int code, const char *fmt, va_list ap)

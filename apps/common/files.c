@@ -176,6 +176,7 @@ int app_atomic_open(app_atomic *a, const char *path, char *err)
         app_atomic_abort(a);
         return -1;
     }
+    app_interrupt_guard(a->tmp);
     /* mkstemp makes 0600; give the final file the usual 0666 & ~umask */
     mode_t um = umask(0);
     umask(um);
@@ -194,6 +195,7 @@ void app_atomic_abort(app_atomic *a)
         fclose(a->f);
     if (a->tmp)
         unlink(a->tmp);
+    app_interrupt_forget(a->tmp);
     free(a->tmp);
     free(a->path);
     memset(a, 0, sizeof *a);
@@ -219,6 +221,7 @@ int app_atomic_commit(app_atomic *a, char *err)
         return -1;
     }
     /* make the rename itself durable */
+    app_interrupt_forget(a->tmp);
     char *dir = dir_of(a->path);
     if (dir)
         app_fsync_dir(dir);

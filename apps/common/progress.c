@@ -30,6 +30,12 @@ void app_progress_update(app_progress *p, size_t done)
     fflush(stderr);
 }
 
+void app_progress_stop(app_progress *p)
+{
+    if (p->tty && p->total != 0 && p->last_pct >= 0)
+        fputc('\n', stderr);
+}
+
 void app_progress_done(app_progress *p)
 {
     if (!p->tty || p->total == 0)

@@ -321,6 +321,17 @@ static int eos_sensitivity(options *o)
     if (rc == 0)
         app_validity_warn(stderr, prog);
     return rc;
+
+/* the bar over all points: point `at` of `of`, a fraction done of it */
+typedef struct eos_bar {
+    app_progress bar;
+    size_t at, of;
+} eos_bar;
+
+static void eos_tick(void *ctx, double done)
+{
+    eos_bar *b = ctx;
+    app_progress_update(&b->bar, (size_t)(1000.0 * ((double)b->at + done) / (double)b->of));
 }
 
 int main(int argc, char **argv)
@@ -356,15 +367,18 @@ int main(int argc, char **argv)
            o.in.dim == 3 ? "Kolafa (Z_theory) and Carnahan–Starling"
                          : "Luding (2001) and Santos et al.");
     int rc = 0;
+    eos_bar bar = {.of = (size_t)o.npack * (size_t)o.ntheta};
+    app_progress_init(&bar.bar, prog, 1000);
     for (int ip = 0; ip < o.npack && rc == 0; ip++)
         for (int it = 0; it < o.ntheta && rc == 0; it++) {
             eos_in in = o.in;
             in.packing = o.packing[ip];
             in.theta = o.theta[it];
+            bar.at = (size_t)ip * (size_t)o.ntheta + (size_t)it;
             eos_out r;
             struct timespec t0, t1;
             clock_gettime(CLOCK_MONOTONIC, &t0);
-            if (eos_measure(&in, &r, err) != 0) {
+            if (eos_measure_ticked(&in, &r, err, eos_tick, &bar) != 0) {
                 rc = app_fail(prog, 1, "packing %g theta %g: %s", in.packing, in.theta, err);
                 break;
             }
@@ -410,6 +424,10 @@ int main(int argc, char **argv)
             csv_field(a.f, "%.6g", ece);
             csv_field(a.f, "%.6g", lce);
             fputc('\n', a.f);
+            if (bar.bar.tty && bar.bar.last_pct >= 0) { /* the results below the bar */
+                fputc('\n', stderr);
+                bar.bar.last_pct = -1;
+            }
             printf("packing %.4g theta %.4g: kT = %.5f +- %.5f  Z = %.5f +- %.5f  (theory %.5f: "
                    "%+.3f %% +- %.3f %%)  %llu collisions, %.1f s\n",
                    eta, in.theta, r.kT, r.kT_se, r.z, r.z_se, zt, 100.0 * (r.z / zt - 1.0),

@@ -198,7 +198,9 @@ static inline double eos_helfand_slope(const double *x, size_t stride, size_t m,
     return (s2 / (double)c2 - s1 / (double)c1) / (0.5 * (double)L * dt);
 }
 
-static inline int eos_measure(const eos_in *in, eos_out *o, char *err)
+/* eos_measure, telling tick (when not NULL) the fraction of its run done, for a bar */
+static inline int eos_measure_ticked(const eos_in *in, eos_out *o, char *err,
+                                     void (*tick)(void *ctx, double done), void *ctx)
 {
     memset(o, 0, sizeof *o);
     rc_sim *s = NULL;
@@ -231,9 +233,12 @@ static inline int eos_measure(const eos_in *in, eos_out *o, char *err)
     if (L > pb)
         L = pb - pb % 2;
     int st = rc_sim_advance(s, t0, 0);
+    const double t_all = t0 + in->t_run * o->tau_free;
     for (size_t k = 0; k < m && st == RC_OK; k++) {
         if ((st = rc_sim_advance(s, t0 + dt * (double)k, 0)) == RC_OK)
             st = rc_sim_moments_get(s, &M[k]);
+        if (tick)
+            tick(ctx, (t0 + dt * (double)k) / t_all);
         if (!in->transport || st != RC_OK)
             continue;
         /* the unwrapped positions of this block's readings: the mean square
@@ -328,6 +333,11 @@ out:
         rc_sim_validity(s, &o->val);
     rc_sim_free(&s);
     return rc;
+}
+
+static inline int eos_measure(const eos_in *in, eos_out *o, char *err)
+{
+    return eos_measure_ticked(in, o, err, NULL, NULL);
 }
 
 #endif

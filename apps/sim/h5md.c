@@ -2,7 +2,9 @@
  * creator), /particles/all with the box and one time-dependent group per quantity (step,
  * time and value datasets, extensible along time, chunked one frame at a time), and
  * /parameters with c and the scenario. The standard elements are position, velocity, mass,
- * species and image; relcol's own are rest_mass, momentum, proper_time and radius.
+ * species and image; relcol's own are rest_mass, momentum, proper_time and radius. Every
+ * dimensionful dataset has a unit attribute; the box edges are a time series (constant) of
+ * D x D matrices sharing the position's step and time, the form MDAnalysis' reader reads.
  *
  * mass is the relativistic mass M = E/c^2 = gamma m (rest_mass holds m), so that
  * momentum = mass * velocity, the relation every reader assumes; with c = inf, M = m.
@@ -28,10 +30,17 @@ enum { E_POS, E_VEL, E_MASS, E_REST, E_MOM, E_TAU, E_IMAGE, E_N };
 static const char *const e_name[E_N] = {"position",  "velocity", "mass",  "rest_mass",
                                         "momentum",  "proper_time", "image"};
 static const int e_vector[E_N] = {1, 1, 0, 0, 1, 0, 1};
+/* H5MD's unit strings (its units module), in the GROMACS system nm, ps, u: relcol's hard
+ * balls are scale free (a run in any length unit L, time unit T and mass unit M is the
+ * same numbers), so the labels choose one consistent reading, the one MD readers
+ * (MDAnalysis demands units) convert from; image is dimensionless and has none. */
+static const char *const e_unit[E_N] = {"nm", "nm ps-1", "u", "u", "u nm ps-1", "ps", NULL};
 
 struct sim_h5md {
     hid_t file, all;
     hid_t value[E_N], step, time; /* datasets (H5I_INVALID_HID when absent) */
+    hid_t edges;                  /* box/edges/value, one D x D matrix a frame */
+    double box[9];
     int dim, periodic;
     size_t n;
     hsize_t frames;
@@ -41,14 +50,17 @@ struct sim_h5md {
     app_atomic tmp;   /* the temporary name; its FILE is closed, HDF5 writes the file */
 };
 
-static herr_t attr_string(hid_t obj, const char *name, const char *text)
+/* A string attribute, fixed length; or variable length (vlen), as the unit attributes are,
+ * where H5MD's units module says fixed: h5py hands a fixed-length one over as bytes, and
+ * MDAnalysis 2.4 matches only str (its own writer writes them so). */
+static herr_t attr_text(hid_t obj, const char *name, const char *text, int vlen)
 {
     hid_t t = H5Tcopy(H5T_C_S1), sp = H5Screate(H5S_SCALAR), a = H5I_INVALID_HID;
     herr_t r = -1;
-    if (t >= 0 && sp >= 0 && H5Tset_size(t, strlen(text) + 1) >= 0 &&
-        H5Tset_strpad(t, H5T_STR_NULLTERM) >= 0 &&
+    if (t >= 0 && sp >= 0 && H5Tset_size(t, vlen ? H5T_VARIABLE : strlen(text) + 1) >= 0 &&
+        (vlen ? H5Tset_cset(t, H5T_CSET_UTF8) : H5Tset_strpad(t, H5T_STR_NULLTERM)) >= 0 &&
         (a = H5Acreate2(obj, name, t, sp, H5P_DEFAULT, H5P_DEFAULT)) >= 0)
-        r = H5Awrite(a, t, text);
+        r = vlen ? H5Awrite(a, t, &text) : H5Awrite(a, t, text);
     if (a >= 0)
         H5Aclose(a);
     if (sp >= 0)
@@ -56,6 +68,16 @@ static herr_t attr_string(hid_t obj, const char *name, const char *text)
     if (t >= 0)
         H5Tclose(t);
     return r;
+}
+
+static herr_t attr_string(hid_t obj, const char *name, const char *text)
+{
+    return attr_text(obj, name, text, 0);
+}
+
+static herr_t attr_unit(hid_t obj, const char *text)
+{
+    return attr_text(obj, "unit", text, 1);
 }
 
 /* An attribute of `count` values of type mem (stored as file), a scalar when count = 0. */
@@ -103,22 +125,17 @@ static herr_t dataset_text(hid_t loc, const char *name, const char *text)
     return r;
 }
 
-/* An extensible dataset [0][dims...] (growing along time), chunked one frame at a time
- * (of at most about 1 MiB, so that a large frame is several chunks in HDF5's cache). */
+/* An extensible dataset [0][dims...] (growing along time), chunked one frame at a time:
+ * a whole frame is one chunk, written past HDF5's chunk cache in one piece (chunks of
+ * 1 MiB cut from a frame cost a partly empty last chunk and a cache pass each). */
 static hid_t dataset_growing(hid_t loc, const char *name, hid_t type, int rank_frame,
-                             const hsize_t *frame, size_t item_bytes)
+                             const hsize_t *frame)
 {
     hsize_t dims[3] = {0, 0, 0}, maxd[3] = {H5S_UNLIMITED, 0, 0}, chunk[3] = {1, 1, 1};
-    size_t per_row = item_bytes;
-    for (int k = 0; k < rank_frame; k++) {
+    for (int k = 0; k < rank_frame; k++)
         dims[k + 1] = maxd[k + 1] = chunk[k + 1] = frame[k];
-        if (k > 0)
-            per_row *= frame[k];
-    }
     if (rank_frame == 0) /* step, time: many frames to a chunk */
         chunk[0] = 1024;
-    else if (chunk[1] * per_row > ((size_t)1 << 20))
-        chunk[1] = ((size_t)1 << 20) / per_row ? ((size_t)1 << 20) / per_row : 1;
     if (rank_frame > 0 && chunk[1] == 0)
         chunk[1] = 1; /* (no balls: HDF5 refuses a zero chunk) */
     hid_t sp = H5Screate_simple(rank_frame + 1, dims, maxd);
@@ -162,11 +179,13 @@ static void close_all(sim_h5md *h)
         H5Dclose(h->step);
     if (h->time >= 0)
         H5Dclose(h->time);
+    if (h->edges >= 0)
+        H5Dclose(h->edges);
     if (h->all >= 0)
         H5Gclose(h->all);
     for (int e = 0; e < E_N; e++)
         h->value[e] = H5I_INVALID_HID;
-    h->step = h->time = h->all = H5I_INVALID_HID;
+    h->step = h->time = h->all = h->edges = H5I_INVALID_HID;
 }
 
 /* The scenario as relcol read it (the JSON of relcol-sim --dump), malloc'ed. */
@@ -220,10 +239,9 @@ static int build(sim_h5md *h, const scn_scenario *s, const char *prog)
         return -1;
     /* H5MD knows periodic and "none" boundaries: relcol's walls are "none" */
     char bnd[3][9] = {{0}};
-    double edges[3];
     for (int d = 0; d < D; d++) {
         strcpy(bnd[d], s->boundary[d] == RC_SIM_PERIODIC ? "periodic" : "none");
-        edges[d] = rc_v3_get(s->box, d);
+        h->box[d * D + d] = rc_v3_get(s->box, d);
     }
     hid_t bt = H5Tcopy(H5T_C_S1);
     r = bt >= 0 ? H5Tset_size(bt, sizeof bnd[0]) : -1;
@@ -233,8 +251,15 @@ static int build(sim_h5md *h, const scn_scenario *s, const char *prog)
         H5Tclose(bt);
     if (r >= 0)
         r = attr_numbers(box, "dimension", H5T_STD_I32LE, H5T_NATIVE_INT, 0, &D);
-    if (r >= 0) /* a box that does not change: edges is a plain dataset */
-        r = dataset_1d(box, "edges", (hsize_t)D, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, edges);
+    /* edges as a time-dependent element of D x D matrices (the box's vectors, diagonal),
+     * though the box does not change: H5MD allows a plain Float[D] too, but MDAnalysis
+     * 2.4 reads only box/edges/value[frame] and only as three vectors */
+    hid_t eg = r >= 0 ? H5Gcreate2(box, "edges", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT) : -1;
+    hsize_t nd[2] = {(hsize_t)D, (hsize_t)D};
+    h->edges = eg >= 0 ? dataset_growing(eg, "value", H5T_IEEE_F64LE, 2, nd) : -1;
+    r = h->edges >= 0 ? attr_unit(h->edges, "nm") : -1;
+    if (eg >= 0)
+        H5Gclose(eg);
     H5Gclose(box);
     if (r < 0)
         return -1;
@@ -251,6 +276,12 @@ static int build(sim_h5md *h, const scn_scenario *s, const char *prog)
     if (r >= 0)
         r = dataset_1d(h->all, "radius", (hsize_t)h->n, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
                        radius);
+    if (r >= 0) {
+        hid_t rd = H5Dopen2(h->all, "radius", H5P_DEFAULT);
+        r = rd >= 0 ? attr_unit(rd, "nm") : -1;
+        if (rd >= 0)
+            H5Dclose(rd);
+    }
     free(zeros);
     free(radius);
     if (r < 0)
@@ -266,11 +297,26 @@ static int build(sim_h5md *h, const scn_scenario *s, const char *prog)
             return -1;
         hsize_t frame[2] = {(hsize_t)h->n, (hsize_t)D};
         int rank = e_vector[e] ? 2 : 1;
-        h->value[e] = e == E_IMAGE ? dataset_growing(eg, "value", H5T_STD_I32LE, rank, frame, sizeof(int))
-                                   : dataset_growing(eg, "value", H5T_IEEE_F64LE, rank, frame, sizeof(double));
+        h->value[e] = e == E_IMAGE ? dataset_growing(eg, "value", H5T_STD_I32LE, rank, frame)
+                                   : dataset_growing(eg, "value", H5T_IEEE_F64LE, rank, frame);
+        if (h->value[e] >= 0 && e_unit[e] && attr_unit(h->value[e], e_unit[e]) < 0) {
+            H5Gclose(eg);
+            return -1;
+        }
         if (e == E_POS) {
-            h->step = dataset_growing(eg, "step", H5T_STD_I64LE, 0, NULL, 8);
-            h->time = dataset_growing(eg, "time", H5T_IEEE_F64LE, 0, NULL, 8);
+            h->step = dataset_growing(eg, "step", H5T_STD_I64LE, 0, NULL);
+            h->time = dataset_growing(eg, "time", H5T_IEEE_F64LE, 0, NULL);
+            if (h->time >= 0 && attr_unit(h->time, "ps") < 0) {
+                H5Gclose(eg);
+                return -1;
+            }
+            /* the box's edges share the position's step and time */
+            if (h->step < 0 || h->time < 0 ||
+                H5Lcreate_hard(eg, "step", h->all, "box/edges/step", H5P_DEFAULT, H5P_DEFAULT) < 0 ||
+                H5Lcreate_hard(eg, "time", h->all, "box/edges/time", H5P_DEFAULT, H5P_DEFAULT) < 0) {
+                H5Gclose(eg);
+                return -1;
+            }
         } else if (H5Lcreate_hard(h->all, "position/step", eg, "step", H5P_DEFAULT, H5P_DEFAULT) < 0 ||
                    H5Lcreate_hard(h->all, "position/time", eg, "time", H5P_DEFAULT, H5P_DEFAULT) < 0) {
             H5Gclose(eg);
@@ -289,6 +335,8 @@ static int build(sim_h5md *h, const scn_scenario *s, const char *prog)
         return -1;
     char *text = scenario_text(s);
     r = text ? attr_numbers(pg, "c", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0, &s->c) : -1;
+    if (r >= 0) /* (an attribute has no attributes: c's unit is its own) */
+        r = attr_string(pg, "c_unit", "nm ps-1");
     if (r >= 0)
         r = attr_string(pg, "law", s->law->name);
     if (r >= 0)
@@ -309,7 +357,7 @@ int h5md_open(sim_h5md **out, const char *path, const scn_scenario *s, size_t n,
         app_errf(err, "out of memory");
         return -1;
     }
-    h->file = h->all = h->step = h->time = H5I_INVALID_HID;
+    h->file = h->all = h->step = h->time = h->edges = H5I_INVALID_HID;
     for (int e = 0; e < E_N; e++)
         h->value[e] = H5I_INVALID_HID;
     h->dim = s->dim;
@@ -376,6 +424,9 @@ int h5md_frame(sim_h5md *h, const rc_sim *sim, long long step, char *err)
     herr_t r = append(h->step, H5T_NATIVE_INT64, h->frames, 0, NULL, &st);
     if (r >= 0)
         r = append(h->time, H5T_NATIVE_DOUBLE, h->frames, 0, NULL, &t);
+    hsize_t nd[2] = {(hsize_t)D, (hsize_t)D};
+    if (r >= 0)
+        r = append(h->edges, H5T_NATIVE_DOUBLE, h->frames, 2, nd, h->box);
     for (int e = 0; r >= 0 && e < E_N; e++) {
         hsize_t frame[2] = {(hsize_t)h->n, (hsize_t)D};
         if (e == E_IMAGE)

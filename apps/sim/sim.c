@@ -335,7 +335,10 @@ int main(int argc, char **argv)
             break;
         }
     }
-    app_progress_done(&bar);
+    if (interrupted || rc) /* the bar stays where the run stopped */
+        app_progress_stop(&bar);
+    else
+        app_progress_done(&bar);
     double wall = now() - wall0;
     if (interrupted && !rc)
         fprintf(stderr, "%s: interrupted at t = %.17g: writing the restart state\n", prog,

@@ -188,8 +188,10 @@ static void write_frame(sim_output *o, const rc_sim *sim)
         rc_sim_get_ball(sim, i, &b);
         rc_vec3 v = rc_velocity(b.m, b.p, k2);
         const double g = rc_gamma(b.m, b.p, k2);
+        /* species X: ASE's (and OVITO's) placeholder for a particle that is no element
+         * (atomic number 0), where B read as boron; %.17g reads back to the same double */
         fprintf(o->xyz.f,
-                "B %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g %.10g\n",
+                "X %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n",
                 b.x.x, b.x.y, b.x.z, v.x, v.y, v.z, b.p.x, b.p.y, b.p.z, g * b.m, b.m, b.r, g);
         /* figure data: ball, x, y, radius, contracted semi-axis along v, angle of v */
         if (in_gif) {

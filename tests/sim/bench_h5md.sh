@@ -3,7 +3,7 @@
 # gas run of N balls (3-D, packing 0.2, rms speed 0.5 c, c = 1; default 1e5 balls of
 # radius 1 to t = 5) without frames and with a frame every 0.1, each 3 times alternating,
 # the fastest of each kept. Prints both runs' wall and CPU (user + sys) seconds and the
-# ratios (the goal: <= 1.1), the file's size and the cost of one frame. Both runs write
+# ratios (the goal, issue 38: <= 1.2), the file's size and the cost of one frame. Both runs write
 # final.json and final.ckpt, so the difference is the frames alone.
 sim=${1:?usage: bench_h5md.sh relcol-sim [N] [T_END] [RADIUS]}
 n=${2:-100000}; t_end=${3:-5}; radius=${4:-1}
@@ -36,5 +36,5 @@ awk -v n="$n" -v t="$t_end" -v r="$radius" -v w0="$best_w0" -v w1="$best_w1" -v 
     printf "h5md: %d balls, t = 0..%g, radius %g: %d frames, trajectory.h5 %.1f MB\n", n, t, r, f, b / 1e6
     printf "without frames: wall %.2f s, cpu %.2f s\n", w0, c0
     printf "with frames:    wall %.2f s, cpu %.2f s\n", w1, c1
-    printf "ratio: wall %.3f, cpu %.3f (goal <= 1.1); one frame: wall %.1f ms, cpu %.1f ms\n",
+    printf "ratio: wall %.3f, cpu %.3f (goal <= 1.2); one frame: wall %.1f ms, cpu %.1f ms\n",
         w1 / w0, c1 / c0, 1e3 * (w1 - w0) / f, 1e3 * (c1 - c0) / f }'

@@ -78,10 +78,27 @@ def check_h5md(name, out, sc, n):
     want = [b"periodic" if b == "periodic" else b"none" for b in bnd]
     check(int(box.attrs["dimension"]) == dim, f"{name}: box dimension {dim}")
     check([bytes(b) for b in box.attrs["boundary"]] == want, f"{name}: box boundary {want}")
-    check(box["edges"].shape == (dim,) and np.all(box["edges"][:] > 0), f"{name}: box edges")
     # time-dependent elements: step (integer), time (float), value [frames][N](D),
     # extensible along time and chunked
     frames = int(math.floor((t1 - t0) / dt + 1e-9)) + 1
+    # the box's edges: a time series (the form MDAnalysis reads), the same box every frame
+    ev = box["edges/value"][:]
+    L = np.diag(ev[0]) if ev.ndim == 3 else np.zeros(1)
+    check(ev.shape == (frames, dim, dim) and np.all(ev == ev[0]) and np.all(L > 0) and
+          np.array_equal(ev[0], np.diag(L)) and
+          box["edges/step"] == f["particles/all/position/step"] and
+          box["edges/time"] == f["particles/all/position/time"],
+          f"{name}: box edges value[{frames}][{dim}][{dim}], constant, diagonal, position's"
+          " step and time")
+    # units (H5MD's units module strings) on every dimensionful dataset; none on image
+    units = {"position/value": "nm", "velocity/value": "nm ps-1", "mass/value": "u",
+             "rest_mass/value": "u", "momentum/value": "u nm ps-1", "proper_time/value": "ps",
+             "position/time": "ps", "box/edges/value": "nm", "radius": "nm"}
+    got = {k: f["particles/all"][k].attrs.get("unit") for k in units}
+    check(all(got[k] == units[k] for k in units) and
+          ("image" not in f["particles/all"] or
+           "unit" not in f["particles/all/image/value"].attrs),
+          f"{name}: unit attributes {got}")
     shapes = {"position": (n, dim), "velocity": (n, dim), "mass": (n,), "rest_mass": (n,),
               "momentum": (n, dim), "proper_time": (n,)}
     if "periodic" in bnd:
@@ -135,15 +152,23 @@ def check_ase(name, out, snaps, dim):
             check(False, f"{name}: ASE: a frame at t = {ts}")
             continue
         a = frames[times.index(ts)]
-        # the XYZ holds 10 significant digits: relative 1e-9 of each quantity's scale
-        def near(x, y):
-            return np.allclose(x, y, rtol=1e-9, atol=1e-9 * np.max(np.abs(y)))
         v, p, x = vec(cols, "v", dim), vec(cols, "p", dim), vec(cols, "", dim)
-        ok = (near(a.get_positions()[:, :dim], x) and near(a.get_velocities()[:, :dim], v) and
-              near(a.get_momenta()[:, :dim], p) and near(a.get_masses(), cols["m"] * cols["gamma"]) and
-              near(a.arrays["rest_mass"], cols["m"]))
-        check(ok and np.abs(v).max() > 0, f"{name}: ASE at t = {ts}: positions, get_velocities(),"
-              " get_momenta(), get_masses() (= gamma m) and rest_mass are relcol's")
+        # species X: ASE's dummy (atomic number 0), not an element such as boron
+        check(set(a.get_chemical_symbols()) == {"X"} and not a.get_atomic_numbers().any(),
+              f"{name}: ASE at t = {ts}: species X (atomic number 0), no element")
+        # %.17g round-trips: the columns ASE stores are the snapshot's doubles to the bit
+        same = (np.array_equal(a.get_positions()[:, :dim], x) and
+                np.array_equal(a.arrays["velo"][:, :dim], v) and
+                np.array_equal(a.get_momenta()[:, :dim], p) and
+                np.array_equal(a.get_masses(), cols["m"] * cols["gamma"]) and
+                np.array_equal(a.arrays["rest_mass"], cols["m"]) and
+                np.array_equal(a.arrays["radius"], cols["r"]))
+        check(same and np.abs(v).max() > 0, f"{name}: ASE at t = {ts}: positions, velo, "
+              "get_momenta(), get_masses() (= gamma m), rest_mass, radius equal the snapshot's"
+              " to the bit")
+        # get_velocities() is ASE's p / M: v to round-off (a division of two doubles)
+        check(np.allclose(a.get_velocities()[:, :dim], v, rtol=4e-16, atol=4e-16),
+              f"{name}: ASE at t = {ts}: get_velocities() = v to round-off")
 
 
 def check_csv_readers(name, out, n, dim):
