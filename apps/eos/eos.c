@@ -321,6 +321,7 @@ static int eos_sensitivity(options *o)
     if (rc == 0)
         app_validity_warn(stderr, prog);
     return rc;
+}
 
 /* the bar over all points: point `at` of `of`, a fraction done of it */
 typedef struct eos_bar {
