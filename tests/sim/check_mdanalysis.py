@@ -8,6 +8,7 @@ doubles rounded to float32 and scaled by 10 (nm -> Angstrom) in float32, as its 
 Exit 0 all passed, 1 a check failed, 77 MDAnalysis or h5py is not installed (skipped)."""
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -82,7 +83,8 @@ for ts in traj:
     moved |= k > 0 and not np.array_equal(x, a["position/value"][0])
 check(moved, "the balls moved (the frames differ)")
 f.close()
-left = [x for x in os.listdir(os.path.join(tmp, "out")) if "relcol-" in x]
+# (.NAME.relcol-PID.XXXXXX; .relcol-run and its folder are the published run)
+left = [x for x in os.listdir(os.path.join(tmp, "out")) if re.search(r"\.relcol-[0-9]", x)]
 check(not left, f"no temporary files left ({left})")
 shutil.rmtree(tmp)
 print(f"{failures} failed" if failures else "all passed")
