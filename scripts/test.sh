@@ -8,4 +8,6 @@ cd "$(dirname "$0")/.."
 relcol_install_packages
 dir="${RELCOL_BUILD:-build}"
 relcol_build "$dir" "$@"
-meson test -C "$dir" --print-errorlogs --num-processes "$(nproc)"
+# RELCOL_TIMEOUT_MULTIPLIER stretches every test's time limit (a loaded or emulated machine)
+meson test -C "$dir" --print-errorlogs --num-processes "$(nproc)" \
+    --timeout-multiplier "${RELCOL_TIMEOUT_MULTIPLIER:-1}"
