@@ -21,7 +21,16 @@ typedef struct eng_event_x {
 /// A model of where balls change velocity: its properties and its ops (each may be NULL: nothing to do there).
 typedef struct eng_model_ops {
     const char *name; ///< for messages and tests
-    int per_ball;     ///< balls change velocity at their own events: the balls alone do not carry the run (rc_sim_sync re-plans nothing), slices follow kinks, contacts are checked against hyperplanes
+    int per_ball;     ///< balls change velocity at their own events: the balls alone do not carry the run (rc_sim_sync re-plans nothing, rc_sim_set_c makes the kinks ahead now)
+    /// The narrow phase of a pair whose bounding spheres can touch before best (dx: separation at tref; parting: they overlap and part): the contact's table time (>= now; its event in s->sc_tx, sc_dx; *n its normal) or INFINITY. NULL: the contact frame's own test.
+    double (*pair_time)(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
+                        double tref, double best, int parting, rc_vec3 *n);
+    /// Ball k is a candidate of the narrow phase: the records pair_time reads asked for ahead.
+    void (*candidate)(const rc_sim *s, int32_t k);
+    /// Ball i's event with a ball is stored: the model keeps its contact event (s->bx_tx, bx_dx).
+    void (*event_keep)(rc_sim *s, int32_t i);
+    /// A crossing's scan starts from ball i's stored event: its contact event back into s->bx_tx, bx_dx.
+    void (*event_recall)(rc_sim *s, int32_t i);
     /// A ball event (i, partner bp: a ball or a wall code) is about to be resolved.
     void (*event_begin)(rc_sim *s, int32_t i, int32_t bp);
     /// The event is resolved (RC_OK).
@@ -49,6 +58,10 @@ typedef struct eng_model_ops {
     void (*group_member)(rc_sim *s, int32_t b, const rc_particle *in, const rc_particle *out);
     /// Reading ball i at t >= now where it is not on its stored line: 1 (o, *img set), 2 the line was not recorded; 0 on its stored line.
     int (*ball_at)(const rc_sim *s, size_t i, double t, rc_sim_ball *o, const int32_t **img);
+    /// Slices: the kink time that began ball k's stored segment (NULL: -INFINITY, no kinks).
+    double (*segment_start)(const rc_sim *s, int32_t k);
+    /// Slices reach back: the largest Lorentz factor of a segment a later event can start from (a slice is taken at its request and kept by the model's hooks). NULL: taken as the engine passes ts.
+    double (*slice_gamma)(const rc_sim *s);
 } eng_model_ops;
 
 /// One-instant frames: every op NULL.

@@ -9,7 +9,6 @@
 #include <stdlib.h>
 
 #include "approach.h"
-#include "glue_pair.h"
 #include "lanes.h"
 #include "pairs.h"
 #include "shapes.h"
@@ -20,35 +19,6 @@
 
 /* ---- event prediction ------------------------------------------------------------ */
 
-
-/* per_ball frames: do the pieces a tube contact met approach at ta, though the stored
- * (outgoing) lines part there? A ball whose incoming side the contact event X lies on is
- * met by its incoming piece, which moves with its incoming velocity, its centre on its
- * incoming line. Judged with the stored lines alone such a pair was left to separate while
- * the incoming piece went on into the neighbour: an overlap nothing counted (found by the
- * covariant audit, papers/shape-change.md section 8). Now it is an event: an undo of
- * that ball's collision takes it, else the policy, counted. dx, dv: the stored separation
- * at pref and relative velocity; tref, t, y: the contact as glue_contact returned it. */
-static int pieces_approach(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
-                           double pref, rc_vec3 dv, double tref, double t, rc_vec3 y, double ta)
-{
-    const size_t i = (size_t)(bi - s->b), k = (size_t)(bk - s->b);
-    const rc_glue *gi = &s->pb->glu[i], *gk = &s->pb->glu[k];
-    const int sides = glue_sides(s, bi, bk, rc_v3_axpy(dx, tref - pref, dv), tref, t, y);
-    const int in_i = gi->r > 0.0 && !(sides & 1), in_k = gk->r > 0.0 && !(sides & 2);
-    if (!in_i && !in_k)
-        return 0;
-    rc_vec3 sep = rc_v3_axpy(dx, ta - pref, dv), vi = bi->v, vk = bk->v;
-    if (in_i) { /* (the incoming centre minus the outgoing one at ta) */
-        vi = gi->v_in;
-        sep = rc_v3_axpy(sep, -(ta - gi->t_c), rc_v3_sub(vi, bi->v));
-    }
-    if (in_k) {
-        vk = gk->v_in;
-        sep = rc_v3_axpy(sep, ta - gk->t_c, rc_v3_sub(vk, bk->v));
-    }
-    return rc_v3_dot(sep, rc_v3_sub(vk, vi)) < 0.0;
-}
 
 /* Bounding-sphere (and, if plugged in, contracted) contact time of balls i and k, as an
  * absolute time >= now, INFINITY if none before `best`. It depends only on the two stored
@@ -94,62 +64,9 @@ __attribute__((always_inline)) static inline double pair_time_dx(
             return INFINITY;
         parting = 1;
     }
-    if (use_narrow && s->model->per_ball) {
-        /* per_ball frames: the contact event, checked against both balls' hyperplanes */
-        rc_toi_contact out;
-        int valid = 0;
-        const double pref = tref; /* (dx is at pref; glue_contact may move tref) */
-        const int st = glue_contact(s, bi, bk, dx, &tref, &out, &valid);
-        if (st == RC_OK && !valid) {
-            /* a contact with the incoming piece of a glued tube: not one the model's
-             * schedule can order; an undo or the overlap policy at its time (counted), if
-             * the centres approach there, or the pieces met do and X is still ahead
-             * (pieces_approach; else, as for an overlap, left to separate: the policy's
-             * centre-line law would find nothing to resolve). The approach is
-             * judged when the event comes, max(t_X, now), where the policy will resolve
-             * it: judged at an X before now, a pair parting by then made an event that
-             * changed nothing and came up again at the same instant (RC_ESTALL) */
-            const rc_vec3 dv = rc_v3_sub(bk->v, bi->v);
-            ta = tref + out.t;
-            ta = ta < s->now ? s->now : ta;
-            if (!(rc_v3_dot(rc_v3_axpy(dx, ta - pref, dv), dv) < 0.0) &&
-                !(tref + out.t > s->now &&
-                  pieces_approach(s, bi, bk, dx, pref, dv, tref, out.t, out.x, ta)))
-                return INFINITY;
-            if (!(ta < best))
-                return INFINITY;
-            *n = rc_v3(NAN, 1.0, 0.0);
-            rc_sim *w = (rc_sim *)s; /* (its X: the collision decides whose tube it is) */
-            w->sc_tx = tref + out.t;
-            w->sc_dx = rc_v3_axpy(out.x, -out.t, bi->v);
-            return ta;
-        }
-        if (st == RC_EOVERLAP && glue_back(s, bi, bk, dx, pref, &out) == RC_OK) {
-            tref = pref; /* (out is relative to dx's time) */
-        } else if (st == RC_EOVERLAP) {
-            if (parting)
-                return INFINITY;
-            *n = rc_v3(NAN, NAN, NAN);
-            return s->now;
-        } else if (st != RC_OK)
-            return INFINITY;
-        /* The frame decides approach in the pair's ZMF from the stored lines, one of
-         * which may be an outgoing line taken back before its kink; the law decides it
-         * from the balls' velocities along the normal (a0 = mu (v_i - v_k).n). Where the
-         * two disagree the law would find nothing to resolve, the balls would keep their
-         * lines, and the same contact would come up again at the same instant for ever
-         * (RC_ESTALL): such a pair is parting as the law sees it, and gets no event. */
-        if (!(rc_v3_dot(rc_v3_sub(bi->v, bk->v), out.n) > 0.0))
-            return INFINITY;
-        *n = out.n;
-        ta = tref + out.t;
-        if (ta < s->now)
-            ta = s->now;
-        if (!(ta < best))
-            return INFINITY;
-        rc_sim *w = (rc_sim *)s; /* (scratch: the event's X, kept if it becomes the best) */
-        w->sc_tx = tref + out.t;
-        w->sc_dx = rc_v3_axpy(out.x, -out.t, bi->v);
+    if (use_narrow && s->model->pair_time) {
+        /* the model's narrow phase (per-ball frames: checked against both hyperplanes) */
+        return s->model->pair_time(s, bi, bk, dx, tref, best, parting, n);
     } else if (use_narrow) {
         /* narrow phase: the contracted shapes inside the bounding spheres. The frames'
          * root finds are not symmetric in their two shapes (about half of all pairs get
@@ -363,6 +280,7 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
     /* what a candidate must beat to matter: the best event, or with one deferred the bound
      * of the others (a candidate below it can lower that bound) */
     const double cut0 = df && df->on ? df->lb2 : *best;
+    void (*const candidate)(const rc_sim *, int32_t) = s->model->candidate;
     while (!w->done) {
         /* gather a chunk of neighbours ... */
         const size_t m = walk_gather(w, nb);
@@ -418,11 +336,8 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
             s->cand[nc].k = kk;
             nc++;
             __builtin_prefetch(&s->a[kk]); /* (the frame will want its momentum and mass) */
-            if (s->model->per_ball) { /* (and glue_valid its hyperplane, window_contact its window) */
-                __builtin_prefetch(&s->pb->cov[kk]);
-                __builtin_prefetch(&s->pb->glu[kk].r);
-                __builtin_prefetch(&s->pb->glu[kk].t_last);
-            }
+            if (candidate) /* (and the model's narrow phase its records) */
+                candidate(s, kk);
         }
     }
     for (size_t a = 1; a < nc; a++) { /* insertion sort by (t, k): lists are short */
@@ -537,12 +452,8 @@ static inline void store_event(rc_sim *s, int32_t i, double best, int32_t bp, rc
         s->ev_n[i] = df && df->on && bp >= 0 ? ev_deferred_mark(df->lb2)
                      : ev_is_deferred(bn)    ? rc_v3(0.0, 0.0, 0.0)
                                              : bn;
-    if (s->pb && bp >= 0 && (!isnan(bn.x) || bn.y == 1.0)) { /* (per_ball frames: the
-                                                                event's X, a tube
-                                                                conflict's too) */
-        s->pb->cov[i].ev_tx = s->bx_tx;
-        s->pb->cov[i].ev_dx = s->bx_dx;
-    }
+    if (s->model->event_keep && bp >= 0 && (!isnan(bn.x) || bn.y == 1.0))
+        s->model->event_keep(s, i); /* (the event's X, a tube conflict's too) */
 }
 
 /* Walls (dims) for a deferred event too: a wall before its bound is the event, one
@@ -742,10 +653,8 @@ void eng_cross(rc_sim *s, int32_t i)
     double best = a->ev_t;
     int32_t bp = a->ev_partner;
     rc_vec3 bn = s->ev_n ? s->ev_n[i] : rc_v3(0, 0, 0);
-    if (s->pb) { /* (the kept event's X, unless a scan finds a better one) */
-        s->bx_tx = s->pb->cov[i].ev_tx;
-        s->bx_dx = s->pb->cov[i].ev_dx;
-    }
+    if (s->model->event_recall) /* (the kept event's X, unless a scan finds a better one) */
+        s->model->event_recall(s, i);
     eng_defer df = {s->defer && bp >= 0 && ev_is_deferred(bn), bn.x};
     int lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
     lo[d] = hi[d] = dir;
@@ -769,36 +678,4 @@ int eng_narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_ve
                            double d2, const eng_check *chk, rc_vec3 *normal)
 {
     return narrow_conflict(s, bi, bk, dx, d2, chk, normal);
-}
-
-/* per_ball frames: the frame's contact of balls a and b from their stored lines taken to
- * time t0 (not clamped to now, so a contact already behind the schedule is found): RC_OK
- * with the event (*tx; *dx = X - a's centre at *tx on its stored line) and the normal *n
- * from a to b, when X lies on the future side of both balls' hyperplanes and the law sees
- * the pair approach along n; ENG_BEFORE_A when X lies on the incoming side of a's;
- * RC_MISS when it is not a contact of the model otherwise; the frame's code else. */
-int eng_pair_contact(rc_sim *s, int32_t a, int32_t b, double t0, double *tx, rc_vec3 *dx,
-                     rc_vec3 *n)
-{
-    const eng_ball *ba = &s->b[a], *bb = &s->b[b];
-    const rc_vec3 d = eng_image(s, rc_v3_sub(rc_v3_axpy(bb->x, t0 - bb->t, bb->v),
-                                             rc_v3_axpy(ba->x, t0 - ba->t, ba->v)));
-    rc_toi_contact out;
-    int st = frame_call(s, ba, bb, d, &out);
-    if (st == RC_EOVERLAP) /* (the straight cylinders met ZMF-before t0: glue_back) */
-        st = glue_back(s, ba, bb, d, t0, &out) == RC_OK ? RC_OK : RC_MISS;
-    if (st != RC_OK)
-        return st;
-    if (!glue_valid(s, ba, bb, d, t0, out.t, out.x)) {
-        /* (X on the incoming side of a's hyperplane: before a's last kink too) */
-        const int before_a = !eng_glue_side(&s->pb->cov[a], &s->pb->glu[a], ba->v, t0 + out.t,
-                                            rc_v3_axpy(out.x, -out.t, ba->v));
-        return before_a ? ENG_BEFORE_A : RC_MISS;
-    }
-    if (!(rc_v3_dot(rc_v3_sub(ba->v, bb->v), out.n) > 0.0))
-        return RC_MISS;
-    *tx = t0 + out.t;
-    *dx = rc_v3_axpy(out.x, -out.t, ba->v);
-    *n = out.n;
-    return RC_OK;
 }

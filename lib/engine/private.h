@@ -427,12 +427,6 @@ int eng_predict_checked(rc_sim *s, int32_t i, const eng_check *chk, double T);
 int eng_predict_checked_narrow(rc_sim *s, int32_t i, const eng_check *chk);
 /// Ball i crosses into its next cell (events updated, queue too).
 void eng_cross(rc_sim *s, int32_t i);
-/* per_ball frames: the frame's contact of a and b from their stored lines at t0, if one
- * of the model (engine/predict.c); ENG_BEFORE_A (not an RC_ code) when the frame's
- * contact lies on the incoming side of a's last hyperplane. */
-#define ENG_BEFORE_A 100 /* (above every informational rc_status) */
-int eng_pair_contact(rc_sim *s, int32_t a, int32_t b, double t0, double *tx, rc_vec3 *dx,
-                     rc_vec3 *n);
 /// The contracted contact test of a simultaneity check (engine/predict.c).
 int eng_narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
                            double d2, const eng_check *chk, rc_vec3 *normal);

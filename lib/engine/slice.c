@@ -37,11 +37,6 @@ static double seg_gamma(const rc_sim *s, int32_t k)
     return eng_mass_rel(a->m, a->p, s->inv_c2) / a->m;
 }
 
-static double gamma_of(const rc_sim *s, double m, rc_vec3 p)
-{
-    return eng_mass_rel(m, p, s->inv_c2) / m;
-}
-
 /* On a periodic axis a slice may lie further from the stored time than one wrap: x in
  * [0, L) with the wraps counted (eng_ball_at wraps once, as a read at now needs). */
 static void wrap_all(const rc_sim *s, rc_sim_ball *o)
@@ -86,7 +81,7 @@ static int take(const rc_sim *s, const struct eng_slice *sl, int32_t k, int trut
     slice_ball *e = &sl->e[s->id[k]];
     const int ahead = eng_ball_at(s, (size_t)k, sl->ts, &e->b, truth);
     wrap_all(s, &e->b);
-    e->tk = ahead ? NAN : s->pb ? s->pb->cov[k].t_k : -INFINITY;
+    e->tk = ahead ? NAN : s->model->segment_start ? s->model->segment_start(s, k) : -INFINITY;
     return ahead;
 }
 
@@ -96,24 +91,6 @@ static struct eng_slice *find(const rc_sim *s, uint32_t id)
         if (s->slc[q].id == id)
             return &s->slc[q];
     return NULL;
-}
-
-/* The largest Lorentz factor of the segments later events can start from: every ball's
- * stored one, the lines before its kinks ahead and the incoming lines an undo restores. */
-static double gamma_now(const rc_sim *s)
-{
-    double g = 1.0;
-    for (size_t k = 0; k < s->n; k++) {
-        g = fmax(g, seg_gamma(s, (int32_t)k));
-        const eng_pend *r = &s->pb->pend[k];
-        for (int q = 0; q < r->depth; q++)
-            g = fmax(g, gamma_of(s, r->l[q].m, r->l[q].p));
-        if (s->pb->und[k].partner != ENG_NONE)
-            g = fmax(g, gamma_of(s, s->pb->und[k].in.m, s->pb->und[k].in.p));
-        if (s->pb->undp[k].partner != ENG_NONE) /* (a chain undo's, engine/perball/undo.c) */
-            g = fmax(g, gamma_of(s, s->pb->undp[k].in.m, s->pb->undp[k].in.p));
-    }
-    return g;
 }
 
 static void drop(rc_sim *s, size_t q)
@@ -143,7 +120,7 @@ int rc_sim_slice_request(rc_sim *s, double ts, uint32_t *id)
         s->slc = p;
         s->slc_cap = cap;
     }
-    if (s->model->per_ball && !s->slc_mark) {
+    if (s->model->slice_gamma && !s->slc_mark) {
         s->slc_dirty = malloc(s->n * sizeof *s->slc_dirty);
         s->slc_mark = calloc(s->n, 1);
         s->slc_nd = 0;
@@ -161,7 +138,7 @@ int rc_sim_slice_request(rc_sim *s, double ts, uint32_t *id)
         return RC_ENOMEM;
     for (size_t k = 0; k < s->n; k++)
         sl.rmax = fmax(sl.rmax, s->b[k].r);
-    if (s->model->per_ball) {
+    if (s->model->slice_gamma) {
         /* every ball's line at ts now; the hooks keep it (a ball with three kinks ahead of
          * ts has no recorded line there) */
         for (size_t k = 0; k < s->n; k++)
@@ -170,13 +147,13 @@ int rc_sim_slice_request(rc_sim *s, double ts, uint32_t *id)
                 return RC_EINVAL;
             }
         sl.taken = 1;
-        const double g = gamma_now(s);
+        const double g = s->model->slice_gamma(s);
         s->slc_gmax = s->slc_n == 0 ? g : fmax(s->slc_gmax, g);
     }
     s->slc[s->slc_n++] = sl;
     s->slc_next_id++;
     *id = sl.id;
-    if (!s->model->per_ball)
+    if (!s->model->slice_gamma)
         set_due(s);
     return RC_OK;
 }
@@ -189,7 +166,7 @@ int rc_sim_slice_ready(const rc_sim *s, uint32_t id, rc_sim_slice_info *info)
     if (!sl)
         return RC_ENOSLICE;
     double t_final = sl->ts;
-    if (s->model->per_ball) {
+    if (s->model->slice_gamma) {
         const double g = s->slc_gmax;
         t_final = sl->ts + 2.0 * sl->rmax * s->inv_c * (1.0 + 3.0 * sqrt((g - 1.0) * (g + 1.0)));
     }
@@ -297,7 +274,7 @@ void eng_slice_flush(rc_sim *s)
         const int32_t k = (int32_t)s->slot[i];
         s->slc_mark[i] = 0;
         s->slc_gmax = fmax(s->slc_gmax, seg_gamma(s, k));
-        const double tk = s->pb->cov[k].t_k;
+        const double tk = s->model->segment_start(s, k);
         const eng_aux *a = &s->a[k];
         for (size_t q = 0; q < s->slc_n; q++) {
             struct eng_slice *sl = &s->slc[q];

@@ -1,5 +1,5 @@
 /* test_engine_glue_probe — two shortcuts the engine takes before the first contact of two
- * glued tubes (engine/glue_pair.h, papers/covariant-cost.md section 3), white-box:
+ * glued tubes (engine/perball/glue_pair.h, papers/covariant-cost.md section 3), white-box:
  *  - tubes_overlap_probe: a point inside both tubes shrunk by 1e-6 of their radii is an
  *    overlap, so where the probe says so rc_glue_toi2 must answer RC_EOVERLAP; and on
  *    these configurations it must find a fair share of those overlaps, or it saves nothing;
@@ -13,7 +13,7 @@
 
 /* (the header's other helpers serve engine/predict.c, not this test) */
 #pragma GCC diagnostic ignored "-Wunused-function"
-#include "../../lib/engine/glue_pair.h"
+#include "../../lib/engine/perball/glue_pair.h"
 #include "rc_test.h"
 #include "relcol/relcol.h"
 

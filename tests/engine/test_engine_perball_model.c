@@ -40,12 +40,14 @@ static const rc_toi_frame frame_tubes = {
 enum {
     OP_EVENT_BEGIN, OP_EVENT_END, OP_CONTACT_EVENT, OP_GROUP_OF_MODEL, OP_BEFORE_RESOLVE,
     OP_UNDO_MEMBER, OP_RESOLVE_MEMBER, OP_MEMBER_BEFORE, OP_TAKE_BACK, OP_AFTER_RESOLVE,
-    OP_GROUP_MEMBER, OP_BALL_AT, OP_N
+    OP_GROUP_MEMBER, OP_BALL_AT, OP_PAIR_TIME, OP_CANDIDATE, OP_EVENT_KEEP, OP_EVENT_RECALL,
+    OP_SEGMENT_START, OP_SLICE_GAMMA, OP_N
 };
 static const char *const op_name[OP_N] = {
     "event_begin", "event_end", "contact_event", "group_of_model", "before_resolve",
     "undo_member", "resolve_member", "member_before", "take_back", "after_resolve",
-    "group_member", "ball_at"};
+    "group_member", "ball_at", "pair_time", "candidate", "event_keep", "event_recall",
+    "segment_start", "slice_gamma"};
 static long op_calls[OP_N];
 
 static void t_event_begin(rc_sim *s, int32_t i, int32_t bp)
@@ -112,9 +114,45 @@ static int t_ball_at(const rc_sim *s, size_t i, double t, rc_sim_ball *o, const 
     return eng_model_glued.ball_at(s, i, t, o, img);
 }
 
+static double t_pair_time(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
+                          double tref, double best, int parting, rc_vec3 *n)
+{
+    op_calls[OP_PAIR_TIME]++;
+    return eng_model_glued.pair_time(s, bi, bk, dx, tref, best, parting, n);
+}
+static void t_candidate(const rc_sim *s, int32_t k)
+{
+    op_calls[OP_CANDIDATE]++;
+    eng_model_glued.candidate(s, k);
+}
+static void t_event_keep(rc_sim *s, int32_t i)
+{
+    op_calls[OP_EVENT_KEEP]++;
+    eng_model_glued.event_keep(s, i);
+}
+static void t_event_recall(rc_sim *s, int32_t i)
+{
+    op_calls[OP_EVENT_RECALL]++;
+    eng_model_glued.event_recall(s, i);
+}
+static double t_segment_start(const rc_sim *s, int32_t k)
+{
+    op_calls[OP_SEGMENT_START]++;
+    return eng_model_glued.segment_start(s, k);
+}
+static double t_slice_gamma(const rc_sim *s)
+{
+    op_calls[OP_SLICE_GAMMA]++;
+    return eng_model_glued.slice_gamma(s);
+}
+
 static const eng_model_ops model_counted = {
     .name = "test-counted-tubes",
     .per_ball = 1,
+    .pair_time = t_pair_time,
+    .candidate = t_candidate,
+    .event_keep = t_event_keep,
+    .event_recall = t_event_recall,
     .event_begin = t_event_begin,
     .event_end = t_event_end,
     .contact_event = t_contact_event,
@@ -127,6 +165,8 @@ static const eng_model_ops model_counted = {
     .after_resolve = t_after_resolve,
     .group_member = t_group_member,
     .ball_at = t_ball_at,
+    .segment_start = t_segment_start,
+    .slice_gamma = t_slice_gamma,
 };
 
 /* ---- runs -------------------------------------------------------------------------- */
@@ -135,7 +175,8 @@ static const eng_model_ops model_counted = {
  * installed by hand); its hash, every ball read at the end (kinks ahead read through the
  * model), diagnostics. */
 static uint64_t run(const rc_toi_frame *frame, const eng_model_ops *model, int dim, int periodic,
-                    double eps, double packing, double v_rms, double t_end, rc_sim_diag *out)
+                    double eps, double packing, double v_rms, double t_end, rc_sim_diag *out,
+                    uint64_t *slice_hash)
 {
     rc_sim_def d = periodic ? util_covariant_periodic(dim) : rc_sim_def_default();
     d.dim = dim;
@@ -148,6 +189,9 @@ static uint64_t run(const rc_toi_frame *frame, const eng_model_ops *model, int d
     ENSURE(s->model == &eng_model_glued); /* (chosen from the frame's per_ball) */
     if (model)
         s->model = model;
+    /* a delayed slice at t_end / 4, kept by the model's hooks, read at the end */
+    uint32_t id;
+    ENSURE(rc_sim_slice_request(s, 0.25 * t_end, &id) == RC_OK);
     const int st = rc_sim_advance(s, t_end, 0);
     ENSURE_MSG(st == RC_OK, "advance: %s", rc_strerror(st));
     double sum = 0.0;
@@ -159,6 +203,21 @@ static uint64_t run(const rc_toi_frame *frame, const eng_model_ops *model, int d
     ENSURE(isfinite(sum));
     rc_sim_diagnostics(s, out);
     const uint64_t h = rc_sim_hash(s);
+    /* then on to the slice's final time (which a faster segment moves on) */
+    rc_sim_slice_info in;
+    for (int k = 0; k < 20 && rc_sim_slice_ready(s, id, &in) == 0; k++)
+        ENSURE(rc_sim_advance(s, in.t_final, 0) == RC_OK);
+    ENSURE(rc_sim_slice_ready(s, id, NULL) == 1);
+    *slice_hash = 1469598103934665603ull; /* (FNV-1a over every ball's slice state) */
+    for (size_t i = 0; i < rc_sim_count(s); i++) {
+        rc_sim_ball b;
+        const int sg = rc_sim_slice_get(s, id, i, &b);
+        ENSURE_MSG(sg == RC_OK, "slice_get %zu: %s", i, rc_strerror(sg));
+        const double v[5] = {b.x.x, b.x.y, b.x.z, b.p.x, b.tau};
+        const unsigned char *c = (const unsigned char *)v;
+        for (size_t q = 0; q < sizeof v; q++)
+            *slice_hash = (*slice_hash ^ c[q]) * 1099511628211ull;
+    }
     rc_sim_free(&s);
     return h;
 }
@@ -175,10 +234,12 @@ static void test_through_ops(void)
         memset(op_calls, 0, sizeof op_calls);
         toi_calls = 0;
         rc_sim_diag dt, dc;
+        uint64_t st_, sc_;
         const uint64_t ht = run(&frame_tubes, &model_counted, dim, periodic, eps, packing,
-                                v_rms, t_end, &dt);
+                                v_rms, t_end, &dt, &st_);
         const uint64_t hc = run(&rc_toi_frame_covariant, NULL, dim, periodic, eps, packing,
-                                v_rms, t_end, &dc);
+                                v_rms, t_end, &dc, &sc_);
+        ENSURE_MSG(st_ == sc_, "%dD per %d eps %g: the slices differ", dim, periodic, eps);
         ENSURE_MSG(ht == hc, "%dD per %d eps %g: hash %016llx, covariant %016llx", dim,
                    periodic, eps, (unsigned long long)ht, (unsigned long long)hc);
         ENSURE(dt.collisions == dc.collisions && dt.overlaps == dc.overlaps &&
@@ -216,6 +277,8 @@ static void test_instant(void)
     ENSURE(eng_model_for(&frame_tubes, 1, 1.0) == &eng_model_glued);
     ENSURE(eng_model_for(NULL, 0, 1.0) == &eng_model_instant);
     const eng_model_ops *m = &eng_model_instant;
+    ENSURE(!m->pair_time && !m->candidate && !m->event_keep && !m->event_recall &&
+           !m->segment_start && !m->slice_gamma);
     ENSURE(!m->per_ball && !m->event_begin && !m->event_end && !m->contact_event &&
            !m->group_of_model && !m->before_resolve && !m->undo_member && !m->resolve_member &&
            !m->member_before && !m->take_back && !m->after_resolve && !m->group_member &&

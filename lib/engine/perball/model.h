@@ -101,6 +101,16 @@ void eng_pend_undo(eng_pend *r, double te);
 /// Ball i's state at t >= now where its latest kink lies after t: 1 (o and *img set), 2 the line was not recorded, 0 on its stored line.
 int eng_pend_read(const rc_sim *s, size_t i, double t, rc_sim_ball *o, const int32_t **img);
 
+/* ---- narrow.c: a pair's contact on the glued tubes -------------------------------- */
+
+/// The model's narrow phase (engine/model.h pair_time): bi and bk's contact from their separation dx at tref, checked against both hyperplanes; its table time (its event in s->sc_tx, sc_dx) or INFINITY.
+double eng_glued_pair_time(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
+                           double tref, double best, int parting, rc_vec3 *n);
+#define ENG_BEFORE_A 100 ///< eng_pair_contact: X on the incoming side of a's last hyperplane (above every informational rc_status)
+/// The frame's contact of a and b from their stored lines at t0 (not clamped to now): RC_OK with X (*tx, *dx from a's centre) and the normal *n; ENG_BEFORE_A; RC_MISS if not one of the model; or the frame's code.
+int eng_pair_contact(rc_sim *s, int32_t a, int32_t b, double t0, double *tx, rc_vec3 *dx,
+                     rc_vec3 *n);
+
 /* ---- solve.c, zmf_group.c: groups whose contacts have events of their own ----------- */
 
 #define ENG_EVGROUP_NMAX (2 * ENG_UNDO_NMAX) ///< members of such a group

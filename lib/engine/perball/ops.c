@@ -189,9 +189,58 @@ static void group_member(rc_sim *s, int32_t b, const rc_particle *in, const rc_p
     eng_glue_kink(s, b, in, out, s->b[b].t, rc_v3(0, 0, 0), 1);
 }
 
+/* (and glue_valid its hyperplane, window_contact its window) */
+static void candidate(const rc_sim *s, int32_t k)
+{
+    __builtin_prefetch(&s->pb->cov[k]);
+    __builtin_prefetch(&s->pb->glu[k].r);
+    __builtin_prefetch(&s->pb->glu[k].t_last);
+}
+
+static void event_keep(rc_sim *s, int32_t i)
+{
+    s->pb->cov[i].ev_tx = s->bx_tx;
+    s->pb->cov[i].ev_dx = s->bx_dx;
+}
+
+static void event_recall(rc_sim *s, int32_t i)
+{
+    s->bx_tx = s->pb->cov[i].ev_tx;
+    s->bx_dx = s->pb->cov[i].ev_dx;
+}
+
+static double segment_start(const rc_sim *s, int32_t k) { return s->pb->cov[k].t_k; }
+
+static double gamma_of(const rc_sim *s, double m, rc_vec3 p)
+{
+    return eng_mass_rel(m, p, s->inv_c2) / m;
+}
+
+/* Every ball's stored segment, the lines before its kinks ahead and the incoming lines an
+ * undo (or a chain undo's) restores. */
+static double slice_gamma(const rc_sim *s)
+{
+    double g = 1.0;
+    for (size_t k = 0; k < s->n; k++) {
+        g = fmax(g, gamma_of(s, s->a[k].m, s->a[k].p));
+        const eng_pend *r = &s->pb->pend[k];
+        for (int q = 0; q < r->depth; q++)
+            g = fmax(g, gamma_of(s, r->l[q].m, r->l[q].p));
+        if (s->pb->und[k].partner != ENG_NONE)
+            g = fmax(g, gamma_of(s, s->pb->und[k].in.m, s->pb->und[k].in.p));
+        if (s->pb->undp[k].partner != ENG_NONE)
+            g = fmax(g, gamma_of(s, s->pb->undp[k].in.m, s->pb->undp[k].in.p));
+    }
+    return g;
+}
+
 const eng_model_ops eng_model_glued = {
     .name = "glued tubes",
     .per_ball = 1,
+    .pair_time = eng_glued_pair_time,
+    .candidate = candidate,
+    .event_keep = event_keep,
+    .event_recall = event_recall,
     .event_begin = event_begin,
     .event_end = event_end,
     .contact_event = contact_event,
@@ -204,4 +253,6 @@ const eng_model_ops eng_model_glued = {
     .after_resolve = after_resolve,
     .group_member = group_member,
     .ball_at = eng_pend_read,
+    .segment_start = segment_start,
+    .slice_gamma = slice_gamma,
 };

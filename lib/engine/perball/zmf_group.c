@@ -8,7 +8,7 @@
 #include <math.h>
 
 #include "../group.h"
-#include "../pair_zmf.h"
+#include "pair_zmf.h"
 #include "../walk.h"
 #include "../../toi_private.h"
 #include "model.h"
@@ -86,7 +86,7 @@ static zmem member_ctx(const rc_sim *s, const zgroup *g, size_t mi, double T)
 /* Can the frame's contact event X of member z (ball m) and ball k (dx: k - m at T) be
  * simultaneous with the first one? try_join's condition |F| <= tol_f, with
  * F = (t - T) D - A - P.e / c^2 for X = m's centre at t + e, decided before the frame is
- * asked from what engine/pair_zmf.h proves of X. With equal ZMF Lorentz factors X is the
+ * asked from what engine/perball/pair_zmf.h proves of X. With equal ZMF Lorentz factors X is the
  * inner spheres' contact point, F follows; factors delta <= 1e-13 apart move it by at most
  * ~ R sqrt(2 delta) (glue_pair.h back_refused). Otherwise X's ZMF time T_X lies between the
  * outer and inner spheres' first contacts and (t - T) q = T_X + u.e / c^2

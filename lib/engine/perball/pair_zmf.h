@@ -1,6 +1,6 @@
-/* engine/pair_zmf.h — per_ball frames: two balls' straight cylinders (their stored lines)
- * seen from the pair's ZMF, to bound where the frame would put their contact event X
- * before it is asked (engine/glue_pair.h glue_back, engine/perball/zmf_group.c try_join). Asked
+/* engine/perball/pair_zmf.h — per_ball frames: two balls' straight cylinders (their
+ * stored lines) seen from the pair's ZMF, to bound where the frame would put their
+ * contact event X before it is asked (glue_pair.h glue_back, zmf_group.c try_join). Asked
  * from a reference where the cylinders are apart, the frame's X is the point of their
  * intersection S that comes first in the pair's ZMF. Stretched along the ZMF relative
  * velocity by ball i's Lorentz factor there, ball i is a sphere r_i and ball k lies
@@ -13,7 +13,7 @@
 
 #include <math.h>
 
-#include "private.h"
+#include "../private.h"
 
 /* Boosts within this Lorentz factor of the pair's ZMF (gamma_u^2 = 1 / (1 - the bound))
  * keep this arithmetic's rounding far below the margins its callers allow. */

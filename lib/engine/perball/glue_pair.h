@@ -1,10 +1,6 @@
-/* engine/glue_pair.h — per_ball frames: the contact of two balls on their glued world
- * tubes, as the prediction asks it (engine/predict.c only): the frame's contact of the
- * straight cylinders from the stored states and its side of both balls' hyperplanes, the
- * tube inside a glue window (rc_glue_toi), and the frame asked again from further back
- * where it reported an overlap (papers/shape-change.md sections 6-8); answers that
- * engine/pair_zmf.h proves are not asked. Static functions in a header so that the
- * prediction's hot path keeps them inline. */
+/* engine/perball/glue_pair.h — per_ball frames: two balls' contact on their glued world
+ * tubes, as the narrow phase asks it (perball/narrow.c; papers/shape-change.md sections
+ * 6-8). Static functions in a header so that the prediction's hot path keeps them inline. */
 #ifndef RELCOL_ENGINE_GLUE_PAIR_H
 #define RELCOL_ENGINE_GLUE_PAIR_H
 
@@ -12,8 +8,8 @@
 #include <string.h>
 
 #include "pair_zmf.h"
-#include "pairs.h"
-#include "private.h"
+#include "../pairs.h"
+#include "../private.h"
 #include "relcol/status.h"
 
 /* per_ball frames: on which side of each ball's last hyperplane a contact event X lies,
@@ -236,7 +232,7 @@ static int window_contact(const rc_sim *cs, const eng_ball *bi, const eng_ball *
  * later of the two centre events in the pair's ZMF; it reports RC_EOVERLAP where the
  * shapes overlap there (beyond its touch tolerance), else the first contact of the
  * straight cylinders after it, RC_MISS where their intersection S lies wholly before it.
- * By engine/pair_zmf.h (ZMF stretched by ball i's factor) the shapes overlap where the
+ * By engine/perball/pair_zmf.h (ZMF stretched by ball i's factor) the shapes overlap where the
  * inner spheres do, and S lies within the time the outer spheres overlap: the inner
  * spheres overlapping at the start, or the outer ones' exit before it or closest approach
  * apart, each by a margin (1e-6 of the radii or of the pair's time scale: far above this
@@ -342,7 +338,7 @@ static int incoming_first(const rc_sim *cs, const eng_ball *bg, const eng_ball *
 /* glue_back's answer known to be refused before the frame is asked (in a dense gas most
  * of its answers lie on an incoming side of a hyperplane). Why this never refuses an
  * answer glue_back would take: the frame's X, asked from where the cylinders are apart,
- * is bounded as engine/pair_zmf.h says, and glue_valid takes it only if it lies on the
+ * is bounded as engine/perball/pair_zmf.h says, and glue_valid takes it only if it lies on the
  * future side F of both balls' hyperplanes. (a) Along a cylinder's generators the ZMF
  * time T and the side function both grow, so T over C_i and F_i is least on the section
  * H_i cuts from C_i, whose points are E_i + (kappa.d / den, d) for d in the table shape:
