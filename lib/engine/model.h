@@ -10,6 +10,13 @@
 
 #include "private.h"
 
+/// Per-ball records of the model read for a narrow-phase candidate k, asked for ahead: row q at base[q] + k * stride[q].
+typedef struct eng_rows {
+    int n;               ///< rows in use (at most 3)
+    const char *base[3]; ///< each row's address for ball 0
+    size_t stride[3];    ///< and its bytes a ball
+} eng_rows;
+
 /// A ball event's contact event, as the model places it.
 typedef struct eng_event_x {
     double tx[2];  ///< each ball's contact event: table time ...
@@ -25,8 +32,8 @@ typedef struct eng_model_ops {
     /// The narrow phase of a pair whose bounding spheres can touch before best (dx: separation at tref; parting: they overlap and part): the contact's table time (>= now; its event in s->sc_tx, sc_dx; *n its normal) or INFINITY. NULL: the contact frame's own test.
     double (*pair_time)(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
                         double tref, double best, int parting, rc_vec3 *n);
-    /// Ball k is a candidate of the narrow phase: the records pair_time reads asked for ahead.
-    void (*candidate)(const rc_sim *s, int32_t k);
+    /// The records pair_time reads of each candidate, into *rows (asked once a scan: no call per candidate).
+    void (*candidate_rows)(const rc_sim *s, eng_rows *rows);
     /// Ball i's event with a ball is stored: the model keeps its contact event (s->bx_tx, bx_dx).
     void (*event_keep)(rc_sim *s, int32_t i);
     /// A crossing's scan starts from ball i's stored event: its contact event back into s->bx_tx, bx_dx.

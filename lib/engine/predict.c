@@ -280,7 +280,9 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
     /* what a candidate must beat to matter: the best event, or with one deferred the bound
      * of the others (a candidate below it can lower that bound) */
     const double cut0 = df && df->on ? df->lb2 : *best;
-    void (*const candidate)(const rc_sim *, int32_t) = s->model->candidate;
+    eng_rows rows = {0, {NULL}, {0}}; /* (the model's records of a candidate, prefetched) */
+    if (s->model->candidate_rows)
+        s->model->candidate_rows(s, &rows);
     while (!w->done) {
         /* gather a chunk of neighbours ... */
         const size_t m = walk_gather(w, nb);
@@ -336,8 +338,8 @@ static int scan_block_narrow(const rc_sim *cs, int32_t i, eng_walk *w, double *b
             s->cand[nc].k = kk;
             nc++;
             __builtin_prefetch(&s->a[kk]); /* (the frame will want its momentum and mass) */
-            if (candidate) /* (and the model's narrow phase its records) */
-                candidate(s, kk);
+            for (int q = 0; q < rows.n; q++)
+                __builtin_prefetch(rows.base[q] + (size_t)kk * rows.stride[q]);
         }
     }
     for (size_t a = 1; a < nc; a++) { /* insertion sort by (t, k): lists are short */

@@ -40,13 +40,13 @@ static const rc_toi_frame frame_tubes = {
 enum {
     OP_EVENT_BEGIN, OP_EVENT_END, OP_CONTACT_EVENT, OP_GROUP_OF_MODEL, OP_BEFORE_RESOLVE,
     OP_UNDO_MEMBER, OP_RESOLVE_MEMBER, OP_MEMBER_BEFORE, OP_TAKE_BACK, OP_AFTER_RESOLVE,
-    OP_GROUP_MEMBER, OP_BALL_AT, OP_PAIR_TIME, OP_CANDIDATE, OP_EVENT_KEEP, OP_EVENT_RECALL,
+    OP_GROUP_MEMBER, OP_BALL_AT, OP_PAIR_TIME, OP_CANDIDATE_ROWS, OP_EVENT_KEEP, OP_EVENT_RECALL,
     OP_SEGMENT_START, OP_SLICE_GAMMA, OP_N
 };
 static const char *const op_name[OP_N] = {
     "event_begin", "event_end", "contact_event", "group_of_model", "before_resolve",
     "undo_member", "resolve_member", "member_before", "take_back", "after_resolve",
-    "group_member", "ball_at", "pair_time", "candidate", "event_keep", "event_recall",
+    "group_member", "ball_at", "pair_time", "candidate_rows", "event_keep", "event_recall",
     "segment_start", "slice_gamma"};
 static long op_calls[OP_N];
 
@@ -120,10 +120,10 @@ static double t_pair_time(const rc_sim *s, const eng_ball *bi, const eng_ball *b
     op_calls[OP_PAIR_TIME]++;
     return eng_model_glued.pair_time(s, bi, bk, dx, tref, best, parting, n);
 }
-static void t_candidate(const rc_sim *s, int32_t k)
+static void t_candidate_rows(const rc_sim *s, eng_rows *rows)
 {
-    op_calls[OP_CANDIDATE]++;
-    eng_model_glued.candidate(s, k);
+    op_calls[OP_CANDIDATE_ROWS]++;
+    eng_model_glued.candidate_rows(s, rows);
 }
 static void t_event_keep(rc_sim *s, int32_t i)
 {
@@ -150,7 +150,7 @@ static const eng_model_ops model_counted = {
     .name = "test-counted-tubes",
     .per_ball = 1,
     .pair_time = t_pair_time,
-    .candidate = t_candidate,
+    .candidate_rows = t_candidate_rows,
     .event_keep = t_event_keep,
     .event_recall = t_event_recall,
     .event_begin = t_event_begin,
@@ -277,7 +277,7 @@ static void test_instant(void)
     ENSURE(eng_model_for(&frame_tubes, 1, 1.0) == &eng_model_glued);
     ENSURE(eng_model_for(NULL, 0, 1.0) == &eng_model_instant);
     const eng_model_ops *m = &eng_model_instant;
-    ENSURE(!m->pair_time && !m->candidate && !m->event_keep && !m->event_recall &&
+    ENSURE(!m->pair_time && !m->candidate_rows && !m->event_keep && !m->event_recall &&
            !m->segment_start && !m->slice_gamma);
     ENSURE(!m->per_ball && !m->event_begin && !m->event_end && !m->contact_event &&
            !m->group_of_model && !m->before_resolve && !m->undo_member && !m->resolve_member &&

@@ -189,12 +189,13 @@ static void group_member(rc_sim *s, int32_t b, const rc_particle *in, const rc_p
     eng_glue_kink(s, b, in, out, s->b[b].t, rc_v3(0, 0, 0), 1);
 }
 
-/* (and glue_valid its hyperplane, window_contact its window) */
-static void candidate(const rc_sim *s, int32_t k)
+/* (glue_valid reads a candidate's hyperplane, window_contact its window) */
+static void candidate_rows(const rc_sim *s, eng_rows *rows)
 {
-    __builtin_prefetch(&s->pb->cov[k]);
-    __builtin_prefetch(&s->pb->glu[k].r);
-    __builtin_prefetch(&s->pb->glu[k].t_last);
+    *rows = (eng_rows){3,
+                       {(const char *)&s->pb->cov[0], (const char *)&s->pb->glu[0].r,
+                        (const char *)&s->pb->glu[0].t_last},
+                       {sizeof(eng_cov), sizeof(rc_glue), sizeof(rc_glue)}};
 }
 
 static void event_keep(rc_sim *s, int32_t i)
@@ -238,7 +239,7 @@ const eng_model_ops eng_model_glued = {
     .name = "glued tubes",
     .per_ball = 1,
     .pair_time = eng_glued_pair_time,
-    .candidate = candidate,
+    .candidate_rows = candidate_rows,
     .event_keep = event_keep,
     .event_recall = event_recall,
     .event_begin = event_begin,
