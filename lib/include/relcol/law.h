@@ -1,16 +1,8 @@
-/* relcol/law.h — two-ball collision laws as a small table of function pointers.
- *
- * A law maps the pre-collision states of two balls (rest mass, momentum), a unit contact
- * normal n from ball 0 to ball 1 and the law's parameters to the post-collision states,
- * rest-mass change included. Laws are `const rc_law` objects (like GSL's
- * gsl_root_fsolver_brent) with declared properties; rc_laws[] lists the built-in ones by
- * name. The engine and the apps read the properties and never name a law. A law need not
- * live in the library: any `const rc_law` can be given to rc_collide() and
- * rc_sim_def.law (README "Adding a collision law"). To make it built-in: write one file
- * defining `const rc_law rc_law_mine = {.name = "mine", .summary = "...", .collide =
- * mine_collide, ...}`, declare it below and add its address to rc_laws[] in
- * lib/law_table.c; rc_law_find(), relcol-collide --law, relcol-sim's "law" key and the
- * law tests pick it up by name. */
+/* relcol/law.h — two-ball collision laws, each a `const rc_law` table entry (GSL style)
+ * with declared properties that the engine and the apps read, never a law's name. A law
+ * maps two balls' states (rest mass, momentum) and a unit normal n from ball 0 to ball 1
+ * to their states after, rest-mass change included. Adding one: README "Adding a
+ * collision law" (one file, declared here, listed in rc_laws[] in lib/law_table.c). */
 #ifndef RELCOL_LAW_H
 #define RELCOL_LAW_H
 
@@ -22,158 +14,91 @@
 extern "C" {
 #endif
 
-/* Parameters shared by the laws. Make one with rc_collision_params_default(). */
+/// Parameters shared by the laws: make one with rc_collision_params_default().
 typedef struct rc_collision_params {
-    double c;       /* speed of light, > 0; INFINITY (the default) is the classical limit */
-    double eps;     /* restitution in [0, 1] (zmf: normal ZMF momentum; cm-isotropic: R) */
-    /* cm-isotropic only: impact angle alpha in (-pi/2, pi/2) between the ZMF direction
-     * of motion of ball 0 and the ZMF contact normal (seed 002), and in 3-D the azimuth
-     * of the normal about that direction. alpha = NAN: take the normal from n instead. */
-    double alpha;
-    double azimuth;
-    /* How a law's group solver resolves simultaneous contacts (rc_group_rule below;
-     * default RC_GROUPS_SIMULTANEOUS). Laws without a group solver do not read it. */
-    int groups;
+    double c;       ///< speed of light, > 0; INFINITY (the default) is the classical limit
+    double eps;     ///< restitution in [0, 1] (zmf: normal ZMF momentum; cm-isotropic: R)
+    double alpha;   ///< cm-isotropic only: impact angle in (-pi/2, pi/2) between ball 0's ZMF direction and the ZMF normal; NAN: the normal from n
+    double azimuth; ///< cm-isotropic only, 3-D: the normal's azimuth about that direction
+    int groups;     ///< how a group solver resolves simultaneous contacts (rc_group_rule; default RC_GROUPS_SIMULTANEOUS)
 } rc_collision_params;
 
-/* Rules for a group of contacts that the engine found simultaneous (touching and
- * approaching at one table time, or, the covariant frame's, simultaneous in the group's
- * ZMF; papers/simultaneous-contacts.md). Multiple impacts have
- * no unique answer, even classically: these are named models, compared with the soft
- * model's limit there. */
+/// Rules for a group of contacts found simultaneous (at one table time, or in the group's ZMF for the covariant frame): named models, since multiple impacts have no unique answer (papers/simultaneous-contacts.md).
 typedef enum rc_group_rule {
-    /* all impulses together: J >= 0 on every contact, each contact with J > 0 meets its
-     * restitution condition, each with J = 0 leaves no more approaching than restitution
-     * allows (a complementarity problem, solved by principal pivoting around Newton) in
-     * the group's zero-momentum frame; relativistically then the rest-mass step. The
-     * default: classically, and with a wall, it has the drop rule's bits where no impulse
-     * pulls. */
-    RC_GROUPS_SIMULTANEOUS = 0,
-    /* the contacts one after another in the order of their events' times in the group's
-     * zero-momentum frame (a group with a wall: the wall's rest frame), each by the law's
-     * pair kernel (the wall law), until none approaches; contacts whose times tie to
-     * round-off (always classically, where table simultaneity is absolute) are resolved
-     * together by the simultaneous rule */
-    RC_GROUPS_SEQUENTIAL = 1,
-    /* the rule before complementarity: a joint Newton solve from which the most pulling
-     * contact is dropped until none pulls; a dropped contact is not re-checked */
-    RC_GROUPS_DROP = 2
+    RC_GROUPS_SIMULTANEOUS = 0, ///< all impulses together, a complementarity problem in the group's ZMF (J >= 0, restitution met where J > 0), then the rest-mass step; the drop rule's bits where no impulse pulls
+    RC_GROUPS_SEQUENTIAL = 1,   ///< one contact after another in the order of their events in the group's ZMF (the wall's rest frame with a wall), each by the pair kernel, until none approaches; ties to round-off go to the simultaneous rule
+    RC_GROUPS_DROP = 2          ///< a joint Newton solve from which the most pulling contact is dropped until none pulls (not re-checked)
 } rc_group_rule;
 
-/* Name of a rule ("simultaneous", "sequential", "drop"), NULL if not one; its one-line
- * summary for --help (NULL if not one); a rule by name, -1 if unknown. */
+/// A rule's name ("simultaneous", "sequential", "drop"), NULL if not one.
 const char *rc_group_rule_name(int rule);
+/// A rule's one-line summary for --help, NULL if not one.
 const char *rc_group_rule_summary(int rule);
+/// A rule by name, -1 if unknown.
 int rc_group_rule_find(const char *name);
 
-/* Law kernel. On RC_OK, *a and *b hold the outcome. RC_NO_COLLISION (a and b untouched)
- * when the balls do not approach along n. Kernels assume validated input (finite, m > 0,
- * |n| = 1, eps in [0,1], c valid: 1/c^2 is rc_inv_c2_of(prm->c)): rc_collide() validates,
- * rc_collide_batch() trusts. */
+/// Law kernel: RC_OK with the outcome in *a, *b; RC_NO_COLLISION (untouched) when they do not approach along n; validated input (rc_collide validates, rc_collide_batch trusts).
 typedef int (*rc_law_fn)(const rc_collision_params *prm, rc_particle *a, rc_particle *b,
                          rc_vec3 n);
 
-/* A contact of a group: ball a against ball b (b >= 0) or against a wall (b < 0), with
- * unit normal n from a towards b (or into the wall) and restitution eps; t and x are its
- * event (time and point, in the frame the balls' states are given in), read only by the
- * sequential rule to order the contacts (left 0: every event the same, all tie). */
+/// A contact of a group.
 typedef struct rc_contact {
-    int a, b;
-    rc_vec3 n;
-    double eps;
-    double t;
-    rc_vec3 x;
+    int a, b;   ///< ball a against ball b (b >= 0) or a wall (b < 0)
+    rc_vec3 n;  ///< unit normal from a towards b (or into the wall)
+    double eps; ///< its restitution
+    double t;   ///< its event's time ...
+    rc_vec3 x;  ///< ... and point, read only by the sequential rule to order contacts (all 0: they tie)
 } rc_contact;
 
-/* Group solver: resolve k simultaneous contacts among balls[0, nballs) together (each
- * contact's own eps; prm->eps is not used; walls infinitely massive). RC_OK when
- * resolved; any other code when it cannot (balls[] may then hold anything: the engine
- * reloads the states and resolves only the event's own contact, counted in
- * rc_sim_diag.group_fallbacks). Trusted input (unit normals, valid states). jout (may be
- * NULL, k entries): each contact's impulse along its normal, as far as the law defines
- * one (the engine shares the momentum of two walls of one axis by them). */
+/// Group solver: resolve k contacts among balls[0, nballs) together (each contact's eps; walls infinitely massive; trusted input); RC_OK, else the engine resolves only the event's own contact (group_fallbacks); jout (may be NULL): each contact's normal impulse.
 typedef int (*rc_law_group_fn)(const rc_collision_params *prm, size_t nballs,
                                rc_particle *balls, size_t k, const rc_contact *contacts,
                                double *jout);
 
-/* A law: its kernel and its declared properties. Fields after collide that an
- * initialiser leaves out are 0 / NULL: the conservative choice for each. */
+/// A law: its kernel and its declared properties (fields an initialiser leaves out are 0 / NULL: the conservative choice).
 typedef struct rc_law {
-    const char *name;    /* as on the command line */
-    const char *summary; /* one line for --help */
-    rc_law_fn collide;
-    /* Optional (NULL: none): resolves a group of simultaneous contacts together, order
-     * independent (zmf: rc_contacts_solve, relcol/contacts.h). Without one the engine
-     * resolves a group's contacts one at a time with collide (and the wall law) in a fixed
-     * order, which makes the outcome depend on that order (relcol/sim.h,
-     * rc_sim_diag.group_sequential; papers/simultaneous-contacts.md). */
-    rc_law_group_fn group;
-    /* Whether the law reads prm->alpha and prm->azimuth (an impact angle given apart from
-     * the normal: cm-isotropic); apps offer --alpha only for such laws. */
-    int uses_angle;
-    /* Whether each ball's energy in the pair's ZMF is kept, so that rc_pair_heat gives
-     * the collision's heat (zmf, cm-isotropic). */
-    int keeps_zmf_energy;
+    const char *name;      ///< as on the command line
+    const char *summary;   ///< one line for --help
+    rc_law_fn collide;     ///< the pair kernel
+    rc_law_group_fn group; ///< optional, order independent (zmf: rc_contacts_solve); without it a group goes one contact at a time, its outcome then depending on the order (group_sequential)
+    int uses_angle;        ///< reads prm->alpha and prm->azimuth (cm-isotropic): apps offer --alpha
+    int keeps_zmf_energy;  ///< keeps each ball's ZMF energy, so rc_pair_heat gives the heat (zmf, cm-isotropic)
 } rc_law;
 
-/* The four-impulse law of shared/DESIGN.md: impulse J (u.n/c^2, n) with
- *   J = -(1+eps) (p0.n - M0 u.n) / (1 - (u.n)^2/c^2),
- * energy of each ball kept in the pair's ZMF, ZMF normal momentum scaled by -eps,
- * rest masses from m'^2 = m^2 + (1-eps^2) pbar_n^2 / c^2. */
+/// The four-impulse law (shared/DESIGN.md): J = -(1+eps) (p0.n - M0 u.n) / (1 - (u.n)^2/c^2), ZMF energies kept, ZMF normal momentum scaled by -eps, m'^2 = m^2 + (1-eps^2) pbar_n^2 / c^2.
 extern const rc_law rc_law_zmf;
-/* Seed 002's law made relativistic (papers/cm-isotropic.md): in the pair's ZMF reflect
- * the momenta about the ZMF contact normal, then scale the whole ZMF momentum by R=eps. */
+/// Seed 002's law made relativistic (papers/cm-isotropic.md): momenta reflected about the ZMF normal, then the ZMF momentum scaled by R = eps.
 extern const rc_law rc_law_cm_isotropic;
 
-/* NULL-terminated table of the built-in laws. */
+/// The built-in laws, NULL-terminated.
 extern const rc_law *const rc_laws[];
-/* Law by name, NULL if unknown. */
+/// A built-in law by name, NULL if unknown.
 const rc_law *rc_law_find(const char *name);
 
-/* c = inf, eps = 1, alpha NAN, groups RC_GROUPS_SIMULTANEOUS */
+/// c = inf, eps = 1, alpha NAN, groups RC_GROUPS_SIMULTANEOUS.
 rc_collision_params rc_collision_params_default(void);
 
-/* Validating entry point: checks the particles, c, eps and n (normalised here; a zero
- * normal is RC_EZERONORMAL), then calls law->collide. */
+/// Validating entry point: checks the particles, c, eps and n (normalised; zero: RC_EZERONORMAL), then calls law->collide.
 int rc_collide(const rc_law *law, const rc_collision_params *prm, rc_particle *a,
                rc_particle *b, rc_vec3 n);
 
-/* Batch: n_pairs collisions a[i] with b[i] along unit normals n[i] (trusted input).
- * status[i] (may be NULL) receives each kernel's code. Returns the number that collided. */
+/// Batch of trusted pairs a[i], b[i] along unit n[i]: status[i] (may be NULL) each kernel's code; returns how many collided.
 size_t rc_collide_batch(const rc_law *law, const rc_collision_params *prm, size_t n_pairs,
                         rc_particle *a, rc_particle *b, const rc_vec3 *n, int *status);
 
-/* Batch with rc_collide's checks, over columns (for callers that cannot vouch for their
- * input and hold each quantity as one array, such as numpy in the Python package): pair i
- * is ball 0 of rest mass m0[i] and momentum p0[i] against ball 1 (m1[i], p1[i]) along
- * n[i]. The parameters are checked once, then each pair as rc_collide checks it (its
- * normal made unit), and collided in place. status[i] (may be NULL) gets RC_OK or
- * RC_NO_COLLISION; *hits (may be NULL) the number that collided. The first pair that
- * fails a check or whose kernel fails stops the batch: its code is returned and *bad (may
- * be NULL) gets its index; the pairs before it are done, it and those after it untouched.
- * RC_EINVAL for NULL law, prm or arrays (n_pairs > 0). */
+/// Batch over columns with rc_collide's checks (numpy): pair i is (m0[i], p0[i]) against (m1[i], p1[i]) along n[i], in place; status (may be NULL), *hits; the first failing pair stops it (its code, *bad its index; those before done, the rest untouched); RC_EINVAL for NULL arrays.
 int rc_collide_many(const rc_law *law, const rc_collision_params *prm, size_t n_pairs,
                     double *m0, rc_vec3 *p0, double *m1, rc_vec3 *p1, const rc_vec3 *n,
                     int *status, size_t *hits, size_t *bad);
 
-/* Ball against an infinitely massive wall with outward normal n (pointing from the
- * ball into the wall): p_n' = -eps_w p_n, tangential kept, energy M kept, rest mass
- * m'^2 = m^2 + (1 - eps_w^2) p_n^2 / c^2. RC_NO_COLLISION if p.n <= 0. */
+/// Ball against an infinitely massive wall, n from the ball into it: p_n' = -eps_w p_n, tangential and M kept, m'^2 = m^2 + (1 - eps_w^2) p_n^2 / c^2; RC_NO_COLLISION if p.n <= 0.
 int rc_collide_wall(double inv_c2, double eps_w, rc_particle *a, rc_vec3 n);
 
-/* Heat of a two-ball collision, sum over both balls of (m' - m) c^2, computed without
- * cancellation as sum (|pbar|^2 - |pbar'|^2) / (m' + m) from the momenta pbar, pbar' in the
- * zero-momentum frame of `before`. Valid only for laws that keep each ball's ZMF energy
- * (zmf, cm-isotropic): then m'^2 - m^2 = (|pbar|^2 - |pbar'|^2) / c^2. At inv_c2 = 0 it
- * is the classical kinetic energy lost.
- * q_ball (may be NULL) receives the two per-ball terms. NAN (and NAN in q_ball) for
- * invalid input: non-finite or negative inv_c2, or a particle failing rc_particle_check. */
+/// Heat of a two-ball collision, sum of (m' - m) c^2, free of cancellation from the ZMF momenta of `before` (laws with keeps_zmf_energy only; classical: kinetic energy lost); q_ball (may be NULL) the two terms; NAN for bad input.
 double rc_pair_heat(const rc_particle before[2], const rc_particle after[2], double inv_c2,
                     double q_ball[2]);
 
-/* Draw a cm-isotropic impact angle for uniformly distributed impact parameters:
- * 2-D sin(alpha) uniform in [-1, 1]; 3-D sin^2(alpha) uniform in [0, 1] and azimuth
- * uniform. u1, u2 are uniform deviates in [0, 1) (the caller owns the generator). */
+/// A cm-isotropic impact angle for uniform impact parameters from uniform u1, u2 in [0, 1): 2-D sin(alpha) uniform in [-1, 1]; 3-D sin^2(alpha) uniform in [0, 1], azimuth uniform.
 void rc_impact_angle_draw(int dim, double u1, double u2, double *alpha, double *azimuth);
 
 #ifdef __cplusplus

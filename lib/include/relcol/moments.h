@@ -13,31 +13,22 @@
 extern "C" {
 #endif
 
-/* Tensors are row-major 3 x 3, [3 a + b]; in 2-D the z rows and columns are 0. */
+/// An engine's moments at its time; tensors row-major 3 x 3, [3 a + b], z rows and columns 0 in 2-D.
 typedef struct rc_sim_moments {
-    double time;
-    size_t n;
-    int dim;
-    double volume;         /* box area (2-D) or volume (3-D) */
-    double kinetic[9];     /* sum_i p_i,a v_i,b: V times the kinetic pressure tensor now */
-    double energy;         /* sum_i of kinetic energy (M_i - m_i) c^2 */
-    double virial[9];      /* rc_sim_diag.virial: collisional momentum transfer so far */
-    double virial_energy[3];
-    /* Helfand moments: G[3 a + b] = sum_i x_i,a p_i,b + rc_sim_diag.helfand_wrap, x the
-     * unwrapped position (x + image L on periodic axes). In a periodic box
-     * G(t2) - G(t1) = integral of V P_ab dt exactly (kinetic flux between collisions,
-     * collisional transfer at them), so the pressure tensor's time average is
-     * (G(t2) - G(t1)) / (V (t2 - t1)) and the shear viscosity comes from the growth of
-     * its off-diagonal variance. */
-    double helfand[9];
-    /* sum_i x_i,a E_i + helfand_wrap_energy (E kinetic): the energy moment; with position
-     * (sum_i x_i,a) and the enthalpy per ball h, helfand_energy - h position is the heat
-     * moment (Eckart), whose variance gives the thermal conductivity. */
-    double helfand_energy[3];
-    double position[3];
+    double time;               ///< engine time
+    size_t n;                  ///< balls
+    int dim;                   ///< 2 or 3
+    double volume;             ///< box area (2-D) or volume (3-D)
+    double kinetic[9];         ///< sum_i p_i,a v_i,b: V times the kinetic pressure tensor now
+    double energy;             ///< sum_i of kinetic energy (M_i - m_i) c^2
+    double virial[9];          ///< rc_sim_diag.virial: collisional momentum transfer so far
+    double virial_energy[3];   ///< rc_sim_diag.virial_energy: collisional energy transfer so far
+    double helfand[9];         ///< Helfand moment G = sum_i x_i,a p_i,b + helfand_wrap (x unwrapped): (G(t2) - G(t1)) / (V (t2 - t1)) is the pressure tensor's time average, its off-diagonal variance growth the shear viscosity
+    double helfand_energy[3];  ///< sum_i x_i,a E_i + helfand_wrap_energy (E kinetic): minus h position, the heat moment (Eckart) of the thermal conductivity
+    double position[3];        ///< sum_i x_i,a (unwrapped)
 } rc_sim_moments;
 
-/* Read the moments of s at its time. RC_EINVAL for NULL arguments. O(N). */
+/// Read the moments of s at its time (O(N)); RC_EINVAL for NULL arguments.
 int rc_sim_moments_get(const rc_sim *s, rc_sim_moments *out);
 
 #ifdef __cplusplus

@@ -22,10 +22,9 @@ int rc_sim_get_glue(const rc_sim *s, size_t i, rc_glue *out);
 /// Whether ball i's latest kink lies after the engine's time: 0 no, 1 yes (rc_sim_get_ball gives the line it is on), 2 yes but that line was not recorded (more than six kinks ahead); RC_EINVAL.
 int rc_sim_kink_ahead(const rc_sim *s, size_t i);
 
-/* ---- delayed table-time slices: every ball's state at one table time ts -------------
- * Kept up to date as kinks at or before ts are placed or undone, final from the engine's
- * time ts + W on (W = 0 in one-instant frames and at infinite c). Not part of a
- * checkpoint: reading one, rc_sim_set_balls and rc_sim_set_c drop every slice held. */
+/* ---- delayed table-time slices: every ball's state at one table time ts, final from ts + W
+ * on (W = 0 in one-instant frames and at infinite c); dropped by a checkpoint read,
+ * rc_sim_set_balls and rc_sim_set_c ---- */
 
 /// What rc_sim_slice_ready reports about a slice.
 typedef struct rc_sim_slice_info {

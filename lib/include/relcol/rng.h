@@ -8,15 +8,16 @@
 
 #include <stdint.h>
 
+/// The generator's state.
 typedef struct rc_rng {
-    uint64_t state; /* the seed, then advanced by each draw (set it directly, or {seed}) */
+    uint64_t state; ///< the seed, then advanced by each draw (set it directly, or {seed})
 } rc_rng;
 
-/* The next 64 random bits. */
+/// The next 64 random bits.
 uint64_t rc_rng_next(rc_rng *r);
-/* Uniform in [0, 1): the top 53 bits of rc_rng_next, so every value is a multiple of 2^-53. */
+/// Uniform in [0, 1): the top 53 bits of rc_rng_next, a multiple of 2^-53.
 double rc_rng_uniform(rc_rng *r);
-/* Standard normal (Box-Muller from two uniforms; one value a call). */
+/// Standard normal (Box-Muller from two uniforms; one value a call).
 double rc_rng_gauss(rc_rng *r);
 
 #endif

@@ -1,13 +1,8 @@
 /* relcol/sim.h — the event-driven N-ball engine: balls in a 2-D table or 3-D box, exact
- * event times, any c, ball and wall restitution, simultaneous contacts solved together.
- * Lifecycle (Box2D style): rc_sim_def_default(), rc_sim_create, rc_sim_set_balls,
- * rc_sim_advance as often as wanted, rc_sim_get_ball / rc_sim_diagnostics, rc_sim_free.
- * The engine never prints. Event times are pure functions of the two balls' stored states,
- * so a run written out as a checkpoint continues bit-identically; the cost per event does
- * not grow with N (cells, one event per ball in a calendar queue, stale events dropped by
- * counters, every ball on its own clock). The overlap policy, the per-ball model and the
- * rules for groups: papers/relcol.md, papers/shape-change.md,
- * papers/simultaneous-contacts.md. The per-ball model's read-outs: relcol/perball.h. */
+ * event times, any c, restitution, simultaneous contacts solved together. Lifecycle (Box2D
+ * style): rc_sim_def_default, rc_sim_create, rc_sim_set_balls, rc_sim_advance, read-outs,
+ * rc_sim_free. Event times depend only on two balls' stored states, so a checkpointed
+ * run continues bit for bit. The model: papers/relcol.md; per-ball read-outs: relcol/perball.h. */
 #ifndef RELCOL_SIM_H
 #define RELCOL_SIM_H
 
@@ -136,10 +131,8 @@ int rc_sim_sync(rc_sim *s);
 /// Change c at the engine's time: positions, momenta, rest masses, clocks kept, events planned afresh; per-ball frames make every kink ahead now and forget the hyperplanes; RC_EINVAL, RC_ESPEEDOFLIGHT, RC_ENOMEM (the old c kept).
 int rc_sim_set_c(rc_sim *s, double c);
 
-/* ---- checkpoints: the engine's whole state as bytes, read back into an engine of an
- * equal definition it continues bit for bit (test_engine_checkpoint); this machine's byte
- * order and layout, checksummed: foreign or damaged bytes are RC_EMISMATCH, RC_ECORRUPT.
- * Delayed slices are not carried. */
+/* ---- checkpoints: the whole state as bytes (this machine's layout, checksummed), read
+ * back into an engine of an equal definition it continues bit for bit; no slices ---- */
 
 /// The bytes a checkpoint of s takes now.
 int rc_sim_checkpoint_size(const rc_sim *s, size_t *bytes);
