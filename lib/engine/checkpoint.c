@@ -1,16 +1,8 @@
-/* engine/checkpoint.c — the engine's whole state as bytes, and back: what makes a run
- * stopped and continued (Ctrl-C included) bit-identical to one that never stopped.
- *
- * Why the whole state and not the balls: a ball's scheduled event was predicted when it
- * was last touched, from its own clock and its neighbours' states then; a new engine
- * given the same balls predicts every event afresh, from other clocks, and rounds its
- * times differently. So the bytes carry every ball at its own clock, every scheduled
- * event, the cells' slot order (which neighbour a tie of equal times goes to), the
- * numbering and its renumbering clock, and the bookkeeping. The queue is not carried: its
- * pop order is the exact (time, ball) order of the keys, whatever its buckets.
- *
- * Layout (native byte order and record sizes, both checked on reading): a header, the
- * scalars, the per-ball arrays, the cells, and an FNV-1a checksum of all before it. */
+/* engine/checkpoint.c — the whole state as bytes and back, so a stopped and continued run is
+ * bit-identical to one that never stopped: a fresh engine given the same balls would predict
+ * from other clocks and round differently. The queue is not carried (its order is the keys');
+ * layout: header, scalars, per-ball arrays, cells, FNV-1a checksum, native order and sizes
+ * checked. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -72,9 +64,8 @@ static uint64_t fnv_string(uint64_t h, const char *str)
     return fnv_bytes(h, str ? str : "", strlen(str ? str : "") + 1);
 }
 
-/* What a continued run must share with the one that wrote the state: every field of the
- * definition that changes the physics or the event order. (restart only relaxes what
- * rc_sim_set_balls accepts.) */
+/* What a continued run must share with the writer: every definition field that changes the
+ * physics or the event order (restart only relaxes input checks). */
 static uint64_t def_print(const rc_sim *s)
 {
     const rc_sim_def *d = &s->def;
@@ -202,9 +193,8 @@ int rc_sim_checkpoint_write(const rc_sim *s, void *buf, size_t bytes)
     return RC_OK;
 }
 
-/* An undo record (the last or the previous one) names a ball other than this one or a
- * wall of the box, from a state the law could have left (the rollback trusts it: it is
- * the ball's state again). */
+/* An undo record names another ball or a wall of the box, from a state the law could have left
+ * (the rollback trusts it). */
 static int undo_ok(const rc_sim *s, size_t k, const eng_undo *u)
 {
     const eng_ball *b = &s->b[k];
@@ -301,9 +291,8 @@ static int check_ball(const rc_sim *s, size_t k)
     return RC_OK;
 }
 
-/* The cells hold every ball exactly once, each in the cell its record names, and every
- * link outside a chain is -1 (a slot or link out of range, a ball twice, a cycle:
- * damaged). Walked here with bounds checks, not with cell_next, which trusts its links. */
+/* The cells hold every ball once, in the cell its record names, every other link -1: walked
+ * with bounds checks, since cell_next trusts its links. */
 static int check_cells(const rc_sim *s)
 {
     const eng_cells *g = &s->g;

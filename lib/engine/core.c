@@ -1,7 +1,6 @@
-/* engine/core.c — the event loop: pop events in (time, ball) order, drop stale ones by
- * counters, and resolve each collision together with every contact simultaneous to it
- * (papers/simultaneous-contacts.md). Predicting events: engine/predict.c; creating and
- * filling an engine: engine/setup.c. */
+/* engine/core.c — the event loop: events in (time, ball) order, stale ones dropped by
+ * counters, each collision resolved with every contact simultaneous to it
+ * (papers/simultaneous-contacts.md). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -35,10 +34,9 @@ static single_result single_is(single_verdict v, size_t member)
     return (single_result){RC_OK, v, member};
 }
 
-/* The common case: the event's own contact alone. Resolve it, then predict both balls
- * while checking that no other contact was simultaneous with it; if one was, take it
- * back (SINGLE_GROUP). undo_order: the model may ask for a member's last collision to be
- * undone first (SINGLE_UNDO). The model is told at each step (engine/model.h). */
+/* The common case, the event's own contact alone: resolved, then both balls predicted with a
+ * check for a simultaneous contact, which takes it back (SINGLE_GROUP) or asks for an undo
+ * first (SINGLE_UNDO). */
 static single_result try_single(rc_sim *s, size_t nm, int32_t bp, double T,
                                 const eng_event_x *ev, int undo_order)
 {
@@ -124,9 +122,8 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
     size_t nm = 0, nc = 0;
     rc_vec3 n0;
     int frame_normal = 0;
-    /* each ball's contact event as the model places it, read before the balls are
-     * advanced (the stored states the prediction saw); by default at T, through the
-     * centres (the one-instant rule, and the overlap policy's) */
+    /* each ball's contact event as the model places it, from the stored states the prediction
+     * saw (default: at T, through the centres) */
     eng_event_x ev = {{T, T}, {rc_v3(0, 0, 0), rc_v3(0, 0, 0)}, 0, 0};
     if (s->model->contact_event) {
         const int st = s->model->contact_event(s, i, bp, T, &ev);
@@ -134,11 +131,9 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
             return st > 0 ? RC_OK : st;
     }
     if (bp >= 0 && s->narrow) {
-        /* The frame's normal at contact: the one its call that predicted this event
-         * returned with the time (both stored states are unchanged since, the counters
-         * say so), so not asked again -- right also for frames (zmf) whose contact is
-         * not simultaneous in the table frame. NAN: the frame said RC_EOVERLAP, the
-         * shape-change policy, resolved along the centre line and counted. */
+        /* the normal the predicting call returned (both states unchanged since), not asked
+         * again: right also where contact is not simultaneous in the table frame (zmf); NAN:
+         * the overlap policy, along the centre line */
         const rc_vec3 n = s->ev_n[i];
         if (isnan(n.x)) {
             eng_note_overlap(s, 0);
@@ -177,9 +172,8 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
             eng_note_overlap(s, 1);
         }
     }
-    /* a contact of the model between two balls: the model's own group (the per-ball
-     * model's, formed by simultaneity in its ZMF, each member kinked at its own event; a
-     * wall's contacts keep the table's: the wall's rest frame) */
+    /* a contact of the model between two balls: the model's own group (a wall's contacts keep
+     * the table's) */
     if (ev.model && bp >= 0 && s->def.sim_tol > 0.0 && s->model->group_of_model) {
         const int st = s->model->group_of_model(s, i, bp, T, &ev);
         if (st != 0)
@@ -226,9 +220,8 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
             return st;
         kind = c->b >= 0 ? RC_SIM_EV_BALL : RC_SIM_EV_WALL;
     } else if (!s->def.law->group) {
-        /* a law without a group solver: the contacts one at a time, in the group's order
-         * (the event's own first, then as grow_group found them), each on the states the
-         * previous ones left -- the outcome depends on that order (relcol/sim.h) */
+        /* a law without a group solver: one contact at a time in the group's order, so the
+         * outcome depends on it (relcol/sim.h) */
         kind = RC_SIM_EV_MULTI;
         for (size_t j = 0; j < nc; j++) {
             const int st = eng_resolve_contact(s, P, &s->grp_con[j]);
@@ -254,9 +247,8 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
             nm = bp >= 0 ? 2 : 1;
             nc = 1;
             kind = bp >= 0 ? RC_SIM_EV_BALL : RC_SIM_EV_WALL;
-            /* the books before the event cover only the balls that take part now (the
-             * others' momentum would otherwise pass for a wall impulse, their energy
-             * for heat) */
+            /* books before the event over the balls taking part only, or the others' momentum
+             * and energy pass for wall impulse and heat */
             k0 = 0.0;
             p0 = rc_v3(0, 0, 0);
             for (size_t j = 0; j < nm; j++) {
@@ -271,10 +263,8 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
     return RC_OK;
 }
 
-/* Events a run may have at one instant before it is called stalled: every contact of a
- * touching configuration may resolve a few times over (a cascade through a rack, a
- * lattice), far fewer than this; a chain of balls jammed across the box, or a clock so large
- * that a step rounds to nothing, passes it at once and for ever. */
+/* Events at one instant before a run is stalled: a touching cascade resolves a few times over,
+ * far fewer; a jam across the box or a clock too large to step passes it at once. */
 static uint64_t stall_limit(const rc_sim *s) { return 10000 + 64 * (uint64_t)s->n; }
 
 /* The run cannot advance: note the event that would come next (its balls, by the caller's

@@ -1,9 +1,6 @@
-/* engine/gas.c — a gas to start from: equal balls on random sites of a square / cubic
- * lattice sized for an exact packing fraction, isotropic random momenta with a given rms
- * speed and zero total momentum. The lattice start lets any fluid packing (up to 0.52 in
- * 3-D, 0.78 in 2-D) be made at once; melting it is a run of the engine. A few balls that
- * the lattice has no room for (its side^dim sites round n up) are placed at random
- * instead. */
+/* engine/gas.c — a gas to start from: equal balls on random sites of a lattice sized for an
+ * exact packing, isotropic momenta of a given rms speed and zero total; the few balls the
+ * lattice has no room for placed at random. */
 #include <math.h>
 #include <stdlib.h>
 
@@ -11,18 +8,14 @@
 #include "relcol/sim.h"
 #include "relcol/status.h"
 
-/* Lattice spacing must exceed the diameter by this fraction (relative) so that no two
- * balls touch at the start (a touching start is legal but makes the first events a
- * lattice-wide simultaneous group). */
+/* Lattice spacing over the diameter (relative), so no two balls touch at the start (a
+ * lattice-wide first group). */
 #define GAS_MIN_CLEARANCE 1e-6
 /* Bisection on the momentum scale stops at this relative width. */
 #define GAS_SCALE_TOL 1e-15
 
-/* Random sequential addition: n centres in [lo, hi]^dim, each more than dmin from every
- * earlier one, GAS_RSA_TRIES tries a ball, and the whole placement begun again up to
- * GAS_RSA_STARTS times (an early ball in the middle can leave no room for the others). For
- * the few balls a lattice wastes too much room on (two balls in a cube fit on its
- * diagonal, not on a 2 x 2 x 2 lattice): O(n^2), so only for small n. 0 on success. */
+/* Random sequential addition of n centres more than dmin apart, retried GAS_RSA_TRIES a ball
+ * and GAS_RSA_STARTS in all: O(n^2), for the few balls a lattice wastes room on; 0 on success. */
 #define GAS_RSA_TRIES 1000
 #define GAS_RSA_STARTS 1000
 #define GAS_RSA_MAX_N 64
@@ -148,10 +141,8 @@ int rc_sim_gas_init(const rc_sim_gas_def *g, rc_vec3 *box, rc_sim_ball *balls)
     free(xs);
     for (size_t i = 0; i < g->n; i++)
         balls[i].p = rc_v3_axpy(balls[i].p, -1.0 / (double)g->n, ptot);
-    /* scale momenta so the rms speed is v_rms: rms speed grows monotonically with scale.
-     * A single ball (zero total momentum leaves it at rest) has no speed to scale, and a
-     * v_rms that needs momenta past ~1e150 (their squares, which every energy takes,
-     * would overflow) is refused, rather than a NaN or infinite momentum handed back. */
+    /* rms speed grows monotonically with the scale; a lone ball has none to scale, and momenta
+     * past ~1e150 (their squares overflow) are refused */
     double lo = 0.0, hi = 1.0;
     if (g->v_rms > 0.0) {
         if (!(rms_speed(balls, g->n, 1.0, m, k) > 0.0))

@@ -1,8 +1,6 @@
-/* engine/group.c — a group of contacts at one event: its members and contacts (the
- * event's own, the simultaneous ones by the gap rule, the members' walls), restitution
- * (TC model, jammed walls), the one law-or-wall dispatch, and the books after it. Below
- * both the event loop (engine/core.c) and the per-ball model's undo and groups
- * (engine/perball/), which build their groups with the same calls. */
+/* engine/group.c — a group of contacts at one event (the event's own, the simultaneous ones,
+ * the members' walls), its restitution, the one law-or-wall dispatch and the books; below both
+ * the event loop and the per-ball model, which build their groups with it. */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -13,11 +11,9 @@
 #include "model.h"
 #include "relcol/status.h"
 
-/* Member mi's wall contacts (it is at the group's time): touching within sim_tol of its
- * radius and moving into the wall -- the table's criterion, the wall's rest frame --
- * while fewer than nc_max contacts are held. at_support != 0: each one's event is the
- * point of the ball's shape on the wall, not the point at its rest radius (a per_ball
- * frame's kinks are placed through their contacts' events). */
+/* Member mi's wall contacts within sim_tol of touching and moving in (the wall's rest frame),
+ * up to nc_max; at_support: each event at the shape's point on the wall, where a per_ball
+ * frame's kink goes through it. */
 static int add_walls(rc_sim *s, size_t mi, size_t *nc, size_t nc_max, int at_support)
 {
     const int32_t i = s->grp_ball[mi];
@@ -82,9 +78,8 @@ int eng_grow_group(rc_sim *s, size_t *nm, size_t *nc, double T)
                         double d2 = rc_v3_norm2(dx);
                         if (!(d2 <= lim * lim))
                             continue;
-                        /* approaching (engine/approach.h: from the momenta for a pair
-                         * moving together near c, whose stored velocities differ below
-                         * their rounding along the motion) */
+                        /* approaching (engine/approach.h: from the momenta, for a pair moving
+                         * together near c) */
                         const rc_particle pi = {s->a[i].m, s->a[i].p};
                         const rc_particle pk = {s->a[k].m, s->a[k].p};
                         if (!eng_approaching(s->inv_c2, &pi, bi->v, &pk, bk->v, dx, sig, atol,
@@ -120,11 +115,8 @@ int eng_grow_group(rc_sim *s, size_t *nm, size_t *nc, double T)
 
 
 
-/* Count the contacts of the group that the overlap policy decides (shapes deeper in
- * each other or in a wall than overlap_tol), contacts from .. nc, on the states before
- * the collision: the event's own ball contact is counted by collide() from the frame's
- * verdict; here its wall contact and the other contacts of a group, by kind. A
- * contracted frame's group contacts are never overlapping ones (narrow_conflict asks the frame for a contact within sim_tol of now). */
+/* Count the group's contacts the overlap policy decides, by kind, on the states before the
+ * collision (the event's own ball contact is collide()'s to count). */
 void eng_count_overlaps(rc_sim *s, size_t from, size_t nc)
 {
     const double tol = s->def.overlap_tol;
@@ -146,12 +138,9 @@ void eng_count_overlaps(rc_sim *s, size_t from, size_t nc)
     }
 }
 
-/* The momentum the walls took in this event, wall by wall (s->bk.wallw). Per axis the total
- * is exact: the ball contacts of a group pass momentum only between its balls. It goes to
- * the one wall of that axis in the group; only a group touching both walls of an axis (a
- * chain of balls across the box) needs the solver's impulses J to share it: each wall
- * its own J n_d, and what the relativistic rest-mass step adds to the total shared
- * equally -- counted in wall_shared, since that split is a choice. */
+/* The momentum the walls took, wall by wall: exact per axis, since ball contacts pass it only
+ * between balls; a group touching both walls of an axis shares it by the solver's J, a choice
+ * counted in wall_shared. */
 void eng_account_walls(rc_sim *s, size_t nc, rc_vec3 p0, rc_vec3 p1, const double *J)
 {
     unsigned sides[3] = {0, 0, 0};

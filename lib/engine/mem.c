@@ -1,7 +1,5 @@
-/* engine/mem.c — the engine's per-ball arrays, large ones on transparent huge pages: a
- * neighbour scan reads records all over them, and once they outgrow what the TLB maps in
- * 4-KiB pages (~8 MiB) every row of a scan can cost a page walk. Memory is the same; only
- * the page size changes, so the results keep their bits. */
+/* engine/mem.c — large per-ball arrays on transparent huge pages: a scan reads them all over,
+ * and past ~8 MiB of 4-KiB pages each row can cost a page walk; same memory, same bits. */
 #include <stdint.h>
 #include <stdlib.h>
 #ifdef __linux__
@@ -10,9 +8,8 @@
 
 #include "private.h"
 
-/* The huge page size of x86-64 and arm64 Linux (4-KiB base pages). Arrays smaller than
- * one gain nothing and keep their own alignment; where the kernel uses another size or
- * has THP off, the advice is ignored and the array works as any other. */
+/* The huge page size of x86-64 and arm64 Linux; smaller arrays keep their alignment, and with
+ * THP off the advice is ignored. */
 #define HUGE_PAGE ((size_t)2 << 20)
 /* Cache-line alignment for the rest: a 64-byte record never straddles two lines. */
 #define LINE 64

@@ -1,6 +1,6 @@
-/* engine/model.c — the models of where balls change velocity (engine/model.h), chosen
- * from the contact frame's declared properties: the instant one, whose ops are all NULL,
- * and the per-ball one (engine/perball/ops.c). */
+/* engine/model.c — the models of where balls change velocity (engine/model.h), chosen from the
+ * frame's declared properties: the instant one (every op NULL) and the per-ball one
+ * (engine/perball/ops.c). */
 #include "model.h"
 
 const eng_model_ops eng_model_instant = {.name = "instant", .per_ball = 0};

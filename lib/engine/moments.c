@@ -1,13 +1,7 @@
 /* engine/moments.c — the momentum and energy a collision carries across space, for the
- * collisional part of the pressure tensor (the virial) and of the Helfand moments of
- * viscosity and heat conduction (papers/pressure.md, papers/transport.md). A collision
- * moves dp_b from one centre to another at one table instant, so what it adds to
- * sum_i x_i (x) p_i is sum_b x_b (x) dp_b: with the event's first ball as origin (the sum
- * of the dp is zero for ball contacts, so the origin drops out) and nearest-image
- * separations, the same in every periodic copy. The unwrapped separation differs from
- * the nearest image by whole box lengths where a pair meets across a periodic face; that
- * difference, kept apart, makes sum_i x_i^unwrapped (x) p_i continuous with the flux.
- * rc_sim_moments_get reads them with the balls' own moments (relcol/moments.h). */
+ * collisional virial and Helfand moments (papers/pressure.md, papers/transport.md): sum_b x_b
+ * (x) dp_b from the event's first ball with nearest images, the unwrapped difference kept
+ * apart so the moments stay continuous with the flux. */
 #include <math.h>
 #include <string.h>
 

@@ -1,12 +1,7 @@
-/* engine/queue.c — the event queue: one entry per ball (its earliest event), popped in exact
- * (time, ball) order. A calendar queue (G. Paul, J. Comput. Phys. 221 (2007) 615): time is
- * cut into buckets of width w; the bucket being drained is a small binary heap, later
- * buckets within the calendar's span are unsorted doubly linked lists (O(1) to move a ball
- * between them), and entries beyond the span wait in an overflow list that is spread over
- * the calendar once per span. Which bucket an entry sits in never decides its order -- the
- * heap compares exact keys and buckets partition time monotonically -- so the pop sequence
- * is that of any exact priority queue, whatever w is. An update moves an entry between
- * lists in O(1), where a heap of N entries would sift through log N levels. */
+/* engine/queue.c — the event queue, one entry per ball popped in exact (time, ball) order: a
+ * calendar queue (G. Paul, J. Comput. Phys. 221 (2007) 615), its current bucket a small heap
+ * and the later ones O(1) lists, so the pop order is any exact priority queue's whatever the
+ * bucket width. */
 #include <math.h>
 #include <stdlib.h>
 
@@ -20,9 +15,8 @@
  * a span that would pass it is rebuilt with a wider bucket. */
 #define BUCKET_MAX 4503599627370496.0
 
-/* An entry's links (eng_qent): in the heap, next = IN_HEAP and prev = its position; in a
- * list, next = the following ball (-1: none) and prev = the preceding one, or HEAD(L) at
- * the head of list L. */
+/* An entry's links: in the heap next = IN_HEAP, prev = its position; in a list the following
+ * and preceding balls (-1: none; HEAD(L) at list L's head). */
 #define IN_HEAP INT32_MIN
 #define HEAD(L) (-1 - (int32_t)(L))
 #define HEAD_LIST(p) ((uint32_t)(-1 - (p)))
@@ -102,9 +96,8 @@ static void list_push(eng_queue *q, uint32_t L, uint32_t i)
     q->in_cal += L < q->nb;
 }
 
-/* Whether an entry in a list is in a calendar list (not overflow or never), from its key:
- * place() files an entry in a calendar list exactly when its bucket lies before redist,
- * and redist only grows until every overflow entry is filed again (redistribute). */
+/* Whether a listed entry is in a calendar list, from its key: place() files there exactly when
+ * its bucket lies before redist. */
 static inline int in_calendar(const eng_queue *q, double t)
 {
     return t * q->inv_w < (double)q->redist; /* (inf and NaN: no) */
@@ -122,9 +115,8 @@ static void list_unlink(eng_queue *q, uint32_t i)
     q->in_cal -= (size_t)in_calendar(q, q->e[i].key);
 }
 
-/* File ball i by its key: the heap if its bucket is the current one (or earlier, which
- * only a caller's clock set back can give), its calendar list if before redist (within
- * the span), else the overflow list (never: no event at all). */
+/* File ball i by its key: the heap (its bucket the current one or earlier), its calendar list
+ * (within the span), else overflow (never: no event). */
 static void place(eng_queue *q, uint32_t i)
 {
     const double t = q->e[i].key;
@@ -164,12 +156,8 @@ static void redistribute(eng_queue *q)
     }
 }
 
-/* The same when every entry not in the heap is in the overflow or the never list (the
- * calendar lists and the heap are empty): the entries are read in array order, not along
- * the list. A walk of the list costs a cache miss per entry once the entries outgrow the
- * caches (N = 1e6: 16 MB); reading them in order lets the hardware stream them. Finite
- * keys are the overflow list's, and are filed again; the never list keeps its own. The
- * lists' order within a bucket changes, the pop order does not (the heap orders). */
+/* The same when the calendar lists and heap are empty: entries read in array order, which the
+ * hardware streams, not along the list (a miss per entry at N = 1e6); pop order unchanged. */
 static void redistribute_all(eng_queue *q)
 {
     (void)new_span(q);
@@ -206,9 +194,8 @@ void eng_queue_free(eng_queue *q)
     *q = (eng_queue){0};
 }
 
-/* Every entry again, with a bucket width fitted to the keys: ~PER_BUCKET entries per
- * bucket near `now`, from the mean lead of the finite keys (events of a gas lie about one
- * mean free time ahead, so n of them spread over ~ that lead). */
+/* Every entry again, the bucket width fitted to ~PER_BUCKET entries near now from the mean
+ * lead of the finite keys. */
 static void rebuild(eng_queue *q, double now)
 {
     double lead = 0.0, far = now;
@@ -294,10 +281,8 @@ int eng_queue_top(eng_queue *q, double *t, uint32_t *ball)
                 *ball = (uint32_t)never;
                 return 1;
             }
-            /* the earliest overflow key, or a bound below it: every key pushed there
-             * since the last spread was at least over_min (entries taken out since
-             * leave it low, which only starts the span early). A walk of the list
-             * costs a cache miss per entry at N = 1e6. */
+            /* the earliest overflow key or a bound below it (over_min), so the list is not
+             * walked (a miss per entry at N = 1e6) */
             double tmin = q->over_min;
             if (!(tmin < INFINITY))
                 for (; k >= 0; k = q->e[k].next)

@@ -1,6 +1,5 @@
-/* engine/readout.c — reading a ball at a time: its stored line taken there, or (per-ball
- * frames) the line it is still on before a kink ahead, and the public read-outs built on
- * it (rc_sim_get_ball; relcol/perball.h's latest segment, glued tube and kink ahead). */
+/* engine/readout.c — a ball at a time: its stored line taken there, or (per-ball frames) the
+ * line it is still on before a kink ahead, and the public read-outs built on it. */
 #include <math.h>
 
 #include "private.h"

@@ -1,7 +1,6 @@
-/* engine/reorder.c — renumbering the balls in cell order (the event loop, engine/core.c,
- * calls it every ENG_REORDER_EVERY x N collisions and cell crossings): every per-ball array
- * permuted in place by cycles, the cells and the queue rebuilt. Invisible to the caller
- * (id / slot) and to the run's bits. */
+/* engine/reorder.c — renumbering the balls in cell order every ENG_REORDER_EVERY x N
+ * collisions and crossings: per-ball arrays permuted in place, cells and queue rebuilt;
+ * invisible to the caller (id / slot) and to the bits. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -86,15 +85,9 @@ static void move(rc_sim *s, size_t to, size_t from)
     }
 }
 
-/* Every ENG_REORDER_EVERY x N collisions and cell crossings the balls are renumbered in cell
- * order again: they diffuse away from the order set_balls gave them, and neighbours that
- * share cache lines are what keeps a pair test from being a cache miss. O(N), in place,
- * deterministic, invisible to the caller (id / slot). The clock counts what happens to
- * the balls, not the queue's stale entries or settled bounds: how many of those there
- * are depends on how events are predicted, not on the physics, and the numbering breaks
- * ties of equal event times (which ball of a pair resolves it), so a count of entries
- * would let a change in prediction alone change the bits of a run (it made a run with
- * deferred root finds differ from one without). */
+/* Renumber in cell order again (balls diffuse away from it, and shared cache lines keep pair
+ * tests cheap); the clock counts collisions and crossings, not queue entries, so that how
+ * events are predicted cannot change a run's tie-breaking and its bits. */
 void eng_reorder(rc_sim *s)
 {
     const size_t n = s->n;
@@ -113,12 +106,8 @@ void eng_reorder(rc_sim *s)
         return;
     }
     free(cell);
-    /* references first, then the elements along the cycles of the permutation, each
-     * cycle walked backwards (slot o gets the element of slot inv[o]): one copy of each
-     * element, where exchanging them along it forwards took four (a cycle's first element
-     * is the only one held aside): the per_ball frames' records, kilobytes a ball, made
-     * those exchanges a visible part of a covariant gas's time. The permutation, and so
-     * every bit of the run, is the one the exchanges made. */
+    /* references first, then each cycle of the permutation walked backwards: one copy of each
+     * element (per_ball records are kilobytes a ball); the permutation is the same */
     for (size_t i = 0; i < n; i++) {
         if (s->a[i].ev_partner >= 0)
             s->a[i].ev_partner = (int32_t)np[s->a[i].ev_partner];

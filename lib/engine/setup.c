@@ -9,9 +9,8 @@
 #include "model.h"
 #include "relcol/status.h"
 
-/* Cell edge margin over the largest bounding diameter (relative): keeps balls that can
- * touch (or be within sim_tol of touching) in adjacent cells despite round-off of the
- * cell boundaries. */
+/* Cell edge margin over the largest bounding diameter (relative): balls that can touch stay in
+ * adjacent cells despite round-off of the boundaries. */
 #define CELL_MARGIN 1e-8
 
 rc_sim_def rc_sim_def_default(void)
@@ -108,13 +107,9 @@ static int choose_simd(rc_sim_simd want)
     return best;
 }
 
-/* Defer the frame's root finds (eng_defer) where the broad phase bounds its contact
- * times from below: frames that declare it (rc_toi_frame.deferrable: the table frame,
- * whose contact is simultaneous in the table frame. The zmf frame's is simultaneous in
- * the pair's own frame: a pair can overlap there while its bounding spheres are apart
- * here, and the overlap policy resolves it at the time of the prediction, which
- * deferring would move). RC_SIM_DEFER_OFF asks the frame at once; the bits are the same
- * (test_engine_defer), the choice exists to show it and to time the two. */
+/* Defer root finds only where the broad phase bounds contact from below (deferrable: contact
+ * simultaneous in the table frame; zmf's is not); the bits are the same either way
+ * (test_engine_defer). */
 static int defer_wanted(rc_sim_defer want) { return want != RC_SIM_DEFER_OFF; }
 
 int rc_sim_create(const rc_sim_def *def, rc_sim **out)
@@ -232,9 +227,8 @@ static int contracted(const rc_sim *s)
     return s->inv_c2 > 0.0 && s->narrow && s->def.frame->contracted;
 }
 
-/* Do balls i and k (storage slots, states at s->now) overlap by more than overlap_tol in
- * the frame's geometry? The sphere test decides unless the frame contracts the shapes,
- * which only ever brings the surfaces closer to the centres. */
+/* Do balls i and k overlap by more than overlap_tol in the frame's geometry? Contraction only
+ * brings surfaces closer to the centres, so the sphere test decides otherwise. */
 static int overlapping(rc_sim *s, size_t i, size_t k)
 {
     const eng_ball *bi = &s->b[i], *bk = &s->b[k];
@@ -252,9 +246,8 @@ static int overlapping(rc_sim *s, size_t i, size_t k)
     rc_toi_contact out;
     if (s->def.frame->toi(&prm, &A, &B, s->ws, &out) != RC_EOVERLAP)
         return 0;
-    /* A ball whose speed changes changes its contracted shape at once, which can leave a
-     * separating pair overlapping (the engine counts it and lets it part): such a state is
-     * one the engine itself produces, so it is accepted; an approaching overlap is not. */
+    /* a separating pair a shape change left overlapping is a state the engine itself makes:
+     * accepted; an approaching overlap is not */
     const rc_vec3 dv = rc_v3_sub(bk->v, bi->v);
     return !(rc_v3_dot(dx, dv) > 0.0);
 }
@@ -309,9 +302,8 @@ int rc_sim_set_c(rc_sim *s, double c)
      * are what c leaves alone (sim.h) */
     for (size_t i = 0; i < n; i++)
         rc_sim_get_ball(s, i, &b[i]);
-    /* per_ball frames: a kink still ahead of now is made now, at the ball's true centre
-     * and proper time, with its latest segment's momentum and rest mass (the glued tube
-     * it belongs to is a function of the old c); the hyperplanes go with the reload */
+    /* per_ball frames: a kink still ahead is made now, with its latest segment's momentum and
+     * rest mass (its glued tube is a function of the old c) */
     for (size_t i = 0; s->model->per_ball && i < n; i++)
         if (rc_sim_kink_ahead(s, i) > 0) {
             const eng_aux *a = &s->a[s->slot[i]];
@@ -354,9 +346,8 @@ int rc_sim_set_c(rc_sim *s, double c)
     return RC_OK;
 }
 
-/* Allocate the state of n balls (the largest rest radius rmax sizes the cells), replacing
- * any balls held, with the bookkeeping started afresh: shared by rc_sim_set_balls and
- * rc_sim_checkpoint_read. On failure nothing is held. */
+/* Allocate the state of n balls (rmax sizes the cells), replacing any held, the books afresh
+ * (rc_sim_set_balls, rc_sim_checkpoint_read); on failure nothing is held. */
 int eng_alloc_state(rc_sim *s, size_t n, double rmax)
 {
     const int dim = s->def.dim;
@@ -390,8 +381,7 @@ int eng_alloc_state(rc_sim *s, size_t n, double rmax)
     if ((st = eng_queue_init(&s->q, n)) != RC_OK)
         goto fail;
     s->n = n;
-    /* Store balls in cell order (stable): neighbours then share cache lines and the
-     * prefetcher, which matters more than anything else once N no longer fits in cache.
+    /* Balls stored in cell order, so neighbours share cache lines once N outgrows the caches;
      * id[] / slot[] translate to and from the caller's indices. */
     s->cnt = eng_alloc(n * sizeof *s->cnt);
     if (s->cnt)
@@ -439,9 +429,8 @@ static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, i
             return RC_ERADIUS;
         if (dim == 2 && (b->x.z != 0.0 || b->p.z != 0.0))
             return RC_EDIM;
-        /* the shape inside the box: its support distance along each axis (r, or
-         * r sqrt(1 - v_d^2/c^2) when the walls see the contracted shape), to within
-         * overlap_tol r (a wall contact's position carries round-off) */
+        /* the shape inside the box along each axis (r, or contracted when walls see it), to
+         * within overlap_tol r of round-off */
         double m = b->m > 0.0 ? b->m : s->def.density * b->r * b->r * b->r;
         rc_toi_shape sh = rc_toi_shape_of(b->r, m, b->p, s->inv_c2);
         int wc = contracted(s) && s->def.frame->wall_contracted;
@@ -454,9 +443,8 @@ static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, i
             }
             rc_vec3 e = rc_v3(d == 0, d == 1, d == 2);
             double h = wc ? rc_toi_support(&sh, e) : b->r, tol = s->def.overlap_tol * b->r;
-            /* a restart may hold a contracted shape that a collision's shape change pushed
-             * across a wall (the engine resolves or separates it, as for pairs): there
-             * only the centre must be inside the box */
+            /* a restart may hold a shape a collision pushed across a wall (the engine resolves
+             * it, as for pairs): only the centre must be inside */
             if (s->def.restart && wc)
                 h = tol = 0.0;
             double x = rc_v3_get(b->x, d);

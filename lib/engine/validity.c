@@ -1,22 +1,9 @@
-/* engine/validity.c — the validity report (relcol/validity.h): the overlap policy's share,
- * and the clusters of collisions joined by kinks that cross inside a ball, counted online.
- *
- * Two successive kinks of a ball cross inside it when the proper time between them is
- * below (r/c)|tanh(phi_0/2) w_0 - tanh(phi_2/2) w_2| (papers/shape-change.md section 8):
- * there the glued tube of the two is not defined. Each event that places kinks is a node;
- * a ball's kink joins its node to the node of the kink it follows when they cross, and to
- * each kink an undo took back. The engine calls three hooks (private.h): a kink about to
- * be placed on ball b, a contact resolved by the overlap policy, a ball put back by an
- * undo. A hook names the event by its (still_t, still_count) stamp, which the event loop
- * makes unique per event; the balls a hook marked are read when the next event's first
- * hook comes (or at a report or checkpoint), after their event, so that what is counted
- * is each event's net change, as tests/engine/kink_clusters.h counts it between
- * rc_sim_advance(s, INFINITY, 1) calls: the two agree exactly (test_validity).
- *
- * Memory: each ball keeps its last VAL_DEPTH kinks (undos, chains included, took back up
- * to three of one ball's in test_validity's gases: four keeps the offline count there); nodes no ball's kinks name any more can join nothing, so they are
- * dropped from the union-find when it fills (their clusters' sizes are kept in the
- * largest seen), which bounds the union-find by the balls' kinks, not the run's length. */
+/* engine/validity.c — the validity report (relcol/validity.h): the overlap policy's share and
+ * the clusters of collisions joined by kinks that cross inside a ball (papers/shape-change.md
+ * section 8), counted online from three hooks, each event's net change read at the next event,
+ * as tests/engine/kink_clusters.h counts it (test_validity); each ball keeps its last
+ * VAL_DEPTH kinks and unreachable nodes are dropped, bounding memory by the balls, not the
+ * run. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -35,9 +22,8 @@ typedef struct val_kink {
     uint32_t node, pad;
 } val_kink;
 
-/* per caller's ball, one block of five cache lines: its kink time and velocity when last
- * read and its last VAL_DEPTH kinks, oldest first (a hook asks for the block, which the
- * next event's flush reads: a ball's block is otherwise cold) */
+/* per caller's ball, one block of five cache lines: its kink time and velocity when last read
+ * and its last VAL_DEPTH kinks (a hook prefetches it for the next flush) */
 typedef struct val_ball {
     double last_t;
     rc_vec3 last_v;
@@ -288,10 +274,8 @@ static uint32_t new_node(eng_validity *V, int policy)
     return x;
 }
 
-/* The proper time below which successive kinks (velocities v0, v1 between, v2) of a ball
- * of radius r cross inside it: (r/c) sqrt((C01-1)/(C01+1) + (C21-1)/(C21+1)
- * - 2 (C01 C21 - C02)/((1+C01)(1+C21))), C_ab = u_a . u_b = g_a g_b (1 - v_a . v_b / c^2)
- * (papers/shape-change.md section 8). */
+/* The proper time below which successive kinks (v0, v1, v2) of a ball of radius r cross inside
+ * it (papers/shape-change.md section 8). */
 static double cross_tau(double inv_c2, double r, rc_vec3 v0, rc_vec3 v1, rc_vec3 v2)
 {
     const double g0 = 1.0 / sqrt(1.0 - rc_v3_dot(v0, v0) * inv_c2);

@@ -1,26 +1,14 @@
-/* engine/perball/kink.c — per_ball frames: where a ball's velocity changes on its worldline (its
- * kink, through the glued tube's hyperplane, and the order rule where kinks cross), and a
- * wall's contact event of the model (papers/shape-change.md, sections 2, 6 and 8). Used
- * by the event loop (engine/core.c) and the undo (engine/perball/undo.c). */
+/* engine/perball/kink.c — per_ball frames: where a ball's velocity changes on its worldline
+ * (its kink, on the glued tube's hyperplane, and the order rule where kinks cross) and a
+ * wall's contact event of the model (papers/shape-change.md sections 2, 6, 8). */
 #include "model.h"
 #include "relcol/status.h"
 
-/* per_ball frames: ball b's velocity changes from `in` to `out` through the contact event
- * X at table time tx, dx = X - (its centre at tx on its stored line), which is still the
- * incoming one (papers/shape-change.md, section 2): its kink is where the hyperplane H
- * through X with normal u_in + u_out, t - tx = kappa.(y - X), meets that line, at
- * t_E = tx - kappa.dx / (1 - kappa.v_in). The stored state is moved there (backwards or
- * forwards along the incoming line; the caller then writes the outgoing momentum) and H
- * is kept as the start of the new segment. A kink before the ball's previous one along
- * its worldline (successive hyperplanes crossing inside the tube: collisions less than a
- * glue window apart, where the glued tube of the two is not defined) is a model rule:
- * the change is put at the previous kink, and counted.
- * at_event: a kink the engine puts at the event's time through the centre (the overlap
- * policy's, a group's). Such a kink before a kink still pending (ahead of now) overtakes
- * it: put where the order rule would, at the pending kink, it would leave the ball's line
- * up to there, and so the geometry that called the policy, as it was, and the same
- * contact would come up again at the same instant for ever (RC_ESTALL). It is kept at the event's time instead (counted with the order
- * conflicts; the ball's centre there is its stored line's). te, kappa: eng_kink_time's. */
+/* Ball b goes from `in` to `out` through the contact event X (tx, dx from its centre on its
+ * incoming line): its kink where H (normal u_in + u_out) meets that line; a kink before the
+ * previous one is put there by the order rule (counted), and an at_event kink that would
+ * overtake one still pending stays at the event's time, since moving it would replay the same
+ * contact for ever (RC_ESTALL). te, kappa: eng_kink_time's. */
 void eng_glue_kink_at(rc_sim *s, int32_t b, const rc_particle *in, const rc_particle *out,
                       double tx, rc_vec3 dx, double te, rc_vec3 kappa, int at_event)
 {
@@ -51,10 +39,9 @@ void eng_glue_kink(rc_sim *s, int32_t b, const rc_particle *in, const rc_particl
     eng_glue_kink_at(s, b, in, out, tx, dx, te, kappa, at_event);
 }
 
-/* per_ball frames: ball i's wall contact w from its stored state, *tx its time (not
- * clamped to now), *dx = X - (centre at *tx): the support point of its shape along the
- * wall normal n, P n / h(n) with P = r^2 (I - beta beta^T). 1 if X is on the future side
- * of the ball's last hyperplane (a contact of the model), else 0. */
+/* Ball i's wall contact w from its stored state (*tx not clamped to now; *dx the shape's
+ * support point P n / h(n)): 1 if X is on the future side of its last hyperplane (a contact of
+ * the model). */
 int eng_wall_event_point(const rc_sim *s, int32_t i, int w, double *tx, rc_vec3 *dx)
 {
     const eng_ball *b = &s->b[i];

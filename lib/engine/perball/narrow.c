@@ -1,6 +1,6 @@
-/* engine/perball/narrow.c — the per-ball model's narrow phase (engine/model.h pair_time):
- * a contact of two glued tubes predicted, checked against both balls' hyperplanes, and the
- * same contact asked again from earlier stored lines (an undo's, a group's). */
+/* engine/perball/narrow.c — the per-ball model's narrow phase (engine/model.h pair_time): a
+ * predicted contact of two glued tubes checked against both hyperplanes, and the same contact
+ * asked from earlier stored lines (an undo's, a group's). */
 #include <math.h>
 
 #include "glue_pair.h"
@@ -8,14 +8,10 @@
 #include "model.h"
 #include "relcol/status.h"
 
-/* per_ball frames: do the pieces a tube contact met approach at ta, though the stored
- * (outgoing) lines part there? A ball whose incoming side the contact event X lies on is
- * met by its incoming piece, which moves with its incoming velocity, its centre on its
- * incoming line. Judged with the stored lines alone such a pair was left to separate while
- * the incoming piece went on into the neighbour: an overlap nothing counted (found by the
- * covariant audit, papers/shape-change.md section 8). Now it is an event: an undo of
- * that ball's collision takes it, else the policy, counted. dx, dv: the stored separation
- * at pref and relative velocity; tref, t, y: the contact as glue_contact returned it. */
+/* Do the pieces a tube contact met approach at ta though the stored lines part? An incoming
+ * piece moves on its incoming line, and judged by the stored lines alone the pair would go on
+ * overlapping uncounted (papers/shape-change.md section 8). dx, dv at pref; tref, t, y:
+ * glue_contact's. */
 static int pieces_approach(const rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_vec3 dx,
                            double pref, rc_vec3 dv, double tref, double t, rc_vec3 y, double ta)
 {
@@ -50,14 +46,10 @@ double eng_glued_pair_time(const rc_sim *s, const eng_ball *bi, const eng_ball *
     const double pref = tref; /* (dx is at pref; glue_contact may move tref) */
     const int st = glue_contact(s, bi, bk, dx, &tref, &out, &valid);
     if (st == RC_OK && !valid) {
-        /* a contact with the incoming piece of a glued tube: not one the model's
-         * schedule can order; an undo or the overlap policy at its time (counted), if
-         * the centres approach there, or the pieces met do and X is still ahead
-         * (pieces_approach; else, as for an overlap, left to separate: the policy's
-         * centre-line law would find nothing to resolve). The approach is
-         * judged when the event comes, max(t_X, now), where the policy will resolve
-         * it: judged at an X before now, a pair parting by then made an event that
-         * changed nothing and came up again at the same instant (RC_ESTALL) */
+        /* a contact with a tube's incoming piece, which the schedule cannot order: an event
+         * (an undo, else the policy, counted) if the centres or the pieces met approach at
+         * max(t_X, now), when it is resolved; judged earlier, a pair parting by then would
+         * come up again at once (RC_ESTALL) */
         const rc_vec3 dv = rc_v3_sub(bk->v, bi->v);
         ta = tref + out.t;
         ta = ta < s->now ? s->now : ta;
@@ -82,12 +74,9 @@ double eng_glued_pair_time(const rc_sim *s, const eng_ball *bi, const eng_ball *
         return s->now;
     } else if (st != RC_OK)
         return INFINITY;
-    /* The frame decides approach in the pair's ZMF from the stored lines, one of
-     * which may be an outgoing line taken back before its kink; the law decides it
-     * from the balls' velocities along the normal (a0 = mu (v_i - v_k).n). Where the
-     * two disagree the law would find nothing to resolve, the balls would keep their
-     * lines, and the same contact would come up again at the same instant for ever
-     * (RC_ESTALL): such a pair is parting as the law sees it, and gets no event. */
+    /* approach as the law sees it (velocities along n), not the frame's ZMF verdict from a
+     * line taken back before its kink: where they disagree the law resolves nothing and the
+     * contact recurs at once (RC_ESTALL) */
     if (!(rc_v3_dot(rc_v3_sub(bi->v, bk->v), out.n) > 0.0))
         return INFINITY;
     *n = out.n;
@@ -102,12 +91,10 @@ double eng_glued_pair_time(const rc_sim *s, const eng_ball *bi, const eng_ball *
     return ta;
 }
 
-/* per_ball frames: the frame's contact of balls a and b from their stored lines taken to
- * time t0 (not clamped to now, so a contact already behind the schedule is found): RC_OK
- * with the event (*tx; *dx = X - a's centre at *tx on its stored line) and the normal *n
- * from a to b, when X lies on the future side of both balls' hyperplanes and the law sees
- * the pair approach along n; ENG_BEFORE_A when X lies on the incoming side of a's;
- * RC_MISS when it is not a contact of the model otherwise; the frame's code else. */
+/* The frame's contact of a and b from their stored lines at t0 (not clamped, so one behind the
+ * schedule is found): RC_OK with X (*tx, *dx from a's centre) and *n when X is on both future
+ * sides and the law sees approach; ENG_BEFORE_A on a's incoming side; RC_MISS; else the
+ * frame's code. */
 int eng_pair_contact(rc_sim *s, int32_t a, int32_t b, double t0, double *tx, rc_vec3 *dx,
                      rc_vec3 *n)
 {

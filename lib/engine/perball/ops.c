@@ -1,7 +1,6 @@
-/* engine/perball/ops.c — the per-ball model's ops (engine/model.h): what the event loop
- * asks it at each named point of an event -- the contact event of a contact predicted,
- * the undo or the group its own frame forms, each member's kink before and after a
- * resolve, and the read-out of a ball whose kink lies ahead (papers/shape-change.md). */
+/* engine/perball/ops.c — the per-ball model's ops (engine/model.h): contact events, the undo
+ * or group its frame forms, each member's kink around a resolve, the narrow phase's records
+ * and the read-out of kinks ahead (papers/shape-change.md). */
 #include <math.h>
 #include <string.h>
 
@@ -9,11 +8,9 @@
 #include "model.h"
 #include "relcol/status.h"
 
-/* A collision reads ball b's cold records -- its hyperplane, its glued
- * tube (copied whole for the undo record), whether its undo record is live, the read-out's
- * record -- in that order as it goes; asked for at once, their lines come in parallel
- * instead of one miss after another. (Always inlined: out of line GCC finds the function
- * free of side effects and drops its calls.) */
+/* A collision reads ball b's cold records (hyperplane, tube, undo records, read-out record)
+ * one after another: asked for at once their lines come in parallel. (Always inline: out of
+ * line GCC drops the calls as free of side effects.) */
 __attribute__((always_inline)) static inline void glue_prefetch(const rc_sim *s, int32_t b)
 {
     const char *g = (const char *)&s->pb->glu[b];
@@ -53,10 +50,9 @@ static void event_end(rc_sim *s)
         eng_pend_note(s, &e->ps[j]);
 }
 
-/* The contact event as the prediction found it (a ball's), or the wall's from the stored
- * state; a contact on the incoming side of a hyperplane (a tube conflict), or an overlap
- * the frame reported, is first offered to an undo, else left to the overlap policy at T
- * through the centres (counted). */
+/* The contact event as predicted (a ball's) or from the stored state (a wall's); one on a
+ * hyperplane's incoming side, or an overlap the frame reported, goes to an undo first, else to
+ * the overlap policy at T (counted). */
 static int contact_event(rc_sim *s, int32_t i, int32_t bp, double T, eng_event_x *ev)
 {
     if (bp >= 0) {
@@ -77,9 +73,8 @@ static int contact_event(rc_sim *s, int32_t i, int32_t bp, double T, eng_event_x
     ev->model = eng_wall_event_point(s, i, ENG_WALL_INDEX(bp), &ev->tx[0], &ev->dX[0]);
     ev->wall_tube = !ev->model;
     if (ev->wall_tube) {
-        /* the shape met the wall on the incoming side of the ball's hyperplane: its last
-         * collision undone and solved with the wall's contact, as a ball's, else the
-         * overlap policy */
+        /* the shape met the wall on the incoming side of its hyperplane: the last collision
+         * undone with the wall's contact, else the overlap policy */
         const int st = eng_undo_wall(s, i, bp, T, ev->tx[0]);
         if (st != 0)
             return st;
@@ -95,11 +90,9 @@ static int group_of_model(rc_sim *s, int32_t i, int32_t bp, double T, const eng_
     return eng_zmf_group(s, i, bp, T, ev->tx[0], ev->dX[0]);
 }
 
-/* Each changed member's kink (time, H's normal), once, and whether its hyperplane would
- * reach some point of the ball before the last one did (eng_kinks_cross; the centre's
- * order is the order rule's). (A member's kink moves only its own record, so the other's
- * is the same before and after it.) Such a ball met its new partner within its last
- * kink's window: the last collision is undone if it can be, else the order rule. */
+/* Each changed member's kink, once, and whether its hyperplane would reach the ball before the
+ * last one did: then it met its partner within its last kink's window, and that collision is
+ * undone if it can be (else the order rule). */
 static int before_resolve(rc_sim *s, size_t nm, const rc_particle *P, const rc_particle *Q,
                           const int *changed, const eng_event_x *ev, int undo_order)
 {
@@ -139,9 +132,8 @@ static void resolve_member(rc_sim *s, size_t j, const rc_particle *P, const rc_p
     r->kinked[j] = 0;
     if (!changed)
         return;
-    /* hyperplanes crossing inside the ball though the centres' kinks come in order (not
-     * undone): the tube of the two is not defined there, counted with the order conflicts
-     * (the collision can still be undone: its kink is where the model puts it) */
+    /* hyperplanes crossing inside the ball though the centres' kinks come in order: the tube
+     * is not defined there (counted with the order conflicts; still undoable) */
     if (r->te[j] >= s->pb->cov[b].t_k && r->cross[j])
         s->bk.order_conflicts++;
     const uint64_t oc = s->bk.order_conflicts;
@@ -161,11 +153,9 @@ static void take_back(rc_sim *s, size_t j)
     s->pb->glu[b] = r->u[j];
 }
 
-/* An overlap-policy decision between two balls leaves a record too, so that a later
- * conflict with either ball's tube before its kink undoes it and solves it with the new
- * contact (one decision, still counted once) instead of handing that conflict to the
- * policy as well. Its contact event, for the undo's group: one event for both, on the
- * centre line at T where spheres of the rest radii would touch. */
+/* An overlap-policy decision between two balls leaves a record too, so a later tube conflict
+ * undoes it with the new contact instead of a second policy decision; its event for both: on
+ * the centre line at T where the rest spheres touch. */
 static void after_resolve(rc_sim *s, size_t nm, int32_t bp, const rc_particle *P,
                           const rc_vec3 *vold, const eng_event_x *ev, int tc)
 {

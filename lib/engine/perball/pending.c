@@ -1,6 +1,6 @@
-/* engine/perball/pending.c — per_ball frames: the read-out's record of the lines a ball is still
- * on before kinks that lie after the engine's time (eng_pend, read by engine/diag.c); kept
- * after each event and after an undo. Reads the engine, changes nothing a run reads. */
+/* engine/perball/pending.c — per_ball frames: the read-out's record of the lines a ball is
+ * still on before kinks after the engine's time (eng_pend, read by engine/diag.c), kept after
+ * each event and undo; changes nothing a run reads. */
 #include <math.h>
 
 #include "model.h"
@@ -11,11 +11,8 @@ eng_pend_snap eng_pend_take(const rc_sim *s, int32_t b)
     return p;
 }
 
-/* After an event: keep the record of the lines ball p.b is still on at now (eng_pend),
- * from its state before the event. Only the event's own balls can get a kink after now
- * (the single-contact path kinks on the hyperplane; a group's members and the overlap
- * policy's kinks are at the event's time, or at a kink already ahead by the order rule,
- * which moves no recorded kink). Reads the engine, changes nothing it reads. */
+/* After an event: the record of the lines ball p.b is still on at now, from its state before
+ * (only the event's own balls can get a kink after now). */
 void eng_pend_note(rc_sim *s, const eng_pend_snap *p)
 {
     const int32_t b = p->b;
@@ -57,9 +54,8 @@ void eng_pend_note(rc_sim *s, const eng_pend_snap *p)
             r->img[d] = s->img ? s->img[3 * (size_t)b + (size_t)d] : 0;
         return;
     }
-    /* a kink was already ahead: the line from it to the new one is the stored line the
-     * event found, recorded if the record ends at that kink and has room (else the part
-     * from there on is not recorded, and the read-out says so) */
+    /* a kink was already ahead: the line from it to the new one is recorded if the record ends
+     * there and has room (else the read-out says not recorded) */
     if (te > p->t_k && r->depth >= 1 && r->depth < ENG_PEND_LINES &&
         r->l[r->depth - 1].t == p->t_k) {
         r->l[r->depth].t = te;
@@ -69,9 +65,8 @@ void eng_pend_note(rc_sim *s, const eng_pend_snap *p)
     }
 }
 
-/* A ball's read-out record when its kink at te is undone: the line that ended there is
- * dropped (the one before it, if recorded, is the line it is on again); a record that
- * does not end there is cleared (a kink still ahead then reads as not recorded). */
+/* A ball's record when its kink at te is undone: the line ending there dropped (the one before
+ * is its line again); a record not ending there is cleared. */
 void eng_pend_undo(eng_pend *r, double te)
 {
     if (r->depth >= 2 && r->l[r->depth - 1].t == te)
@@ -80,10 +75,9 @@ void eng_pend_undo(eng_pend *r, double te)
         r->depth = 0;
 }
 
-/* per_ball frames: ball i's state at now (t >= now) where its latest kink lies ahead of
- * it, from the lines eng_pend recorded: 1 (*x in the wrap coordinates *img, p, m, tau, TC
- * memory set), 2 if the line it is on then was not recorded, 0 if the ball is on its
- * stored line. */
+/* Ball i at t >= now where its latest kink lies ahead, from eng_pend's lines: 1 (*x in the
+ * wrap coordinates *img, p, m, tau, TC memory set), 2 if that line was not recorded, 0 if on
+ * its stored line. */
 int eng_pend_read(const rc_sim *s, size_t i, double now, rc_sim_ball *o, const int32_t **img)
 {
     if (!s->pb || !(s->pb->cov[i].t_k > now))

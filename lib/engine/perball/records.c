@@ -1,8 +1,6 @@
-/* engine/perball/records.c — per_ball frames: the records a collision leaves so that a later
- * conflict can undo it (eng_undo: each member's state, hyperplane, tube and clock before,
- * its contact, the collision's members and their counters after it), written by the
- * single-contact path and by the groups the undo solves (engine/perball/undo.c reads them;
- * papers/shape-change.md, sections 7 and 8). */
+/* engine/perball/records.c — per_ball frames: the records a collision leaves so a later
+ * conflict can undo it (eng_undo), written by the single-contact path and the undo's groups
+ * (papers/shape-change.md sections 7, 8). */
 #include <string.h>
 
 #include "model.h"
@@ -19,10 +17,9 @@ static inline void undo_shift(rc_sim *s, int32_t b)
     }
 }
 
-/* Ball b's record for the collision being written (its previous one shifted back): its
- * state, hyperplane, tube and clock before the collision, and the collision's members by
- * caller's index with their counters after it; NULL, the record cleared, if the collision
- * leaves none (ok == 0). The caller fills in the contact and the books. */
+/* Ball b's record for the collision being written (its previous one shifted back): its state,
+ * hyperplane, tube and clock before, the members and their counters after; NULL, cleared, if
+ * ok == 0. */
 static eng_undo *undo_open(rc_sim *s, int32_t b, int ok, size_t nm, const rc_particle *in,
                            const eng_cov *cov, const rc_glue *glu, double tau_last)
 {
@@ -45,11 +42,9 @@ static eng_undo *undo_open(rc_sim *s, int32_t b, int ok, size_t nm, const rc_par
     return u;
 }
 
-/* per_ball frames: after a single contact (record != 0: the model's, or -- policy != 0 --
- * the overlap policy's between two balls, dX then its caller's event on the centre line)
- * every member whose line kinked cleanly gets the record that undoes it (eng_undo); any
- * other collision leaves the members' records stale (their counters moved) or clears
- * them. */
+/* After a single contact (the model's, or the policy's between two balls: dX its centre-line
+ * event), each cleanly kinked member gets the record that undoes it; any other collision
+ * leaves them stale or cleared. */
 void eng_write_undo(rc_sim *s, size_t nm, int32_t bp, int record, int policy,
                     const rc_particle *P,
                     const rc_vec3 *vold, const eng_clock *cat, const eng_cov *gat,
@@ -76,13 +71,8 @@ void eng_write_undo(rc_sim *s, size_t nm, int32_t bp, int record, int policy,
     }
 }
 
-/* The records of a group made here, when its contacts form a tree over its members (each
- * ball contact joining a member to the rest, at most one wall contact, at the first
- * member then) or, without a wall, one cycle (a tree and one contact more, held by the
- * root's record), and every member kinked cleanly; otherwise every record is cleared. B: the
- * states before, xk[m]: member m's kink E's position (te its time: cov t_k), gat, uat,
- * tau0: its hyperplane, tube and TC memory before, ntc: the TC contacts counted, npol: its
- * overlap-policy contacts. */
+/* A group's records when its contacts form a tree over its members (at most one wall contact,
+ * at the root) or, without a wall, one cycle, every member kinked cleanly; else all cleared. */
 void eng_write_group(rc_sim *s, size_t nm, size_t nc, const rc_particle *B, const eng_cov *gat,
                      const rc_glue *uat, const double *tau0, const int *kinked, uint32_t ntc,
                      uint32_t npol)
@@ -100,9 +90,8 @@ void eng_write_group(rc_sim *s, size_t nm, size_t nc, const rc_particle *B, cons
     ok = ok && walls <= 1 && (nc - walls == nm - 1 || cycle);
     for (size_t m = 0; m < nm && ok; m++)
         ok = kinked[m];
-    /* each member's parent, from the root outwards, leaving out the contact extra (the
-     * cycle's: one whose two balls the other contacts still join, the root one of them);
-     * a member no contact reaches: no tree */
+    /* each member's parent from the root out, leaving out the cycle's extra contact; a member
+     * no contact reaches: no tree */
     int32_t parent[ENG_UNDO_NMAX];
     size_t pc[ENG_UNDO_NMAX], extra = nc, tail = 0;
     for (size_t x = 0; ok && x < (cycle ? nc : 1); x++) {

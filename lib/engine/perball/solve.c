@@ -1,7 +1,6 @@
 /* engine/perball/solve.c — a group whose contacts have events of their own, solved by the
- * group rule and each member's velocity changed at its own kink: what an undo
- * (engine/perball/undo.c) and a group formed in its ZMF (engine/perball/zmf_group.c)
- * both end in (papers/shape-change.md). */
+ * group rule with each member kinked at its own event: where an undo and a ZMF-formed group
+ * both end (papers/shape-change.md). */
 #include <math.h>
 #include <string.h>
 
@@ -9,15 +8,10 @@
 #include "model.h"
 #include "relcol/status.h"
 
-/* Solve the group the caller formed (members grp_ball[0 .. nm), on their incoming lines at
- * one table time; contacts grp_con[0 .. nc), each with its own event t, x) by the group
- * rule -- or, if there is none or it fails, one contact after the other in the order of
- * their events' table times (a choice; counted) -- and change each member's velocity at
- * its own kink: through its contact's event, or the latest along its worldline of its
- * contacts' events (so that all lie on its incoming piece, whose state the impulses act
- * on). Records for a later undo when the contacts form a tree; books, predictions; the
- * read-out's records ps[0 .. nps) noted; npol of the contacts were the overlap policy's
- * (an undone decision's, solved again). 1 (done), or the law's failure. */
+/* Solve the formed group (members on their incoming lines at one table time, each contact with
+ * its event) by the group rule, or one contact after another by event time if it has none or
+ * fails (counted), each member kinked at the latest of its contacts' events so all lie on its
+ * incoming piece; records, books, predictions. 1, or the law's failure. */
 int eng_solve_at_events(rc_sim *s, size_t nm, size_t nc, const eng_pend_snap *ps, size_t nps,
                         int tied, uint32_t npol)
 {
@@ -35,10 +29,9 @@ int eng_solve_at_events(rc_sim *s, size_t nm, size_t nc, const eng_pend_snap *ps
     for (size_t c = 0; c < nc; c++)
         s->grp_con[c].eps = eng_contact_eps(s, &s->grp_con[c]);
     const double *J = NULL;
-    /* tied: the group's contacts are simultaneous by how it was formed, so a rule that
-     * orders them by their events (sequential) sees them all at the first one's -- their
-     * own differ by the events' rounding, which would decide the order -- while the kinks
-     * and the records below keep each contact's own */
+    /* tied: simultaneous by formation, so the sequential rule sees every contact at the first
+     * one's event (their own differ by rounding, which would decide the order); kinks and
+     * records keep each contact's own */
     double ev_t[2 * ENG_UNDO_NMAX + 1];
     rc_vec3 ev_x[2 * ENG_UNDO_NMAX + 1];
     for (size_t c = 0; c < nc && tied; c++) {

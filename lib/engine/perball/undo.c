@@ -1,9 +1,7 @@
-/* engine/perball/undo.c — per_ball frames: undoing a ball's last collision when a third ball meets
- * it before that kink along its tube, and solving the contacts together
- * (papers/shape-change.md, sections 7 and 8). A collision that can be undone is a single
- * contact of the model, or a group an earlier undo solved: undoing a group into a larger
- * one is what lets a fourth ball meet a group of three inside a window. The records are
- * written by engine/perball/records.c (eng_write_undo, eng_write_group). */
+/* engine/perball/undo.c — per_ball frames: undoing a ball's last collision when a third ball
+ * meets it before that kink, and solving the contacts together (papers/shape-change.md
+ * sections 7, 8); undoing a group into a larger one lets a fourth ball meet three inside a
+ * window. */
 #include <math.h>
 #include <string.h>
 
@@ -44,10 +42,9 @@ static int in_list(const int32_t *sl, size_t n, int32_t b)
     return 0;
 }
 
-/* The collisions a chain undo takes back: ball w's last one, and for each member that has
- * collided once since, that member's later collision (found the same way), at most one
- * per ball beyond w's (each ball keeps two records), in the order found; ord: the order
- * of undoing them, a collision only after every later one of its members. */
+/* The collisions a chain undo takes back: w's last, and each member's one later collision
+ * since, at most one per ball beyond w's; ord undoes a collision only after every later one of
+ * its members. */
 #define UNDO_NG (ENG_UNDO_NMAX + 1)
 typedef struct uchain {
     size_t ng;
@@ -69,25 +66,11 @@ static int same_coll(const eng_undo *a, const eng_undo *b)
            a->mcnt[0] == b->mcnt[0];
 }
 
-/* A chain: ball w's last collision G0 cannot be undone because members have collided
- * since. Each such member b has collided exactly once since, in a collision of which its
- * record is kept (its previous record is then G0's, or the collision's that led to it);
- * those are undone first, and their members' later collisions before them, the same way.
- * Undone latest first, every ball goes back to its line before the earliest (a ball's
- * two records bound the depth: a member that has collided twice since, or whose later
- * collision left no record, stops it). The set takes at most one wall contact (its share
- * is taken back for one wall), no pair of balls in contact twice (a second contact of one
- * pair is not a contact the model has), and with k no more than ENG_UNDO_NMAX balls. If
- * w and k are already in contact in it (C->again), their meeting again is no new contact:
- * the set's own contacts are solved together, the later collision's impulses with the
- * earlier one's, instead of adding w-k; k may be in it (then undone too, and w's contact with
- * it solved with the rest). deep: the chain starts at w's previous collision instead (its
- * record undp), so that w's last one is the later collision of one of its members, w
- * itself, and is undone first -- for a contact that lies before both of w's kinks. both:
- * k's last collision is in the set from the start too, for a contact on the incoming side
- * of both balls' hyperplanes where either collision has members that collided since (the
- * plain both-undo takes only collisions none of whose balls has). 1 and the set if it
- * applies, else 0. */
+/* A chain: w's last collision has members that collided once since, in kept collisions undone
+ * first, latest first, so every ball returns to its line before the earliest; bounded by
+ * ENG_UNDO_NMAX, one wall, no pair twice (C->again: w and k already in contact, solved without
+ * a new contact). deep: from w's previous collision; both: k's last one in the set too. 1 and
+ * the set, else 0. */
 static int chain_set(const rc_sim *s, int32_t w, int32_t k, int deep, int both, uchain *C)
 {
     const eng_undo *u = deep ? &s->pb->undp[w] : &s->pb->und[w];
@@ -204,9 +187,8 @@ typedef struct ugroup {
     double te[ENG_UNDO_NMAX];  /* ... and time */
 } ugroup;
 
-/* Every member back on its incoming line: stored at its kink E (where the collision's
- * moments were taken), with the momentum, hyperplane, glued tube and clock it had
- * before. */
+/* Every member back on its incoming line: at its kink E, with the momentum, hyperplane, tube
+ * and clock it had before. */
 static void lift(rc_sim *s, ugroup *G, int slices)
 {
     for (size_t m = 0; m < G->nm; m++) {
@@ -246,10 +228,8 @@ static void put_back(rc_sim *s, const ugroup *G)
     }
 }
 
-/* The collision's books, taken back: its moments at the kinks it was taken at, in its
- * members' order; heat and momentum with the same operations, negated; its counts. (The
- * members are at their kinks, lift; rec: their records of it.) The per-wall share is the
- * caller's (it needs the group's contact list). */
+/* The collision's books taken back with the same operations negated, its moments at its kinks;
+ * the per-wall share is the caller's. */
 static void unbook(rc_sim *s, const ugroup *G, const eng_undo *const *rec)
 {
     rc_particle in[ENG_UNDO_NMAX];
@@ -280,15 +260,9 @@ static void unbook(rc_sim *s, const ugroup *G, const eng_undo *const *rec)
     s->bk.events[RC_SIM_EV_TC] -= u->ntc;
 }
 
-/* The members' records once their collisions are undone. A ball with one collision
- * undone gets back the record of the one before it (X, its previous record), which the
- * group solved next shifts back again: without this, X's record was cleared with the
- * undone one's and lost. X's records, in each member of X, count the ball's collisions
- * after X by its counter, which the undone collision advanced and the group solved next
- * advances again (counters only grow: events predicted with a counter must not become
- * valid again); so X's counter for the ball goes up by one, and after the group the ball
- * reads as having collided once since X, as it has. A ball with two collisions undone (a
- * chain's) has no record of the one before them; its records are cleared. */
+/* The members' records once their collisions are undone: one undone collision gives back the
+ * record before it, its counter raised by one since counters only grow (so the ball reads as
+ * collided once since, as it has); two undone (a chain) clear it. */
 static void keep_previous(rc_sim *s, const ugroup *G, size_t ng)
 {
     int32_t once[2 * ENG_UNDO_NMAX];
@@ -336,10 +310,9 @@ static void keep_previous(rc_sim *s, const ugroup *G, size_t ng)
         }
 }
 
-/* One undo's plan: the collisions it takes back (G, undone in the order ord), each
- * member's record of its collision (rec: a ball whose later collision a chain undoes
- * first has its previous record, undp, put in place then, its last one kept in keep[]),
- * and what kind of undo it is. */
+/* One undo's plan: the collisions it takes back (undone in the order ord), each member's
+ * record of its collision (rec; a chain's deeper ones from undp, the last kept in keep[]), and
+ * its kind. */
 typedef struct uplan {
     ugroup G[UNDO_NG];
     size_t ng;
@@ -354,9 +327,8 @@ typedef struct uplan {
     int k_in;  /* k is a member of an undone collision */
 } uplan;
 
-/* Step 1: which collisions an undo of w's last collision for its contact with k takes
- * back -- w's alone (plain), with both k's too, or a chain (deep: from w's previous
- * one) -- within the bound of members. 1 and the plan, or 0: it does not apply. */
+/* Step 1: which collisions an undo of w's last for its contact with k takes back (plain, both,
+ * chain, deep), within the bound of members: 1 and the plan, or 0. */
 static int plan_undo(const rc_sim *s, int32_t w, int32_t k, int both, int deep, uplan *U)
 {
     ugroup *G = U->G;
@@ -390,11 +362,9 @@ static int plan_undo(const rc_sim *s, int32_t w, int32_t k, int both, int deep, 
             }
         }
     }
-    /* k a member of w's group too (inner): the group's kinks, each through its own event,
-     * can leave two members that were not in contact overlapping nearby; undone, the
-     * frame is asked for their contact from both incoming lines and the group solved with
-     * it -- unless the two were already in contact in it (a second contact of one pair is
-     * not a contact the model has) */
+    /* k a member of w's group too (inner): the group's own kinks can leave two members
+     * overlapping, so undone their contact is asked from both incoming lines, unless they were
+     * already in contact in it */
     const int inner = !wall && !U->chain && in_list(G[0].sl, G[0].nm, k);
     if (inner && (both || s->pb->und[w].partner == (int32_t)s->id[k] ||
                   s->pb->und[k].partner == (int32_t)s->id[w]))
@@ -419,11 +389,9 @@ static int plan_undo(const rc_sim *s, int32_t w, int32_t k, int both, int deep, 
     return 1;
 }
 
-/* Step 2: every undone member back on its incoming line, latest collision first (a
- * chain: each ball's previous record in place once its later collision is undone; the
- * delayed slices only once the frame has found the contact, since the flush that
- * restores them where it does not would leave a ball's between its two kinks on its
- * first line). */
+/* Step 2: every undone member back on its incoming line, latest first; the slices follow only
+ * once the contact is found, else a flush would leave a ball between its two kinks on its
+ * first line. */
 static void lift_all(rc_sim *s, uplan *U)
 {
     if (U->chain) {
@@ -451,12 +419,9 @@ static void put_all_back(rc_sim *s, const uplan *U)
         eng_slice_flush(s);
 }
 
-/* Step 3: w's contact with k from the lifted lines (*t2 its time, *dX2 = X - w's centre
- * then, *n2 its normal): the frame's, asked from a pair's light-crossing time before the
- * conflict's X and the undone kinks of w and (undone too) k -- from t_first itself the
- * pair's ZMF, whose simultaneity tilts by up to that much across the pair, often found
- * the two already overlapping; a wall's event of the model; none for a chain whose w
- * and k were in contact already. 1 if found. */
+/* Step 3: w's contact with k from the lifted lines (*t2, *dX2, *n2), asked a light-crossing
+ * time before the conflict and the undone kinks, since from t_first the ZMF's tilt found them
+ * overlapping; a wall's event of the model; none for a chain already in contact. 1 if found. */
 static int new_contact(rc_sim *s, const uplan *U, int32_t w, int32_t k, double tx, double *t2,
                        rc_vec3 *dX2, rc_vec3 *n2)
 {
@@ -474,9 +439,8 @@ static int new_contact(rc_sim *s, const uplan *U, int32_t w, int32_t k, double t
         rc_v3_set(n2, d, (wi & 1) ? 1.0 : -1.0);
         int found = rc_v3_get(s->b[w].v, d) * ((wi & 1) ? 1.0 : -1.0) > 0.0 &&
                     eng_wall_event_point(s, w, wi, t2, dX2) && *t2 > -INFINITY && *t2 < INFINITY;
-        /* ... and not on the future side of the undone kink's hyperplane, where the
-         * incoming piece is not the tube (its first contact would lie on that section,
-         * not built for walls) */
+        /* ... and not on the future side of the undone kink's hyperplane, where the incoming
+         * piece is not the tube */
         for (size_t m = 0; m < U->G[0].nm && found; m++)
             if (U->G[0].sl[m] == w)
                 found = !eng_glue_side(&U->G[0].g[m], &U->G[0].u[m], s->b[w].v, *t2, *dX2);
@@ -494,9 +458,8 @@ static int new_contact(rc_sim *s, const uplan *U, int32_t w, int32_t k, double t
     return pst == RC_OK;
 }
 
-/* Step 4, the named point where collisions are undone: the undo's counts; returns how
- * many of the undone contacts the overlap policy had decided (they stay counted once in
- * rc_sim_diag.overlaps). */
+/* Step 4, where collisions are undone: the undo's counts; returns how many undone contacts
+ * were the policy's (they stay counted once). */
 static uint32_t count_undone(rc_sim *s, const uplan *U, int both, int deep)
 {
     const int chain = U->chain;
@@ -538,9 +501,8 @@ typedef struct ucontacts {
     rc_vec3 wall_n;
 } ucontacts;
 
-/* Step 5: the undone collisions' contacts, read from their records before these are
- * cleared, and their books taken back, latest first (each collision's moments at its
- * own kinks). */
+/* Step 5: the undone contacts, read before their records are cleared, and their books taken
+ * back, latest first. */
 static void take_back(rc_sim *s, uplan *U, ucontacts *K)
 {
     K->n = 0;
@@ -581,9 +543,8 @@ static void take_back(rc_sim *s, uplan *U, ucontacts *K)
     }
 }
 
-/* Step 6: the read-out's records of the undone members (eng_pend) back to before the
- * undone kinks, latest first, then taken to be noted for the group's kinks like any
- * event's balls (k's too, if it is not a member). Returns how many, in ps[]. */
+/* Step 6: the undone members' read-out records back to before the undone kinks, then taken to
+ * be noted like any event's balls; returns how many, in ps[]. */
 static size_t pend_back(rc_sim *s, const uplan *U, int32_t k, eng_pend_snap *ps)
 {
     size_t nps = 0;
@@ -605,9 +566,8 @@ static size_t pend_back(rc_sim *s, const uplan *U, int32_t k, eng_pend_snap *ps)
     return nps;
 }
 
-/* Step 7: the group at T (the undone members on their incoming lines, and k): the wall's
- * share taken back, then the contacts -- the undone ones, then w's with k (t2, dX2, n2:
- * step 3's), events in the first ball's coordinates. RC_OK or RC_ENOMEM. */
+/* Step 7: the group at T, the wall's share taken back, then the undone contacts and w's with k
+ * (step 3's), events in the first ball's coordinates. RC_OK or RC_ENOMEM. */
 static int form_group(rc_sim *s, const uplan *U, const ucontacts *K, int32_t w, int32_t k,
                       double T, double t2, rc_vec3 dX2, rc_vec3 n2, size_t *nm_out,
                       size_t *nc_out)
@@ -656,14 +616,10 @@ static int form_group(rc_sim *s, const uplan *U, const ucontacts *K, int32_t w, 
     return RC_OK;
 }
 
-/* Ball w met ball k before its last kink along its tube (a tube conflict at the
- * prediction's X, table time tx; an overlap the frame reported: tx = inf): w's last
- * collision -- with both, k's too; deep, w's two last; k < 0 a wall's code -- undone
- * and solved with w's contact with k by the group rule, each ball's velocity changed at
- * its own kink, in the steps above (papers/shape-change.md). The group's members get
- * records of their own when its contacts form a tree, so a later conflict can undo it
- * into a larger one, up to ENG_UNDO_NMAX members (a choice: it bounds the work). 1 when
- * done; 0 when it does not apply (nothing changed); the law's failure (negative). */
+/* Ball w met k before its last kink (a tube conflict at tx; tx = inf: an overlap the frame
+ * reported): w's last collision (both: k's too; deep: w's two last; k < 0 a wall) undone and
+ * solved with w's contact with k in the steps above, up to ENG_UNDO_NMAX members (a choice
+ * bounding the work). 1 done, 0 does not apply, or the law's failure. */
 static int rollback(rc_sim *s, int32_t w, int32_t k, double T, double tx, int both, int deep)
 {
     uplan U;
@@ -703,14 +659,9 @@ int eng_undo_wall(rc_sim *s, int32_t i, int32_t wall, double T, double tx)
     return rollback(s, i, wall, T, tx, 0, 0);
 }
 
-/* Which collisions a conflict at ball i's event with partner bp can undo: a tube
- * conflict's X (the prediction's) on the incoming side of one ball's hyperplane names
- * that ball's last collision, then both balls' if the frame finds no contact from that
- * ball's incoming line alone; on the incoming side of both, both. An overlap the frame
- * reported (no X) tries the ball with the later kink, then the other, then both. Last,
- * where an attempt found the contact from a ball's incoming line before its previous kink
- * too, that ball's two last collisions (deep). 1 done, 0 none applies, or the law's
- * failure. */
+/* Which collisions a conflict at i's event with bp can undo: X on one ball's incoming side
+ * names that ball's, then both; on both sides, both; an overlap without X tries the later
+ * kink's ball, the other, then both; last, deep. 1, 0, or the law's failure. */
 int eng_undo_conflict(rc_sim *s, int32_t i, int32_t bp, double T, int tube)
 {
     int st;

@@ -1,10 +1,7 @@
-/* engine/perball/zmf_group.c — per_ball frames: a group of contacts formed by simultaneity in the
- * group's zero-momentum frame rather than at one table time (papers/simultaneous-contacts.md,
- * "Forming the group in its ZMF"). A further contact of a member joins the event's when
- * the frame's contact event of that pair lies within sim_tol light-crossing times of the
- * event's own contact event in the ZMF of the group's balls, the joining ball included;
- * the group is then solved, each member kinked at its own event, by the undo's machinery
- * (eng_solve_at_events). */
+/* engine/perball/zmf_group.c — per_ball frames: a group formed by simultaneity in its own ZMF
+ * rather than at one table time (papers/simultaneous-contacts.md): a member's further contact
+ * joins when its event lies within sim_tol light-crossing times of the first in the ZMF of the
+ * group and the joining ball; solved by eng_solve_at_events. */
 #include <math.h>
 
 #include "../group.h"
@@ -23,9 +20,8 @@ typedef struct zcon {
     rc_vec3 x;
 } zcon;
 
-/* The group formed so far: members (internal index), each one's centre at T relative to
- * ball i's (nearest image), the contacts, and the members' total four-momentum (P, M =
- * E / c^2). */
+/* The group so far: members, each centre at T relative to ball i's (nearest image), the
+ * contacts, and the total four-momentum (P, M = E / c^2). */
 typedef struct zgroup {
     size_t nm, nc;
     int32_t mem[ENG_EVGROUP_NMAX];
@@ -51,10 +47,8 @@ static int have(const zgroup *g, int a, int b)
     return 0;
 }
 
-/* What every neighbour of member mi is tested with: its centre at T (stored line) and
- * velocity; for try_join's bound on how late after T a contact event of it can be
- * simultaneous with the first contact event, the parts that do not depend on the
- * neighbour: |t0 - T|, the reach |x_m - x0| + r_m, the group's speed so far. */
+/* What every neighbour of member mi is tested with: its centre at T and velocity, and the
+ * neighbour-free parts of try_join's bound (|t0 - T|, the reach, the group's speed). */
 typedef struct zmem {
     int mi;
     rc_vec3 x, v;
@@ -83,19 +77,10 @@ static zmem member_ctx(const rc_sim *s, const zgroup *g, size_t mi, double T)
     return z;
 }
 
-/* Can the frame's contact event X of member z (ball m) and ball k (dx: k - m at T) be
- * simultaneous with the first one? try_join's condition |F| <= tol_f, with
- * F = (t - T) D - A - P.e / c^2 for X = m's centre at t + e, decided before the frame is
- * asked from what engine/perball/pair_zmf.h proves of X. With equal ZMF Lorentz factors X is the
- * inner spheres' contact point, F follows; factors delta <= 1e-13 apart move it by at most
- * ~ R sqrt(2 delta) (glue_pair.h back_refused). Otherwise X's ZMF time T_X lies between the
- * outer and inner spheres' first contacts and (t - T) q = T_X + u.e / c^2
- * (q = 1 - u.v_m / c^2 > 0) with e in m's shape: t - T within [(T_lo - h_u) / q,
- * (T_hi + h_u) / q], h_u its support along u over c^2, and P.e / c^2 within +-hPc. 0 only
- * where F misses [-tol_f, tol_f] by more than a margin: 1e-6 of the pair's time scale (as
- * back_refused's, which covers the frame's tolerance on X and this rounding) times 2M for
- * F's units, plus rounding of absolute times. No outer contact is no verdict (near
- * grazing its sign is round-off). */
+/* Can X of member z and ball k be simultaneous with the first (try_join's |F| <= tol_f)?
+ * Decided before asking the frame from the bounds engine/perball/pair_zmf.h proves of X; 0
+ * only where F misses by more than a margin for the frame's tolerance and rounding, and no
+ * outer contact is no verdict. */
 static int can_join(const rc_sim *s, const zmem *z, int32_t m, const eng_ball *bk,
                     rc_vec3 dx, rc_vec3 P, double D, double A, double hPc, double tol_f,
                     double M, double T)
@@ -136,18 +121,14 @@ static int can_join(const rc_sim *s, const zmem *z, int32_t m, const eng_ball *b
     return !(t_lo * D - A - hPc > tol_f + margin || t_hi * D - A + hPc < -tol_f - margin);
 }
 
-/* Does ball k have a contact with member z.mi, not yet in the group, simultaneous with the
- * group's first one in the ZMF of the group and k? Then it is added (k too, if new): 1;
- * else 0 (nothing changed). */
+/* Does ball k have a contact with member z.mi simultaneous with the group's first in the ZMF
+ * of the group and k? Then added: 1; else 0 (nothing changed). */
 static int try_join(rc_sim *s, zgroup *g, const zmem *z, int32_t k, double T)
 {
     const eng_ball *bk = &s->b[k];
     const double ic2 = s->inv_c2, sig = z->r + bk->r;
-    /* centres at T (stored lines), relative to m's; the bounding spheres must approach and
-     * touch by tb, a bound of tau_max below from the group's velocity with k, |u| <= beta
-     * c, beta the larger of the group's so far and k's (|dx + t dv|^2 = sig^2 at some t <=
-     * tb: at tb itself, or its vertex before with a real root) -- the cheap test most
-     * neighbours fail */
+    /* centres at T relative to m's; the bounding spheres must approach and touch by tb (a
+     * bound of tau_max from the group's and k's speeds): the cheap test most neighbours fail */
     const rc_vec3 dx = eng_image(s, rc_v3_sub(rc_v3_axpy(bk->x, T - bk->t, bk->v), z->x));
     const rc_vec3 dv = rc_v3_sub(bk->v, z->v);
     const double b = rc_v3_dot(dx, dv), d2 = rc_v3_norm2(dx), dd = d2 - sig * sig;
@@ -180,16 +161,10 @@ static int try_join(rc_sim *s, zgroup *g, const zmem *z, int32_t k, double T)
         P = rc_v3_add(P, ak->p);
         M += eng_mass_rel(ak->m, ak->p, ic2);
     }
-    /* Where must the contact event X lie in time for it to be simultaneous with the first,
-     * X0? X lies in m's table-frame shape at its time, so X = m's centre + e with P.e <=
-     * |P| h_m(P/|P|), its support along P; its ZMF time difference to X0 is then, times
-     * the group's rest mass,
-     *   M (t - t0) - P.(x - x0)/c^2 = (t - T) D - A - P.e/c^2,   D = M - P.v_m/c^2 > 0,
-     * and it vanishes no later than tau_max after T. The frame's contact comes no earlier
-     * than the bounding spheres' and, with the table-frame shapes meeting there, no
-     * earlier than the centre line allows; a pair that cannot meet by tau_max (with the
-     * tolerance below: a ZMF time difference sim_tol sig / c, which is at most
-     * sim_tol sig M / (c D) of table time) is not asked. */
+    /* When must X lie to be simultaneous with X0? M (t - t0) - P.(x - x0)/c^2 = (t - T) D - A
+     * - P.e/c^2 vanishes no later than tau_max after T, and the frame's contact comes no
+     * earlier than the spheres' and the centre line's: a pair that cannot meet by then (with
+     * sim_tol) is not asked. */
     const zcon *c0 = &g->con[0];
     const rc_vec3 relm = g->rel[mi];
     const double D = M - rc_v3_dot(P, z->v) * ic2;
@@ -243,11 +218,9 @@ static int try_join(rc_sim *s, zgroup *g, const zmem *z, int32_t k, double T)
     return 1;
 }
 
-/* At ball i's event with ball bp at table time T, contact event X0 = (tx0, dX0 from i's
- * centre then on its stored line): both members (grp_ball[0], [1]) are at T, the event's
- * contact is grp_con[0]. Grow the group through shared balls by try_join; with a further
- * contact, form it in the engine's group arrays and solve it (1, or the law's failure);
- * else 0, nothing changed. */
+/* At i's event with bp at T (X0: tx0, dX0): grow the group through shared balls by try_join;
+ * with a further contact, form and solve it (1, or the law's failure); else 0, nothing
+ * changed. */
 int eng_zmf_group(rc_sim *s, int32_t i, int32_t bp, double T, double tx0, rc_vec3 dX0)
 {
     zgroup g;
@@ -285,9 +258,8 @@ int eng_zmf_group(rc_sim *s, int32_t i, int32_t bp, double T, double tx0, rc_vec
     }
     if (g.nc == 1)
         return 0;
-    /* the group in the engine's arrays: members at T on their stored (incoming) lines,
-     * contacts with their events in i's coordinates; the read-out's records of the members
-     * the event did not name, noted after it (the caller notes i's and bp's) */
+    /* the group in the engine's arrays: members at T on their incoming lines, contacts in i's
+     * coordinates; the read-out records of members the event did not name noted after it */
     eng_pend_snap ps[ENG_EVGROUP_NMAX];
     size_t nps = 0, nm = 2, nc = 1;
     for (size_t q = 2; q < g.nm; q++) {
@@ -305,10 +277,8 @@ int eng_zmf_group(rc_sim *s, int32_t i, int32_t bp, double T, double tx0, rc_vec
         s->grp_con[j].t = T + g.con[j].t;
         s->grp_con[j].x = rc_v3_add(xi, g.con[j].x);
     }
-    /* the members' walls, by the table's criterion at T as any group's (the wall's rest
-     * frame is the table, where a group with a wall is solved): left out, a member pushed
-     * into a wall it touches would meet it as a next event at once, one contact after the
-     * other (up to the contacts the undo's arrays hold: the rest are events of their own) */
+    /* the members' walls by the table's criterion at T (the wall's rest frame is the table):
+     * left out, a member pushed into a wall would meet it at once, contact after contact */
     if (eng_group_walls(s, nm, &nc, ENG_EVGROUP_NMAX + 1) != RC_OK)
         return RC_ENOMEM;
     return eng_solve_at_events(s, nm, nc, ps, nps, 1, 0);
