@@ -1,4 +1,4 @@
-// test_web.mjs — the page in a real browser (Debian's chromium, driven by playwright-core):
+// test_web.mjs — the page in a real browser (Debian's chromium, driven by web/cdp.mjs):
 //   node test_web.mjs SITE_DIR RELCOL_SIM OUT_DIR            the checks (web/test.sh)
 //   node test_web.mjs SITE_DIR BENCH_ENGINE OUT_DIR --bench  frame rate and engine speed
 // The page is served from SITE_DIR by a static server in this process (loopback only).
@@ -13,10 +13,7 @@ import fs from 'node:fs';
 import http from 'node:http';
 import os from 'node:os';
 import path from 'node:path';
-import { createRequire } from 'node:module';
-
-const require = createRequire(import.meta.url);
-const { chromium } = require('playwright-core');
+import { chromium } from './cdp.mjs';
 
 const [site, tool, out] = process.argv.slice(2, 5);
 const clockTicks = Number(execFileSync('getconf', ['CLK_TCK'], { encoding: 'utf8' })) || 100;
