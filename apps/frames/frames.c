@@ -228,7 +228,7 @@ static int write_script(const char *path, const options *o, size_t nf, char *err
             nobs, app_fmt(o->eps, fe), nobs == NOBS ? "" : ": no heat, no heat panel");
     for (int ib = 1; ib < NB; ib++)
         fprintf(f, "%g%s", impacts[ib], ib + 1 < NB ? ", " : "");
-    fprintf(f, " (head-on, b = 0, has no frame difference);"
+    fprintf(f, " (head-on, b = 0, has no frame difference)}\\n{/*0.8"
                " solid: one frame of the pair ignores the contraction, dashed: both contract}\"\n");
     static const char *const ylab[NOBS] = {
         "|Δθ| deflection of ball 0 (rad)", "max |Δv′| / v", "max |ΔQ| / (m v^2/2)"};
