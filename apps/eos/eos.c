@@ -247,28 +247,44 @@ static int write_script(const char *path, const options *o, char *err)
                 in->dim == 3 ? "Kolafa" : "Luding", t1, t2, in->dim == 3 ? "Kolafa" : "Luding",
                 in->dim == 3 ? "Kolafa" : "Luding");
     } else {
-        app_gnuplot_head(f, "eos.png", "size 1500,520 enhanced font 'Sans,12' linewidth 1.4", 0);
+        /* against packing when theta is one value (the common run), else against theta;
+         * theories joined by lines only along the one list that varies (the rows go
+         * packing by packing, so a line along theta would jump between packings) */
+        const int by_pack = o->ntheta == 1, joined = o->npack == 1 || o->ntheta == 1;
+        const int xc = by_pack ? 4 : 5;
+        const char *with = joined ? "linespoints" : "points";
+        char xr[96];
+        if (by_pack)
+            snprintf(xr, sizeof xr, "set xrange [0:%.4g]\nset logscale y", pmax + 0.05);
+        else
+            snprintf(xr, sizeof xr, "set xrange [%.4g:%.4g]\nset logscale xy", 0.5 * tmin,
+                     2.0 * tmax);
+        app_gnuplot_head(f, "eos.png", "size 1500,600 enhanced font 'Sans,12' linewidth 1.4", 0);
         fprintf(f,
 "set multiplot layout 1,3 title \"Transport coefficients of %d-D hard balls (Einstein–Helfand), "
-"N = %zu, c = %s, frame %s; theory: Enskog (classical) at the same kT, the sphere kernel's Chapman–Enskog\"\n"
-"set xlabel 'θ'\nset grid lc rgb '#dddddd'\nset key top left box opaque\nset logscale xy\n"
-"set xrange [%.4g:%.4g]\n"
+"N = %zu, c = %s, frame %s\\n{/*0.8 {/:Bold blue points}: relcol, error bars one standard "
+"error over blocks;   {/:Bold red}: Enskog (classical) at the same kT}\\n{/*0.8 {/:Bold violet, "
+"dotted}: the sphere kernel's own Chapman–Enskog;   {/:Bold green, dashed} (D): Speedy's "
+"N = 500 fit moved to this box}\"\n"
+"set xlabel '%s'\nset grid lc rgb '#dddddd'\nunset key\n"
+"%s\n"
 "set ylabel 'D'\n"
-"plot 'eos.csv' skip 1 using 5:14:15 with yerrorbars pt 7 lc rgb '#1f77b4' title 'relcol', \\\n"
-"     '' skip 1 using 5:20 with linespoints lc rgb '#d62728' title 'Enskog', \\\n"
-"     '' skip 1 using 5:23 with linespoints dt 2 lc rgb '#2ca02c' title 'Speedy (N = 500) moved to this box', \\\n"
-"     '' skip 1 using 5:27 with linespoints dt 3 lc rgb '#9467bd' title 'Chapman–Enskog, sphere kernel'\n"
+"plot 'eos.csv' skip 1 using %d:20 with %s lc rgb '#d62728' title 'Enskog', \\\n"
+"     '' skip 1 using %d:23 with %s dt 2 lc rgb '#2ca02c' title 'Speedy (N = 500) moved to this box', \\\n"
+"     '' skip 1 using %d:27 with %s dt 3 lc rgb '#9467bd' title 'Chapman–Enskog, sphere kernel', \\\n"
+"     '' skip 1 using %d:14:15 with yerrorbars pt 7 ps 1.2 lc rgb '#1f77b4' title 'relcol'\n"
 "set ylabel 'η_s'\n"
-"plot 'eos.csv' skip 1 using 5:16:17 with yerrorbars pt 7 lc rgb '#1f77b4' title 'relcol', \\\n"
-"     '' skip 1 using 5:21 with linespoints lc rgb '#d62728' title 'Enskog', \\\n"
-"     '' skip 1 using 5:28 with linespoints dt 3 lc rgb '#9467bd' title 'Chapman–Enskog, sphere kernel'\n"
+"plot 'eos.csv' skip 1 using %d:21 with %s lc rgb '#d62728' title 'Enskog', \\\n"
+"     '' skip 1 using %d:28 with %s dt 3 lc rgb '#9467bd' title 'Chapman–Enskog, sphere kernel', \\\n"
+"     '' skip 1 using %d:16:17 with yerrorbars pt 7 ps 1.2 lc rgb '#1f77b4' title 'relcol'\n"
 "set ylabel 'λ'\n"
-"plot 'eos.csv' skip 1 using 5:18:19 with yerrorbars pt 7 lc rgb '#1f77b4' title 'relcol', \\\n"
-"     '' skip 1 using 5:22 with linespoints lc rgb '#d62728' title 'Enskog', \\\n"
-"     '' skip 1 using 5:29 with linespoints dt 3 lc rgb '#9467bd' title 'Chapman–Enskog, sphere kernel'\n"
+"plot 'eos.csv' skip 1 using %d:22 with %s lc rgb '#d62728' title 'Enskog', \\\n"
+"     '' skip 1 using %d:29 with %s dt 3 lc rgb '#9467bd' title 'Chapman–Enskog, sphere kernel', \\\n"
+"     '' skip 1 using %d:18:19 with yerrorbars pt 7 ps 1.2 lc rgb '#1f77b4' title 'relcol'\n"
 "unset multiplot\n",
                 in->dim, in->n, app_fmt(in->c, fc), in->frame ? in->frame->name : "sphere",
-                0.5 * tmin, 2.0 * tmax);
+                by_pack ? "packing fraction η" : isinf(in->c) ? "θ (kT at c = ∞)" : "θ = kT/(mc^2)", xr, xc, with, xc, with, xc,
+                with, xc, xc, with, xc, with, xc, xc, with, xc, with, xc);
     }
     return app_atomic_commit(&a, err);
 }

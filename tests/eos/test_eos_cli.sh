@@ -41,6 +41,10 @@ run '' --n 300 --packing 0.05 --transport --t-run 400 --lag 10 --out "$T/t"
 expect_ok transport
 d=$(awk -F, 'NR == 2 {print ($14 > 0 && $16 > 0 && $18 > 0) ? "ok" : "bad"}' "$T/t/eos.csv")
 [ "$d" = ok ] && ok || bad "transport columns: $(sed -n 2p "$T/t/eos.csv")"
+# its figure: against packing (one theta), the symbols named in the heading (the keys
+# of three panels covered their axes' labels)
+grep -qF "using 4:14:15 with yerrorbars" "$T/t/eos.gp" && grep -qF "{/:Bold blue points}: relcol" "$T/t/eos.gp" \
+    && ok || bad "transport eos.gp: not against packing, or its symbols unnamed"
 
 # fields without a measurement or a theory are empty, never nan (D_chapman_enskog and its
 # two neighbours without --transport)
