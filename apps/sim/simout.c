@@ -557,12 +557,12 @@ static int write_figures(sim_output *o, char *err)
                        ")\nset cbrange [0:%zu]\nset cbtics ('0' 0.5", n);
         for (size_t k = 1; k < n; k++)
             pl += snprintf(palette + pl, sizeof palette - (size_t)pl, ", '%zu' %zu.5", k, k);
-        snprintf(palette + pl, sizeof palette - (size_t)pl, ")\nset cblabel 'ball number'\n");
+        snprintf(palette + pl, sizeof palette - (size_t)pl, ")\nset cblabel 'ball number' offset 1,0\n");
         shift = 0.5;
     } else {
         snprintf(palette, sizeof palette,
                  "set palette defined (0 '#1f77b4', 1 '#2ca02c', 2 '#ff7f0e', 3 '#d62728')\n"
-                 "set cbrange [-0.5:%zu.5]\nset cblabel 'ball number'\n", n ? n - 1 : 0);
+                 "set cbrange [-0.5:%zu.5]\nset cblabel 'ball number' offset 1,0\n", n ? n - 1 : 0);
     }
     /* each ball's path: paths.dat holds one block per ball; the last frame's balls over
      * them, filled in their colour */

@@ -390,7 +390,7 @@ if [ $st -eq 0 ] && [ -s "$tg" ] && [ -s "$jg" ]; then
     bad=
     for f in "$tg" "$jg"; do
         for want in "set xlabel 'x (the scenario''s length unit)'" "set ylabel 'y'" \
-                    "set cblabel 'ball number'" "Lorentz-contracted along its velocity"; do
+                    "set cblabel 'ball number' offset 1,0" "Lorentz-contracted along its velocity"; do
             grep -qF "$want" "$f" || bad="$bad; $(basename "$f") lacks: $want"
         done
     done
