@@ -201,57 +201,90 @@ static int write_script(const char *path, const options *o, char *err)
     }
     fprintf(f, "# eos.gp — written by relcol-eos; run `gnuplot eos.gp` in this folder.\n");
     if (!in->transport) {
-        app_gnuplot_head(f, "eos.png", "size 1200,560 enhanced font 'Sans,12' linewidth 1.4", 0);
+        /* Both panels against the theories; the right one relative to the first theory
+         * (Kolafa, or Luding in 2-D), where the second is a curve against it, not a
+         * point. A run of one point also gets its numbers written by it. */
+        const char *t1 = in->dim == 3 ? "Kolafa" : "Luding 2001",
+                   *t2 = in->dim == 3 ? "Carnahan–Starling" : "Santos et al. 1995";
+        app_gnuplot_head(f, "eos.png", "size 1300,600 enhanced font 'Sans,12' linewidth 1.4", 0);
         fprintf(f,
+"%s\n"
+"stats 'eos.csv' skip 1 using 8 nooutput\n"
+"npts = STATS_records\n"
+"if (npts == 1) { stats 'eos.csv' skip 1 using 4 nooutput; e1 = STATS_mean; "
+"stats 'eos.csv' skip 1 using 8 nooutput; z = STATS_mean; "
+"stats 'eos.csv' skip 1 using 9 nooutput; zse = STATS_mean }\n"
 "set multiplot layout 1,2 title \"Equation of state of %d-D hard balls, N = %zu, c = %s, "
-"frame %s\"\n"
+"frame %s\\n{/*0.8 relcol: Z from the exact flux moments, error bars one standard error over "
+"blocks of the run}\"\n"
 "set xlabel 'packing fraction η'\nset grid lc rgb '#dddddd'\nset key top left box opaque\n"
 "set xrange [0:%.4g]\n"
-"%s\n"
+"set offsets 0, 0, graph 0.08, graph 0.08\n"
 "set ylabel 'Z = PV/(NkT)'\n"
-"plot 'eos.csv' skip 1 using 4:8:9 with yerrorbars pt 7 lc rgb '#1f77b4' title 'relcol', \\\n"
-"     z1(x) with lines lw 2 lc rgb '#d62728' title '%s', \\\n"
-"     z2(x) with lines lw 2 dt 2 lc rgb '#2ca02c' title '%s'\n"
-"set ylabel 'Z / Z_{theory} - 1'\nset key top left\n"
-"plot 'eos.csv' skip 1 using 4:($8/$10-1):($9/$10) with yerrorbars pt 7 lc rgb '#1f77b4' "
-"title 'relcol against %s', '' skip 1 using 4:($11/$10-1) with linespoints dt 2 lc rgb "
-"'#2ca02c' title '%s', 0 with lines lc rgb '#d62728' notitle\n"
+"set title 'Z against the equations of state'\n"
+"if (npts == 1) { set label 1 sprintf(\"relcol at η = %%.3g: Z = %%.5f ± %%.5f\\n%s: %%.5f\\n%s: %%.5f\", "
+"e1, z, zse, z1(e1), z2(e1)) at first e1, first z right offset -1.5,-1.2 front }\n"
+"plot z1(x) with lines lw 2 lc rgb '#d62728' title '%s', \\\n"
+"     z2(x) with lines lw 2 dt 2 lc rgb '#2ca02c' title '%s', \\\n"
+"     'eos.csv' skip 1 using 4:8:9 with yerrorbars pt 7 ps 1.3 lw 1.5 lc rgb '#1f77b4' title 'relcol'\n"
+"unset label 1\n"
+"set ylabel '100 (Z / Z_{%s} − 1)  (%%)'\n"
+"set title 'relative to %s'\n"
+"set key bottom left box opaque\n"
+"plot 0 with lines lw 2 lc rgb '#d62728' title '%s (the reference, 0)', \\\n"
+"     100 * (z2(x) / z1(x) - 1) with lines lw 2 dt 2 lc rgb '#2ca02c' title '%s against %s', \\\n"
+"     'eos.csv' skip 1 using 4:(100*($8/$10-1)):(100*$9/$10) with yerrorbars pt 7 ps 1.3 lw 1.5 lc rgb '#1f77b4' "
+"title 'relcol against %s'\n"
 "unset multiplot\n",
-                in->dim, in->n, app_fmt(in->c, fc), in->frame ? in->frame->name : "sphere",
-                pmax + 0.05,
                 in->dim == 3
                     ? "z1(x) = (1 + x + x**2 - 2./3 * x**3 * (1 + x)) / (1 - x)**3\n"
                       "z2(x) = (1 + x + x**2 - x**3) / (1 - x)**3"
                     : "z1(x) = (1 + x**2 / 8) / (1 - x)**2 - 0.043 * x**4 / (1 - x)**3\n"
                       "z2(x) = 1 / (1 - 2 * x + (2 * pi / (2 * sqrt(3)) - 1) / (pi / (2 * "
                       "sqrt(3)))**2 * x**2)",
-                in->dim == 3 ? "Kolafa" : "Luding 2001",
-                in->dim == 3 ? "Carnahan–Starling" : "Santos et al. 1995",
-                in->dim == 3 ? "Kolafa" : "Luding",
-                in->dim == 3 ? "Carnahan–Starling" : "Santos et al.");
+                in->dim, in->n, app_fmt(in->c, fc), in->frame ? in->frame->name : "sphere",
+                pmax + 0.05, t1, t2, t1, t2, in->dim == 3 ? "Kolafa" : "Luding",
+                in->dim == 3 ? "Kolafa" : "Luding", t1, t2, in->dim == 3 ? "Kolafa" : "Luding",
+                in->dim == 3 ? "Kolafa" : "Luding");
     } else {
-        app_gnuplot_head(f, "eos.png", "size 1500,520 enhanced font 'Sans,12' linewidth 1.4", 0);
+        /* against packing when theta is one value (the common run), else against theta;
+         * theories joined by lines only along the one list that varies (the rows go
+         * packing by packing, so a line along theta would jump between packings) */
+        const int by_pack = o->ntheta == 1, joined = o->npack == 1 || o->ntheta == 1;
+        const int xc = by_pack ? 4 : 5;
+        const char *with = joined ? "linespoints" : "points";
+        char xr[96];
+        if (by_pack)
+            snprintf(xr, sizeof xr, "set xrange [0:%.4g]\nset logscale y", pmax + 0.05);
+        else
+            snprintf(xr, sizeof xr, "set xrange [%.4g:%.4g]\nset logscale xy", 0.5 * tmin,
+                     2.0 * tmax);
+        app_gnuplot_head(f, "eos.png", "size 1500,600 enhanced font 'Sans,12' linewidth 1.4", 0);
         fprintf(f,
 "set multiplot layout 1,3 title \"Transport coefficients of %d-D hard balls (Einstein–Helfand), "
-"N = %zu, c = %s, frame %s; theory: Enskog (classical) at the same kT, the sphere kernel's Chapman–Enskog\"\n"
-"set xlabel 'θ'\nset grid lc rgb '#dddddd'\nset key top left box opaque\nset logscale xy\n"
-"set xrange [%.4g:%.4g]\n"
+"N = %zu, c = %s, frame %s\\n{/*0.8 {/:Bold blue points}: relcol, error bars one standard "
+"error over blocks;   {/:Bold red}: Enskog (classical) at the same kT}\\n{/*0.8 {/:Bold violet, "
+"dotted}: the sphere kernel's own Chapman–Enskog;   {/:Bold green, dashed} (D): Speedy's "
+"N = 500 fit moved to this box}\"\n"
+"set xlabel '%s'\nset grid lc rgb '#dddddd'\nunset key\n"
+"%s\n"
 "set ylabel 'D'\n"
-"plot 'eos.csv' skip 1 using 5:14:15 with yerrorbars pt 7 lc rgb '#1f77b4' title 'relcol', \\\n"
-"     '' skip 1 using 5:20 with linespoints lc rgb '#d62728' title 'Enskog', \\\n"
-"     '' skip 1 using 5:23 with linespoints dt 2 lc rgb '#2ca02c' title 'Speedy (N = 500) moved to this box', \\\n"
-"     '' skip 1 using 5:27 with linespoints dt 3 lc rgb '#9467bd' title 'Chapman–Enskog, sphere kernel'\n"
+"plot 'eos.csv' skip 1 using %d:20 with %s lc rgb '#d62728' title 'Enskog', \\\n"
+"     '' skip 1 using %d:23 with %s dt 2 lc rgb '#2ca02c' title 'Speedy (N = 500) moved to this box', \\\n"
+"     '' skip 1 using %d:27 with %s dt 3 lc rgb '#9467bd' title 'Chapman–Enskog, sphere kernel', \\\n"
+"     '' skip 1 using %d:14:15 with yerrorbars pt 7 ps 1.2 lc rgb '#1f77b4' title 'relcol'\n"
 "set ylabel 'η_s'\n"
-"plot 'eos.csv' skip 1 using 5:16:17 with yerrorbars pt 7 lc rgb '#1f77b4' title 'relcol', \\\n"
-"     '' skip 1 using 5:21 with linespoints lc rgb '#d62728' title 'Enskog', \\\n"
-"     '' skip 1 using 5:28 with linespoints dt 3 lc rgb '#9467bd' title 'Chapman–Enskog, sphere kernel'\n"
+"plot 'eos.csv' skip 1 using %d:21 with %s lc rgb '#d62728' title 'Enskog', \\\n"
+"     '' skip 1 using %d:28 with %s dt 3 lc rgb '#9467bd' title 'Chapman–Enskog, sphere kernel', \\\n"
+"     '' skip 1 using %d:16:17 with yerrorbars pt 7 ps 1.2 lc rgb '#1f77b4' title 'relcol'\n"
 "set ylabel 'λ'\n"
-"plot 'eos.csv' skip 1 using 5:18:19 with yerrorbars pt 7 lc rgb '#1f77b4' title 'relcol', \\\n"
-"     '' skip 1 using 5:22 with linespoints lc rgb '#d62728' title 'Enskog', \\\n"
-"     '' skip 1 using 5:29 with linespoints dt 3 lc rgb '#9467bd' title 'Chapman–Enskog, sphere kernel'\n"
+"plot 'eos.csv' skip 1 using %d:22 with %s lc rgb '#d62728' title 'Enskog', \\\n"
+"     '' skip 1 using %d:29 with %s dt 3 lc rgb '#9467bd' title 'Chapman–Enskog, sphere kernel', \\\n"
+"     '' skip 1 using %d:18:19 with yerrorbars pt 7 ps 1.2 lc rgb '#1f77b4' title 'relcol'\n"
 "unset multiplot\n",
                 in->dim, in->n, app_fmt(in->c, fc), in->frame ? in->frame->name : "sphere",
-                0.5 * tmin, 2.0 * tmax);
+                by_pack ? "packing fraction η" : isinf(in->c) ? "θ (kT at c = ∞)" : "θ = kT/(mc^2)", xr, xc, with, xc, with, xc,
+                with, xc, xc, with, xc, with, xc, xc, with, xc, with, xc);
     }
     return app_atomic_commit(&a, err);
 }

@@ -20,6 +20,7 @@
 
 #include "app.h"
 #include "observables.h"
+#include "sweep_plot.h"
 
 static const char *const prog = "relcol-sweep";
 static int rank = 0, nranks = 1;
@@ -292,30 +293,7 @@ static int run(int argc, char **argv)
     free(x);
     free(y);
 
-    if (app_atomic_open(&a, gp, err)) {
-        rc = fail(1, "%s", err);
-        goto files_done;
-    }
-    fprintf(a.f,
-            "# relcol-sweep: deviation from the classical limit against c (run: gnuplot sweep.gp)\n"
-            "if (!exists(\"outfile\")) outfile = 'sweep.png'\n"
-            "set terminal pngcairo size 1100,760 enhanced font ',12'\n"
-            "set output outfile\nset datafile separator ','\n"
-            "set logscale xy\nset format x '10^{%%L}'\nset format y '10^{%%L}'\n"
-            "set xlabel 'c / |v|_{max}'\nset ylabel 'relative deviation from c = ∞'\n"
-            "set title \"Classical-limit convergence: collision law, time of impact, soft reference, engine run\\n"
-            "{/*0.8 ε = %g, soft stiffness %g; dashed: (|v|_{max}/c)^2}\"\n"
-            "set grid\nset key bottom left font ',10'\n",
-            su.eps, su.stiffness);
-    fprintf(a.f, "plot '%s' u 2:3 w l dt 2 lw 2 lc rgb '#555555' t '(|v|_{max}/c)^2'", "sweep.csv");
-    col = 0;
-    for (size_t s = 0; s < ns; s++)
-        for (int g = 0; g < list[s]->n_groups; g++, col++)
-            fprintf(a.f, ", \\\n     '' u 2:($%zu > %g ? $%zu : 1/0) w lp pt %zu ps 0.8 lw 1.5 t '%s: %s (order %.3f)'",
-                    4 + col, list[s]->floor, 4 + col, 5 + 2 * col, list[s]->name, list[s]->group[g],
-                    col < 64 ? order[col] : NAN);
-    fprintf(a.f, "\n");
-    if (app_atomic_commit(&a, err)) {
+    if (sweep_plot_write(gp, list, ns, order, col < 64 ? col : 64, su.eps, su.stiffness, err)) {
         rc = fail(1, "%s", err);
         goto files_done;
     }

@@ -27,11 +27,24 @@ close z-kolafa "$z" 2.409375 0.01
 if command -v gnuplot > /dev/null 2>&1; then
     [ -s "$T/e/eos.png" ] && ok || bad "no eos.png"
 fi
+# the figure explains itself (issue 38): the right panel is relative to Kolafa and names
+# Carnahan-Starling's curve as against Kolafa (not a relcol point); a one-point run writes
+# its numbers; the error bars are not cut at the frame (offsets)
+gp=$T/e/eos.gp
+for want in "title 'Carnahan–Starling against Kolafa'" "title 'relcol against Kolafa'" \
+            "100 * (z2(x) / z1(x) - 1)" "Z_{Kolafa}" "if (npts == 1) { set label 1" \
+            "set offsets 0, 0, graph 0.08, graph 0.08"; do
+    grep -qF "$want" "$gp" && ok || bad "eos.gp lacks: $want"
+done
 # with --transport the CSV carries finite D, eta, lambda
 run '' --n 300 --packing 0.05 --transport --t-run 400 --lag 10 --out "$T/t"
 expect_ok transport
 d=$(awk -F, 'NR == 2 {print ($14 > 0 && $16 > 0 && $18 > 0) ? "ok" : "bad"}' "$T/t/eos.csv")
 [ "$d" = ok ] && ok || bad "transport columns: $(sed -n 2p "$T/t/eos.csv")"
+# its figure: against packing (one theta), the symbols named in the heading (the keys
+# of three panels covered their axes' labels)
+grep -qF "using 4:14:15 with yerrorbars" "$T/t/eos.gp" && grep -qF "{/:Bold blue points}: relcol" "$T/t/eos.gp" \
+    && ok || bad "transport eos.gp: not against packing, or its symbols unnamed"
 
 # fields without a measurement or a theory are empty, never nan (D_chapman_enskog and its
 # two neighbours without --transport)

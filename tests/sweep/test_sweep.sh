@@ -28,6 +28,18 @@ bad=$(awk '/^order/ { d = $4 + 2; if (d < 0) d = -d; if (!(d < 0.05)) print }' "
 rows=$(wc -l < "$tmp/serial/sweep.csv")
 [ "$rows" -eq 15 ] && ok "sweep.csv: header + 13 points + reference" || ko "sweep.csv has $rows lines"
 
+# the figure explains itself (issue 38): one panel per scenario (the soft reference's
+# curves are not hidden under the collision law's), each with the (v/c)^2 reference and its
+# noise floor in the key, every curve in a colour of its own from a list without yellow
+gp=$tmp/serial/sweep.gp
+[ "$(grep -c '^set title "' "$gp")" -eq 4 ] && grep -q '^set multiplot layout 2,2' "$gp" \
+    && ok "sweep.gp: one panel per scenario" || ko "sweep.gp: not one panel per scenario"
+[ "$(grep -c "t '(|v|_{max}/c)^2'" "$gp")" -eq 4 ] && [ "$(grep -c "t 'noise floor " "$gp")" -eq 4 ] \
+    && ok "sweep.gp: reference and noise floor in every key" || ko "sweep.gp: reference or floor unnamed"
+nolc=$(grep "w lp" "$gp" | grep -v "lc rgb '#" | wc -l)
+yellow=$(grep -ci "lc rgb '#\(ff\|e[0-9a-f]\|f[0-9a-f]\)[c-f][0-9a-f]\{3\}'" "$gp")
+[ "$nolc" -eq 0 ] && [ "$yellow" -eq 0 ] && ok "sweep.gp: every curve coloured, none yellow" \
+    || ko "sweep.gp: $nolc curves in gnuplot's default colours, $yellow yellow"
 OMP_NUM_THREADS=2 "$sweep" $args --out "$tmp/omp" > /dev/null 2>&1
 cmp -s "$tmp/serial/sweep.csv" "$tmp/omp/sweep.csv" && ok "OpenMP (2 threads) = serial, bit for bit" \
     || ko "OpenMP sweep differs from the serial one"
