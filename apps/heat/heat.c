@@ -32,6 +32,7 @@ typedef struct options {
     int bins;
     uint64_t seed;
     const char *out;
+    const rc_toi_frame *frame; /* NULL: the engine's sphere kernel */
 } options;
 
 #define OFF(field) offsetof(options, field)
@@ -56,6 +57,9 @@ static const app_opt opts[] = {
      .help = "time sampled after the warm-up, > 0 (default %D)"},
     {"--every", "DT", APP_T_DOUBLE, OFF(every), "5",
      .help = "time between snapshots, > 0; at least 32 of them (default %D)"},
+    {"--frame", "NAME", APP_T_CUSTOM, OFF(frame), .parse = app_opt_toi_frame,
+     .help = "contact frame (relcol/toi.h; default: the engine's sphere kernel); not a\n"
+             "per-ball one (covariant), whose rollbacks would take back the walls' draws"},
     {"--seed", "N", APP_T_U64, OFF(seed), "1", .help = "seed of the start and of the walls (default %D)"},
     {"--out", "DIR", APP_T_CUSTOM, OFF(out), "out/heat", .parse = app_opt_dir,
      .help = "output folder (default %D)"},
@@ -68,7 +72,7 @@ static void usage(FILE *f)
     fprintf(f,
 "usage: relcol-heat [--c C|inf] [--n N] [--packing PHI] [--hot KT] [--cold KT]\n"
 "                   [--aspect A] [--bins B] [--warmup T] [--time T] [--every DT]\n"
-"                   [--seed N] [--out DIR]\n"
+"                   [--frame NAME] [--seed N] [--out DIR]\n"
 "\n"
 "A 3-D hard-ball gas between a thermal wall at x = 0 (kT = --hot) and one at x = L\n"
 "(kT = --cold), y and z periodic: each ball meeting a wall leaves it with a momentum\n"
@@ -133,6 +137,9 @@ static int check_options(void *vo)
                     app_fmt(floor(o->time / o->every), f), 2 * NBLOCK);
     if (o->time / o->every > 1e8)
         return fail("--every: more than 1e8 snapshots");
+    if (o->frame && o->frame->per_ball)
+        return fail("--frame: %s is a per-ball frame: its rollbacks would take back the "
+                    "thermal walls' draws", o->frame->name);
     double Lx, Ly;
     box_of(o, &Lx, &Ly);
     /* periodic y and z need four cells of a diameter (and a margin for the cells' round-off) */
@@ -282,6 +289,7 @@ static int run(const options *o, result *r, char *err)
     d.c = o->c;
     d.box = rc_v3(Lx, Ly, Ly);
     d.boundary[1] = d.boundary[2] = RC_SIM_PERIODIC;
+    d.frame = o->frame;
     d.wall_rule[0] = d.wall_rule[1] = &rc_wall_thermal;
     d.wall_kT[0] = o->hot;
     d.wall_kT[1] = o->cold;
@@ -479,6 +487,7 @@ static int write_summary(const char *path, const options *o, const result *r, ch
     cJSON_AddItemToObject(j, "c", num(o->c));
     if (isinf(o->c))
         cJSON_ReplaceItemInObject(j, "c", cJSON_CreateString("inf"));
+    cJSON_AddStringToObject(j, "contact_frame", o->frame ? o->frame->name : "sphere kernel");
     cJSON_AddItemToObject(j, "n", num((double)o->n));
     cJSON_AddItemToObject(j, "packing", num(o->packing));
     cJSON_AddItemToObject(j, "kT_hot", num(o->hot));

@@ -36,6 +36,8 @@ refused '--warmup: -1 must be >= 0' --warmup -1
 refused '--hot' --hot nan
 refused 'unknown option --theta' --theta 1
 refused "unexpected argument 'x'" x
+refused "--frame: covariant is a per-ball frame" --frame covariant
+refused "--frame: unknown frame 'warm'" --frame warm
 "$HEAT" --help > "$T/help" || fail "--help"
 grep -q -- '--hot KT' "$T/help" || fail "--help lacks --hot"
 
