@@ -1,11 +1,13 @@
-/* test_wall_relax — a gas in a box whose six walls are thermal at kT relaxes to the Jüttner
+/* test_wall_relax — a gas in a box whose walls are all thermal at kT relaxes to the Jüttner
  * law at kT (Maxwell's at c = inf), whatever it starts from (issue 39 item 5): started much
  * colder and much hotter than the walls, its balls' kinetic energies after a warm-up, from
  * snapshots far apart, against the exact law's CDF by chi^2 with its p-value (20 bins of
  * equal probability), and the mean kinetic energy against the law's within 4 standard
  * errors. The start itself fails the same test (p < 1e-6: the test can tell). The law is
  * the density e^(-E/kT) d^3p, whose kinetic energy K has density ~ p E e^(-K/kT) (c = 1,
- * m = 1; p dp = E dE), integrated here by GSL; classically Gamma(3/2, kT). */
+ * m = 1; p dp = E dE), integrated here by GSL; classically Gamma(3/2, kT). In 2-D (hard
+ * discs) the law is e^(-E/kT) d^2p, K's density ~ E e^(-K/kT): classically exponential,
+ * <K> = kT (2 kT + c^2)/(kT + c^2). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -18,20 +20,22 @@
 
 enum { NBALL = 256, NBIN = 20, NSNAP = 48 };
 
-typedef struct { double kT, c; } law_par;
+typedef struct { double kT, c; int dim; } law_par;
 
 /* K's density up to a constant, m = 1: p(K) E(K) e^(-K/kT), p = sqrt(K (K + 2 c^2))/c */
 static double dens(double K, void *vp)
 {
     const law_par *q = vp;
     const double c2 = q->c * q->c;
+    if (q->dim == 2)
+        return (K + c2) * exp(-K / q->kT);
     return sqrt(K * (K + 2.0 * c2)) / q->c * (K + c2) * exp(-K / q->kT);
 }
 
 static double cdf(const law_par *q, double x)
 {
     if (isinf(q->c))
-        return gsl_cdf_gamma_P(x, 1.5, q->kT);
+        return gsl_cdf_gamma_P(x, 0.5 * q->dim, q->kT);
     gsl_integration_workspace *ws = gsl_integration_workspace_alloc(1000);
     gsl_function f = {dens, (void *)q};
     double a, b, e;
@@ -44,7 +48,7 @@ static double cdf(const law_par *q, double x)
 static double mean_k(const law_par *q)
 {
     if (isinf(q->c))
-        return 1.5 * q->kT;
+        return 0.5 * q->dim * q->kT;
     gsl_integration_workspace *ws = gsl_integration_workspace_alloc(1000);
     gsl_function f = {dens, (void *)q};
     double z, e, zk;
@@ -88,9 +92,9 @@ static double pvalue(const double *K, size_t n, const double *edge, double *chi2
     return gsl_cdf_chisq_Q(x, NBIN - 1);
 }
 
-static void relax(double c, double kT, double v_rms, uint64_t seed)
+static void relax(int dim, double c, double kT, double v_rms, uint64_t seed)
 {
-    const law_par q = {kT, c};
+    const law_par q = {kT, c, dim};
     double edge[NBIN + 1];
     edge[0] = 0.0;
     edge[NBIN] = INFINITY;
@@ -102,11 +106,13 @@ static void relax(double c, double kT, double v_rms, uint64_t seed)
         }
         edge[b] = 0.5 * (lo + hi);
     }
-    /* radius 0.5, rest mass 1 (density 8), packing 0.05: a dilute gas that collides */
-    rc_sim_gas_def g = {3, NBALL, 0.5, 0.05, v_rms, c, 8.0, seed};
+    /* radius 0.5, rest mass 1 (density 8: r^3 in 2-D too), packing 0.05: a dilute gas that
+     * collides */
+    rc_sim_gas_def g = {dim, NBALL, 0.5, 0.05, v_rms, c, 8.0, seed};
     rc_sim_def d = rc_sim_def_default();
+    d.dim = dim;
     d.c = c;
-    for (int w = 0; w < 6; w++) {
+    for (int w = 0; w < 2 * dim; w++) {
         d.wall_rule[w] = &rc_wall_thermal;
         d.wall_kT[w] = kT;
     }
@@ -124,7 +130,7 @@ static void relax(double c, double kT, double v_rms, uint64_t seed)
     const double p0 = pvalue(K, NBALL, edge, &chi2);
     ENSURE_MSG(p0 < 1e-6, "the start passes for the law (p = %g): the test cannot tell", p0);
     /* a transit of the box L ~ 14 takes ~ 14 / v; warm-up 40 transits, snapshots 3 apart */
-    const double vt = isinf(c) ? sqrt(3.0 * kT) : fmin(1.0, sqrt(3.0 * kT));
+    const double vt = isinf(c) ? sqrt(dim * kT) : fmin(1.0, sqrt(dim * kT));
     const double L = d.box.x, dt = 3.0 * L / vt;
     double t = 40.0 * L / vt, sum = 0.0, sum2 = 0.0;
     for (int k = 0; k < NSNAP; k++, t += dt) {
@@ -141,8 +147,8 @@ static void relax(double c, double kT, double v_rms, uint64_t seed)
     const double mk_law = mean_k(&q);
     rc_sim_diag dg;
     rc_sim_diagnostics(s, &dg);
-    printf("c %g kT %g start v_rms %g (p %.2g): chi2 %.1f / %d, p = %.3f; <K> %.4f +- %.4f vs %.4f; "
-           "%llu ball, %llu wall events\n", c, kT, v_rms, p0, chi2, NBIN - 1, p, mk, se, mk_law,
+    printf("%d-D c %g kT %g start v_rms %g (p %.2g): chi2 %.1f / %d, p = %.3f; <K> %.4f +- %.4f vs %.4f; "
+           "%llu ball, %llu wall events\n", dim, c, kT, v_rms, p0, chi2, NBIN - 1, p, mk, se, mk_law,
            (unsigned long long)dg.events[RC_SIM_EV_BALL], (unsigned long long)dg.events[RC_SIM_EV_WALL]);
     ENSURE_MSG(p > 1e-3, "not the law at kT = %g: p = %g", kT, p);
     ENSURE_MSG(fabs(mk - mk_law) < 4.0 * se, "<K> %g +- %g vs %g", mk, se, mk_law);
@@ -155,9 +161,11 @@ out:
 
 int main(void)
 {
-    relax(INFINITY, 1.0, 0.1, 1);  /* Maxwell, started 100 times colder (K ~ v^2/2 m) */
-    relax(INFINITY, 1.0, 5.0, 2);  /* ... and 25 times hotter */
-    relax(1.0, 1.0, 0.05, 3);      /* Juttner at theta = 1, started almost at rest */
-    relax(1.0, 0.2, 0.95, 4);      /* theta = 0.2, started ultra-hot */
+    relax(3, INFINITY, 1.0, 0.1, 1);  /* Maxwell, started 100 times colder (K ~ v^2/2 m) */
+    relax(3, INFINITY, 1.0, 5.0, 2);  /* ... and 25 times hotter */
+    relax(3, 1.0, 1.0, 0.05, 3);      /* Juttner at theta = 1, started almost at rest */
+    relax(3, 1.0, 0.2, 0.95, 4);      /* theta = 0.2, started ultra-hot */
+    relax(2, INFINITY, 1.0, 0.1, 5);  /* hard discs: Maxwell's exponential K */
+    relax(2, 1.0, 1.0, 0.05, 6);      /* ... and 2-D Juttner at theta = 1 */
     RC_TEST_MAIN_END();
 }
