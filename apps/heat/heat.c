@@ -553,6 +553,7 @@ static int write_script(const char *path, const options *o, const result *r, cha
 "set multiplot layout 1,2 title \"Heat conduction between thermal walls: N = %ld, packing %g, "
 "c = %s, Kn = %.3g\\n{/*0.8 λ_{Fourier} = %.4g ± %.2g, λ_{CE, dilute} = %.4g}\"\n"
 "set xlabel 'x'\n"
+"set xrange [0:%.17g]\n"
 "set grid lc rgb '#dddddd'\n"
 "set key top right box opaque\n"
 "set ylabel 'kT'\n"
@@ -561,13 +562,17 @@ static int write_script(const char *path, const options *o, const result *r, cha
 "     %.17g + %.17g * x with lines dt 2 lc rgb '#555555' title 'central half, fitted', \\\n"
 "     '-' using 1:2 with points pt 5 ps 1.2 lc rgb 'black' title 'walls'\n"
 "0,%.17g\n%.17g,%.17g\ne\n"
-"set ylabel 'flux, pressure'\n"
+"set ylabel 'energy flux T^{0x}'\n"
+"set y2label 'kinetic pressure n⟨p_x v_x⟩'\n"
+"set y2tics\n"
+"set ytics nomirror\n"
+"set key center right\n"
 "plot 'profile.csv' skip 1 using 1:8:9 with yerrorbars pt 7 ps 0.6 lc rgb '#2ca02c' title 'T^{0x}', \\\n"
-"     '' skip 1 using 1:10:11 with yerrorbars pt 6 ps 0.8 lc rgb '#9467bd' title 'n⟨p_x v_x⟩', \\\n"
-"     %.17g with lines dt 2 lc rgb '#2ca02c' title 'heat per area, walls'\n"
+"     %.17g with lines dt 2 lc rgb '#2ca02c' title 'heat per area, walls', \\\n"
+"     '' skip 1 using 1:10:11 axes x1y2 with yerrorbars pt 6 ps 0.8 lc rgb '#9467bd' title 'n⟨p_x v_x⟩ (right)'\n"
 "unset multiplot\n",
             o->n, o->packing, app_fmt(o->c, fc), r->mfp / r->Lx, r->lam_pv.mean, r->lam_pv.err,
-            r->lam_ce, r->fit_a0, r->fit_slope, o->hot, r->Lx, o->cold,
+            r->lam_ce, r->Lx, r->fit_a0, r->fit_slope, o->hot, r->Lx, o->cold,
             0.5 * (r->q_hot.mean + r->q_cold.mean));
     return app_atomic_commit(&a, err);
 }
