@@ -94,7 +94,8 @@ static void usage(FILE *f)
 "                minus the central half's linear fit there), lambda from Fourier's law\n"
 "                (-q / dT/dx over the central half, both thermometers) next to the dilute\n"
 "                Chapman-Enskog lambda (the invariant Boltzmann gas, apps/eos/ce_rel.c, at\n"
-"                the fit's mid temperature; classically with Enskog's dense factor too)\n"
+"                the fit's mid temperature; classically with Enskog's dense factor too),\n"
+"                and the validity report (model: the rigid-ball model's verdict)\n"
 "  heat.gp, heat.png  the profiles (with gnuplot)\n"
 "stdout: one line, lambda measured and Chapman-Enskog's.\n"
 "\n"
@@ -266,6 +267,8 @@ typedef struct result {
     double fit_slope, fit_a0; /* the mean profile's line (theta_pv) over the central half */
     uint64_t collisions, wall_events;
     size_t snapshots;
+    rc_validity v; /* where the run stands against the rigid-ball model (relcol/validity.h) */
+    int have_v;
 } result;
 
 static double kinetic(const rc_sim_ball *b, double c, double *M)
@@ -432,6 +435,7 @@ static int run(const options *o, result *r, char *err)
     r->collisions = d1.events[RC_SIM_EV_BALL] + d1.events[RC_SIM_EV_MULTI] -
                     dstart.events[RC_SIM_EV_BALL] - dstart.events[RC_SIM_EV_MULTI];
     r->wall_events = d1.events[RC_SIM_EV_WALL] - dstart.events[RC_SIM_EV_WALL];
+    r->have_v = rc_sim_validity(s, &r->v) == RC_OK;
     app_validity_note(s);
     app_rules_warn(stderr, prog, &d1, NULL);
     rc = 0;
@@ -521,6 +525,16 @@ static int write_summary(const char *path, const options *o, const result *r, ch
                                         : "the invariant Boltzmann gas (Moller flux, isotropic "
                                           "cross-section sigma_T = pi): not the engine's sphere "
                                           "kernel, whose rate is sigma_T |v0 - v1|");
+    if (r->have_v) {
+        cJSON *m = cJSON_CreateObject();
+        cJSON_AddStringToObject(m, "verdict", r->v.verdict_name);
+        cJSON_AddItemToObject(m, "threshold_p_model", num(r->v.threshold));
+        cJSON_AddItemToObject(m, "p_model", num(r->v.p_model));
+        cJSON_AddItemToObject(m, "nu_r_c", num(r->v.nu_r_c));
+        cJSON_AddItemToObject(m, "policy_share", num(r->v.policy_share));
+        cJSON_AddItemToObject(m, "collisions", num((double)r->v.collisions));
+        cJSON_AddItemToObject(j, "model", m);
+    }
     char *text = cJSON_Print(j);
     cJSON_Delete(j);
     if (!text) {

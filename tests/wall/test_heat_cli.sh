@@ -72,6 +72,7 @@ for k in ("heat_flux_hot_wall", "heat_flux_cold_wall", "lambda_fourier_theta_pv"
 assert s["heat_flux_hot_wall"]["value"] > 0 and s["heat_flux_cold_wall"]["value"] > 0, s
 assert s["lambda_chapman_enskog_dilute"] > 0 and s["lambda_enskog"] > s["lambda_chapman_enskog_dilute"]
 assert s["kT_hot"] == 1.2 and s["kT_cold"] == 0.8 and s["n"] == 200
+assert s["model"]["verdict"] and s["model"]["collisions"] > 0, s.get("model")
 PY
 [ -s "$out/heat.gp" ] || fail "no heat.gp"
 if command -v gnuplot > /dev/null 2>&1; then [ -s "$out/heat.png" ] || fail "no heat.png"; fi
