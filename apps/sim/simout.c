@@ -329,6 +329,15 @@ static int write_summary_json(const sim_output *o, const rc_sim *sim, const rc_s
     cJSON_AddItemToObject(j, "wall_impulse", x = cJSON_CreateObject());
     for (int w = 0; w < 2 * s->dim; w++)
         add(x, walls[w], d->wall_impulse_by_wall[w] - d0->wall_impulse_by_wall[w]);
+    /* the energy each wall took from the balls (a thermal wall's heat; < 0: it heated
+     * them) and, for the thermal ones, their temperature */
+    cJSON_AddItemToObject(j, "wall_heat", x = cJSON_CreateObject());
+    for (int w = 0; w < 2 * s->dim; w++)
+        add(x, walls[w], d->wall_heat_by_wall[w] - d0->wall_heat_by_wall[w]);
+    cJSON_AddItemToObject(j, "wall_kT", x = cJSON_CreateObject());
+    for (int w = 0; x && w < 2 * s->dim; w++)
+        if (s->wall_rule[w] && s->wall_rule[w]->temperature)
+            add(x, walls[w], s->wall_kT[w]);
     add(j, "wall_shared", (double)(d->wall_shared - d0->wall_shared));
     add(j, "pinned", (double)(d->pinned - d0->pinned));
     add(j, "cell_crossings", (double)(d->events[RC_SIM_EV_CELL] - d0->events[RC_SIM_EV_CELL]));
