@@ -159,8 +159,9 @@ static int check_options(void *opts)
     return 0;
 }
 
-static const app_cli cli = {prog, opts, usage, "input is read from stdin; see --help",
-                            EXIT_BAD_INPUT, check_options, NULL};
+static const app_cli cli = {.prog = prog, .tab = opts, .usage = usage,
+                            .stray_hint = "input is read from stdin; see --help",
+                            .bad = EXIT_BAD_INPUT, .check = check_options};
 
 static cJSON *json_num(double x)
 {
