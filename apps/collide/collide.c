@@ -96,7 +96,6 @@ static const app_opt opts[] = {
      .help = "3-D only, with a numeric --alpha: azimuth of the normal (radians)"},
     {"--format", "csv|json", APP_T_CHOICE, OFF(json), "csv", .choices = formats,
      .what = "format", .help = "output format (default %D)"},
-    {"--help", NULL, APP_T_HELP, .help = "this text"},
     {NULL},
 };
 

@@ -111,7 +111,6 @@ typedef enum app_opt_type {
     APP_T_LIST,       /* double[hi], 1..hi comma-separated numbers, the count in int `count` */
     APP_T_CUSTOM,     /* parse(value, destination, opts, err): 0, or -1 with the reason in
                        * err; opts (the whole struct) for an option that sets two fields */
-    APP_T_HELP,       /* --help: a help line only (app_opts_next handles it) */
 } app_opt_type;
 typedef struct app_opt {
     const char *name;   /* "--c" */
@@ -172,7 +171,8 @@ int app_opts_defaults(const app_opt *tab, void *opts, char *err);
 enum { APP_PARSE_HELP = -1, APP_PARSE_DONE = -2 };
 int app_opts_parse(const app_cli *cli, int argc, char **argv, void *opts);
 /* The options section of --help: "  --NAME META  help" per entry, the help from column
- * col (0-based; continuation lines too), help_more after. */
+ * col (0-based; continuation lines too), help_more after; last the --help line every app
+ * has (no table holds it; --list-options names it). */
 void app_opts_help(FILE *f, const app_opt *tab, int col);
 /* APP_T_CUSTOM parsers of a law (const rc_law *) and a contact frame
  * (const rc_toi_frame *) by name: "unknown law 'x' (known: zmf, ...)". */

@@ -64,7 +64,6 @@ static int set_value(const app_opt *o, const char *val, void *opts, char *err)
     case APP_T_CUSTOM:
         return o->parse(val, dst, opts, err);
     case APP_T_FLAG:
-    case APP_T_HELP:
         break;
     }
     return 0;
@@ -73,7 +72,7 @@ static int set_value(const app_opt *o, const char *val, void *opts, char *err)
 int app_opts_defaults(const app_opt *tab, void *opts, char *err)
 {
     for (const app_opt *o = tab; o->name; o++)
-        if (o->deflt && o->type != APP_T_FLAG && o->type != APP_T_HELP &&
+        if (o->deflt && o->type != APP_T_FLAG &&
             set_value(o, o->deflt, opts, err) != 0)
             return -1;
     return 0;
@@ -83,7 +82,7 @@ static void list_options(const app_opt *tab)
 {
     for (const app_opt *o = tab; o->name; o++)
         printf("%s\n", o->name);
-    printf("--version\n");
+    printf("--help\n--version\n");
 }
 
 static int speaks(const app_cli *cli) { return !cli->speaks || cli->speaks(); }
@@ -98,7 +97,7 @@ int app_opts_parse(const app_cli *cli, int argc, char **argv, void *opts)
                             MAX_OPTS);
         if (o->type == APP_T_FLAG)
             flags[nf++] = o->name;
-        else if (o->type != APP_T_HELP)
+        else
             valued[nv++] = o->name;
     }
     flags[nf++] = "--list-options"; /* (hidden: the test that help and table agree) */
@@ -173,6 +172,8 @@ void app_opts_help(FILE *f, const app_opt *tab, int col)
         if (o->help_more)
             o->help_more(f);
     }
+    /* (every table's last line, so that no app's help can leave it out) */
+    fprintf(f, "  %-*s this text\n", col - 3, "--help");
 }
 
 int app_start(const app_cli *cli, int argc, char **argv, void *opts)

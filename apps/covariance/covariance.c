@@ -194,7 +194,6 @@ static const app_opt opts[] = {
              "covariance_cluster benchmark's recipe)"},
     {"--out", "DIR", APP_T_CUSTOM, OFF(out), "out/covariance", .parse = app_opt_dir,
      .help = "output folder (default %D)"},
-    {"--help", NULL, APP_T_HELP, .help = "this text"},
     {NULL},
 };
 

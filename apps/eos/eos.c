@@ -79,7 +79,6 @@ static const app_opt opts[] = {
              "rule; other contracted frames), each Z, kT, P (and D, eta, lambda)\n"
              "shift in units of its error, flagged above 3 errors;\n"
              "sensitivity.csv and sensitivity.json in --out"},
-    {"--help", NULL, APP_T_HELP, .help = "this text"},
     {NULL},
 };
 

@@ -170,7 +170,6 @@ static const app_opt opts[] = {
              "(group rule; other contracted frames), each theta's and the pressure's\n"
              "shift in units of its error, flagged above 3 errors; sensitivity.csv\n"
              "and sensitivity.json in --out"},
-    {"--help", NULL, APP_T_HELP, .help = "this text"},
     {NULL},
 };
 

@@ -54,7 +54,6 @@ static const app_opt opts[] = {
              "rule; other contracted frames), each final momentum (8 balls at most)\n"
              "and total's shift in units of its error, flagged above 3 errors;\n"
              "sensitivity.csv and sensitivity.json in the output folder"},
-    {"--help", NULL, APP_T_HELP, .help = "this text"},
     {NULL},
 };
 

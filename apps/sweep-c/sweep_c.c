@@ -57,7 +57,6 @@ static const app_opt opts[] = {
      .help = "restitution in [0, 1] (default 0.8 for the example, else %D)"},
     {"--law", "LAW", APP_T_CUSTOM, OFF(law), "zmf", .parse = parse_law,
      .help = "collision law, as in relcol-collide (default %D)"},
-    {"--help", NULL, APP_T_HELP, .help = "this text"},
     {NULL},
 };
 

@@ -52,7 +52,6 @@ static const app_opt opts[] = {
     {"--out", "DIR", APP_T_STRING, OFF(out_dir), "out/sweep",
      .help = "output folder (default %D)"},
     {"--no-plots", NULL, APP_T_FLAG, OFF(no_plot), .help = "data and script only"},
-    {"--help", NULL, APP_T_HELP, .help = "this text"},
     {NULL},
 };
 

@@ -42,7 +42,6 @@ static const app_opt opts[] = {
              "given are open. The ball must start inside. Walls see the\n"
              "contracted ball in frames table and zmf (a wall's rest frame is\n"
              "the table and the ball-wall ZMF), the sphere in frame sphere."},
-    {"--help", NULL, APP_T_HELP, .help = "this text"},
     {NULL},
 };
 

@@ -196,7 +196,6 @@ static const app_opt ttab[] = {
     {"--l", "LIST", APP_T_LIST, offsetof(topts, l), "0.1", .hi = 4, .count = offsetof(topts, nl),
      .valid = app_valid_open_closed, .min = 0.0, .max = 0.7, .help = "numbers in (0, 0.7]"},
     {"--flag", NULL, APP_T_FLAG, offsetof(topts, flag), .help = "a flag"},
-    {"--help", NULL, APP_T_HELP, .help = "this text"},
     {NULL},
 };
 
