@@ -8,7 +8,7 @@
  * size APP_ERR_LEN; the app prefixes its name and prints it (app_fail). Nothing here
  * prints, except app_fail, app_help, app_opts_next and app_opts_parse (their own errors,
  * --version, --list-options; under app_cli.speaks only where it says so), app_gnuplot_run
- * (a note when gnuplot is absent) and the progress bar. */
+ * (a note when gnuplot is absent), the progress bar and the --sensitivity mode. */
 #ifndef RELCOL_APP_H
 #define RELCOL_APP_H
 
@@ -421,5 +421,12 @@ void app_sens_move(rc_sim_ball *b, size_t n, int dim, double move);
  * number of observables flagged (a shift above 3 errors), or -1 with err set. */
 int app_sensitivity(FILE *f, const char *dir, const app_sens_variant *v, size_t nv, size_t nobs,
                     const char *const *names, app_sens_run_fn run, void *ctx, char *err);
+/* An app's whole --sensitivity mode (relcol-eos, relcol-gas): dir made, the variants of
+ * (frame, groups, c, dim) run by app_sensitivity on stdout, "prog: wrote DIR/sensitivity.csv,
+ * DIR/sensitivity.json", the validity warning; the exit status: 0, 2 ("prog: --out: reason":
+ * the folder cannot be made) or 1 (a run or a file failed), after its line. */
+int app_sensitivity_main(const char *prog, const char *dir, const rc_toi_frame *frame, int groups,
+                         double c, int dim, size_t nobs, const char *const *names,
+                         app_sens_run_fn run, void *ctx);
 
 #endif

@@ -240,7 +240,6 @@ static int sens_run(void *ctx, const app_sens_variant *v, double *x, double *se,
 
 static int eos_sensitivity(options *o)
 {
-    char err[APP_ERR_LEN];
     static const char *const q[6] = {"Z", "kT", "P", "D", "eta", "lambda"};
     const int per = o->in.transport ? 6 : 3;
     const size_t nobs = (size_t)(o->npack * o->ntheta * per);
@@ -259,19 +258,10 @@ static int eos_sensitivity(options *o)
                          o->theta[it]);
                 names[j] = nm[j];
             }
-    app_sens_variant v[16];
-    const size_t nv = app_sens_variants(o->in.frame, 0, o->in.c, o->in.dim, v, 16);
-    int rc = 0;
-    if (app_mkdir_p(o->out, err) != 0)
-        rc = app_fail(prog, EXIT_BAD_INPUT, "--out: %s", err);
-    else if (app_sensitivity(stdout, o->out, v, nv, nobs, names, sens_run, o, err) < 0)
-        rc = app_fail(prog, 1, "%s", err);
-    else
-        printf("%s: wrote %s/sensitivity.csv, %s/sensitivity.json\n", prog, o->out, o->out);
+    const int rc = app_sensitivity_main(prog, o->out, o->in.frame, 0, o->in.c, o->in.dim, nobs,
+                                        names, sens_run, o);
     free(nm);
     free(names);
-    if (rc == 0)
-        app_validity_warn(stderr, prog);
     return rc;
 }
 

@@ -281,6 +281,8 @@ static int check_options(void *opts)
     if ((double)o->n * (double)o->snapshots > MAX_SAMPLES)
         return fail("--snapshots: n x snapshots = %.3g exceeds %.3g stored samples",
                     (double)o->n * (double)o->snapshots, MAX_SAMPLES);
+    if (o->dim == 1 && o->sensitivity)
+        return fail("--sensitivity: 2-D and 3-D gases only (the 1-D gas has no rules to vary)");
     if (o->dim >= 2) /* a valid run in a frame that is not thermal: said before it starts */
         gas_frame_warn(stderr, prog, o->frame, o->dim, o->packing);
     return 0;
@@ -592,26 +594,6 @@ static int sens_run(void *ctx, const app_sens_variant *v, double *x, double *se,
     return r;
 }
 
-static int gas_sensitivity(options *o)
-{
-    char err[APP_ERR_LEN];
-    static const char *const names[4] = {"theta_gamma", "theta_pv", "theta_pv_minus_gamma",
-                                         "pressure"};
-    if (o->dim == 1)
-        return fail("--sensitivity: 2-D and 3-D gases only (the 1-D gas has no rules to vary)");
-    if (app_mkdir_p(o->out, err) != 0)
-        return fail("--out: %s", err);
-    app_sens_variant v[16];
-    const size_t nv = app_sens_variants(o->frame, o->groups, o->c, o->dim, v, 16);
-    if (app_sensitivity(stdout, o->out, v, nv, 4, names, sens_run, o, err) < 0) {
-        fprintf(stderr, "%s: %s\n", prog, err);
-        return 1;
-    }
-    printf("%s: wrote %s/sensitivity.csv, %s/sensitivity.json\n", prog, o->out, o->out);
-    app_validity_warn(stderr, prog);
-    return 0;
-}
-
 int main(int argc, char **argv)
 {
     options o;
@@ -620,8 +602,11 @@ int main(int argc, char **argv)
     int st = app_start(&cli, argc, argv, &o);
     if (st >= 0)
         return st;
+    static const char *const sens_names[4] = {"theta_gamma", "theta_pv",
+                                              "theta_pv_minus_gamma", "pressure"};
     if (o.sensitivity)
-        return gas_sensitivity(&o);
+        return app_sensitivity_main(prog, o.out, o.frame, o.groups, o.c, o.dim, 4, sens_names,
+                                    sens_run, &o);
 
     char err[APP_ERR_LEN];
     int rc = 1;
