@@ -195,7 +195,6 @@ static const app_opt opts[] = {
              "covariance_cluster benchmark's recipe)"},
     {"--out", "DIR", APP_T_CUSTOM, OFF(out), "out/covariance", .parse = app_opt_dir,
      .help = "output folder (default %D)"},
-    {"--help", NULL, APP_T_HELP, .help = "this text"},
     {NULL},
 };
 
@@ -312,8 +311,9 @@ static int check_options(void *opts)
     return 0;
 }
 
-static const app_cli cli = {prog, opts, usage, "see --help", EXIT_BAD_INPUT,
-                            check_options, NULL};
+static const app_cli cli = {.prog = prog, .tab = opts, .usage = usage,
+                            .stray_hint = "see --help",
+                            .bad = EXIT_BAD_INPUT, .check = check_options};
 
 /* The cluster of one density at one c, its runs' end doubled dbl times. */
 static cov_def cluster_def(const options *o, double density, double c, int dbl)

@@ -44,7 +44,6 @@ static const app_opt opts[] = {
     {"--from", "F", APP_T_DOUBLE, OFF(from), "1.25", .help = "smallest c / v, > 1 (default %D)"},
     {"--to", "T", APP_T_DOUBLE, OFF(to), "1e4", .help = "largest c / v, >= 100 (default %D)"},
     {"--eps", "E", APP_T_DOUBLE, OFF(eps), "0.5", .help = "restitution in [0, 1] (default %D)"},
-    {"--help", NULL, APP_T_HELP, .help = "this text"},
     {NULL},
 };
 
@@ -96,8 +95,9 @@ static int check_options(void *opts)
     return 0;
 }
 
-static const app_cli cli = {prog, opts, usage, "see --help", EXIT_BAD_INPUT,
-                            check_options, NULL};
+static const app_cli cli = {.prog = prog, .tab = opts, .usage = usage,
+                            .stray_hint = "see --help",
+                            .bad = EXIT_BAD_INPUT, .check = check_options};
 
 /* The outcome of one collision with one contact frame. */
 typedef struct outcome {

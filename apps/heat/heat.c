@@ -63,7 +63,6 @@ static const app_opt opts[] = {
     {"--seed", "N", APP_T_U64, OFF(seed), "1", .help = "seed of the start and of the walls (default %D)"},
     {"--out", "DIR", APP_T_CUSTOM, OFF(out), "out/heat", .parse = app_opt_dir,
      .help = "output folder (default %D)"},
-    {"--help", NULL, APP_T_HELP, .help = "this text"},
     {NULL},
 };
 
@@ -150,8 +149,9 @@ static int check_options(void *vo)
     return 0;
 }
 
-static const app_cli cli = {prog, opts, usage, "relcol-heat takes no arguments; see --help",
-                            EXIT_BAD, check_options, NULL};
+static const app_cli cli = {.prog = prog, .tab = opts, .usage = usage,
+                            .stray_hint = "relcol-heat takes no arguments; see --help",
+                            .bad = EXIT_BAD, .check = check_options};
 
 /* ---- thermometers and references ------------------------------------------------- */
 

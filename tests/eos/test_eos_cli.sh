@@ -60,4 +60,13 @@ run '' --dim 2 --n 200 --packing 0.65 --t-run 5 --t-equil 2 --out "$T/d2"
 expect_ok run2d
 close z-luding "$(awk -F, 'NR == 2 {print $10}' "$T/d2/eos.csv")" 8.41536 1e-5
 
+# --sensitivity (a table row like the rest): the sphere frame's 3 runs (base, moved,
+# sequential groups), Z, kT and P of the one point, both files; a folder that cannot be
+# made is the option's error (exit 2)
+run '' --sensitivity --n 64 --packing 0.1 --t-equil 5 --t-run 100 --blocks 5 --out "$T/s"
+if [ "$st" -eq 0 ] && grep -q '^sensitivity: 0 of 3 observables flagged; 3 runs$' "$T/out" &&
+    [ -s "$T/s/sensitivity.csv" ] && [ -s "$T/s/sensitivity.json" ]; then ok
+else bad "--sensitivity: exit $st: $(cat "$T/out" "$T/err")"; fi
+expect_bad sens-out '' '^relcol-eos: --out: cannot create folder' --sensitivity --out /dev/null/x
+
 summary

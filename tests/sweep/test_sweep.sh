@@ -51,6 +51,21 @@ if [ "$have_mpi" = "yes" ]; then
         || ko "MPI sweep differs from the serial one: $(head -5 "$tmp/mpierr")"
     grep -q '^order' "$tmp/mpi.txt" && [ "$(grep -c '^order' "$tmp/mpi.txt")" -eq 8 ] \
         && ok "only rank 0 prints" || ko "MPI output: $(cat "$tmp/mpi.txt")"
+    # the option table's parse on every rank, its words from rank 0 only (app_cli.speaks):
+    # --help and --version once (a bad option's line is no check of it: mpirun aborts the
+    # job at the first non-zero exit and may drop the other ranks' output)
+    for w in --help --version; do
+        timeout 60 mpirun --allow-run-as-root --oversubscribe -np 2 "$sweep" $w \
+            > "$tmp/mpi.txt" 2> "$tmp/mpierr"; st=$?
+        k=$(grep -c '^usage: relcol-sweep\|^relcol-sweep (relcol)' "$tmp/mpi.txt")
+        [ $st -eq 0 ] && [ "$k" -eq 1 ] && ok "MPI $w: exit 0, printed once" \
+            || ko "MPI $w: exit $st, printed $k times"
+    done
+    timeout 60 mpirun --allow-run-as-root --oversubscribe -np 2 "$sweep" --points 1 \
+        > "$tmp/mpi.txt" 2> "$tmp/mpierr"; st=$?
+    [ $st -eq 2 ] && grep -q '^relcol-sweep: option --points: ' "$tmp/mpierr" \
+        && ok "MPI bad option: exit 2 and its line" \
+        || ko "MPI --points 1: exit $st: $(grep '^relcol-sweep' "$tmp/mpierr")"
 else
     echo "note: not an MPI build: the MPI identity check does not apply"
 fi
