@@ -27,11 +27,10 @@ fi
 # parser; dpkg-dev: apt-get source unpacks cJSON's source for it) and Chromium for the
 # page's test. Installed by web/build.sh and web/test.sh, not by every configuration.
 RELCOL_WEB_PACKAGES=(emscripten node-acorn dpkg-dev chromium)
-# node and npm for the page's test (npm ci of web/package-lock.json): Debian 12's nodejs is
-# 18, which playwright-core 1.61 (the lock's pin) supports. web/test.sh installs them only
-# when the commands are missing, so a node from elsewhere (nodesource, which bundles npm and
-# conflicts with Debian's npm package) is left as it is.
-RELCOL_NODE_PACKAGES=(nodejs npm)
+# node and node-ws for the page's test (web/cdp.mjs speaks the DevTools protocol to chromium
+# over ws): Debian packages, so the test needs no npm registry. web/test.sh installs them
+# only when node or ws is missing, so a node from elsewhere is left as it is.
+RELCOL_NODE_PACKAGES=(nodejs node-ws)
 
 relcol_install_packages() {
     relcol_install_list "${RELCOL_PACKAGES[@]}"

@@ -19,6 +19,9 @@
   const C_DECADES = 3;   // the c slider spans c_min .. c_min 10^3, then its last notch is inf
   const C_POS_MAX = 1000;
   const HIST_BINS = 32;
+  // the gas's colours: gamma - 1 on a log scale from 10^G_LOG_MIN to 10^G_LOG_MAX, in
+  // G_STEPS steps (the colour key draws the same steps)
+  const G_LOG_MIN = -4, G_LOG_MAX = 0, G_STEPS = 16;
 
   const $ = (id) => document.getElementById(id);
   const ui = {
@@ -27,7 +30,8 @@
     split: $('split'), c: $('c'), cOut: $('c-out'), eps: $('eps'), epsOut: $('eps-out'),
     frame: $('frame'), law: $('law'), groups: $('groups'), viewRef: $('view-ref'), capMain: $('cap-main'),
     canvasRef: $('canvas-ref'), canvasMain: $('canvas-main'), hist: $('hist'),
-    theta: $('theta'), tip: $('tip'),
+    theta: $('theta'), tip: $('tip'), capRef: $('cap-ref'), keyText: $('colour-key-text'),
+    keyScale: $('colour-key-scale'), keyBar: $('colour-key-bar'), keyTicks: $('colour-key-ticks'),
   };
 
   let M = null;      // the wasm module
@@ -335,7 +339,8 @@
     }
     const hw = Math.max(200, Math.round((ui.hist.clientWidth || 640) * dpr));
     ui.hist.width = hw;
-    ui.hist.height = Math.round(hw * 0.25);
+    // (short enough that the table, its colour key and the histogram's axis fit a window)
+    ui.hist.height = Math.round(Math.min(0.22 * hw, 0.26 * window.innerHeight * dpr));
   }
 
   function ballColour(i, n, gamma, isRack) {
@@ -344,10 +349,50 @@
       const palette = ['#f2c100', '#1f4fb4', '#d2261f', '#5b2a86', '#ef7d00', '#1a7f3c', '#7b1e1e', '#111'];
       return palette[(i - 1) % palette.length];
     }
-    // hotter balls redder: gamma - 1 on a log scale, in 16 steps
-    const u = Math.round(16 * Math.min(1, Math.max(0, (Math.log10(Math.max(gamma - 1, 1e-6)) + 4) / 4))) / 16;
+    // hotter balls redder: gamma - 1 on a log scale, in G_STEPS steps
+    const lg = Math.log10(Math.max(gamma - 1, 1e-300));
+    return stepColour(Math.round(G_STEPS * Math.min(1, Math.max(0, (lg - G_LOG_MIN) / (G_LOG_MAX - G_LOG_MIN)))) / G_STEPS);
+  }
+
+  function stepColour(u) {
     const r = Math.round(80 + 175 * u), b = Math.round(230 - 180 * u);
     return 'rgb(' + r + ',' + Math.round(140 + 40 * (1 - u)) + ',' + b + ')';
+  }
+
+  // The key to the balls' colours, beside the table: the rack's billiard set by ball
+  // number, or the gas's gamma - 1 steps drawn with ballColour's own mapping.
+  let keyShown = null;
+  function drawColourKey() {
+    const isRack = app.source.builtin === 'rack';
+    const infinite = !isFinite(app.c);
+    const want = isRack ? 'rack' : 'gamma' + (infinite ? ' inf' : '');
+    if (want === keyShown) return;
+    keyShown = want;
+    if (isRack) {
+      ui.keyText.textContent = 'ball colours: a billiard set by ball number (ball 0, the cue ball, white)';
+      ui.keyScale.hidden = true;
+      return;
+    }
+    ui.keyText.textContent = 'ball colour: γ − 1 (log scale)' +
+      (infinite ? ' — at c = ∞ every γ is 1: one colour' : '');
+    ui.keyScale.hidden = false;
+    const cv = ui.keyBar, ctx = cv.getContext('2d');
+    const n = G_STEPS + 1;
+    for (let k = 0; k < n; k++) {
+      ctx.fillStyle = ballColour(1, 2, 1 + Math.pow(10, G_LOG_MIN + (G_LOG_MAX - G_LOG_MIN) * k / G_STEPS), false);
+      ctx.fillRect(Math.floor(k * cv.width / n), 0, Math.ceil(cv.width / n), cv.height);
+    }
+    ui.keyTicks.innerHTML = '';
+    for (let e = G_LOG_MIN; e <= G_LOG_MAX; e++) {
+      const t = document.createElement('span');
+      t.textContent = e === 0 ? '1' : e === G_LOG_MIN ? '≤ 10' + sup(e) : '10' + sup(e);
+      ui.keyTicks.appendChild(t);
+    }
+  }
+
+  function sup(e) {
+    const d = { '-': '⁻', 0: '⁰', 1: '¹', 2: '²', 3: '³', 4: '⁴', 5: '⁵', 6: '⁶', 7: '⁷', 8: '⁸', 9: '⁹' };
+    return String(e).split('').map((ch) => d[ch]).join('');
   }
 
   function drawWorld(v, cv) {
@@ -376,11 +421,28 @@
       ctx.fill(p);
       if (n <= 64) { ctx.lineWidth = 1; ctx.strokeStyle = 'rgba(0,0,0,0.5)'; ctx.stroke(p); }
     }
-    ctx.fillStyle = 'rgba(255,255,255,0.85)';
-    ctx.font = Math.round(12 * (window.devicePixelRatio || 1)) + 'px system-ui, sans-serif';
-    ctx.fillText('t = ' + v.diag[WD.TIME].toFixed(3), 6, 16 * (window.devicePixelRatio || 1));
+    // (the time is in the figure's caption, where no ball covers it)
   }
 
+  // Ticks at 1, 2 or 5 times a power of ten over [0, top]: at least three.
+  function niceTicks(top) {
+    if (!(top > 0) || !isFinite(top)) return [0];
+    const raw = top / 5, p = Math.pow(10, Math.floor(Math.log10(raw)));
+    const step = [1, 2, 5, 10].map((m) => m * p).find((st) => st >= raw) || 10 * p;
+    const ticks = [];
+    for (let k = 0; k * step <= top * (1 + 1e-12); k++) ticks.push(k * step);
+    return ticks;
+  }
+
+  function tickText(x, step) {
+    if (x === 0) return '0';
+    const digits = Math.max(0, -Math.floor(Math.log10(step) + 1e-9));
+    return Math.abs(x) >= 1e5 || Math.abs(x) < 1e-3 ? x.toExponential(1) : x.toFixed(digits);
+  }
+
+  // The balls' speed histogram (a density: share of balls per unit speed) against the
+  // Jüttner and Maxwell–Boltzmann densities, with both axes ticked and labelled: speed in
+  // units of c at finite c, in the scenario's units at c = inf.
   function drawHistogram() {
     const v = app.main;
     const cv = ui.hist, ctx = cv.getContext('2d');
@@ -392,18 +454,65 @@
     app.hist = h;
     let top = 0;
     for (let k = 0; k < 3 * HIST_BINS; k++) if (isFinite(h[k])) top = Math.max(top, h[k]);
-    if (!(top > 0)) return;
-    const pad = 4, W = cv.width, H = cv.height - 2 * pad, bw = W / HIST_BINS;
+    if (!(top > 0)) { app.histAxes = null; return; }
+    const dpr = window.devicePixelRatio || 1, fs = Math.round(11 * dpr);
+    const mL = Math.round(62 * dpr), mR = Math.round(26 * dpr), mT = Math.round(8 * dpr),
+          mB = Math.round(40 * dpr);
+    const W = cv.width - mL - mR, H = cv.height - mT - mB, bw = W / HIST_BINS;
+    // x in units of c at finite c, and y then per unit of v/c (the library's density is
+    // per unit speed: times c); y up to the next tick above the tallest
+    const xu = isFinite(c) ? c : 1, xTicks = niceTicks(vtop / xu);
+    top *= xu;
+    const yStep0 = niceTicks(top);
+    const yStep = yStep0.length > 1 ? yStep0[1] : top;
+    const yTop = Math.ceil(top / yStep - 1e-9) * yStep;
+    const yTicks = [];
+    for (let k = 0; k * yStep <= yTop * (1 + 1e-12); k++) yTicks.push(k * yStep);
+    const X = (speed) => mL + W * speed / vtop, Y = (f) => mT + H - H * f * xu / yTop;
+    // the grid and the axes with their values
+    ctx.font = fs + 'px system-ui, sans-serif';
+    ctx.lineWidth = 1;
+    ctx.strokeStyle = '#e4e4e4';
+    ctx.fillStyle = '#444';
+    ctx.textAlign = 'right';
+    ctx.textBaseline = 'middle';
+    for (const f of yTicks) {
+      const y = Math.round(mT + H - H * f / yTop) + 0.5;
+      ctx.beginPath(); ctx.moveTo(mL, y); ctx.lineTo(mL + W, y); ctx.stroke();
+      ctx.fillText(tickText(f, yStep), mL - 5 * dpr, y);
+    }
+    ctx.textAlign = 'center';
+    ctx.textBaseline = 'top';
+    const xStep = xTicks.length > 1 ? xTicks[1] : 1;
+    for (const t of xTicks) {
+      const x = Math.round(X(t * xu)) + 0.5;
+      ctx.strokeStyle = '#888';
+      ctx.beginPath(); ctx.moveTo(x, mT + H); ctx.lineTo(x, mT + H + 4 * dpr); ctx.stroke();
+      ctx.fillText(tickText(t, xStep) + (isFinite(c) && t !== 0 ? ' c' : ''), x, mT + H + 6 * dpr);
+    }
+    const xLabel = isFinite(c) ? 'speed |v| (in units of c)' : 'speed |v| (the scenario’s units)';
+    const yLabel = isFinite(c) ? 'share per unit of |v|/c' : 'share per unit speed';
+    ctx.fillText(xLabel, mL + W / 2, mT + H + 6 * dpr + fs + 2 * dpr);
+    ctx.save();
+    ctx.translate(12 * dpr, mT + H / 2);
+    ctx.rotate(-Math.PI / 2);
+    ctx.textBaseline = 'middle';
+    ctx.fillText(yLabel, 0, 0);
+    ctx.restore();
+    ctx.strokeStyle = '#666';
+    ctx.beginPath(); ctx.moveTo(mL + 0.5, mT); ctx.lineTo(mL + 0.5, mT + H + 0.5); ctx.lineTo(mL + W, mT + H + 0.5); ctx.stroke();
+    app.histAxes = { xLabel: xLabel, yLabel: yLabel, xUnit: isFinite(c) ? 'c' : '',
+                     xTicks: xTicks.map((t) => t * xu), yTicks: yTicks, vtop: vtop, yTop: yTop };
     ctx.fillStyle = '#9fb8d8';
     for (let k = 0; k < HIST_BINS; k++) {
-      const hh = H * h[k] / top;
-      ctx.fillRect(k * bw + 1, pad + H - hh, bw - 2, hh);
+      const hh = H * h[k] * xu / yTop;
+      ctx.fillRect(mL + k * bw + 1, mT + H - hh, bw - 2, hh);
     }
     const curve = (off, colour, dash) => {
       ctx.beginPath();
       ctx.setLineDash(dash);
       for (let k = 0; k < HIST_BINS; k++) {
-        const x = (k + 0.5) * bw, y = pad + H - H * h[off + k] / top;
+        const x = mL + (k + 0.5) * bw, y = Y(h[off + k]);
         if (k === 0) ctx.moveTo(x, y); else ctx.lineTo(x, y);
       }
       ctx.strokeStyle = colour;
@@ -414,7 +523,7 @@
     curve(HIST_BINS, '#c0392b', []);
     curve(2 * HIST_BINS, '#2c3e50', [6, 4]);
     const theta = h[3 * HIST_BINS];
-    ui.theta.textContent = '(0 … ' + (isFinite(c) ? 'c' : fmt(vtop, 3)) + ')' +
+    ui.theta.textContent = '(speeds 0 … ' + (isFinite(c) ? 'c' : fmt(vtop, 3)) + ')' +
       (isFinite(theta) ? ', θ = kT/mc² = ' + fmt(theta, 4) : '');
   }
 
@@ -431,7 +540,8 @@
     $('r-vmax').textContent = fmt(d[WD.VMAX], 4) + (isFinite(d[WD.C]) ? ' = ' + (d[WD.VMAX] / d[WD.C]).toFixed(4) + ' c' : '');
     $('r-fps').textContent = app.fps.toFixed(0);
     ui.capMain.textContent = 'c = ' + (isFinite(app.c) ? fmt(app.c, 4) : '∞') +
-      '  (fastest ball ' + fmt(d[WD.VMAX], 4) + ')';
+      ' (fastest ball ' + fmt(d[WD.VMAX], 4) + ') · t = ' + d[WD.TIME].toFixed(3);
+    if (app.ref) ui.capRef.textContent = 'c = ∞ · t = ' + app.ref.diag[WD.TIME].toFixed(3);
   }
 
   // The slider's floor follows the fastest ball (its speed at c = inf, |p|/m, which every
@@ -447,6 +557,7 @@
     drawWorld(app.main, ui.canvasMain);
     if (app.ref) drawWorld(app.ref, ui.canvasRef);
     drawHistogram();
+    drawColourKey();
     showReadouts();
   }
 
@@ -514,7 +625,8 @@
       t: app.t, playing: app.playing, split: app.split, speed: app.speed, cMin: app.cMin,
       fps: app.fps, frames: app.frames, workMs: app.workMs, error: app.error, scenario: app.source.name,
       main: worldState(app.main), ref: app.ref ? worldState(app.ref) : null,
-      hist: app.hist ? Array.from(app.hist) : null,
+      hist: app.hist ? Array.from(app.hist) : null, histAxes: app.histAxes || null,
+      colourKey: ui.keyText.textContent, colourKeyScale: !ui.keyScale.hidden,
     }),
     sliderFor: sliderFor,
     cFor: cFor,

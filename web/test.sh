@@ -1,10 +1,9 @@
 #!/usr/bin/env bash
 # web/test.sh SRC BUILD RELCOL_SIM — meson test 'web' (suite web): build the page in
 # WebAssembly under BUILD/web-wasm (web/build.sh: installs emscripten and chromium if
-# missing), node and npm if missing (scripts/setup.sh RELCOL_NODE_PACKAGES), install
-# playwright-core from web/package-lock.json into BUILD/web-node (npm ci;
-# no browser download: it drives Debian's /usr/bin/chromium), and run web/test_web.mjs
-# against the page headless. The screenshots go next to the test log (BUILD/meson-logs).
+# missing), node and node-ws if missing (scripts/setup.sh RELCOL_NODE_PACKAGES: Debian
+# packages only, no npm registry), and run web/test_web.mjs against the page headless in
+# Debian's /usr/bin/chromium, driven over the DevTools protocol by web/cdp.mjs. The screenshots go next to the test log (BUILD/meson-logs).
 # When the tools cannot be had (no root to install them, no network): SKIP (77) if CI is
 # not set, a failure under CI.
 # web/test.sh SRC BUILD BENCH_ENGINE --bench — meson benchmark 'web': the gas's frame rate
@@ -26,26 +25,17 @@ site="$(bash "$src/web/build.sh" "$build/web-wasm")"
 rc=$?
 [ $rc -eq 0 ] || cannot "the WebAssembly build failed or its tools could not be installed (web/build.sh: $rc)"
 
-if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+has_ws() { node -e 'try { require("ws") } catch { require("/usr/share/nodejs/ws") }' >/dev/null 2>&1; }
+if ! command -v node >/dev/null 2>&1 || ! has_ws; then
     . "$src/scripts/setup.sh"
     set +e  # setup.sh sets -e; this script reports its own failures through cannot
     relcol_install_list "${RELCOL_NODE_PACKAGES[@]}" >&2 ||
-        cannot "node and npm are needed (playwright-core drives chromium from node) and could not be installed"
+        cannot "node and Debian's node-ws are needed (web/cdp.mjs drives chromium) and could not be installed"
 fi
-command -v node >/dev/null 2>&1 && command -v npm >/dev/null 2>&1 ||
-    cannot "node and npm are needed (playwright-core drives chromium from node)"
+command -v node >/dev/null 2>&1 || cannot "node is needed (web/cdp.mjs drives chromium from node)"
+has_ws || cannot "the WebSocket module ws (Debian's node-ws) is needed by web/cdp.mjs"
 node -e 'process.exit(Number(process.versions.node.split(".")[0]) >= 18 ? 0 : 1)' ||
-    cannot "node >= 18 is needed by playwright-core 1.61 (found $(node --version))"
+    cannot "node >= 18 is needed (found $(node --version))"
 [ -x "${CHROMIUM:-/usr/bin/chromium}" ] || cannot "no chromium at ${CHROMIUM:-/usr/bin/chromium}"
 
-nodedir="$build/web-node"
-mkdir -p "$nodedir"
-if ! cmp -s "$src/web/package-lock.json" "$nodedir/package-lock.json" ||
-   [ ! -f "$nodedir/node_modules/playwright-core/package.json" ]; then
-    cp "$src/web/package.json" "$src/web/package-lock.json" "$nodedir/"
-    (cd "$nodedir" && npm ci --no-audit --no-fund --loglevel=error >&2) ||
-        cannot "npm ci (playwright-core from the npm registry) failed"
-fi
-# the test imports playwright-core from beside itself
-cp "$src/web/test_web.mjs" "$nodedir/"
-exec node "$nodedir/test_web.mjs" "$site" "$sim" "$build/meson-logs" $mode
+exec node "$src/web/test_web.mjs" "$site" "$sim" "$build/meson-logs" $mode

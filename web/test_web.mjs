@@ -1,4 +1,4 @@
-// test_web.mjs — the page in a real browser (Debian's chromium, driven by playwright-core):
+// test_web.mjs — the page in a real browser (Debian's chromium, driven by web/cdp.mjs):
 //   node test_web.mjs SITE_DIR RELCOL_SIM OUT_DIR            the checks (web/test.sh)
 //   node test_web.mjs SITE_DIR BENCH_ENGINE OUT_DIR --bench  frame rate and engine speed
 // The page is served from SITE_DIR by a static server in this process (loopback only).
@@ -7,16 +7,15 @@
 // semi-axes r/gamma (along v) and r (across), gamma from its momentum at that c; the
 // split view's c = inf side equals `relcol-sim --builtin rack` at t = 4 to round-off; a
 // dropped scenario file runs and a bad one is refused with the reader's message; a
-// screenshot (OUT_DIR/web-screenshot.png) is not blank.
+// screenshot (OUT_DIR/web-screenshot.png) is not blank; the speed histogram has ticked,
+// labelled axes, the balls' colours a key (the rack's set, the gas's gamma - 1 scale), and
+// the time shows in each table's caption, not on the table under the balls.
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import http from 'node:http';
 import os from 'node:os';
 import path from 'node:path';
-import { createRequire } from 'node:module';
-
-const require = createRequire(import.meta.url);
-const { chromium } = require('playwright-core');
+import { chromium } from './cdp.mjs';
 
 const [site, tool, out] = process.argv.slice(2, 5);
 const clockTicks = Number(execFileSync('getconf', ['CLK_TCK'], { encoding: 'utf8' })) || 100;
@@ -158,6 +157,18 @@ async function checksRun() {
   check(d.perr < 1e-12, 'momentum (balls + walls) error < 1e-12', d.perr.toExponential(3));
   check(d.coll > 20, 'the break happened', d.coll + ' collisions');
   check(s.frames > 100, 'frames drawn', s.frames + ' frames, ' + s.fps.toFixed(1) + ' fps');
+  // the figure explains itself (issue 38): the histogram's axes, the colour key, the time
+  const ax = s.histAxes;
+  check(ax && ax.xTicks.length >= 3 && ax.yTicks.length >= 2 && ax.xTicks[0] === 0 &&
+        ax.xTicks[ax.xTicks.length - 1] <= ax.vtop * (1 + 1e-12) && /speed/.test(ax.xLabel) &&
+        /^share per unit/.test(ax.yLabel) &&
+        ax.yTop >= Math.max(...s.hist.slice(0, 96).filter(isFinite)) * (ax.xUnit === 'c' ? s.main.diag.c : 1),
+        'the speed histogram has ticked, labelled axes over its bars and curves',
+        ax ? ax.xLabel + ': ' + ax.xTicks.map((t) => t.toPrecision(3)).join(' ') + ' | ' + ax.yLabel + ': ' +
+             ax.yTicks.map((t) => t.toPrecision(3)).join(' ') : 'none');
+  check(/billiard set by ball number/.test(s.colourKey) && !s.colourKeyScale, 'the rack\'s colours have a key', s.colourKey);
+  const cap = await page.textContent('#cap-main');
+  check(cap.includes('t = ' + s.main.diag.time.toFixed(3)), 'the time shows in the caption', cap);
   const verdict = await page.textContent('#r-verdict');
   check(verdict.startsWith('defined'), 'the page shows the model verdict (classical rack: defined)', verdict);
 
@@ -228,6 +239,8 @@ async function checksRun() {
   check(rows.length === 16 && rows[0].t === T && dx <= 1e-12 * 2.54 && dp <= 1e-12 * pscale,
         'split view c = inf side equals relcol-sim --builtin rack at t = 4',
         'max |dx| = ' + dx.toExponential(2) + ', max |dp| = ' + dp.toExponential(2) + ' (of ' + pscale.toExponential(3) + ')');
+  const capRef = await page.textContent('#cap-ref');
+  check(capRef.includes('t = ' + s.ref.diag.time.toFixed(3)), 'the c = inf side shows its time', capRef);
   await page.screenshot({ path: path.join(out, 'web-split.png') });
 
   // a dropped scenario file runs (the same reader as relcol-sim); a bad one is refused
@@ -259,6 +272,20 @@ async function checksRun() {
   await page.waitForTimeout(300);
   s = await state();
   check(s.main.diag.groups === 1 && !s.error, 'the sequential rule applied', 'groups ' + s.main.diag.groups + (s.error ? ', ' + s.error : ''));
+
+  // the gas: its colours keyed by gamma - 1 (the key drawn with the balls' own colours), the
+  // histogram's speeds in units of c up to c
+  await page.selectOption('#scenario', 'gas');
+  await waitFor(async () => (await state()).scenario === 'gas', 5000, 'the gas');
+  await page.evaluate(() => window.relcol.advanceTo(2));
+  s = await state();
+  const ticks = await page.locator('#colour-key-ticks span').allInnerTexts();
+  check(/γ − 1 \(log scale\)/.test(s.colourKey) && s.colourKeyScale && ticks.length === 5 && ticks[4] === '1',
+        'the gas\'s colours have a key (gamma - 1, log scale)', s.colourKey + ' [' + ticks.join(' ') + ']');
+  const gax = s.histAxes;
+  check(gax && gax.xUnit === 'c' && Math.abs(gax.vtop / s.main.diag.c - 1) < 1e-12 && /units of c/.test(gax.xLabel),
+        'the gas\'s histogram: speeds in units of c, 0 to c', gax ? gax.xLabel + ', top ' + gax.vtop : 'none');
+  await page.screenshot({ path: path.join(out, 'web-gas-key.png') });
   check(consoleErrors.length === 0, 'no console error in the whole run', consoleErrors.join(' | '));
 }
 

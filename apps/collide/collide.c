@@ -96,7 +96,6 @@ static const app_opt opts[] = {
      .help = "3-D only, with a numeric --alpha: azimuth of the normal (radians)"},
     {"--format", "csv|json", APP_T_CHOICE, OFF(json), "csv", .choices = formats,
      .what = "format", .help = "output format (default %D)"},
-    {"--help", NULL, APP_T_HELP, .help = "this text"},
     {NULL},
 };
 
@@ -159,8 +158,9 @@ static int check_options(void *opts)
     return 0;
 }
 
-static const app_cli cli = {prog, opts, usage, "input is read from stdin; see --help",
-                            EXIT_BAD_INPUT, check_options, NULL};
+static const app_cli cli = {.prog = prog, .tab = opts, .usage = usage,
+                            .stray_hint = "input is read from stdin; see --help",
+                            .bad = EXIT_BAD_INPUT, .check = check_options};
 
 static cJSON *json_num(double x)
 {

@@ -7,7 +7,8 @@
  * write one line of text (no program name, no newline) into the caller's buffer `err` of
  * size APP_ERR_LEN; the app prefixes its name and prints it (app_fail). Nothing here
  * prints, except app_fail, app_help, app_opts_next and app_opts_parse (their own errors,
- * --list-options), app_gnuplot_run (a note when gnuplot is absent) and the progress bar. */
+ * --version, --list-options; under app_cli.speaks only where it says so), app_gnuplot_run
+ * (a note when gnuplot is absent), the progress bar and the --sensitivity mode. */
 #ifndef RELCOL_APP_H
 #define RELCOL_APP_H
 
@@ -52,10 +53,11 @@ int app_version(void);
 
 /* The option loop shared by the apps: each argument is "--help" or "-h"; "--version" (it
  * prints the version line, app_version, and exits 0 at once: no app has anything to do
- * after it, and so none needs its own case for it); a flag from the
+ * after it, and so none needs its own case for it; with it->no_exit it comes back as
+ * APP_OPT_VERSION instead, for an MPI rank that must finalize); a flag from the
  * list `flags` (exact match, no value); or "--name value" / "--name=value" with --name
  * from the list `valued`. Anything else is an error, printed by app_opts_next itself as
- * one app_fail line (so that no message is cut to a buffer):
+ * one app_fail line (so that no message is cut to a buffer; nothing with it->quiet):
  *   "unexpected argument 'X' (STRAY_HINT)"       X does not start with "--"
  *   "unknown option --NAME (see --help)"         (at most 40 chars of a very long one)
  *   "--NAME: missing value"                      the last argument wants a value
@@ -64,9 +66,9 @@ int app_version(void);
  *   app_opts_init(&it, prog, argc, argv, valued, NULL, "see --help");
  *   while ((k = app_opts_next(&it, &name, &val)) != APP_OPT_END) { switch (k) ... } */
 /* With it->positional set (relcol-sim's scenario file), an argument that does not start
- * with '-' (or is "-") comes back as APP_OPT_ARG in *value, "-x" is an unknown option, and
- * a missing value is "option --NAME: needs a value" (that app's wording). */
-enum { APP_OPT_END = 0, APP_OPT_VALUE, APP_OPT_FLAG, APP_OPT_HELP, APP_OPT_ERROR, APP_OPT_ARG };
+ * with '-' (or is "-") comes back as APP_OPT_ARG in *value, and "-x" is an unknown option. */
+enum { APP_OPT_END = 0, APP_OPT_VALUE, APP_OPT_FLAG, APP_OPT_HELP, APP_OPT_ERROR, APP_OPT_ARG,
+       APP_OPT_VERSION };
 typedef struct app_opts {
     const char *prog;
     int argc;
@@ -77,12 +79,17 @@ typedef struct app_opts {
     const char *stray_hint;     /* e.g. "see --help" */
     char name[32];              /* the current option's name (without "=value") */
     int positional;             /* arguments that are not options are the app's (above) */
+    int option_words;           /* "option --NAME: needs a value", and a stray argument
+                                 * "unknown option X (see --help)" (relcol-sim's wording) */
+    int quiet;                  /* print nothing: an MPI app's ranks but one (app_cli.speaks) */
+    int no_exit;                /* --version comes back as APP_OPT_VERSION, unprinted */
 } app_opts;
 void app_opts_init(app_opts *it, const char *prog, int argc, char **argv,
                    const char *const *valued, const char *const *flags,
                    const char *stray_hint);
 /* The next argument: APP_OPT_VALUE (*name, *value set), APP_OPT_FLAG (*name), APP_OPT_HELP,
- * APP_OPT_ERROR (already printed) or APP_OPT_END. *name stays valid until the next call. */
+ * APP_OPT_ARG, APP_OPT_VERSION, APP_OPT_ERROR (already printed) or APP_OPT_END. *name stays
+ * valid until the next call. */
 int app_opts_next(app_opts *it, const char **name, const char **value);
 
 /* ---- option tables ---------------------------------------------------------------- */
@@ -90,7 +97,8 @@ int app_opts_next(app_opts *it, const char **name, const char **value);
 /* An app's options as data: one app_opt per option, in help order, ended by {NULL}. The
  * parser (app_opts_parse) and the options section of --help (app_opts_help) both walk it,
  * so the help cannot name an option the parser lacks, nor the reverse. A value's error is
- * "--NAME: reason" (exit status cli->bad); checks between options stay in the app. */
+ * "--NAME: reason" (exit status cli->bad), its range checked by the row's `valid` as it is
+ * given (argv order, as a hand parser); checks between options stay in the app. */
 typedef enum app_opt_type {
     APP_T_DOUBLE,     /* double, finite */
     APP_T_DOUBLE_INF, /* double, finite or inf */
@@ -103,7 +111,6 @@ typedef enum app_opt_type {
     APP_T_LIST,       /* double[hi], 1..hi comma-separated numbers, the count in int `count` */
     APP_T_CUSTOM,     /* parse(value, destination, opts, err): 0, or -1 with the reason in
                        * err; opts (the whole struct) for an option that sets two fields */
-    APP_T_HELP,       /* --help: a help line only (app_opts_next handles it) */
 } app_opt_type;
 typedef struct app_opt {
     const char *name;   /* "--c" */
@@ -120,8 +127,20 @@ typedef struct app_opt {
     int (*parse)(const char *val, void *dst, void *opts, char *err); /* APP_T_CUSTOM */
     size_t count;       /* APP_T_LIST: offsetof the int count */
     size_t given;       /* offsetof + 1 of an int set to 1 when the option is given (0: none) */
+    /* the value's range (NULL: any): 0, or -1 with the reason in err, e.g. "0 must be > 0";
+     * it reads the destination (and count) of the row o in opts */
+    int (*valid)(const struct app_opt *o, const void *opts, char *err);
+    double min, max;    /* app_valid_open_closed's range (min, max] */
 } app_opt;
 #define APP_GIVEN(type, field) (offsetof(type, field) + 1)
+
+/* Ranges for app_opt.valid. A double (APP_T_DOUBLE*) or every number of an APP_T_LIST:
+ * > 0 ("-1 must be > 0"), >= 0 ("-1 must be >= 0"), in (min, max] ("0.8 outside (0, 0.7]");
+ * a speed of light (app_check_c: "c = 0 must be > 0"). */
+int app_valid_positive(const app_opt *o, const void *opts, char *err);
+int app_valid_nonneg(const app_opt *o, const void *opts, char *err);
+int app_valid_open_closed(const app_opt *o, const void *opts, char *err);
+int app_valid_c(const app_opt *o, const void *opts, char *err);
 
 /* What app_start needs of an app: its name, its table, its whole help (which prints the
  * options with app_opts_help), the hint for stray arguments, the exit status of a bad
@@ -135,17 +154,25 @@ typedef struct app_cli {
     int bad;
     int (*check)(void *opts);
     /* NULL, or the app's plain arguments (a scenario file): 0, or an exit status after its
-     * error line; then value errors read "option --NAME: reason" (relcol-sim's wording) */
+     * error line */
     int (*arg)(const char *arg, void *opts);
+    /* 1: relcol-sim's wording, "option --NAME: reason", "option --NAME: needs a value" */
+    int option_words;
+    /* NULL, or whether this process prints (help, --version, the parser's errors): under
+     * MPI only rank 0 does, while every rank parses alike and returns the same status */
+    int (*speaks)(void);
 } app_cli;
 
 /* The table's defaults into opts (-1 with the reason in err: a table's own bug). */
 int app_opts_defaults(const app_opt *tab, void *opts, char *err);
-/* Parse argv into opts: 0, -1 for --help, else cli->bad after one error line. A hidden
- * --list-options prints the table's names (and --version) one a line and exits 0. */
+/* Parse argv into opts: 0, APP_PARSE_HELP for --help, APP_PARSE_DONE after --version or
+ * the hidden --list-options (the table's names and --version, one a line) were printed,
+ * else cli->bad after one error line. Nothing exits: an MPI rank returns to finalize. */
+enum { APP_PARSE_HELP = -1, APP_PARSE_DONE = -2 };
 int app_opts_parse(const app_cli *cli, int argc, char **argv, void *opts);
 /* The options section of --help: "  --NAME META  help" per entry, the help from column
- * col (0-based; continuation lines too), help_more after. */
+ * col (0-based; continuation lines too), help_more after; last the --help line every app
+ * has (no table holds it; --list-options names it). */
 void app_opts_help(FILE *f, const app_opt *tab, int col);
 /* APP_T_CUSTOM parsers of a law (const rc_law *) and a contact frame
  * (const rc_toi_frame *) by name: "unknown law 'x' (known: zmf, ...)". */
@@ -154,7 +181,7 @@ int app_opt_toi_frame(const char *val, void *dst, void *opts, char *err);
 /* APP_T_CUSTOM: an output folder (const char *), not empty: "empty folder name". */
 int app_opt_dir(const char *val, void *dst, void *opts, char *err);
 /* Every app's main() prologue: app_init, the defaults, the parse, --help, cli->check.
- * Returns -1 to go on, else the status main returns at once (0 after --help). */
+ * Returns -1 to go on, else the status main returns at once (0 after --help, --version). */
 int app_start(const app_cli *cli, int argc, char **argv, void *opts);
 
 /* A usable speed of light: c > 0 and 1/c^2 representable (c = inf is fine). Errors:
@@ -394,5 +421,12 @@ void app_sens_move(rc_sim_ball *b, size_t n, int dim, double move);
  * number of observables flagged (a shift above 3 errors), or -1 with err set. */
 int app_sensitivity(FILE *f, const char *dir, const app_sens_variant *v, size_t nv, size_t nobs,
                     const char *const *names, app_sens_run_fn run, void *ctx, char *err);
+/* An app's whole --sensitivity mode (relcol-eos, relcol-gas): dir made, the variants of
+ * (frame, groups, c, dim) run by app_sensitivity on stdout, "prog: wrote DIR/sensitivity.csv,
+ * DIR/sensitivity.json", the validity warning; the exit status: 0, 2 ("prog: --out: reason":
+ * the folder cannot be made) or 1 (a run or a file failed), after its line. */
+int app_sensitivity_main(const char *prog, const char *dir, const rc_toi_frame *frame, int groups,
+                         double c, int dim, size_t nobs, const char *const *names,
+                         app_sens_run_fn run, void *ctx);
 
 #endif

@@ -96,6 +96,21 @@ static int listed(const char *const *list, const char *s)
     return found;
 }
 
+/* an app_opts_next error: "prog: message" unless the iterator is quiet */
+#if defined(__GNUC__)
+__attribute__((format(printf, 2, 3)))
+#endif
+static int opt_error(const app_opts *it, const char *fmt, ...)
+{
+    if (!it->quiet) {
+        va_list ap;
+        va_start(ap, fmt);
+        app_vfail(it->prog, 0, fmt, ap);
+        va_end(ap);
+    }
+    return APP_OPT_ERROR;
+}
+
 int app_opts_next(app_opts *it, const char **name, const char **value)
 {
     *name = NULL;
@@ -105,6 +120,8 @@ int app_opts_next(app_opts *it, const char **name, const char **value)
     const char *a = it->argv[it->i++];
     if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0)
         return APP_OPT_HELP;
+    if (strcmp(a, "--version") == 0 && it->no_exit)
+        return APP_OPT_VERSION;
     if (strcmp(a, "--version") == 0)
         exit(app_version());
     if (listed(it->flags, a)) {
@@ -115,32 +132,24 @@ int app_opts_next(app_opts *it, const char **name, const char **value)
         *value = a;
         return APP_OPT_ARG;
     }
-    if (strncmp(a, "--", 2) != 0 && !it->positional) {
-        app_fail(it->prog, 0, "unexpected argument '%s' (%s)", a, it->stray_hint);
-        return APP_OPT_ERROR;
-    }
+    if (strncmp(a, "--", 2) != 0 && !it->positional)
+        return it->option_words ? opt_error(it, "unknown option %s (%s)", a, it->stray_hint)
+                                : opt_error(it, "unexpected argument '%s' (%s)", a, it->stray_hint);
     const char *eq = strchr(a, '=');
     size_t len = eq ? (size_t)(eq - a) : strlen(a);
-    if (len >= sizeof it->name) {
-        /* too long to be any option: show its start only */
-        app_fail(it->prog, 0, "unknown option %.40s (see --help)", a);
-        return APP_OPT_ERROR;
-    }
+    if (len >= sizeof it->name) /* too long to be any option: show its start only */
+        return opt_error(it, "unknown option %.40s (see --help)", a);
     memcpy(it->name, a, len);
     it->name[len] = '\0';
-    if (!listed(it->valued, it->name)) {
-        app_fail(it->prog, 0, "unknown option %s (see --help)", it->name);
-        return APP_OPT_ERROR;
-    }
+    if (!listed(it->valued, it->name))
+        return opt_error(it, "unknown option %s (see --help)", it->name);
     if (eq)
         *value = eq + 1;
     else if (it->i < it->argc)
         *value = it->argv[it->i++];
-    else {
-        app_fail(it->prog, 0, it->positional ? "option %s: needs a value" : "%s: missing value",
-                 it->name);
-        return APP_OPT_ERROR;
-    }
+    else
+        return opt_error(it, it->option_words ? "option %s: needs a value" : "%s: missing value",
+                         it->name);
     *name = it->name;
     return APP_OPT_VALUE;
 }

@@ -64,7 +64,6 @@ static int set_value(const app_opt *o, const char *val, void *opts, char *err)
     case APP_T_CUSTOM:
         return o->parse(val, dst, opts, err);
     case APP_T_FLAG:
-    case APP_T_HELP:
         break;
     }
     return 0;
@@ -73,7 +72,7 @@ static int set_value(const app_opt *o, const char *val, void *opts, char *err)
 int app_opts_defaults(const app_opt *tab, void *opts, char *err)
 {
     for (const app_opt *o = tab; o->name; o++)
-        if (o->deflt && o->type != APP_T_FLAG && o->type != APP_T_HELP &&
+        if (o->deflt && o->type != APP_T_FLAG &&
             set_value(o, o->deflt, opts, err) != 0)
             return -1;
     return 0;
@@ -83,8 +82,10 @@ static void list_options(const app_opt *tab)
 {
     for (const app_opt *o = tab; o->name; o++)
         printf("%s\n", o->name);
-    printf("--version\n");
+    printf("--help\n--version\n");
 }
+
+static int speaks(const app_cli *cli) { return !cli->speaks || cli->speaks(); }
 
 int app_opts_parse(const app_cli *cli, int argc, char **argv, void *opts)
 {
@@ -96,7 +97,7 @@ int app_opts_parse(const app_cli *cli, int argc, char **argv, void *opts)
                             MAX_OPTS);
         if (o->type == APP_T_FLAG)
             flags[nf++] = o->name;
-        else if (o->type != APP_T_HELP)
+        else
             valued[nv++] = o->name;
     }
     flags[nf++] = "--list-options"; /* (hidden: the test that help and table agree) */
@@ -105,29 +106,39 @@ int app_opts_parse(const app_cli *cli, int argc, char **argv, void *opts)
     app_opts it;
     app_opts_init(&it, cli->prog, argc, argv, valued, flags, cli->stray_hint);
     it.positional = cli->arg != NULL;
+    it.option_words = cli->option_words;
+    it.quiet = !speaks(cli);
+    it.no_exit = 1;
     const char *name, *val;
     for (int kind; (kind = app_opts_next(&it, &name, &val)) != APP_OPT_END;) {
         if (kind == APP_OPT_HELP)
-            return -1;
+            return APP_PARSE_HELP;
         if (kind == APP_OPT_ERROR)
             return cli->bad;
+        if (kind == APP_OPT_VERSION) {
+            if (!it.quiet)
+                app_version();
+            return APP_PARSE_DONE;
+        }
         int st;
         if (kind == APP_OPT_ARG && (st = cli->arg(val, opts)) != 0)
             return st;
         if (kind == APP_OPT_ARG)
             continue;
         if (strcmp(name, "--list-options") == 0) {
-            list_options(cli->tab);
-            exit(0);
+            if (!it.quiet)
+                list_options(cli->tab);
+            return APP_PARSE_DONE;
         }
         const app_opt *o = find(cli->tab, name);
         if (o->given)
             *(int *)((char *)opts + o->given - 1) = 1;
         if (o->type == APP_T_FLAG)
             *(int *)((char *)opts + o->off) = 1;
-        else if (set_value(o, val, opts, err) != 0)
-            return app_fail(cli->prog, cli->bad, "%s%s: %s", cli->arg ? "option " : "", name,
-                            err);
+        else if (set_value(o, val, opts, err) != 0 || (o->valid && o->valid(o, opts, err) != 0))
+            return it.quiet ? cli->bad
+                            : app_fail(cli->prog, cli->bad, "%s%s: %s",
+                                       cli->option_words ? "option " : "", name, err);
     }
     return 0;
 }
@@ -137,7 +148,8 @@ void app_opts_help(FILE *f, const app_opt *tab, int col)
     for (const app_opt *o = tab; o->name; o++) {
         char head[128];
         snprintf(head, sizeof head, "%s%s%s", o->name, o->meta ? " " : "", o->meta ? o->meta : "");
-        fprintf(f, "  %-*s ", col - 3, head);
+        /* (two blanks at least after a long head: help2man ends the option at them) */
+        fprintf(f, "  %-*s %s", col - 3, head, (int)strlen(head) >= col - 3 ? " " : "");
         if (!o->help) { /* (help_more words the whole entry) */
             if (o->help_more)
                 o->help_more(f);
@@ -160,6 +172,8 @@ void app_opts_help(FILE *f, const app_opt *tab, int col)
         if (o->help_more)
             o->help_more(f);
     }
+    /* (every table's last line, so that no app's help can leave it out) */
+    fprintf(f, "  %-*s this text\n", col - 3, "--help");
 }
 
 int app_start(const app_cli *cli, int argc, char **argv, void *opts)
@@ -169,8 +183,10 @@ int app_start(const app_cli *cli, int argc, char **argv, void *opts)
     if (app_opts_defaults(cli->tab, opts, err) != 0)
         return app_fail(cli->prog, 1, "internal: a default of the option table: %s", err);
     int st = app_opts_parse(cli, argc, argv, opts);
-    if (st < 0)
-        return app_help(cli->usage);
+    if (st == APP_PARSE_HELP)
+        return speaks(cli) ? app_help(cli->usage) : 0;
+    if (st == APP_PARSE_DONE)
+        return 0;
     if (st == 0 && cli->check)
         st = cli->check(opts);
     return st == 0 ? -1 : st;
@@ -205,4 +221,54 @@ int app_opt_dir(const char *val, void *dst, void *opts, char *err)
     }
     *(const char **)dst = val;
     return 0;
+}
+
+/* the numbers a row's destination holds: one double, or an APP_T_LIST's count of them */
+static const double *numbers(const app_opt *o, const void *opts, int *n)
+{
+    *n = o->type == APP_T_LIST ? *(const int *)((const char *)opts + o->count) : 1;
+    return (const double *)((const char *)opts + o->off);
+}
+
+/* every number of the row > 0 (or >= 0): "-1 must be > 0" */
+static int above_zero(const app_opt *o, const void *opts, int or_zero, char *err)
+{
+    int n;
+    const double *x = numbers(o, opts, &n);
+    char f[APP_FMT_LEN];
+    for (int k = 0; k < n; k++)
+        if (!(x[k] > 0.0 || (or_zero && x[k] == 0.0))) {
+            app_errf(err, "%s must be %s 0", app_fmt(x[k], f), or_zero ? ">=" : ">");
+            return -1;
+        }
+    return 0;
+}
+
+int app_valid_positive(const app_opt *o, const void *opts, char *err)
+{
+    return above_zero(o, opts, 0, err);
+}
+
+int app_valid_nonneg(const app_opt *o, const void *opts, char *err)
+{
+    return above_zero(o, opts, 1, err);
+}
+
+int app_valid_open_closed(const app_opt *o, const void *opts, char *err)
+{
+    int n;
+    const double *x = numbers(o, opts, &n);
+    char f[APP_FMT_LEN];
+    for (int k = 0; k < n; k++)
+        if (!(x[k] > o->min && x[k] <= o->max)) {
+            app_errf(err, "%s outside (%g, %g]", app_fmt(x[k], f), o->min, o->max);
+            return -1;
+        }
+    return 0;
+}
+
+int app_valid_c(const app_opt *o, const void *opts, char *err)
+{
+    int n;
+    return app_check_c(*numbers(o, opts, &n), err);
 }

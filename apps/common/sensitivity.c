@@ -185,3 +185,19 @@ int app_sensitivity(FILE *f, const char *dir, const app_sens_variant *v, size_t 
     free(er);
     return rc == 0 ? (int)flagged : -1;
 }
+
+int app_sensitivity_main(const char *prog, const char *dir, const rc_toi_frame *frame, int groups,
+                         double c, int dim, size_t nobs, const char *const *names,
+                         app_sens_run_fn run, void *ctx)
+{
+    char err[APP_ERR_LEN];
+    app_sens_variant v[16];
+    const size_t nv = app_sens_variants(frame, groups, c, dim, v, 16);
+    if (app_mkdir_p(dir, err) != 0)
+        return app_fail(prog, 2, "--out: %s", err);
+    if (app_sensitivity(stdout, dir, v, nv, nobs, names, run, ctx, err) < 0)
+        return app_fail(prog, 1, "%s", err);
+    printf("%s: wrote %s/sensitivity.csv, %s/sensitivity.json\n", prog, dir, dir);
+    app_validity_warn(stderr, prog);
+    return 0;
+}

@@ -12,6 +12,7 @@
 
 #include "app.h"
 #include "cluster.h"
+#include "covariance_plot.h"
 
 static const char *const prog = "relcol-covariance";
 
@@ -194,7 +195,6 @@ static const app_opt opts[] = {
              "covariance_cluster benchmark's recipe)"},
     {"--out", "DIR", APP_T_CUSTOM, OFF(out), "out/covariance", .parse = app_opt_dir,
      .help = "output folder (default %D)"},
-    {"--help", NULL, APP_T_HELP, .help = "this text"},
     {NULL},
 };
 
@@ -260,7 +260,9 @@ static void usage(FILE *f)
 "               slice); a collision before the moving frame's start; a wall reached;\n"
 "               pairs that may still meet at the longest end\n"
 "and DIR/covariance.gp and, if gnuplot is installed, DIR/covariance.png: dp against\n"
-"density, one panel per c, one colour per frame (solid: frames, dashed: round-off);\n"
+"density, one panel per c, one colour per frame (solid: frames, dashed: round-off;\n"
+"ringed: dp_frames within 10 times dp_roundoff; an x with a number: a row without\n"
+"differences, its note in the heading; frames offset sideways so equal values show);\n"
 "with two finite c or more also DIR/covariance-c.gp and covariance-c.png: dp against\n"
 "c / V, one panel per frame, one colour per density. Both lists are sorted (rows go\n"
 "density by density, then c, then frame); a value given twice is refused.\n"
@@ -309,8 +311,9 @@ static int check_options(void *opts)
     return 0;
 }
 
-static const app_cli cli = {prog, opts, usage, "see --help", EXIT_BAD_INPUT,
-                            check_options, NULL};
+static const app_cli cli = {.prog = prog, .tab = opts, .usage = usage,
+                            .stray_hint = "see --help",
+                            .bad = EXIT_BAD_INPUT, .check = check_options};
 
 /* The cluster of one density at one c, its runs' end doubled dbl times. */
 static cov_def cluster_def(const options *o, double density, double c, int dbl)
@@ -381,175 +384,25 @@ static int write_csv(const char *path, const options *o, const row *rows, size_t
     return app_atomic_commit(&a, err);
 }
 
-static const char *const colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e",
-                                      "#8c564b", "#e377c2", "#17becf"};
-
-/* A panel with no row of differences: gnuplot fails on a panel without a single point
- * (and warns on a curve without one), so it gets an empty plot with a note instead. */
-static void empty_panel(FILE *f)
+/* The figures' view of the sweep (covariance_plot.c): the rows in the CSV's order. */
+static int write_scripts(const char *gp, const char *gpc, const options *o, const row *rows,
+                         size_t nrows, int nfin, char *err)
 {
-    fprintf(f, "set yrange [1e-16:10]\n"
-               "set label 1 'no row with differences (see the note column)' at graph 0.5,0.5 center\n"
-               "plot NaN notitle\n"
-               "unset label 1\n"
-               "set autoscale y\n");
-}
-
-static int write_script(const char *path, const options *o, const row *rows, size_t nrows,
-                        char *err)
-{
-    /* has_data[k nframes + j]: frame j has a row of differences at the k-th c */
-    char has_data[MAXLIST * MAXFRAMES] = {0};
-    for (size_t i = 0; i < nrows; i++)
-        if (rows[i].have)
-            has_data[(size_t)rows[i].ci * (size_t)o->nframes + i % (size_t)o->nframes] = 1;
-    double dlo = o->density[0], dhi = o->density[0];
-    for (int i = 1; i < o->ndensity; i++) {
-        dlo = fmin(dlo, o->density[i]);
-        dhi = fmax(dhi, o->density[i]);
-    }
-    app_atomic a;
-    if (app_atomic_open(&a, path, err) != 0)
+    cov_plot_row *pr = malloc((nrows ? nrows : 1) * sizeof *pr);
+    if (!pr) {
+        app_errf(err, "out of memory");
         return -1;
-    FILE *f = a.f;
-    const int cols = o->nc < 3 ? o->nc : (o->nc == 4 ? 2 : 3);
-    const int lines = (o->nc + cols - 1) / cols;
-    char term[128], fb[APP_FMT_LEN], fv[APP_FMT_LEN];
-    snprintf(term, sizeof term, "size %d,%d enhanced font 'Sans,12' linewidth 1.5",
-             560 * cols + 40, 440 * lines + 80);
-    fprintf(f,
-"# covariance.gp — written by relcol-covariance; run `gnuplot covariance.gp` in this folder.\n"
-"# The engine's many-body frame dependence: final momenta of the run from a moving frame,\n"
-"# boosted back, against the table frame's run (solid), and the round-off the dynamics\n"
-"# amplifies (dashed: a start moved by 1e-15), against the cluster's density, per c.\n");
-    app_gnuplot_head(f, "covariance.png", term, 1);
-    /* (the x range given: gnuplot warns on one density's empty range) */
-    fprintf(f, "set xrange [%.6g:%.6g]\nset format x '%%g'\nset xtics (", dlo / 1.5, dhi * 1.5);
-    for (int i = 0; i < o->ndensity; i++) {
-        char fd[APP_FMT_LEN];
-        fprintf(f, "%s%s", i ? ", " : "", app_fmt(o->density[i], fd));
     }
-    fprintf(f, ")\n");
-    fprintf(f,
-"set grid xtics ytics lc rgb '#dddddd' lw 0.8\n"
-"set xlabel 'density (packing fraction of the shell)'\n"
-"set ylabel 'max_i |Δp_i| / rms |p|'\n"
-"set key below horizontal maxrows 1 font ',10' spacing 1.1\n"
-"set multiplot layout %d,%d title \"Many-body frame dependence: %ld-D cluster, N = %ld, "
-"moving frame U = %s, v_{rms} = %s\\n"
-"{/*0.8 solid: table run against the moving run boosted back;  dashed: against a start "
-"moved by 10^{-15} (round-off amplified)}\"\n",
-            lines, cols, o->dim, o->n, app_fmt(o->boost, fb), app_fmt(o->v_rms, fv));
-    /* The rows go density by density, then c, then frame: the points of frame j at the
-     * k-th c are every (nc nframes)-th row from k nframes + j (`every`, which keeps the
-     * line through them; a row without differences has empty fields, which gnuplot skips
-     * and the line bridges). Columns: 5 density, 17 dp_frames, 18 dp_roundoff. */
-    const int stride = o->nc * o->nframes;
-    for (int k = 0; k < o->nc; k++) {
-        char fc[APP_FMT_LEN];
-        fprintf(f, "set title 'c = %s'\n", isinf(o->c[k]) ? "∞ (classical)" : app_fmt(o->c[k], fc));
-        /* only the frames with a row of differences at this c: gnuplot fails on a panel
-         * without a single point, and warns on a curve without one */
-        int any = 0;
-        for (int j = 0; j < o->nframes; j++)
-            any += has_data[k * o->nframes + j] != 0;
-        if (!any) {
-            empty_panel(f);
-            continue;
-        }
-        fprintf(f, "plot \\\n");
-        for (int j = 0, done = 0; j < o->nframes; j++) {
-            if (!has_data[k * o->nframes + j])
-                continue;
-            const char *col = colours[j % (int)(sizeof colours / sizeof *colours)];
-            const char *nm = o->frames[j]->name;
-            const int first = k * o->nframes + j;
-            done++;
-            fprintf(f,
-"  'covariance.csv' skip 1 every %d::%d using 5:17 with linespoints pt 7 ps 0.9 lw 2 "
-"lc rgb '%s' title '%s%s', \\\n"
-"  '' skip 1 every %d::%d using 5:18 with linespoints dt 2 pt 6 ps 0.7 lw 1.2 "
-"lc rgb '%s' notitle%s\n",
-                    stride, first, col, nm, o->frames[j]->covariant ? " (covariant)" : "",
-                    stride, first, col, done < any ? ", \\" : "");
-        }
-    }
-    fprintf(f, "unset multiplot\n");
-    return app_atomic_commit(&a, err);
-}
-
-/* The second figure: dp against c / v_rms over the finite values of c (sorted first),
- * one panel per frame, one colour per density. Written only with two finite c or more. */
-static int write_script_c(const char *path, const options *o, const row *rows,
-                          size_t nrows, int nfin, char *err)
-{
-    /* has_data[di nframes + j]: frame j has a row of differences at density di, finite c */
-    char has_data[MAXLIST * MAXFRAMES] = {0};
     for (size_t i = 0; i < nrows; i++)
-        if (rows[i].have && rows[i].ci < nfin)
-            has_data[(size_t)rows[i].di * (size_t)o->nframes + i % (size_t)o->nframes] = 1;
-    app_atomic a;
-    if (app_atomic_open(&a, path, err) != 0)
-        return -1;
-    FILE *f = a.f;
-    const int cols = o->nframes < 3 ? o->nframes : (o->nframes == 4 ? 2 : 3);
-    const int lines = (o->nframes + cols - 1) / cols;
-    char term[128], fb[APP_FMT_LEN], fv[APP_FMT_LEN];
-    snprintf(term, sizeof term, "size %d,%d enhanced font 'Sans,12' linewidth 1.5",
-             560 * cols + 40, 440 * lines + 80);
-    fprintf(f,
-"# covariance-c.gp — written by relcol-covariance; run `gnuplot covariance-c.gp` in this\n"
-"# folder. The same differences as covariance.gp against c / v_rms (finite c only), one\n"
-"# panel per frame, one colour per density.\n");
-    app_gnuplot_head(f, "covariance-c.png", term, 1);
-    fprintf(f,
-"set xrange [%.6g:%.6g]\n"
-"set grid xtics ytics lc rgb '#dddddd' lw 0.8\n"
-"set xlabel 'c / v_{rms}'\n"
-"set ylabel 'max_i |Δp_i| / rms |p|'\n"
-"set key below horizontal font ',10' spacing 1.1\n"
-"set multiplot layout %d,%d title \"Many-body frame dependence against c: %ld-D cluster, "
-"N = %ld, moving frame U = %s, v_{rms} = %s\\n"
-"{/*0.8 solid: table run against the moving run boosted back;  dashed: against a start "
-"moved by 10^{-15} (round-off amplified)}\"\n",
-            o->c[0] / o->v_rms / 1.5, o->c[nfin - 1] / o->v_rms * 1.5, lines, cols, o->dim,
-            o->n, app_fmt(o->boost, fb), app_fmt(o->v_rms, fv));
-    fprintf(f, "set format x '%%g'\nset xtics (");
-    for (int k = 0; k < nfin; k++)
-        fprintf(f, "%s%.6g", k ? ", " : "", o->c[k] / o->v_rms);
-    fprintf(f, ")\n");
-    /* rows go density, c, frame: frame j at density di is every nframes-th row from
-     * di (nc nframes) + j, its finite c the first nfin of them */
-    const int stride = o->nc * o->nframes;
-    for (int j = 0; j < o->nframes; j++) {
-        fprintf(f, "set title '%s%s'\n", o->frames[j]->name,
-                o->frames[j]->covariant ? " (covariant)" : "");
-        int any = 0;
-        for (int di = 0; di < o->ndensity; di++)
-            any += has_data[di * o->nframes + j] != 0;
-        if (!any) {
-            empty_panel(f);
-            continue;
-        }
-        fprintf(f, "plot \\\n");
-        for (int di = 0, done = 0; di < o->ndensity; di++) {
-            if (!has_data[di * o->nframes + j])
-                continue;
-            char fd[APP_FMT_LEN];
-            const char *col = colours[di % (int)(sizeof colours / sizeof *colours)];
-            const int first = di * stride + j, last = first + (nfin - 1) * o->nframes;
-            done++;
-            fprintf(f,
-"  'covariance.csv' skip 1 every %d::%d::%d using ($3/$10):17 with linespoints pt 7 ps 0.9 "
-"lw 2 lc rgb '%s' title 'density %s', \\\n"
-"  '' skip 1 every %d::%d::%d using ($3/$10):18 with linespoints dt 2 pt 6 ps 0.7 lw 1.2 "
-"lc rgb '%s' notitle%s\n",
-                    o->nframes, first, last, col, app_fmt(o->density[di], fd), o->nframes, first,
-                    last, col, done < any ? ", \\" : "");
-        }
-    }
-    fprintf(f, "unset multiplot\n");
-    return app_atomic_commit(&a, err);
+        pr[i] = (cov_plot_row){rows[i].have, rows[i].r.dp_frames, rows[i].r.dp_roundoff,
+                               rows[i].note};
+    const cov_plot p = {o->frames, o->nframes, o->density, o->ndensity, o->c, o->nc,
+                        o->n, o->dim, o->boost, o->v_rms};
+    int st = cov_plot_density(gp, &p, pr, err);
+    if (st == 0 && gpc)
+        st = cov_plot_c(gpc, &p, pr, nfin, err);
+    free(pr);
+    return st;
 }
 
 int main(int argc, char **argv)
@@ -685,16 +538,17 @@ int main(int argc, char **argv)
         goto out;
     }
     rc = 1;
-    if (write_csv(csv, &o, rows, nrows, err) != 0 || write_script(gp, &o, rows, nrows, err) != 0) {
-        fprintf(stderr, "%s: %s\n", prog, err);
-        goto out;
-    }
     int made = 0, made_c = 0, nfin = 0;
     while (nfin < o.nc && isfinite(o.c[nfin]))
         nfin++;
     char *gpc = nfin >= 2 ? app_path_join(o.out, "covariance-c.gp") : NULL;
-    if (nfin >= 2 && (!gpc || write_script_c(gpc, &o, rows, nrows, nfin, err) != 0)) {
-        fprintf(stderr, "%s: %s\n", prog, gpc ? err : "out of memory");
+    if (nfin >= 2 && !gpc) {
+        fprintf(stderr, "%s: out of memory\n", prog);
+        goto out;
+    }
+    if (write_csv(csv, &o, rows, nrows, err) != 0 ||
+        write_scripts(gp, gpc, &o, rows, nrows, nfin, err) != 0) {
+        fprintf(stderr, "%s: %s\n", prog, err);
         free(gpc);
         goto out;
     }

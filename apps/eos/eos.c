@@ -17,9 +17,70 @@
 #include "tr_first_order.h"
 #include "tr_shear_heat.h"
 
-static const char *prog = "relcol-eos";
+static const char *const prog = "relcol-eos";
 #define EXIT_BAD_INPUT 2
 #define MAXLIST 64
+
+typedef struct options {
+    eos_in in;
+    double packing[MAXLIST], theta[MAXLIST];
+    int npack, ntheta;
+    const char *out;
+    int sensitivity;
+} options;
+
+/* --n: a size_t */
+static int parse_n(const char *val, void *dst, void *opts, char *err)
+{
+    (void)opts;
+    long l;
+    if (app_parse_long(val, 4, 10000000, &l, err) != 0)
+        return -1;
+    *(size_t *)dst = (size_t)l;
+    return 0;
+}
+
+#define OFF(field) offsetof(options, field)
+static const app_opt opts[] = {
+    {"--dim", NULL, APP_T_INT, OFF(in.dim), "3", 2, 3,
+     .help = "2 (discs) or 3 (spheres; default)"},
+    {"--n", NULL, APP_T_CUSTOM, OFF(in.n), "1000", .parse = parse_n,
+     .help = "balls (default %D)"},
+    {"--packing", "LIST", APP_T_LIST, OFF(packing), "0.05,0.1,0.2,0.3,0.4", .hi = MAXLIST,
+     .count = OFF(npack), .valid = app_valid_open_closed, .min = 0.0, .max = 0.7,
+     .help = "rest-frame packing fractions (default %D)"},
+    {"--theta", "LIST", APP_T_LIST, OFF(theta), "1", .hi = MAXLIST, .count = OFF(ntheta),
+     .valid = app_valid_open_closed, .min = 1e-3, .max = 1e3,
+     .help = "kT / (m c^2) at finite c, kT at c = inf (default %D)"},
+    {"--c", NULL, APP_T_DOUBLE_INF, OFF(in.c), "inf", .valid = app_valid_c,
+     .help = "speed of light (default %D: classical)"},
+    {"--frame", "NAME", APP_T_CUSTOM, OFF(in.frame), "sphere", .parse = app_opt_toi_frame,
+     .help = "contact frame (default %D: uncontracted, thermal at any density)"},
+    {"--t-equil", "T", APP_T_DOUBLE, OFF(in.t_equil), "50", .valid = app_valid_positive,
+     .help = "melting time in mean free times (default %D)"},
+    {"--t-run", "T", APP_T_DOUBLE, OFF(in.t_run), "2000", .valid = app_valid_positive,
+     .help = "measured time in mean free times (default %D)"},
+    {"--blocks", "B", APP_T_INT, OFF(in.blocks), "20", 2, 100000,
+     .help = "independent blocks for the standard errors (default %D)"},
+    {"--per-block", "K", APP_T_INT, OFF(in.per_block), "100", 4, 100000,
+     .help = "moment readings per block with --transport (default %D)"},
+    {"--transport", NULL, APP_T_FLAG, OFF(in.transport),
+     .help = "also D, eta, lambda (Einstein–Helfand; reads every position)"},
+    {"--lag", "T", APP_T_DOUBLE, OFF(in.lag), "20", .valid = app_valid_positive,
+     .help = "Helfand lag in mean free times (default %D, within a block;\n"
+             "D of a dense gas needs about 100 to take in the long-time tail)"},
+    {"--seed", "S", APP_T_U64, OFF(in.seed), "1",
+     .help = "seed of the gas drawn and of the theory integrals (default %D)"},
+    {"--out", "DIR", APP_T_CUSTOM, OFF(out), "out/eos", .parse = app_opt_dir,
+     .help = "output folder (default %D): eos.csv, eos.gp, eos.png"},
+    {"--sensitivity", NULL, APP_T_FLAG, OFF(sensitivity),
+     .help = "instead of eos.csv: every point run again with the start moved by\n"
+             "1e-15 of a radius and under each other rule its frame offers (group\n"
+             "rule; other contracted frames), each Z, kT, P (and D, eta, lambda)\n"
+             "shift in units of its error, flagged above 3 errors;\n"
+             "sensitivity.csv and sensitivity.json in --out"},
+    {NULL},
+};
 
 static void usage(FILE *f)
 {
@@ -28,25 +89,9 @@ static void usage(FILE *f)
 "                  [--frame NAME] [--t-equil T] [--t-run T] [--blocks B] [--per-block K]\n"
 "                  [--transport] [--lag T] [--seed S] [--out DIR] [--sensitivity]\n"
 "Equation of state (and transport coefficients) of N equal hard balls (m = 1, diameter\n"
-"1) in a periodic box, for every packing x theta of the comma-separated lists.\n"
-"  --dim            2 (discs) or 3 (spheres; default)\n"
-"  --n              balls (default 1000)\n"
-"  --packing LIST   rest-frame packing fractions (default 0.05,0.1,0.2,0.3,0.4)\n"
-"  --theta LIST     kT / (m c^2) at finite c, kT at c = inf (default 1)\n"
-"  --c              speed of light (default inf: classical)\n"
-"  --frame NAME     contact frame (default sphere: uncontracted, thermal at any density)\n"
-"  --t-equil, --t-run  melting and measured time in mean free times (default 50, 2000)\n"
-"  --blocks B       independent blocks for the standard errors (default 20)\n"
-"  --per-block K    moment readings per block with --transport (default 100)\n"
-"  --transport      also D, eta, lambda (Einstein–Helfand; reads every position)\n"
-"  --lag T          Helfand lag in mean free times (default 20, within a block;\n"
-"                   D of a dense gas needs about 100 to take in the long-time tail)\n"
-"  --out DIR        output folder (default out/eos): eos.csv, eos.gp, eos.png\n"
-"  --sensitivity    instead of eos.csv: every point run again with the start moved by\n"
-"                   1e-15 of a radius and under each other rule its frame offers (group\n"
-"                   rule; other contracted frames), each Z, kT, P (and D, eta, lambda)\n"
-"                   shift in units of its error, flagged above 3 errors;\n"
-"                   sensitivity.csv and sensitivity.json in --out\n"
+"1) in a periodic box, for every packing x theta of the comma-separated lists.\n");
+    app_opts_help(f, opts, 19);
+    fprintf(f,
 "Theory columns: 3-D Kolafa and Carnahan–Starling, 2-D Luding (2001) and Santos et al.;\n"
 "transport (3-D): Enskog, and Speedy's D (a fit to 500-sphere\n"
 "runs) moved to this box by Yeh & Hummer's finite-size law, and for uncontracted\n"
@@ -57,109 +102,12 @@ static void usage(FILE *f)
 "Z, kT, P, D, eta, lambda each with a standard error from the blocks.\n");
 }
 
-typedef struct options {
-    eos_in in;
-    double packing[MAXLIST], theta[MAXLIST];
-    int npack, ntheta;
-    const char *out;
-    int sensitivity;
-} options;
-
-static int parse(int argc, char **argv, options *o)
+/* The checks between options, after the table's parse: 0, else an exit code. */
+static int check_options(void *opts)
 {
-    char err[APP_ERR_LEN], f1[APP_FMT_LEN];
-    eos_in *in = &o->in;
-    in->dim = 3;
-    in->n = 1000;
-    in->c = INFINITY;
-    in->frame = rc_toi_frame_find("sphere");
-    in->seed = 1;
-    in->t_equil = 50.0;
-    in->t_run = 2000.0;
-    in->blocks = 20;
-    in->per_block = 100;
-    in->lag = 20.0;
-    const double pk[] = {0.05, 0.1, 0.2, 0.3, 0.4};
-    memcpy(o->packing, pk, sizeof pk);
-    o->npack = 5;
-    o->theta[0] = 1.0;
-    o->ntheta = 1;
-    o->out = "out/eos";
-    static const char *const valued[] = {"--dim", "--n", "--packing", "--theta", "--c",
-                                         "--frame", "--t-equil", "--t-run", "--blocks",
-                                         "--per-block", "--lag", "--seed", "--out", NULL};
-    static const char *const flags[] = {"--transport", "--sensitivity", NULL};
-    app_opts it;
-    app_opts_init(&it, prog, argc, argv, valued, flags, "see --help");
-    const char *name, *val;
-    for (int kind; (kind = app_opts_next(&it, &name, &val)) != APP_OPT_END;) {
-        if (kind == APP_OPT_HELP)
-            return -1;
-        if (kind == APP_OPT_ERROR)
-            return EXIT_BAD_INPUT;
-        long l;
-        double x;
-        if (kind == APP_OPT_FLAG && strcmp(name, "--sensitivity") == 0) {
-            o->sensitivity = 1;
-        } else if (kind == APP_OPT_FLAG) {
-            in->transport = 1;
-        } else if (strcmp(name, "--dim") == 0) {
-            if (app_parse_long(val, 2, 3, &l, err) != 0)
-                return app_fail(prog, EXIT_BAD_INPUT, "--dim: %s", err);
-            in->dim = (int)l;
-        } else if (strcmp(name, "--n") == 0) {
-            if (app_parse_long(val, 4, 10000000, &l, err) != 0)
-                return app_fail(prog, EXIT_BAD_INPUT, "--n: %s", err);
-            in->n = (size_t)l;
-        } else if (strcmp(name, "--blocks") == 0 || strcmp(name, "--per-block") == 0) {
-            if (app_parse_long(val, strcmp(name, "--blocks") ? 4 : 2, 100000, &l, err) != 0)
-                return app_fail(prog, EXIT_BAD_INPUT, "%s: %s", name, err);
-            *(strcmp(name, "--blocks") ? &in->per_block : &in->blocks) = (int)l;
-        } else if (strcmp(name, "--seed") == 0) {
-            if (app_parse_u64(val, &in->seed, err) != 0)
-                return app_fail(prog, EXIT_BAD_INPUT, "--seed: %s", err);
-        } else if (strcmp(name, "--out") == 0) {
-            if (!*val)
-                return app_fail(prog, EXIT_BAD_INPUT, "--out: empty folder name");
-            o->out = val;
-        } else if (strcmp(name, "--frame") == 0) {
-            in->frame = rc_toi_frame_find(val);
-            if (!in->frame) {
-                char list[256];
-                return app_fail(prog, EXIT_BAD_INPUT, "--frame: unknown frame '%s' (known: %s)",
-                                val, app_toi_frame_list(list, sizeof list));
-            }
-        } else if (strcmp(name, "--packing") == 0 || strcmp(name, "--theta") == 0) {
-            const int pack = strcmp(name, "--packing") == 0;
-            double *dst = pack ? o->packing : o->theta;
-            int *cnt = pack ? &o->npack : &o->ntheta;
-            if (app_parse_list(val, dst, MAXLIST, cnt, err) != 0)
-                return app_fail(prog, EXIT_BAD_INPUT, "%s: %s", name, err);
-            for (int k = 0; k < *cnt; k++) {
-                const double hi = pack ? 0.7 : 1e3, lo = pack ? 0.0 : 1e-3;
-                if (!(dst[k] > lo && dst[k] <= hi))
-                    return app_fail(prog, EXIT_BAD_INPUT, "%s: %s outside (%g, %g]", name,
-                                    app_fmt(dst[k], f1), lo, hi);
-            }
-        } else {
-            if (app_parse_double(val, strcmp(name, "--c") == 0, &x, err) != 0)
-                return app_fail(prog, EXIT_BAD_INPUT, "%s: %s", name, err);
-            if (strcmp(name, "--c") == 0) {
-                if (app_check_c(x, err) != 0)
-                    return app_fail(prog, EXIT_BAD_INPUT, "--c: %s", err);
-                in->c = x;
-            } else if (!(x > 0.0)) {
-                return app_fail(prog, EXIT_BAD_INPUT, "%s: %s must be > 0", name,
-                                app_fmt(x, f1));
-            } else if (strcmp(name, "--t-equil") == 0) {
-                in->t_equil = x;
-            } else if (strcmp(name, "--t-run") == 0) {
-                in->t_run = x;
-            } else {
-                in->lag = x;
-            }
-        }
-    }
+    const options *o = opts;
+    const eos_in *in = &o->in;
+    char f1[APP_FMT_LEN];
     /* the fluid ends near 0.494 (spheres) and 0.70 (discs): beyond it the lattice start
      * would not melt */
     for (int k = 0; k < o->npack; k++)
@@ -172,6 +120,10 @@ static int parse(int argc, char **argv, options *o)
                         in->t_run / in->blocks);
     return 0;
 }
+
+static const app_cli cli = {.prog = prog, .tab = opts, .usage = usage,
+                            .stray_hint = "see --help",
+                            .bad = EXIT_BAD_INPUT, .check = check_options};
 
 /* ",value", or "," alone for a value that is not there (NaN): an empty CSV field */
 static void csv_field(FILE *f, const char *fmt, double x)
@@ -201,57 +153,90 @@ static int write_script(const char *path, const options *o, char *err)
     }
     fprintf(f, "# eos.gp — written by relcol-eos; run `gnuplot eos.gp` in this folder.\n");
     if (!in->transport) {
-        app_gnuplot_head(f, "eos.png", "size 1200,560 enhanced font 'Sans,12' linewidth 1.4", 0);
+        /* Both panels against the theories; the right one relative to the first theory
+         * (Kolafa, or Luding in 2-D), where the second is a curve against it, not a
+         * point. A run of one point also gets its numbers written by it. */
+        const char *t1 = in->dim == 3 ? "Kolafa" : "Luding 2001",
+                   *t2 = in->dim == 3 ? "Carnahan–Starling" : "Santos et al. 1995";
+        app_gnuplot_head(f, "eos.png", "size 1300,600 enhanced font 'Sans,12' linewidth 1.4", 0);
         fprintf(f,
+"%s\n"
+"stats 'eos.csv' skip 1 using 8 nooutput\n"
+"npts = STATS_records\n"
+"if (npts == 1) { stats 'eos.csv' skip 1 using 4 nooutput; e1 = STATS_mean; "
+"stats 'eos.csv' skip 1 using 8 nooutput; z = STATS_mean; "
+"stats 'eos.csv' skip 1 using 9 nooutput; zse = STATS_mean }\n"
 "set multiplot layout 1,2 title \"Equation of state of %d-D hard balls, N = %zu, c = %s, "
-"frame %s\"\n"
+"frame %s\\n{/*0.8 relcol: Z from the exact flux moments, error bars one standard error over "
+"blocks of the run}\"\n"
 "set xlabel 'packing fraction η'\nset grid lc rgb '#dddddd'\nset key top left box opaque\n"
 "set xrange [0:%.4g]\n"
-"%s\n"
+"set offsets 0, 0, graph 0.08, graph 0.08\n"
 "set ylabel 'Z = PV/(NkT)'\n"
-"plot 'eos.csv' skip 1 using 4:8:9 with yerrorbars pt 7 lc rgb '#1f77b4' title 'relcol', \\\n"
-"     z1(x) with lines lw 2 lc rgb '#d62728' title '%s', \\\n"
-"     z2(x) with lines lw 2 dt 2 lc rgb '#2ca02c' title '%s'\n"
-"set ylabel 'Z / Z_{theory} - 1'\nset key top left\n"
-"plot 'eos.csv' skip 1 using 4:($8/$10-1):($9/$10) with yerrorbars pt 7 lc rgb '#1f77b4' "
-"title 'relcol against %s', '' skip 1 using 4:($11/$10-1) with linespoints dt 2 lc rgb "
-"'#2ca02c' title '%s', 0 with lines lc rgb '#d62728' notitle\n"
+"set title 'Z against the equations of state'\n"
+"if (npts == 1) { set label 1 sprintf(\"relcol at η = %%.3g: Z = %%.5f ± %%.5f\\n%s: %%.5f\\n%s: %%.5f\", "
+"e1, z, zse, z1(e1), z2(e1)) at first e1, first z right offset -1.5,-1.2 front }\n"
+"plot z1(x) with lines lw 2 lc rgb '#d62728' title '%s', \\\n"
+"     z2(x) with lines lw 2 dt 2 lc rgb '#2ca02c' title '%s', \\\n"
+"     'eos.csv' skip 1 using 4:8:9 with yerrorbars pt 7 ps 1.3 lw 1.5 lc rgb '#1f77b4' title 'relcol'\n"
+"unset label 1\n"
+"set ylabel '100 (Z / Z_{%s} − 1)  (%%)'\n"
+"set title 'relative to %s'\n"
+"set key bottom left box opaque\n"
+"plot 0 with lines lw 2 lc rgb '#d62728' title '%s (the reference, 0)', \\\n"
+"     100 * (z2(x) / z1(x) - 1) with lines lw 2 dt 2 lc rgb '#2ca02c' title '%s against %s', \\\n"
+"     'eos.csv' skip 1 using 4:(100*($8/$10-1)):(100*$9/$10) with yerrorbars pt 7 ps 1.3 lw 1.5 lc rgb '#1f77b4' "
+"title 'relcol against %s'\n"
 "unset multiplot\n",
-                in->dim, in->n, app_fmt(in->c, fc), in->frame ? in->frame->name : "sphere",
-                pmax + 0.05,
                 in->dim == 3
                     ? "z1(x) = (1 + x + x**2 - 2./3 * x**3 * (1 + x)) / (1 - x)**3\n"
                       "z2(x) = (1 + x + x**2 - x**3) / (1 - x)**3"
                     : "z1(x) = (1 + x**2 / 8) / (1 - x)**2 - 0.043 * x**4 / (1 - x)**3\n"
                       "z2(x) = 1 / (1 - 2 * x + (2 * pi / (2 * sqrt(3)) - 1) / (pi / (2 * "
                       "sqrt(3)))**2 * x**2)",
-                in->dim == 3 ? "Kolafa" : "Luding 2001",
-                in->dim == 3 ? "Carnahan–Starling" : "Santos et al. 1995",
-                in->dim == 3 ? "Kolafa" : "Luding",
-                in->dim == 3 ? "Carnahan–Starling" : "Santos et al.");
+                in->dim, in->n, app_fmt(in->c, fc), in->frame ? in->frame->name : "sphere",
+                pmax + 0.05, t1, t2, t1, t2, in->dim == 3 ? "Kolafa" : "Luding",
+                in->dim == 3 ? "Kolafa" : "Luding", t1, t2, in->dim == 3 ? "Kolafa" : "Luding",
+                in->dim == 3 ? "Kolafa" : "Luding");
     } else {
-        app_gnuplot_head(f, "eos.png", "size 1500,520 enhanced font 'Sans,12' linewidth 1.4", 0);
+        /* against packing when theta is one value (the common run), else against theta;
+         * theories joined by lines only along the one list that varies (the rows go
+         * packing by packing, so a line along theta would jump between packings) */
+        const int by_pack = o->ntheta == 1, joined = o->npack == 1 || o->ntheta == 1;
+        const int xc = by_pack ? 4 : 5;
+        const char *with = joined ? "linespoints" : "points";
+        char xr[96];
+        if (by_pack)
+            snprintf(xr, sizeof xr, "set xrange [0:%.4g]\nset logscale y", pmax + 0.05);
+        else
+            snprintf(xr, sizeof xr, "set xrange [%.4g:%.4g]\nset logscale xy", 0.5 * tmin,
+                     2.0 * tmax);
+        app_gnuplot_head(f, "eos.png", "size 1500,600 enhanced font 'Sans,12' linewidth 1.4", 0);
         fprintf(f,
 "set multiplot layout 1,3 title \"Transport coefficients of %d-D hard balls (Einstein–Helfand), "
-"N = %zu, c = %s, frame %s; theory: Enskog (classical) at the same kT, the sphere kernel's Chapman–Enskog\"\n"
-"set xlabel 'θ'\nset grid lc rgb '#dddddd'\nset key top left box opaque\nset logscale xy\n"
-"set xrange [%.4g:%.4g]\n"
+"N = %zu, c = %s, frame %s\\n{/*0.8 {/:Bold blue points}: relcol, error bars one standard "
+"error over blocks;   {/:Bold red}: Enskog (classical) at the same kT}\\n{/*0.8 {/:Bold violet, "
+"dotted}: the sphere kernel's own Chapman–Enskog;   {/:Bold green, dashed} (D): Speedy's "
+"N = 500 fit moved to this box}\"\n"
+"set xlabel '%s'\nset grid lc rgb '#dddddd'\nunset key\n"
+"%s\n"
 "set ylabel 'D'\n"
-"plot 'eos.csv' skip 1 using 5:14:15 with yerrorbars pt 7 lc rgb '#1f77b4' title 'relcol', \\\n"
-"     '' skip 1 using 5:20 with linespoints lc rgb '#d62728' title 'Enskog', \\\n"
-"     '' skip 1 using 5:23 with linespoints dt 2 lc rgb '#2ca02c' title 'Speedy (N = 500) moved to this box', \\\n"
-"     '' skip 1 using 5:27 with linespoints dt 3 lc rgb '#9467bd' title 'Chapman–Enskog, sphere kernel'\n"
+"plot 'eos.csv' skip 1 using %d:20 with %s lc rgb '#d62728' title 'Enskog', \\\n"
+"     '' skip 1 using %d:23 with %s dt 2 lc rgb '#2ca02c' title 'Speedy (N = 500) moved to this box', \\\n"
+"     '' skip 1 using %d:27 with %s dt 3 lc rgb '#9467bd' title 'Chapman–Enskog, sphere kernel', \\\n"
+"     '' skip 1 using %d:14:15 with yerrorbars pt 7 ps 1.2 lc rgb '#1f77b4' title 'relcol'\n"
 "set ylabel 'η_s'\n"
-"plot 'eos.csv' skip 1 using 5:16:17 with yerrorbars pt 7 lc rgb '#1f77b4' title 'relcol', \\\n"
-"     '' skip 1 using 5:21 with linespoints lc rgb '#d62728' title 'Enskog', \\\n"
-"     '' skip 1 using 5:28 with linespoints dt 3 lc rgb '#9467bd' title 'Chapman–Enskog, sphere kernel'\n"
+"plot 'eos.csv' skip 1 using %d:21 with %s lc rgb '#d62728' title 'Enskog', \\\n"
+"     '' skip 1 using %d:28 with %s dt 3 lc rgb '#9467bd' title 'Chapman–Enskog, sphere kernel', \\\n"
+"     '' skip 1 using %d:16:17 with yerrorbars pt 7 ps 1.2 lc rgb '#1f77b4' title 'relcol'\n"
 "set ylabel 'λ'\n"
-"plot 'eos.csv' skip 1 using 5:18:19 with yerrorbars pt 7 lc rgb '#1f77b4' title 'relcol', \\\n"
-"     '' skip 1 using 5:22 with linespoints lc rgb '#d62728' title 'Enskog', \\\n"
-"     '' skip 1 using 5:29 with linespoints dt 3 lc rgb '#9467bd' title 'Chapman–Enskog, sphere kernel'\n"
+"plot 'eos.csv' skip 1 using %d:22 with %s lc rgb '#d62728' title 'Enskog', \\\n"
+"     '' skip 1 using %d:29 with %s dt 3 lc rgb '#9467bd' title 'Chapman–Enskog, sphere kernel', \\\n"
+"     '' skip 1 using %d:18:19 with yerrorbars pt 7 ps 1.2 lc rgb '#1f77b4' title 'relcol'\n"
 "unset multiplot\n",
                 in->dim, in->n, app_fmt(in->c, fc), in->frame ? in->frame->name : "sphere",
-                0.5 * tmin, 2.0 * tmax);
+                by_pack ? "packing fraction η" : isinf(in->c) ? "θ (kT at c = ∞)" : "θ = kT/(mc^2)", xr, xc, with, xc, with, xc,
+                with, xc, xc, with, xc, with, xc, xc, with, xc, with, xc);
     }
     return app_atomic_commit(&a, err);
 }
@@ -288,7 +273,6 @@ static int sens_run(void *ctx, const app_sens_variant *v, double *x, double *se,
 
 static int eos_sensitivity(options *o)
 {
-    char err[APP_ERR_LEN];
     static const char *const q[6] = {"Z", "kT", "P", "D", "eta", "lambda"};
     const int per = o->in.transport ? 6 : 3;
     const size_t nobs = (size_t)(o->npack * o->ntheta * per);
@@ -307,19 +291,10 @@ static int eos_sensitivity(options *o)
                          o->theta[it]);
                 names[j] = nm[j];
             }
-    app_sens_variant v[16];
-    const size_t nv = app_sens_variants(o->in.frame, 0, o->in.c, o->in.dim, v, 16);
-    int rc = 0;
-    if (app_mkdir_p(o->out, err) != 0)
-        rc = app_fail(prog, EXIT_BAD_INPUT, "--out: %s", err);
-    else if (app_sensitivity(stdout, o->out, v, nv, nobs, names, sens_run, o, err) < 0)
-        rc = app_fail(prog, 1, "%s", err);
-    else
-        printf("%s: wrote %s/sensitivity.csv, %s/sensitivity.json\n", prog, o->out, o->out);
+    const int rc = app_sensitivity_main(prog, o->out, o->in.frame, 0, o->in.c, o->in.dim, nobs,
+                                        names, sens_run, o);
     free(nm);
     free(names);
-    if (rc == 0)
-        app_validity_warn(stderr, prog);
     return rc;
 }
 
@@ -337,13 +312,10 @@ static void eos_tick(void *ctx, double done)
 
 int main(int argc, char **argv)
 {
-    app_init(prog);
     options o;
     memset(&o, 0, sizeof o);
-    int st = parse(argc, argv, &o);
-    if (st < 0)
-        return app_help(usage);
-    if (st != 0)
+    int st = app_start(&cli, argc, argv, &o);
+    if (st >= 0)
         return st;
     if (o.sensitivity)
         return eos_sensitivity(&o);

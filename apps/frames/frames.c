@@ -44,7 +44,6 @@ static const app_opt opts[] = {
     {"--from", "F", APP_T_DOUBLE, OFF(from), "1.25", .help = "smallest c / v, > 1 (default %D)"},
     {"--to", "T", APP_T_DOUBLE, OFF(to), "1e4", .help = "largest c / v, >= 100 (default %D)"},
     {"--eps", "E", APP_T_DOUBLE, OFF(eps), "0.5", .help = "restitution in [0, 1] (default %D)"},
-    {"--help", NULL, APP_T_HELP, .help = "this text"},
     {NULL},
 };
 
@@ -96,8 +95,9 @@ static int check_options(void *opts)
     return 0;
 }
 
-static const app_cli cli = {prog, opts, usage, "see --help", EXIT_BAD_INPUT,
-                            check_options, NULL};
+static const app_cli cli = {.prog = prog, .tab = opts, .usage = usage,
+                            .stray_hint = "see --help",
+                            .bad = EXIT_BAD_INPUT, .check = check_options};
 
 /* The outcome of one collision with one contact frame. */
 typedef struct outcome {
@@ -175,16 +175,27 @@ static void pair_of(size_t nf, size_t pr, size_t *a, size_t *b)
     *b = i + 1 + pr;
 }
 
-/* The figure shows frame 0 against each other frame: solid against frames that ignore
- * the contraction, dashed (then dotted ...) against contracting ones. */
-static int line_dash(size_t fi)
+/* The figure shows frame 0 against each other frame: one hue per pair of frames (solid
+ * against frames that ignore the contraction, dashed against contracting ones), light to
+ * dark with the impact parameter. */
+static int line_dash(size_t fi) { return pair_frames[fi]->contracted ? 2 : 1; }
+
+/* Pair fi's hue at impact parameter ib (1 .. NB-1): from a tint (mixed with white) at the
+ * smallest b/R to a shade (mixed with black) at the largest, so each pair is one family. */
+static void pair_colour(size_t fi, int ib, char out[8])
 {
-    if (!pair_frames[fi]->contracted)
-        return 1;
-    int dt = 2;
-    for (size_t g = 1; g < fi; g++)
-        dt += pair_frames[g]->contracted;
-    return dt;
+    static const unsigned base[] = {0x1f77b4, 0xd62728, 0x2ca02c, 0x9467bd, 0xff7f0e, 0x8c564b};
+    const unsigned rgb = base[(fi - 1) % (sizeof base / sizeof base[0])];
+    const double t = (double)(ib - 1) / (NB - 2); /* 0 lightest .. 1 darkest */
+    int ch[3];
+    for (int k = 0; k < 3; k++) {
+        const double c = (double)((rgb >> (16 - 8 * k)) & 0xff);
+        /* tint 55 % white at t = 0, base at t = 0.6, shade 35 % black at t = 1 */
+        const double v = t < 0.6 ? c + (255.0 - c) * 0.55 * (1.0 - t / 0.6)
+                                 : c * (1.0 - 0.35 * (t - 0.6) / 0.4);
+        ch[k] = (int)lround(v);
+    }
+    snprintf(out, 8, "#%02x%02x%02x", ch[0], ch[1], ch[2]);
 }
 
 static int write_script(const char *path, const options *o, size_t nf, char *err)
@@ -198,63 +209,52 @@ static int write_script(const char *path, const options *o, size_t nf, char *err
     fprintf(f,
 "# frames.gp — written by relcol-frames; run `gnuplot frames.gp` in this folder.\n"
 "# How much a rigid-ball collision's outcome depends on the frame in which contact is\n"
-"# decided: differences between frames against c/v, for several impact parameters.\n");
+"# decided: differences between frames against c/v, for several impact parameters.\n"
+"# One colour per pair of frames, light to dark with b/R; grey dotted: (v/c)^2, (v/c)^4.\n");
     /* eps = 1: no heat at any c in any frame, so its differences are round-off only and
      * get no panel */
     const int nobs = o->eps == 1.0 ? NOBS - 1 : NOBS;
     app_gnuplot_head(f, "frames.png",
-                     nobs == NOBS ? "size 1500,620 enhanced font 'Sans,12' linewidth 1.4"
-                                  : "size 1100,620 enhanced font 'Sans,12' linewidth 1.4",
+                     nobs == NOBS ? "size 1650,680 enhanced font 'Sans,12' linewidth 1.4"
+                                  : "size 1200,680 enhanced font 'Sans,12' linewidth 1.4",
                      1);
     fprintf(f,
 "set grid xtics ytics lc rgb '#dddddd' lw 0.8\n"
 "set xlabel 'c / v'\n"
-"set key bottom left spacing 1.1 font ',10'\n"
+"set key top right spacing 1.05 font ',10' samplen 2.5\n"
 "set multiplot layout 1,%d title \"Contact frame dependence of a rigid-ball collision"
-" (v = 1 onto a ball at rest, zmf law, ε = %s%s)\\n{/*0.8 ",
+" (v = 1 onto a ball at rest, zmf law, ε = %s%s)\\n{/*0.8 one colour per pair of frames,"
+" light to dark: b/R = ",
             nobs, app_fmt(o->eps, fe), nobs == NOBS ? "" : ": no heat, no heat panel");
-    static const char *const dash_name[] = {"", "solid", "dashed", "dotted", "dash-dotted"};
-    for (int pass = 0; pass < 2; pass++) /* solid first, as plotted */
-    for (size_t fi = 1; fi < nf; fi++) {
-        const int dt = line_dash(fi);
-        if ((dt == 1) != (pass == 0))
-            continue;
-        fprintf(f, "%s: %s vs %s%s   ", dt <= 4 ? dash_name[dt] : "dt", pair_frames[0]->name,
-                pair_frames[fi]->name,
-                pair_frames[fi]->contracted ? "" : " (contraction ignored)");
-    }
-    fprintf(f, "grey: (v/c)^2 and (v/c)^4}\"\n");
+    for (int ib = 1; ib < NB; ib++)
+        fprintf(f, "%g%s", impacts[ib], ib + 1 < NB ? ", " : "");
+    fprintf(f, " (head-on, b = 0, has no frame difference)}\\n{/*0.8"
+               " solid: one frame of the pair ignores the contraction, dashed: both contract}\"\n");
     static const char *const ylab[NOBS] = {
         "|Δθ| deflection of ball 0 (rad)", "max |Δv′| / v", "max |ΔQ| / (m v^2/2)"};
-    static const char *const colors[] = {"#999999", "#1f77b4", "#2ca02c", "#ff7f0e",
-                                         "#d62728", "#9467bd"};
     for (int ob = 0; ob < nobs; ob++) {
         fprintf(f, "set ylabel '%s'\n", ylab[ob]);
         /* references over the first block of rows only (one pass over c) */
         fprintf(f, "plot 'frames.csv' skip 1 every ::0::%d using 3:(1/$3**2) with lines lw 2 "
-                   "dt 3 lc rgb '#888888' notitle, \\\n     '' skip 1 every ::0::%d using "
-                   "3:(1/$3**4) with lines lw 2 dt 3 lc rgb '#888888' notitle",
+                   "dt 3 lc rgb '#777777' title '(v/c)^2', \\\n     '' skip 1 every ::0::%d using "
+                   "3:(1/$3**4) with lines lw 2 dt 4 lc rgb '#777777' title '(v/c)^4'",
                 o->points - 1, o->points - 1);
-        for (int ib = 1; ib < NB; ib++) {
-            /* frame 0 against frame fi is pair fi - 1; solid lines first (they carry the
-             * key) */
-            int titled = 0;
-            for (int pass = 0; pass < 2; pass++)
-                for (size_t fi = 1; fi < nf; fi++) {
-                    const int dt = line_dash(fi);
-                    if ((dt == 1) != (pass == 0))
-                        continue;
-                    const int col = 4 + ob * (int)npair + (int)(fi - 1);
-                    char key[64] = "notitle";
-                    if (!titled)
-                        snprintf(key, sizeof key, "title 'b/R = %g'", impacts[ib]);
-                    titled = 1;
-                    fprintf(f, ", \\\n     '' skip 1 using 3:($1 == %g && $%d > 0 ? $%d : 1/0) "
-                               "with lines lw 2%s%.0d lc rgb '%s' %s",
-                            impacts[ib], col, col, dt > 1 ? " dt " : "", dt > 1 ? dt : 0,
-                            colors[ib], key);
-                }
-        }
+        /* frame 0 against frame fi is pair fi - 1; the key names each pair once, on its
+         * b/R = 0.9 line (the family's own colour) */
+        for (size_t fi = 1; fi < nf; fi++)
+            for (int ib = 1; ib < NB; ib++) {
+                const int dt = line_dash(fi);
+                const int col = 4 + ob * (int)npair + (int)(fi - 1);
+                char key[96] = "notitle", rgb[8];
+                pair_colour(fi, ib, rgb);
+                if (ib == NB - 2)
+                    snprintf(key, sizeof key, "title '%s vs %s%s'", pair_frames[0]->name,
+                             pair_frames[fi]->name,
+                             pair_frames[fi]->contracted ? "" : " (no contraction)");
+                fprintf(f, ", \\\n     '' skip 1 using 3:($1 == %g && $%d > 0 ? $%d : 1/0) "
+                           "with lines lw 2 dt %d lc rgb '%s' %s",
+                        impacts[ib], col, col, dt, rgb, key);
+            }
         fprintf(f, "\n");
     }
     fprintf(f, "unset multiplot\n");

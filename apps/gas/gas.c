@@ -35,6 +35,144 @@ enum { NCELL = 20, NHIST = 60 };
 #define THETA_MIN 1e-3
 #define THETA_MAX 1e3
 
+/* per_ball frames (covariant): which state a snapshot reads (--readout; READ_*) */
+static const char *const readout_name[] = {"slice", "latest", "now"};
+
+static int parse_readout(const char *val, void *dst, void *opts, char *err)
+{
+    (void)opts;
+    for (int k = 0; k < 3; k++)
+        if (strcmp(val, readout_name[k]) == 0) {
+            *(int *)dst = k;
+            return 0;
+        }
+    app_errf(err, "'%s' is not slice, latest or now", val);
+    return -1;
+}
+
+static int parse_boundary(const char *val, void *dst, void *opts, char *err)
+{
+    (void)opts;
+    if (strcmp(val, "walls") && strcmp(val, "periodic")) {
+        app_errf(err, "'%s' is not walls or periodic", val);
+        return -1;
+    }
+    *(int *)dst = strcmp(val, "periodic") == 0;
+    return 0;
+}
+
+/* --c: a speed of light, and finite */
+static int valid_c(const app_opt *opt, const void *opts, char *err)
+{
+    if (app_valid_c(opt, opts, err) != 0)
+        return -1;
+    if (isinf(((const options *)opts)->c)) {
+        app_errf(err, "must be finite (theta = kT/(m c^2) is 0 at c = inf)");
+        return -1;
+    }
+    return 0;
+}
+
+/* --theta-start: within the temperatures the app resolves */
+static int valid_theta(const app_opt *opt, const void *opts, char *err)
+{
+    (void)opt;
+    const double x = ((const options *)opts)->theta_start;
+    char f1[APP_FMT_LEN];
+    if (x >= THETA_MIN && x <= THETA_MAX)
+        return 0;
+    app_errf(err, "%s outside [%g, %g], the temperatures whose gamma histogram and "
+             "thermometers the app resolves", app_fmt(x, f1), THETA_MIN, THETA_MAX);
+    return -1;
+}
+
+static void snapshots_help(FILE *f)
+{
+    fprintf(f, "snapshots spread evenly over the sample, >= %d (default 100)\n", 2 * NBLOCK);
+}
+
+static void frame_help(FILE *f)
+{
+    fprintf(f,
+"contact frame (2-D/3-D; default %s; a warning on stderr names a\n"
+"                   frame whose stationary state is not Jüttner, notebook 08):\n",
+            gas_default_frame()->name);
+    for (size_t i = 0; rc_toi_frames[i]; i++)
+        fprintf(f, "                     %-9s %s\n", rc_toi_frames[i]->name,
+                rc_toi_frames[i]->summary);
+}
+
+#define OFF(field) offsetof(options, field)
+#define GIVEN(field) APP_GIVEN(options, field)
+static const app_opt opts[] = {
+    {"--dim", "D", APP_T_INT, OFF(dim), "2", 1, 3, .help = "1, 2 or 3 (default %D)"},
+    {"--n", "N", APP_T_LONG, OFF(n), "1000", 2, 10000000,
+     .help = "number of balls (default %D)"},
+    {"--c", "C", APP_T_DOUBLE_INF, OFF(c), "1", .valid = valid_c,
+     .help = "speed of light, finite (default %D); lengths in ball diameters"},
+    {"--theta-start", "T", APP_T_DOUBLE, OFF(theta_start), "0.75", .given = GIVEN(theta_given),
+     .valid = valid_theta,
+     .help = "start with every speed equal and the energy of Jüttner's <gamma> at\n"
+             "theta = T (1-D: of the light species), so the gas settles at T\n"
+             "(default %D)"},
+    {"--v-rms", "V", APP_T_DOUBLE, OFF(v_start), .given = GIVEN(v_given),
+     .valid = app_valid_positive,
+     .help = "instead: every starting speed is V (0 < V < c)\n"
+             "(theta_start and the theta V settles at: within [1e-3, 1e3])"},
+    {"--packing", "P", APP_T_DOUBLE, OFF(packing), .given = GIVEN(packing_given),
+     .valid = app_valid_positive,
+     .help = "area / volume fraction (default 0.25 in 2-D, 0.2 in 3-D; not 1-D)"},
+    {"--t-equil", "T", APP_T_DOUBLE, OFF(t_equil), .given = GIVEN(tequil_given),
+     .valid = app_valid_nonneg,
+     .help = "table time run before sampling (default 50/c; 1-D 500/c)"},
+    {"--t-sample", "T", APP_T_DOUBLE, OFF(t_sample), .given = GIVEN(tsample_given),
+     .valid = app_valid_positive,
+     .help = "table time sampled after it (default 400/c; 1-D 1000/c, with\n"
+             "--observer-velocity 20000/c)"},
+    {"--snapshots", "K", APP_T_LONG, OFF(snapshots), "100", 2 * NBLOCK, 100000000,
+     .help_more = snapshots_help},
+    {"--seed", "S", APP_T_U64, OFF(seed), "1",
+     .help = "random seed of positions, species and directions (default %D)"},
+    /* (the default, gas_default_frame(), is set by main) */
+    {"--frame", "NAME", APP_T_CUSTOM, OFF(frame), .parse = app_opt_toi_frame,
+     .given = GIVEN(frame_given), .help_more = frame_help},
+    {"--boundary", "B", APP_T_CUSTOM, OFF(periodic), .parse = parse_boundary,
+     .given = GIVEN(boundary_given),
+     .help = "2-D/3-D: walls (default) or periodic on every axis (periodic in the\n"
+             "box frame; the balls start in pairs of opposite momenta, so the\n"
+             "total momentum is zero and the gas settles at rest)"},
+    {"--observer-velocity", "V", APP_T_DOUBLE, OFF(v_obs), .given = GIVEN(obs_given),
+     .help = "1-D, or 2-D with walls: also sample the gas as seen by an\n"
+             "observer moving at V along x (|V| < c): every ball's momentum where\n"
+             "its worldline crosses the observer's simultaneity hyperplanes (one\n"
+             "per snapshot, a second run of the same gas, worldlines rebuilt\n"
+             "exactly; 1-D: followed event by event), chi2 against the boosted\n"
+             "Jüttner law at theta from <gamma> (1-D: each species'); writes\n"
+             "DIR/observer.csv, observer.gp, observer.png"},
+    {"--readout", "R", APP_T_CUSTOM, OFF(readout), .parse = parse_readout,
+     .given = GIVEN(readout_given),
+     .help = "a frame that changes each ball's velocity at its own kink\n"
+             "(covariant): what a snapshot at table time t reads -- slice (the\n"
+             "default): every ball's state at t on its worldline, read once the\n"
+             "engine is a bound W past t, beyond which a collision or a tube\n"
+             "conflict's undo cannot move a kink to or from before t\n"
+             "(rc_sim_slice_get), held a further W and counted if it changed\n"
+             "after the read (stdout, summary.json); latest: each ball's latest\n"
+             "segment at t, every change at its contact event's table time\n"
+             "(rc_sim_get_ball_latest); now: the state at t of the collisions\n"
+             "processed by t (rc_sim_get_ball, which misses those whose contact\n"
+             "lies after t but whose kink lies before it)"},
+    {"--out", "DIR", APP_T_CUSTOM, OFF(out), "out/gas", .parse = app_opt_dir,
+     .help = "output folder, created if missing (default %D)"},
+    {"--sensitivity", NULL, APP_T_FLAG, OFF(sensitivity),
+     .help = "instead of the outputs (2-D/3-D): the gas run again with its start\n"
+             "moved by 1e-15 of a radius and under each other rule its frame offers\n"
+             "(group rule; other contracted frames), each theta's and the pressure's\n"
+             "shift in units of its error, flagged above 3 errors; sensitivity.csv\n"
+             "and sensitivity.json in --out"},
+    {NULL},
+};
+
 static void usage(FILE *f)
 {
     fprintf(f,
@@ -62,55 +200,9 @@ static void usage(FILE *f)
 "              mixture of rest masses 1 and 2 (one species would never thermalise: equal\n"
 "              masses only swap momenta); theta_start and reported theta are per species,\n"
 "              kT = m theta is common\n"
-"options:\n"
-"  --dim D          1, 2 or 3 (default 2)\n"
-"  --n N            number of balls (default 1000)\n"
-"  --c C            speed of light, finite (default 1); lengths in ball diameters\n"
-"  --theta-start T  start with every speed equal and the energy of Jüttner's <gamma> at\n"
-"                   theta = T (1-D: of the light species), so the gas settles at T\n"
-"                   (default 0.75)\n"
-"  --v-rms V        instead: every starting speed is V (0 < V < c)\n"
-"                   (theta_start and the theta V settles at: within [1e-3, 1e3])\n"
-"  --packing P      area / volume fraction (default 0.25 in 2-D, 0.2 in 3-D; not 1-D)\n"
-"  --t-equil T      table time run before sampling (default 50/c; 1-D 500/c)\n"
-"  --t-sample T     table time sampled after it (default 400/c; 1-D 1000/c, with\n"
-"                   --observer-velocity 20000/c)\n"
-"  --snapshots K    snapshots spread evenly over the sample, >= %d (default 100)\n"
-"  --seed S         random seed of positions, species and directions (default 1)\n"
-"  --frame NAME     contact frame (2-D/3-D; default %s; a warning on stderr names a\n"
-"                   frame whose stationary state is not Jüttner, notebook 08):\n",
-            2 * NBLOCK, gas_default_frame()->name);
-    for (size_t i = 0; rc_toi_frames[i]; i++)
-        fprintf(f, "                     %-9s %s\n", rc_toi_frames[i]->name,
-                rc_toi_frames[i]->summary);
+"options:\n");
+    app_opts_help(f, opts, 19);
     fprintf(f,
-"  --boundary B     2-D/3-D: walls (default) or periodic on every axis (periodic in the\n"
-"                   box frame; the balls start in pairs of opposite momenta, so the\n"
-"                   total momentum is zero and the gas settles at rest)\n"
-"  --observer-velocity V  1-D, or 2-D with walls: also sample the gas as seen by an\n"
-"                   observer moving at V along x (|V| < c): every ball's momentum where\n"
-"                   its worldline crosses the observer's simultaneity hyperplanes (one\n"
-"                   per snapshot, a second run of the same gas, worldlines rebuilt\n"
-"                   exactly; 1-D: followed event by event), chi2 against the boosted\n"
-"                   Jüttner law at theta from <gamma> (1-D: each species'); writes\n"
-"                   DIR/observer.csv, observer.gp, observer.png\n"
-"  --readout R      a frame that changes each ball's velocity at its own kink\n"
-"                   (covariant): what a snapshot at table time t reads -- slice (the\n"
-"                   default): every ball's state at t on its worldline, read once the\n"
-"                   engine is a bound W past t, beyond which a collision or a tube\n"
-"                   conflict's undo cannot move a kink to or from before t\n"
-"                   (rc_sim_slice_get), held a further W and counted if it changed\n"
-"                   after the read (stdout, summary.json); latest: each ball's latest\n"
-"                   segment at t, every change at its contact event's table time\n"
-"                   (rc_sim_get_ball_latest); now: the state at t of the collisions\n"
-"                   processed by t (rc_sim_get_ball, which misses those whose contact\n"
-"                   lies after t but whose kink lies before it)\n"
-"  --out DIR        output folder, created if missing (default out/gas)\n"
-"  --sensitivity    instead of the outputs (2-D/3-D): the gas run again with its start\n"
-"                   moved by 1e-15 of a radius and under each other rule its frame offers\n"
-"                   (group rule; other contracted frames), each theta's and the pressure's\n"
-"                   shift in units of its error, flagged above 3 errors; sensitivity.csv\n"
-"                   and sensitivity.json in --out\n"
 "\n"
 "error bars: the K snapshots are cut into %d consecutive blocks and each figure is the\n"
 "mean of the block means +- their standard error. Blocks are independent when they are\n"
@@ -134,118 +226,12 @@ static void usage(FILE *f)
 
 #define fail(...) app_fail(prog, EXIT_BAD_INPUT, __VA_ARGS__)
 
-
-/* per_ball frames (covariant): which state a snapshot reads (--readout; READ_*) */
-static const char *const readout_name[] = {"slice", "latest", "now"};
-
-static int parse_options(int argc, char **argv, options *o)
+/* The checks between options, after the table's parse, and the defaults that depend on
+ * other options: 0, else an exit code. */
+static int check_options(void *opts)
 {
+    options *o = opts;
     char err[APP_ERR_LEN], f1[APP_FMT_LEN];
-    o->dim = 2;
-    o->n = 1000;
-    o->snapshots = 100;
-    o->c = 1.0;
-    o->theta_start = 0.75;
-    o->seed = 1;
-    o->frame = gas_default_frame();
-    o->out = "out/gas";
-    static const char *const known[] = {"--dim", "--n", "--c", "--theta-start", "--v-rms",
-                                        "--packing", "--t-equil", "--t-sample", "--snapshots",
-                                        "--seed", "--out", "--frame", "--boundary",
-                                        "--observer-velocity", "--readout", NULL};
-    static const char *const flags[] = {"--sensitivity", NULL};
-    app_opts it;
-    app_opts_init(&it, prog, argc, argv, known, flags, "see --help");
-    const char *name, *val;
-    for (int kind; (kind = app_opts_next(&it, &name, &val)) != APP_OPT_END;) {
-        if (kind == APP_OPT_HELP)
-            return -1;
-        if (kind == APP_OPT_ERROR)
-            return EXIT_BAD_INPUT;
-        long l;
-        if (kind == APP_OPT_FLAG) { /* (--sensitivity, the one flag) */
-            o->sensitivity = 1;
-        } else if (strcmp(name, "--dim") == 0) {
-            if (app_parse_long(val, 1, 3, &l, err) != 0)
-                return fail("--dim: %s", err);
-            o->dim = (int)l;
-        } else if (strcmp(name, "--n") == 0) {
-            if (app_parse_long(val, 2, 10000000, &o->n, err) != 0)
-                return fail("--n: %s", err);
-        } else if (strcmp(name, "--snapshots") == 0) {
-            if (app_parse_long(val, 2 * NBLOCK, 100000000, &o->snapshots, err) != 0)
-                return fail("--snapshots: %s", err);
-        } else if (strcmp(name, "--seed") == 0) {
-            if (app_parse_u64(val, &o->seed, err) != 0)
-                return fail("--seed: %s", err);
-        } else if (strcmp(name, "--out") == 0) {
-            if (!*val)
-                return fail("--out: empty folder name");
-            o->out = val;
-        } else if (strcmp(name, "--frame") == 0) {
-            o->frame = rc_toi_frame_find(val);
-            if (!o->frame) {
-                char list[256];
-                return fail("--frame: unknown frame '%s' (known: %s)", val,
-                            app_toi_frame_list(list, sizeof list));
-            }
-            o->frame_given = 1;
-        } else if (strcmp(name, "--readout") == 0) {
-            o->readout = -1;
-            for (int k = 0; k < 3; k++)
-                if (strcmp(val, readout_name[k]) == 0)
-                    o->readout = k;
-            if (o->readout < 0)
-                return fail("--readout: '%s' is not slice, latest or now", val);
-            o->readout_given = 1;
-        } else if (strcmp(name, "--boundary") == 0) {
-            if (strcmp(val, "walls") && strcmp(val, "periodic"))
-                return fail("--boundary: '%s' is not walls or periodic", val);
-            o->periodic = strcmp(val, "periodic") == 0;
-            o->boundary_given = 1;
-        } else {
-            double x;
-            if (app_parse_double(val, strcmp(name, "--c") == 0, &x, err) != 0)
-                return fail("%s: %s", name, err);
-            if (strcmp(name, "--c") == 0) {
-                if (app_check_c(x, err) != 0)
-                    return fail("--c: %s", err);
-                if (isinf(x))
-                    return fail("--c: must be finite (theta = kT/(m c^2) is 0 at c = inf)");
-                o->c = x;
-            } else if (strcmp(name, "--theta-start") == 0) {
-                if (!(x >= THETA_MIN && x <= THETA_MAX))
-                    return fail("--theta-start: %s outside [%g, %g], the temperatures whose "
-                                "gamma histogram and thermometers the app resolves",
-                                app_fmt(x, f1), THETA_MIN, THETA_MAX);
-                o->theta_start = x;
-                o->theta_given = 1;
-            } else if (strcmp(name, "--v-rms") == 0) {
-                if (!(x > 0.0))
-                    return fail("--v-rms: %s must be > 0", app_fmt(x, f1));
-                o->v_start = x;
-                o->v_given = 1;
-            } else if (strcmp(name, "--packing") == 0) {
-                if (!(x > 0.0))
-                    return fail("--packing: %s must be > 0", app_fmt(x, f1));
-                o->packing = x;
-                o->packing_given = 1;
-            } else if (strcmp(name, "--t-equil") == 0) {
-                if (!(x >= 0.0))
-                    return fail("--t-equil: %s must be >= 0", app_fmt(x, f1));
-                o->t_equil = x;
-                o->tequil_given = 1;
-            } else if (strcmp(name, "--observer-velocity") == 0) {
-                o->v_obs = x;
-                o->obs_given = 1;
-            } else if (strcmp(name, "--t-sample") == 0) {
-                if (!(x > 0.0))
-                    return fail("--t-sample: %s must be > 0", app_fmt(x, f1));
-                o->t_sample = x;
-                o->tsample_given = 1;
-            }
-        }
-    }
     if (o->theta_given && o->v_given)
         return fail("--v-rms: conflicts with --theta-start (give one)");
     if (o->v_given && !(o->v_start < o->c))
@@ -295,10 +281,16 @@ static int parse_options(int argc, char **argv, options *o)
     if ((double)o->n * (double)o->snapshots > MAX_SAMPLES)
         return fail("--snapshots: n x snapshots = %.3g exceeds %.3g stored samples",
                     (double)o->n * (double)o->snapshots, MAX_SAMPLES);
+    if (o->dim == 1 && o->sensitivity)
+        return fail("--sensitivity: 2-D and 3-D gases only (the 1-D gas has no rules to vary)");
     if (o->dim >= 2) /* a valid run in a frame that is not thermal: said before it starts */
         gas_frame_warn(stderr, prog, o->frame, o->dim, o->packing);
     return 0;
 }
+
+static const app_cli cli = {.prog = prog, .tab = opts, .usage = usage,
+                            .stray_hint = "see --help",
+                            .bad = EXIT_BAD_INPUT, .check = check_options};
 
 /* ---- statistics ------------------------------------------------------------------- */
 
@@ -602,38 +594,19 @@ static int sens_run(void *ctx, const app_sens_variant *v, double *x, double *se,
     return r;
 }
 
-static int gas_sensitivity(options *o)
-{
-    char err[APP_ERR_LEN];
-    static const char *const names[4] = {"theta_gamma", "theta_pv", "theta_pv_minus_gamma",
-                                         "pressure"};
-    if (o->dim == 1)
-        return fail("--sensitivity: 2-D and 3-D gases only (the 1-D gas has no rules to vary)");
-    if (app_mkdir_p(o->out, err) != 0)
-        return fail("--out: %s", err);
-    app_sens_variant v[16];
-    const size_t nv = app_sens_variants(o->frame, o->groups, o->c, o->dim, v, 16);
-    if (app_sensitivity(stdout, o->out, v, nv, 4, names, sens_run, o, err) < 0) {
-        fprintf(stderr, "%s: %s\n", prog, err);
-        return 1;
-    }
-    printf("%s: wrote %s/sensitivity.csv, %s/sensitivity.json\n", prog, o->out, o->out);
-    app_validity_warn(stderr, prog);
-    return 0;
-}
-
 int main(int argc, char **argv)
 {
-    app_init(prog);
     options o;
     memset(&o, 0, sizeof o);
-    int st = parse_options(argc, argv, &o);
-    if (st < 0)
-        return app_help(usage);
-    if (st != 0)
+    o.frame = gas_default_frame();
+    int st = app_start(&cli, argc, argv, &o);
+    if (st >= 0)
         return st;
+    static const char *const sens_names[4] = {"theta_gamma", "theta_pv",
+                                              "theta_pv_minus_gamma", "pressure"};
     if (o.sensitivity)
-        return gas_sensitivity(&o);
+        return app_sensitivity_main(prog, o.out, o.frame, o.groups, o.c, o.dim, 4, sens_names,
+                                    sens_run, &o);
 
     char err[APP_ERR_LEN];
     int rc = 1;

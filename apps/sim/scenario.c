@@ -247,6 +247,65 @@ static int parse_boundary(const ctx *c, const cJSON *v, scn_scenario *s)
     return 0;
 }
 
+const char *const scn_wall_names[6] = {"x-", "x+", "y-", "y+", "z-", "z+"};
+
+/* walls: {"x-": WALL, ...} per wall of a walled axis, WALL "reflecting" (the default: the
+ * hard wall of restitution.wall) or {"rule": "thermal", "kT": t} (relcol/wall.h). */
+static int parse_walls(const ctx *c, const cJSON *v, scn_scenario *s)
+{
+    if (!cJSON_IsObject(v))
+        return bad(c, "walls", "must be an object {\"x-\": {\"rule\": \"thermal\", \"kT\": 1}, ...}");
+    const char *keys[7] = {NULL};
+    for (int w = 0; w < 2 * s->dim; w++)
+        keys[w] = scn_wall_names[w];
+    if (only_keys(c, v, "walls", keys))
+        return -1;
+    for (int w = 0; w < 2 * s->dim; w++) {
+        const cJSON *e = cJSON_GetObjectItemCaseSensitive(v, scn_wall_names[w]);
+        if (!e)
+            continue;
+        char p[32];
+        snprintf(p, sizeof p, "walls.%s", scn_wall_names[w]);
+        const char *name = NULL;
+        if (cJSON_IsString(e)) {
+            name = e->valuestring;
+        } else if (cJSON_IsObject(e)) {
+            static const char *const wk[] = {"rule", "kT", NULL};
+            if (only_keys(c, e, p, wk) || get_str(c, e, p, "rule", NULL, &name))
+                return -1;
+            if (!name)
+                return bad(c, p, "needs a \"rule\" (reflecting or thermal)");
+        } else {
+            return bad(c, p, "must be \"reflecting\" or {\"rule\": \"thermal\", \"kT\": t}");
+        }
+        const rc_wall_rule *r = rc_wall_rule_find(name);
+        if (!r) {
+            char list[128] = "";
+            for (size_t k = 0; rc_wall_rules[k]; k++)
+                snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s", k ? ", " : "",
+                         rc_wall_rules[k]->name);
+            return bad(c, p, "unknown wall rule '%s' (expected %s)", name, list);
+        }
+        const cJSON *jt = cJSON_IsObject(e) ? cJSON_GetObjectItemCaseSensitive(e, "kT") : NULL;
+        if (r->temperature) {
+            if (!jt)
+                return bad(c, p, "a %s wall needs its temperature \"kT\"", r->name);
+            double kT;
+            if (get_num(c, e, p, "kT", 1, 0, 0, &kT))
+                return -1;
+            if (!(kT > 0))
+                return bad(c, p, "kT = %g: a wall's temperature must be > 0", kT);
+            s->wall_kT[w] = kT;
+        } else if (jt) {
+            return bad(c, p, "a %s wall has no temperature: drop \"kT\"", r->name);
+        }
+        if (!r->rigid && s->boundary[w / 2] == RC_SIM_PERIODIC)
+            return bad(c, p, "axis %d is periodic (boundary): it has no wall to be %s", w / 2, r->name);
+        s->wall_rule[w] = r == &rc_wall_reflecting ? NULL : r;
+    }
+    return 0;
+}
+
 /* A periodic axis needs four cells of at least a largest diameter (relcol/sim.h). */
 static int check_periodic_room(const ctx *c, const scn_scenario *s)
 {
@@ -623,7 +682,7 @@ static const char *nul_escape(const char *text)
 int scn_parse_ext(const char *text, const char *name, const scn_tables *extra,
                   scn_scenario *s, char *err)
 {
-    static const char *const keys[] = {"relcol", "dim", "box", "boundary", "c", "law",
+    static const char *const keys[] = {"relcol", "dim", "box", "boundary", "walls", "c", "law",
                                        "restitution", "contact_frame", "groups", "tc", "seed",
                                        "time",
                                        "t_end", "restart", "checkpoint", "balls", "generate",
@@ -685,6 +744,9 @@ int scn_parse_ext(const char *text, const char *name, const scn_tables *extra,
     const cJSON *jbnd = cJSON_GetObjectItemCaseSensitive(root, "boundary");
     if (jbnd && parse_boundary(&c, jbnd, s))
         goto done;
+    const cJSON *jwalls = cJSON_GetObjectItemCaseSensitive(root, "walls");
+    if (jwalls && parse_walls(&c, jwalls, s))
+        goto done;
     if (get_num(&c, root, "", "c", 0, INFINITY, 1, &s->c))
         goto done;
     if (!(s->c > 0)) {
@@ -731,6 +793,14 @@ int scn_parse_ext(const char *text, const char *name, const scn_tables *extra,
             name_list(extra, 1, list, sizeof list));
         goto done;
     }
+    for (int w = 0; w < 6; w++)
+        if (s->wall_rule[w] && !s->wall_rule[w]->rigid && s->frame->per_ball) {
+            char p[32];
+            snprintf(p, sizeof p, "walls.%s", scn_wall_names[w]);
+            bad(&c, p, "a %s wall cannot go with contact_frame '%s' (its rollbacks would take "
+                "back the wall's draws)", s->wall_rule[w]->name, s->frame->name);
+            goto done;
+        }
     const char *groups = NULL;
     if (get_str(&c, root, "", "groups", "simultaneous", &groups))
         goto done;
@@ -905,6 +975,14 @@ rc_sim_def scn_sim_def(const scn_scenario *s)
     def.groups = s->groups;
     for (int d = 0; d < 3; d++)
         def.boundary[d] = s->boundary[d];
+    for (int w = 0; w < 6; w++) {
+        def.wall_rule[w] = s->wall_rule[w];
+        def.wall_kT[w] = s->wall_kT[w];
+    }
+    /* the walls' stream: the scenario's seed, hashed so that it is not the generator's
+     * stream shifted (splitmix64 of seed ^ "thermal") */
+    rc_rng r = {s->seed ^ 0x7468657266616cULL};
+    def.wall_seed = rc_rng_next(&r);
     return def;
 }
 

@@ -36,6 +36,9 @@ typedef struct scn_scenario {
     double c;                  /* INFINITY classical */
     const rc_law *law;
     double eps_ball, eps_wall;
+    const rc_wall_rule *wall_rule[6]; /* "walls": wall w = 2 d + side's rule (NULL: the hard
+                                         wall, restitution eps_wall) ... */
+    double wall_kT[6];         /* ... and its temperature kT where the rule reads one */
     const rc_toi_frame *frame; /* contact frame (the library's or the caller's table) */
     int groups;                /* rule for simultaneous contacts (rc_group_rule) */
     double t_c;                /* TC model, proper time; 0 off */
@@ -78,6 +81,8 @@ void scn_free(scn_scenario *s);
 /* The engine's definition of the run s describes (everything else default): written once,
  * for relcol-sim and for the tests that run a scenario as relcol-sim does. */
 rc_sim_def scn_sim_def(const scn_scenario *s);
+/* The walls' names in the scenario and summary.json, wall w = 2 d + side: x-, x+, y-, ... */
+extern const char *const scn_wall_names[6];
 
 /* The engine sim (made from scn_sim_def(s)) at the scenario's start: the checkpoint it
  * names, read from the folder of file (the scenario's path) and checked to hold the

@@ -72,6 +72,22 @@ static cJSON *header(const scn_scenario *s, double t, double t_end, int periodic
             cJSON_AddItemToArray(x, cJSON_CreateString(s->boundary[d] == RC_SIM_PERIODIC
                                                            ? "periodic" : "walls"));
     }
+    int ruled = 0; /* (hard walls, the default, are not written) */
+    for (int w = 0; w < 6; w++)
+        ruled |= s->wall_rule[w] != NULL;
+    if (ruled) {
+        put(j, "walls", x = cJSON_CreateObject());
+        for (int w = 0; x && w < 2 * s->dim; w++) {
+            const rc_wall_rule *r = s->wall_rule[w];
+            if (!r)
+                continue;
+            cJSON *e = cJSON_CreateObject();
+            put(x, scn_wall_names[w], e);
+            put(e, "rule", cJSON_CreateString(r->name));
+            if (r->temperature)
+                put_num(e, "kT", s->wall_kT[w]);
+        }
+    }
     put(j, "c", isinf(s->c) ? cJSON_CreateString("inf") : scn_json_number(s->c));
     put(j, "law", cJSON_CreateString(s->law->name));
     put(j, "restitution", x = cJSON_CreateObject());

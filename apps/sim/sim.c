@@ -27,6 +27,36 @@ static void on_sigint(int sig)
     interrupted = 1;
 }
 
+typedef struct options {
+    const char *file, *builtin, *out_dir, *frame;
+    double t_end;
+    int t_end_given, no_plots, dump, sens;
+} options;
+
+#define OFF(field) offsetof(options, field)
+static const app_opt opts[] = {
+    {"--builtin", "NAME", APP_T_STRING, OFF(builtin),
+     .help = "rack: a billiard break (15 balls in a triangle and a cue ball);\n"
+             "gas: 400 discs at packing 0.2, rms speed 0.5 c, c = 1"},
+    {"--out", "DIR", APP_T_STRING, OFF(out_dir),
+     .help = "output folder (overrides outputs.dir)"},
+    {"--t-end", "T", APP_T_DOUBLE, OFF(t_end), .given = APP_GIVEN(options, t_end_given),
+     .help = "run until T (overrides t_end)"},
+    /* (checked once the scenario is read: its errors come first) */
+    {"--frame", "NAME", APP_T_STRING, OFF(frame),
+     .help = "contact frame (overrides contact_frame; listed below)"},
+    {"--no-plots", NULL, APP_T_FLAG, OFF(no_plots), .help = "write data only, no gnuplot figures"},
+    {"--dump", NULL, APP_T_FLAG, OFF(dump),
+     .help = "print the scenario as relcol reads it (JSON) and exit"},
+    {"--sensitivity", NULL, APP_T_FLAG, OFF(sens),
+     .help = "instead of the outputs: the scenario run again with its positions moved\n"
+             "by 1e-15 of a radius and under each other rule its frame offers (group\n"
+             "rule; other contracted frames), each final momentum (8 balls at most)\n"
+             "and total's shift in units of its error, flagged above 3 errors;\n"
+             "sensitivity.csv and sensitivity.json in the output folder"},
+    {NULL},
+};
+
 static void usage(FILE *f)
 {
     fprintf(f,
@@ -36,19 +66,9 @@ static void usage(FILE *f)
 "Run an event-driven simulation of hard balls at any c. The scenario format is\n"
 "SCENARIO.md (installed as share/relcol/SCENARIO.md, in the source apps/sim/); the\n"
 "scenarios in share/relcol/scenarios/ are examples, --builtin NAME runs one of them.\n"
-"\n"
-"  --builtin NAME  rack: a billiard break (15 balls in a triangle and a cue ball);\n"
-"                  gas: 400 discs at packing 0.2, rms speed 0.5 c, c = 1\n"
-"  --out DIR       output folder (overrides outputs.dir)\n"
-"  --t-end T       run until T (overrides t_end)\n"
-"  --frame NAME    contact frame (overrides contact_frame; listed below)\n"
-"  --no-plots      write data only, no gnuplot figures\n"
-"  --dump          print the scenario as relcol reads it (JSON) and exit\n"
-"  --sensitivity   instead of the outputs: the scenario run again with its positions moved\n"
-"                  by 1e-15 of a radius and under each other rule its frame offers (group\n"
-"                  rule; other contracted frames), each final momentum (8 balls at most)\n"
-"                  and total's shift in units of its error, flagged above 3 errors;\n"
-"                  sensitivity.csv and sensitivity.json in the output folder\n"
+"\n");
+    app_opts_help(f, opts, 18);
+    fprintf(f,
 "\n"
 "Writes into the output folder: snapshots/snap-NNNN.csv at the scenario's snapshot times,\n"
 "trajectory.xyz (extended XYZ, when outputs.xyz_every > 0), trajectory.h5 (H5MD, when\n"
@@ -174,48 +194,40 @@ static int sensitivity(const scn_scenario *s, char *err)
     return 0;
 }
 
+/* the scenario file: one */
+static int scenario_arg(const char *a, void *opts)
+{
+    options *o = opts;
+    if (o->file)
+        return fail(2, "more than one scenario file given: %s and %s", o->file, a);
+    o->file = a;
+    return 0;
+}
+
+static int check_options(void *opts)
+{
+    const options *o = opts;
+    if (!!o->file == !!o->builtin)
+        return fail(2, "give one scenario: a file or --builtin rack|gas (see --help)");
+    return 0;
+}
+
+static const app_cli cli = {.prog = prog, .tab = opts, .usage = usage, .stray_hint = "see --help",
+                            .bad = 2, .check = check_options, .arg = scenario_arg,
+                            .option_words = 1};
+
 int main(int argc, char **argv)
 {
-    app_init(prog);
-    const char *file = NULL, *builtin = NULL, *out_dir = NULL, *frame = NULL;
-    double t_end = NAN;
-    int no_plots = 0, dump = 0, sens = 0;
+    options opt;
+    memset(&opt, 0, sizeof opt);
+    int st0 = app_start(&cli, argc, argv, &opt);
+    if (st0 >= 0)
+        return st0;
+    const char *file = opt.file, *builtin = opt.builtin, *out_dir = opt.out_dir;
+    const char *frame = opt.frame;
+    const double t_end = opt.t_end_given ? opt.t_end : NAN;
+    const int no_plots = opt.no_plots, dump = opt.dump, sens = opt.sens;
     char err[APP_ERR_LEN];
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-            return app_help(usage);
-        } else if (!strcmp(a, "--version")) {
-            return app_version();
-        } else if (!strcmp(a, "--builtin") || !strcmp(a, "--out") || !strcmp(a, "--t-end") ||
-                   !strcmp(a, "--frame")) {
-            if (i + 1 >= argc)
-                return fail(2, "option %s: needs a value", a);
-            const char *v = argv[++i];
-            if (!strcmp(a, "--frame"))
-                frame = v;
-            else if (!strcmp(a, "--builtin"))
-                builtin = v;
-            else if (!strcmp(a, "--out"))
-                out_dir = v;
-            else if (app_parse_double(v, 0, &t_end, err))
-                return fail(2, "option --t-end: %s", err);
-        } else if (!strcmp(a, "--no-plots")) {
-            no_plots = 1;
-        } else if (!strcmp(a, "--dump")) {
-            dump = 1;
-        } else if (!strcmp(a, "--sensitivity")) {
-            sens = 1;
-        } else if (a[0] == '-' && a[1]) {
-            return fail(2, "unknown option %s (see --help)", a);
-        } else if (file) {
-            return fail(2, "more than one scenario file given: %s and %s", file, a);
-        } else {
-            file = a;
-        }
-    }
-    if (!!file == !!builtin)
-        return fail(2, "give one scenario: a file or --builtin rack|gas (see --help)");
 
     scn_scenario s;
     if (builtin ? scn_builtin(builtin, &s, err) : scn_load(file, &s, err))

@@ -329,6 +329,15 @@ static int write_summary_json(const sim_output *o, const rc_sim *sim, const rc_s
     cJSON_AddItemToObject(j, "wall_impulse", x = cJSON_CreateObject());
     for (int w = 0; w < 2 * s->dim; w++)
         add(x, walls[w], d->wall_impulse_by_wall[w] - d0->wall_impulse_by_wall[w]);
+    /* the energy each wall took from the balls (a thermal wall's heat; < 0: it heated
+     * them) and, for the thermal ones, their temperature */
+    cJSON_AddItemToObject(j, "wall_heat", x = cJSON_CreateObject());
+    for (int w = 0; w < 2 * s->dim; w++)
+        add(x, walls[w], d->wall_heat_by_wall[w] - d0->wall_heat_by_wall[w]);
+    cJSON_AddItemToObject(j, "wall_kT", x = cJSON_CreateObject());
+    for (int w = 0; x && w < 2 * s->dim; w++)
+        if (s->wall_rule[w] && s->wall_rule[w]->temperature)
+            add(x, walls[w], s->wall_kT[w]);
     add(j, "wall_shared", (double)(d->wall_shared - d0->wall_shared));
     add(j, "pinned", (double)(d->pinned - d0->pinned));
     add(j, "cell_crossings", (double)(d->events[RC_SIM_EV_CELL] - d0->events[RC_SIM_EV_CELL]));
@@ -530,25 +539,62 @@ static int write_figures(sim_output *o, char *err)
     }
     free(gp);
     char cbuf[APP_FMT_LEN];
-    /* each ball's path: the frames of one ball are every N-th line of frames.dat; gnuplot
-     * draws them as one line per ball with `every`, and the last frame as the balls */
+    /* The trajectories and the GIF share their colours: one per ball from the same
+     * palette, keyed by ball number (the colour box), and both draw the balls as the
+     * shapes the run has, contracted along the velocity at finite c. */
     size_t n = o->n_balls;
+    double shift = 0.0; /* ball k's colour value is k + shift */
+    const char *cs = isinf(s->c) ? "inf" : app_fmt(s->c, cbuf);
+    char shapes[160];
+    snprintf(shapes, sizeof shapes, "%s",
+             isinf(s->c) ? "c = ∞: no contraction, every ball its rest shape"
+                         : "each ball Lorentz-contracted along its velocity (semi-axis r/γ)");
+    /* up to 20 balls, a colour of their own each (a step palette: band k of [0, n] in
+     * colour k, the dark ten first); more, a continuous ramp */
+    static const char *const own[20] = {
+        "#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2",
+        "#7f7f7f", "#bcbd22", "#17becf", "#aec7e8", "#ffbb78", "#98df8a", "#ff9896",
+        "#c5b0d5", "#c49c94", "#f7b6d2", "#c7c7c7", "#dbdb8d", "#9edae5"};
+    char palette[1200];
+    int pl = 0;
+    if (n >= 1 && n <= 20) {
+        pl = snprintf(palette, sizeof palette, "set palette defined (");
+        for (size_t k = 0; k < n; k++)
+            pl += snprintf(palette + pl, sizeof palette - (size_t)pl, "%s%zu '%s', %zu '%s'",
+                           k ? ", " : "", k, own[k], k + 1, own[k]);
+        pl += snprintf(palette + pl, sizeof palette - (size_t)pl,
+                       ")\nset cbrange [0:%zu]\nset cbtics ('0' 0.5", n);
+        for (size_t k = 1; k < n; k++)
+            pl += snprintf(palette + pl, sizeof palette - (size_t)pl, ", '%zu' %zu.5", k, k);
+        snprintf(palette + pl, sizeof palette - (size_t)pl, ")\nset cblabel 'ball number' offset 1,0\n");
+        shift = 0.5;
+    } else {
+        snprintf(palette, sizeof palette,
+                 "set palette defined (0 '#1f77b4', 1 '#2ca02c', 2 '#ff7f0e', 3 '#d62728')\n"
+                 "set cbrange [-0.5:%zu.5]\nset cblabel 'ball number' offset 1,0\n", n ? n - 1 : 0);
+    }
+    /* each ball's path: paths.dat holds one block per ball; the last frame's balls over
+     * them, filled in their colour */
     fprintf(a.f,
-            "# relcol-sim: ball trajectories (x-y%s), one colour per ball; the balls at the end\n"
+            "# relcol-sim: ball trajectories (x-y%s), one colour per ball (the GIF's); the\n"
+            "# balls at the end as their shapes\n"
             "if (!exists(\"outfile\")) outfile = 'trajectories.png'\n"
-            "set terminal pngcairo size 1000,%d enhanced font ',11'\n"
+            "set encoding utf8\n"
+            "set terminal pngcairo size 1080,%d enhanced font ',11'\n"
             "set output outfile\nset size ratio -1\nunset key\n"
             "set xrange [0:%.17g]\nset yrange [0:%.17g]\n"
-            "set xlabel 'x'\nset ylabel 'y'\n"
-            "set title 'relcol-sim: %zu balls, t = %g to %g, c = %s, restitution %g%s'\n"
-            "set palette rgbformulae 33,13,10\nunset colorbox\n"
-            "plot for [i=0:%zu] 'paths.dat' index i u 1:2:(i) w l lw 1.2 lc palette, \\\n"
-            "     'frames.dat' index %zu u 2:3:(2*$5):(2*$4):6 w ellipses lc rgb 'black' "
-            "fs transparent solid 0.25\n",
-            s->dim == 3 ? " projection" : "", (int)(1000 * s->box.y / s->box.x) + 80, s->box.x,
-            s->box.y, n, s->time, s->t_end, isinf(s->c) ? "inf" : app_fmt(s->c, cbuf), s->eps_ball,
+            "set xlabel 'x (the scenario''s length unit)'\nset ylabel 'y'\n"
+            "set title \"relcol-sim: %zu balls, t = %g to %g, c = %s, restitution %g%s\\n"
+            "{/*0.85 lines: each ball's path;  filled: the balls at t = %g, %s}\"\n"
+            "%s"
+            "plot for [i=0:%zu] 'paths.dat' index i u 1:2:(i + %g) w l lw 1.6 lc palette, \\\n"
+            "     'frames.dat' index %zu u 2:3:(2*$5):(2*$4):6:($1 + %g) w ellipses lc palette "
+            "fs transparent solid 0.65 border lc rgb '#202020'\n",
+            s->dim == 3 ? " projection" : "", (int)(1000 * s->box.y / s->box.x) + 110, s->box.x,
+            s->box.y, n, s->time, s->t_end, cs, s->eps_ball,
             s->dim == 3 ? "\\n3-D run seen along z: x-y projection, z not shown" : "",
-            n ? n - 1 : 0, o->gif_frames ? o->gif_frames - 1 : 0);
+            s->t_end, shapes, palette, n ? n - 1 : 0, shift,
+            o->gif_frames ? o->gif_frames - 1 : 0, shift);
     if (app_atomic_commit(&a, err))
         return -1;
     int made = 0;
@@ -565,24 +611,26 @@ static int write_figures(sim_output *o, char *err)
     free(gg);
     fprintf(a.f,
             "# relcol-sim: animation of the table; each ball drawn as its Lorentz-contracted\n"
-            "# ellipse (semi-axis r/gamma along v, r across)\n"
+            "# ellipse (semi-axis r/gamma along v, r across), coloured by ball number as in\n"
+            "# trajectories.png\n"
             "if (!exists(\"outfile\")) outfile = 'table.gif'\n"
+            "set encoding utf8\n"
             "# (the GIF terminal has no transparency: fs solid 1 with a border, on white)\n"
-            "set terminal gif animate delay 4 size 800,%d background '#ffffff' font ',11'\n"
-            "set output outfile\nset size ratio -1\nunset key\nunset colorbox\n"
+            "set terminal gif animate delay 4 size 900,%d background '#ffffff' font ',11'\n"
+            "set output outfile\nset size ratio -1\nunset key\n"
             "set xrange [0:%.17g]\nset yrange [0:%.17g]\n"
-            "set palette defined (0 '#1f77b4', 1 '#2ca02c', 2 '#ff7f0e', 3 '#d62728')\n"
-            "set cbrange [0:%zu]\n"
+            "set xlabel 'x (the scenario''s length unit)'\nset ylabel 'y'\n"
+            "%s"
             "t0 = %.17g; dt = %.17g\n"
             "do for [i=0:%zu] {\n"
-            "  set title sprintf('relcol-sim: %zu balls, c = %s    t = %%.3f', t0 + i * dt)\n"
-            "  plot 'frames.dat' index i u 2:3:(2*$5):(2*$4):6:1 w ellipses lc palette "
+            "  set title sprintf(\"relcol-sim: %zu balls, c = %s    t = %%.3f (the scenario's "
+            "time unit)\\n%s\", t0 + i * dt)\n"
+            "  plot 'frames.dat' index i u 2:3:(2*$5):(2*$4):6:($1 + %g) w ellipses lc palette "
             "fs solid 1 border lc rgb '#202020'\n"
             "}\n",
-            (int)(800 * s->box.y / s->box.x) + 60, s->box.x, s->box.y, n ? n - 1 : 0,
+            (int)(800 * s->box.y / s->box.x) + 100, s->box.x, s->box.y, palette,
             o->first_frame, s->out.xyz_every * (double)o->gif_stride,
-            o->gif_frames ? o->gif_frames - 1 : 0, n,
-            isinf(s->c) ? "inf" : app_fmt(s->c, cbuf));
+            o->gif_frames ? o->gif_frames - 1 : 0, n, cs, shapes, shift);
     if (app_atomic_commit(&a, err))
         return -1;
     return app_gnuplot_run(o->prog, o->dir, "table.gp", "table.gif", &made, err);

@@ -57,7 +57,6 @@ static const app_opt opts[] = {
      .help = "restitution in [0, 1] (default 0.8 for the example, else %D)"},
     {"--law", "LAW", APP_T_CUSTOM, OFF(law), "zmf", .parse = parse_law,
      .help = "collision law, as in relcol-collide (default %D)"},
-    {"--help", NULL, APP_T_HELP, .help = "this text"},
     {NULL},
 };
 
@@ -109,8 +108,9 @@ static int check_options(void *opts)
     return 0;
 }
 
-static const app_cli cli = {prog, opts, usage, "see --help", EXIT_BAD_INPUT,
-                            check_options, NULL};
+static const app_cli cli = {.prog = prog, .tab = opts, .usage = usage,
+                            .stray_hint = "see --help",
+                            .bad = EXIT_BAD_INPUT, .check = check_options};
 
 /* One collision at c; outputs the final states. Returns an rc_status. */
 static int collide_at(const options *o, const app_balls *b, rc_vec3 n, double c,

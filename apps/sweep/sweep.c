@@ -20,9 +20,41 @@
 
 #include "app.h"
 #include "observables.h"
+#include "sweep_plot.h"
 
 static const char *const prog = "relcol-sweep";
 static int rank = 0, nranks = 1;
+
+typedef struct options {
+    const char *scen, *grid, *out_dir;
+    double from, to;
+    long points;
+    int no_plot;
+    sweep_setup su;
+} options;
+
+#define OFF(field) offsetof(options, field)
+static const app_opt opts[] = {
+    /* (the scenario's name and the grid are checked after the parse, with the numbers) */
+    {"--scenario", "NAME", APP_T_STRING, OFF(scen), "all",
+     .help = "one of the scenarios above, or all (default %D)"},
+    {"--grid", "log|lin", APP_T_STRING, OFF(grid), "log",
+     .help = "spacing of the c grid (default %D)"},
+    {"--from", "F", APP_T_DOUBLE, OFF(from), "10",
+     .help = "c from F times |v|max (default %D; F > 1)"},
+    {"--to", "T", APP_T_DOUBLE, OFF(to), "1e6", .help = "to T times |v|max (default %D)"},
+    {"--points", "N", APP_T_LONG, OFF(points), "25", 2, 100000,
+     .help = "grid points (default %D)"},
+    /* (the defaults of sweep_setup_default, observables.c) */
+    {"--eps", "E", APP_T_DOUBLE, OFF(su.eps), "0.8",
+     .help = "restitution (default %D; soft: in (0, 1])"},
+    {"--stiffness", "K", APP_T_DOUBLE, OFF(su.stiffness), "1e8",
+     .help = "soft-sphere stiffness (default %D)"},
+    {"--out", "DIR", APP_T_STRING, OFF(out_dir), "out/sweep",
+     .help = "output folder (default %D)"},
+    {"--no-plots", NULL, APP_T_FLAG, OFF(no_plot), .help = "data and script only"},
+    {NULL},
+};
 
 static void usage(FILE *f)
 {
@@ -36,15 +68,9 @@ static void usage(FILE *f)
 "scenarios (default all):\n");
     for (size_t i = 0; sweep_scenarios[i]; i++)
         fprintf(f, "  %-9s %s\n", sweep_scenarios[i]->name, sweep_scenarios[i]->summary);
+    fprintf(f, "options:\n");
+    app_opts_help(f, opts, 18);
     fprintf(f,
-"options:\n"
-"  --grid log|lin  spacing of the c grid (default log)\n"
-"  --from F --to T c from F to T times |v|max (default 10 to 1e6; F > 1)\n"
-"  --points N      grid points (default 25)\n"
-"  --eps E         restitution (default 0.8; soft: in (0, 1])\n"
-"  --stiffness K   soft-sphere stiffness (default 1e8)\n"
-"  --out DIR       output folder (default out/sweep)\n"
-"  --no-plots      data and script only\n"
 "\n"
 "Writes DIR/sweep.csv (c, c/|v|max, (|v|max/c)^2, then per scenario the deviation of each\n"
 "observable group and the raw observables), DIR/sweep.gp and DIR/sweep.png, and prints\n"
@@ -65,78 +91,50 @@ typedef struct task_out {
     double status; /* 0 ok, 1 failed (a double so one MPI datatype carries the record) */
 } task_out;
 
-static int run(int argc, char **argv)
+/* The checks after the table's parse (each rank alike; rank 0 words them): 0, else 2. */
+static int check_options(void *opts)
 {
-    const char *scen = "all", *grid = "log", *out_dir = "out/sweep";
-    double from = 10, to = 1e6;
-    long points = 25;
-    int no_plot = 0;
-    sweep_setup su = sweep_setup_default();
-    char err[APP_ERR_LEN];
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (!strcmp(a, "--help") || !strcmp(a, "-h"))
-            return rank == 0 ? app_help(usage) : 0;
-        if (!strcmp(a, "--version"))
-            return rank == 0 ? app_version() : 0;
-        if (!strcmp(a, "--no-plots")) {
-            no_plot = 1;
-            continue;
-        }
-        static const char *const valued[] = {"--scenario", "--grid", "--from", "--to", "--points",
-                                             "--eps", "--stiffness", "--out", NULL};
-        int known = 0;
-        for (size_t k = 0; valued[k]; k++)
-            known |= !strcmp(a, valued[k]);
-        if (!known)
-            return fail(2, "unknown option %s (see --help)", a);
-        if (i + 1 >= argc)
-            return fail(2, "option %s: needs a value", a);
-        const char *v = argv[++i];
-        int bad = 0;
-        if (!strcmp(a, "--scenario"))
-            scen = v;
-        else if (!strcmp(a, "--grid"))
-            grid = v;
-        else if (!strcmp(a, "--out"))
-            out_dir = v;
-        else if (!strcmp(a, "--from"))
-            bad = app_parse_double(v, 0, &from, err);
-        else if (!strcmp(a, "--to"))
-            bad = app_parse_double(v, 0, &to, err);
-        else if (!strcmp(a, "--points"))
-            bad = app_parse_long(v, 2, 100000, &points, err);
-        else if (!strcmp(a, "--eps"))
-            bad = app_parse_double(v, 0, &su.eps, err);
-        else if (!strcmp(a, "--stiffness"))
-            bad = app_parse_double(v, 0, &su.stiffness, err);
-        if (bad)
-            return fail(2, "option %s: %s", a, err);
-    }
-    if (strcmp(grid, "log") && strcmp(grid, "lin"))
-        return fail(2, "option --grid: must be log or lin (got '%s')", grid);
-    if (!(from > 1))
+    const options *o = opts;
+    if (strcmp(o->grid, "log") && strcmp(o->grid, "lin"))
+        return fail(2, "option --grid: must be log or lin (got '%s')", o->grid);
+    if (!(o->from > 1))
         return fail(2, "option --from: must be > 1 (c above the fastest speed)");
-    if (!(to > from))
+    if (!(o->to > o->from))
         return fail(2, "option --to: must be > --from");
-    if (!(su.eps > 0 && su.eps <= 1))
+    if (!(o->su.eps > 0 && o->su.eps <= 1))
         return fail(2, "option --eps: restitution must be in (0, 1] (the soft reference's "
                        "dashpot never releases at 0)");
-    if (!(su.stiffness > 0))
+    if (!(o->su.stiffness > 0))
         return fail(2, "option --stiffness: must be > 0");
+    if (strcmp(o->scen, "all") && !sweep_scenario_find(o->scen))
+        return fail(2, "option --scenario: unknown scenario '%s' (see --help)", o->scen);
+    return 0;
+}
+
+static int rank0(void) { return rank == 0; }
+
+static const app_cli cli = {.prog = prog, .tab = opts, .usage = usage, .stray_hint = "see --help",
+                            .bad = 2, .check = check_options, .option_words = 1,
+                            .speaks = rank0};
+
+static int run(const options *o)
+{
+    const char *grid = o->grid, *out_dir = o->out_dir;
+    const double from = o->from, to = o->to;
+    const int no_plot = o->no_plot;
+    const sweep_setup su = o->su;
+    char err[APP_ERR_LEN];
     const sweep_scenario *list[16];
     size_t ns = 0;
-    if (!strcmp(scen, "all")) {
+    if (!strcmp(o->scen, "all")) {
         for (size_t i = 0; sweep_scenarios[i] && ns < 16; i++)
             list[ns++] = sweep_scenarios[i];
-    } else if ((list[0] = sweep_scenario_find(scen))) {
-        ns = 1;
     } else {
-        return fail(2, "option --scenario: unknown scenario '%s' (see --help)", scen);
+        list[ns++] = sweep_scenario_find(o->scen);
     }
 
     double vmax = fmax(rc_v3_norm(su.v[0]), rc_v3_norm(su.v[1]));
-    size_t N = (size_t)points;
+    size_t N = (size_t)o->points;
     double *cs = malloc(N * sizeof *cs);
     size_t ntask = ns * (N + 1); /* +1: the classical reference of each scenario */
     task_out *res = calloc(ntask, sizeof *res);
@@ -292,30 +290,7 @@ static int run(int argc, char **argv)
     free(x);
     free(y);
 
-    if (app_atomic_open(&a, gp, err)) {
-        rc = fail(1, "%s", err);
-        goto files_done;
-    }
-    fprintf(a.f,
-            "# relcol-sweep: deviation from the classical limit against c (run: gnuplot sweep.gp)\n"
-            "if (!exists(\"outfile\")) outfile = 'sweep.png'\n"
-            "set terminal pngcairo size 1100,760 enhanced font ',12'\n"
-            "set output outfile\nset datafile separator ','\n"
-            "set logscale xy\nset format x '10^{%%L}'\nset format y '10^{%%L}'\n"
-            "set xlabel 'c / |v|_{max}'\nset ylabel 'relative deviation from c = ∞'\n"
-            "set title \"Classical-limit convergence: collision law, time of impact, soft reference, engine run\\n"
-            "{/*0.8 ε = %g, soft stiffness %g; dashed: (|v|_{max}/c)^2}\"\n"
-            "set grid\nset key bottom left font ',10'\n",
-            su.eps, su.stiffness);
-    fprintf(a.f, "plot '%s' u 2:3 w l dt 2 lw 2 lc rgb '#555555' t '(|v|_{max}/c)^2'", "sweep.csv");
-    col = 0;
-    for (size_t s = 0; s < ns; s++)
-        for (int g = 0; g < list[s]->n_groups; g++, col++)
-            fprintf(a.f, ", \\\n     '' u 2:($%zu > %g ? $%zu : 1/0) w lp pt %zu ps 0.8 lw 1.5 t '%s: %s (order %.3f)'",
-                    4 + col, list[s]->floor, 4 + col, 5 + 2 * col, list[s]->name, list[s]->group[g],
-                    col < 64 ? order[col] : NAN);
-    fprintf(a.f, "\n");
-    if (app_atomic_commit(&a, err)) {
+    if (sweep_plot_write(gp, list, ns, order, col < 64 ? col : 64, su.eps, su.stiffness, err)) {
         rc = fail(1, "%s", err);
         goto files_done;
     }
@@ -360,16 +335,20 @@ static int launched_by_mpi(void)
 
 int main(int argc, char **argv)
 {
-    app_init(prog);
 #ifdef RELCOL_HAVE_MPI
     const int mpi = launched_by_mpi();
-    if (mpi) {
+    if (mpi) { /* (before the parse: MPI_Init may take its own arguments out of argv) */
         MPI_Init(&argc, &argv);
         MPI_Comm_rank(MPI_COMM_WORLD, &rank);
         MPI_Comm_size(MPI_COMM_WORLD, &nranks);
     }
 #endif
-    int rc = run(argc, argv);
+    options o;
+    memset(&o, 0, sizeof o);
+    o.su = sweep_setup_default();
+    int rc = app_start(&cli, argc, argv, &o);
+    if (rc < 0)
+        rc = run(&o);
     if (rc == 0) /* (under MPI, each rank for the runs it made) */
         app_validity_warn(stderr, prog);
 #ifdef RELCOL_HAVE_MPI

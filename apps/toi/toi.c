@@ -38,11 +38,10 @@ static const app_opt opts[] = {
     {"--frame", "FRAME", APP_T_CUSTOM, OFF(frame), "table", .parse = app_opt_toi_frame,
      .help = "where contact is decided (default %D):", .help_more = frame_lines},
     {"--wall", "X0,X1[,Y0,Y1[,Z0,Z1]]", APP_T_LIST, OFF(wall), .hi = 6, .count = OFF(n_wall),
-     .help = " box walls x = X0, x = X1, ... (X0 < X1); axes not\n"
+     .help = "box walls x = X0, x = X1, ... (X0 < X1); axes not\n"
              "given are open. The ball must start inside. Walls see the\n"
              "contracted ball in frames table and zmf (a wall's rest frame is\n"
              "the table and the ball-wall ZMF), the sphere in frame sphere."},
-    {"--help", NULL, APP_T_HELP, .help = "this text"},
     {NULL},
 };
 
@@ -98,8 +97,9 @@ static int check_options(void *opts)
     return 0;
 }
 
-static const app_cli cli = {prog, opts, usage, "input is read from stdin; see --help",
-                            EXIT_BAD_INPUT, check_options, NULL};
+static const app_cli cli = {.prog = prog, .tab = opts, .usage = usage,
+                            .stray_hint = "input is read from stdin; see --help",
+                            .bad = EXIT_BAD_INPUT, .check = check_options};
 
 static void print_row(int dim, double t, rc_vec3 x, rc_vec3 n)
 {

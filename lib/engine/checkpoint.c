@@ -11,7 +11,7 @@
 #include "relcol/status.h"
 
 #define CK_MAGIC "relcolck"
-#define CK_VERSION 17u /* the format's number: raised by every change of layout; another is RC_EMISMATCH */
+#define CK_VERSION 18u /* the format's number: raised by every change of layout; another is RC_EMISMATCH */
 #define CK_ORDER 0x01020304u
 
 typedef struct ck_header {
@@ -95,6 +95,13 @@ static uint64_t def_print(const rc_sim *s)
     h = fnv_double(h, d->overlap_tol);
     h = fnv_double(h, d->cell_size);
     h = fnv_double(h, d->density);
+    for (int w = 0; w < 6; w++) /* (hard walls, the default, leave the print as it was) */
+        if (s->wrule[w] != &rc_wall_reflecting) {
+            const int32_t ww = (int32_t)w;
+            h = fnv_bytes(h, &ww, sizeof ww);
+            h = fnv_string(h, s->wrule[w]->name);
+            h = fnv_double(h, s->wrule[w]->temperature ? d->wall_kT[w] : 0.0);
+        }
     if (s->periodic) /* (walls, the default, leave the print as it was before boundaries) */
         for (int k = 0; k < d->dim; k++) {
             const int32_t bk = (int32_t)d->boundary[k];
@@ -372,6 +379,10 @@ static int read_all(rc_sim *s, ck_cursor *c)
                            bk.wallw_c[2], bk.wallw_c[3], bk.wallw_c[4], bk.wallw_c[5]};
     for (size_t j = 0; j < sizeof sums / sizeof *sums; j++)
         if (!isfinite(sums[j]))
+            return RC_ECORRUPT;
+    for (size_t j = 0; j < 18; j++)
+        if (!isfinite(bk.wall_pm[j]) || !isfinite(bk.wall_pm_c[j]) ||
+            (j < 6 && (!isfinite(bk.wall_q[j]) || !isfinite(bk.wall_q_c[j]))))
             return RC_ECORRUPT;
     for (size_t j = 0; j < 9; j++)
         if (!isfinite(bk.vir[j]) || !isfinite(bk.wrap[j]) ||

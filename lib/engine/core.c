@@ -58,9 +58,12 @@ static single_result try_single(rc_sim *s, size_t nm, int32_t bp, double T,
     const uint64_t tc_before = s->bk.events[RC_SIM_EV_TC];
     c->eps = eng_contact_eps(s, c);
     rc_particle Q[2] = {P[0], nm > 1 ? P[1] : P[0]};
+    const rc_rng rng_before = s->bk.rng; /* (a wall rule's draws, taken back with the event) */
     const int st = eng_resolve_contact(s, Q, c);
     if (st != RC_OK) {
         s->bk.events[RC_SIM_EV_TC] = tc_before;
+        s->bk.rng = rng_before;
+        eng_walls_forget(s);
         return single_failed(st);
     }
     int changed[2] = {0, 0};
@@ -70,6 +73,8 @@ static single_result try_single(rc_sim *s, size_t nm, int32_t bp, double T,
         const int u = mo->before_resolve(s, nm, P, Q, changed, ev, undo_order);
         if (u >= 0) {
             s->bk.events[RC_SIM_EV_TC] = tc_before;
+            s->bk.rng = rng_before;
+            eng_walls_forget(s);
             return single_is(SINGLE_UNDO, (size_t)u);
         }
     }
@@ -104,6 +109,8 @@ static single_result try_single(rc_sim *s, size_t nm, int32_t bp, double T,
         }
         s->bk.events[RC_SIM_EV_TC] = tc_before;
         s->bk.order_conflicts = oc_before;
+        s->bk.rng = rng_before;
+        eng_walls_forget(s);
         return single_is(SINGLE_GROUP, 0);
     }
     eng_moments_add(s, nm, s->grp_ball, P, Q);
@@ -125,6 +132,7 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
     /* each ball's contact event as the model places it, from the stored states the prediction
      * saw (default: at T, through the centres) */
     eng_event_x ev = {{T, T}, {rc_v3(0, 0, 0), rc_v3(0, 0, 0)}, 0, 0};
+    eng_walls_forget(s); /* (a failed event's notes, left behind) */
     if (s->model->contact_event) {
         const int st = s->model->contact_event(s, i, bp, T, &ev);
         if (st != 0)
@@ -219,9 +227,9 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
         if (st != RC_OK)
             return st;
         kind = c->b >= 0 ? RC_SIM_EV_BALL : RC_SIM_EV_WALL;
-    } else if (!s->def.law->group) {
-        /* a law without a group solver: one contact at a time in the group's order, so the
-         * outcome depends on it (relcol/sim.h) */
+    } else if (!s->def.law->group || eng_walls_soft_in(s, nc)) {
+        /* a law without a group solver, or a wall that is not rigid (the joint solvers know
+         * none): one contact at a time in the group's order, so the outcome depends on it */
         kind = RC_SIM_EV_MULTI;
         for (size_t j = 0; j < nc; j++) {
             const int st = eng_resolve_contact(s, P, &s->grp_con[j]);
@@ -238,6 +246,7 @@ static int collide(rc_sim *s, int32_t i, int32_t bp, double T)
             /* dependent normals (or no convergence): resolve the event's own contact,
              * the others become events of their own at the same time */
             s->bk.group_fallbacks++;
+            eng_walls_forget(s);
             for (size_t j = 0; j < nm; j++) {
                 P[j].m = s->a[s->grp_ball[j]].m;
                 P[j].p = s->a[s->grp_ball[j]].p;

@@ -66,8 +66,11 @@ int rc_sim_diagnostics(const rc_sim *s, rc_sim_diag *d)
     d->wall_impulse = rc_v3(s->bk.wall[0], s->bk.wall[1], s->bk.wall[2]);
     d->overlaps = s->bk.overlaps;
     memcpy(d->overlaps_by_kind, s->bk.overlap_kind, sizeof d->overlaps_by_kind);
-    for (int w = 0; w < 6; w++)
+    for (int w = 0; w < 6; w++) {
         d->wall_impulse_by_wall[w] = s->bk.wallw[w];
+        d->wall_heat_by_wall[w] = s->bk.wall_q[w];
+        d->wall_momentum_by_wall[w] = rc_v3(s->bk.wall_pm[3 * w], s->bk.wall_pm[3 * w + 1], s->bk.wall_pm[3 * w + 2]);
+    }
     d->wall_shared = s->bk.wall_shared;
     d->pinned = s->bk.pinned;
     memcpy(d->virial, s->bk.vir, sizeof d->virial);

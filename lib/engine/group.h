@@ -84,7 +84,7 @@ static inline double eng_wall_gap_rel(const rc_sim *s, int mi, int w)
     return ((w & 1) ? s->L[d] - h - x : x - h) / s->b[i].r;
 }
 
-/// The one law-or-wall dispatch of contact c among P[] (restitution c->eps): RC_OK (RC_NO_COLLISION included: states unchanged), or the law's failure, which ends the event loop.
+/// The one law-or-wall-rule dispatch of contact c among P[] (restitution c->eps): RC_OK (RC_NO_COLLISION included: states unchanged), or the law's failure, which ends the event loop.
 static inline int eng_resolve_contact(rc_sim *s, rc_particle *P, const rc_contact *c)
 {
     int st;
@@ -92,7 +92,7 @@ static inline int eng_resolve_contact(rc_sim *s, rc_particle *P, const rc_contac
         s->prm.eps = c->eps;
         st = s->def.law->collide(&s->prm, &P[c->a], &P[c->b], c->n);
     } else {
-        st = rc_collide_wall(s->inv_c2, c->eps, &P[c->a], c->n);
+        st = eng_wall_collide(s, ENG_WALL_INDEX(c->b), &P[c->a], c->n, c->eps);
     }
     return st == RC_OK || st == RC_NO_COLLISION ? RC_OK : (st < 0 ? st : RC_EINVAL);
 }
@@ -168,6 +168,8 @@ static inline void eng_finish(rc_sim *s, size_t nm, size_t nc, double k0, rc_vec
     eng_kahan(&s->bk.wall[1], &s->bk.wall_c[1], p0.y - p1.y);
     eng_kahan(&s->bk.wall[2], &s->bk.wall_c[2], p0.z - p1.z);
     eng_account_walls(s, nc, p0, p1, J);
+    if (s->wev_mask)
+        eng_walls_book(s);
     for (size_t j = 0; j < nm; j++) {
         if (single)
             eng_queue_update(&s->q, (uint32_t)s->grp_ball[j], key_of(&s->a[s->grp_ball[j]]));

@@ -214,8 +214,11 @@ typedef struct eng_books {
     double still_t;              ///< the time of the last event ...
     uint64_t still_count;        ///< ... and how many came at it in a row (RC_ESTALL past the limit)
     int64_t stall_ball, stall_partner; ///< the stalled event's balls (caller's index; wall w as -1 - w; -2^62 none)
+    double wall_q[6], wall_q_c[6];     ///< kinetic energy the balls gave wall w, contact by contact (engine/walls.c)
+    double wall_pm[18], wall_pm_c[18]; ///< ... momentum, every component (3 w + axis)
+    rc_rng rng;                        ///< the walls' random stream (rules that draw), seeded by def.wall_seed
 } eng_books;
-_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 24 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 2 + 1 + 4),
+_Static_assert(sizeof(eng_books) == 8 * (2 + 6 + 12 + 1 + 1 + 24 + 1 + 3 + 1 + RC_SIM_EV_NKINDS + 3 + 2 + 1 + 4 + 12 + 36 + 1),
                "no padding in the bookkeeping");
 
 /// The engine (relcol/sim.h's opaque rc_sim): plain arrays per ball, so a state can be written out and continued bit-identically.
@@ -271,6 +274,11 @@ struct rc_sim {
     rc_contact *grp_con;   ///< ... contacts ...
     double *grp_j;         ///< ... the solver's impulses (grp_con_cap entries)
     size_t grp_ball_cap, grp_con_cap; ///< room
+    const rc_wall_rule *wrule[6]; ///< each wall's rule (def's NULL: rc_wall_reflecting)
+    int walls_rigid;       ///< every wall's rule is rigid (a group never needs the scan)
+    double wev_q[6];       ///< the event's wall exchanges so far, booked by eng_finish ...
+    rc_vec3 wev_p[6];
+    unsigned wev_mask;     ///< ... the walls they touch (bit w)
 };
 
 /* A per-ball array of `bytes` (engine/mem.c): cache-line aligned, on transparent huge
@@ -435,6 +443,17 @@ int eng_narrow_conflict(rc_sim *s, const eng_ball *bi, const eng_ball *bk, rc_ve
  * states, s->a) to after[]. */
 void eng_moments_add(rc_sim *s, size_t nm, const int32_t *mem, const rc_particle *before,
                      const rc_particle *after);
+/* engine/walls.c: each wall's rule. Chosen from the definition (at create). */
+void eng_walls_init(rc_sim *s);
+/// Ball state *a meets wall w along outward normal n with restitution eps: its rule's op, the exchange noted for the event; RC_OK, RC_NO_COLLISION or the rule's failure.
+int eng_wall_collide(rc_sim *s, int w, rc_particle *a, rc_vec3 n, double eps);
+/// The event's noted wall exchanges into the books (eng_finish) ...
+void eng_walls_book(rc_sim *s);
+/// ... or forgotten (an event taken back or resolved again).
+static inline void eng_walls_forget(rc_sim *s) { s->wev_mask = 0; }
+/// Is one of contacts 0 .. nc with a wall whose rule is not rigid?
+int eng_walls_soft_in(const rc_sim *s, size_t nc);
+
 /// Support distance of ball i's shape along the wall normal e_d.
 double eng_wall_support(const rc_sim *s, int32_t i, int d);
 

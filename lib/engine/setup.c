@@ -57,6 +57,16 @@ static int check_def(const rc_sim_def *d)
         return RC_EINVAL;
     if (!rc_group_rule_name(d->groups))
         return RC_EINVAL;
+    for (int w = 0; w < 6; w++) { /* (NULL: the hard wall) */
+        const rc_wall_rule *r = d->wall_rule[w];
+        if (!r || r == &rc_wall_reflecting)
+            continue;
+        const int axis = w / 2;
+        if (!r->collide || axis >= d->dim || (!r->rigid && d->boundary[axis] == RC_SIM_PERIODIC) ||
+            (!r->rigid && d->frame && d->frame->per_ball) ||
+            (r->temperature && !(isfinite(d->wall_kT[w]) && d->wall_kT[w] > 0.0)))
+            return RC_EINVAL;
+    }
     if (!d->law || !d->law->collide)
         return RC_EINVAL;
     if (!(d->simd >= RC_SIM_SIMD_AUTO && d->simd <= RC_SIM_SIMD_SCALAR) ||
@@ -155,6 +165,7 @@ int rc_sim_create(const rc_sim_def *def, rc_sim **out)
     }
     s->wall_contracted = def->frame && def->frame->wall_contracted && s->inv_c2 > 0.0;
     s->model = eng_model_for(def->frame, s->narrow, s->inv_c2);
+    eng_walls_init(s);
     if (s->narrow) {
         if (!def->frame->toi || rc_toi_workspace_create(&s->ws) != RC_OK) {
             free(s);
@@ -354,6 +365,7 @@ int eng_alloc_state(rc_sim *s, size_t n, double rmax)
     release_balls(s);
     /* a new set of balls starts its bookkeeping afresh */
     memset(&s->bk, 0, sizeof s->bk);
+    s->bk.rng.state = s->def.wall_seed;
     s->since_reorder = 0;
     int st = RC_ENOMEM;
     /* each 64-byte record on one cache line, not straddling two (eng_alloc aligns to 64):

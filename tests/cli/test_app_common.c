@@ -1,8 +1,10 @@
 /* test_app_common.c — the apps' shared plumbing (apps/common) on its own: strict number
- * parsing, the CSV reader's tolerances and messages, ball rows, the atomic writer and the
- * log-log slope fit, each with a case that must be rejected. */
+ * parsing, the CSV reader's tolerances and messages, ball rows, the atomic writer, the
+ * log-log slope fit and the option table's parse (ranges, wording, a rank that keeps
+ * quiet), each with a case that must be rejected. */
 #include <dirent.h>
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -181,6 +183,105 @@ static void test_slope(void)
     ENSURE(app_loglog_slope(x, y, 2, &s, NULL, NULL, &used) != 0);
 }
 
+/* ---- the option table (opttab.c) ---------------------------------------------------- */
+
+typedef struct topts {
+    double x, l[4];
+    int nl, flag;
+} topts;
+
+static const app_opt ttab[] = {
+    {"--x", "X", APP_T_DOUBLE, offsetof(topts, x), "1", .valid = app_valid_positive,
+     .help = "a positive number"},
+    {"--l", "LIST", APP_T_LIST, offsetof(topts, l), "0.1", .hi = 4, .count = offsetof(topts, nl),
+     .valid = app_valid_open_closed, .min = 0.0, .max = 0.7, .help = "numbers in (0, 0.7]"},
+    {"--flag", NULL, APP_T_FLAG, offsetof(topts, flag), .help = "a flag"},
+    {NULL},
+};
+
+static int quiet_rank(void) { return 0; }
+
+/* app_opts_parse on args (NULL-ended, after the program name) with stdout and stderr
+ * caught into out and err (each 1 KiB): its status */
+static int tparse(const app_cli *cli, topts *o, const char *const *args, char *out, char *err)
+{
+    char *argv[16] = {"t"};
+    int argc = 1;
+    while (args[argc - 1] && argc < 15) {
+        argv[argc] = (char *)args[argc - 1];
+        argc++;
+    }
+    memset(o, 0, sizeof *o);
+    char e[APP_ERR_LEN];
+    app_opts_defaults(cli->tab, o, e);
+    fflush(stdout);
+    fflush(stderr);
+    FILE *fo = tmpfile(), *fe = tmpfile();
+    const int so = dup(1), se = dup(2);
+    dup2(fileno(fo), 1);
+    dup2(fileno(fe), 2);
+    const int st = app_opts_parse(cli, argc, argv, o);
+    fflush(stdout);
+    fflush(stderr);
+    dup2(so, 1);
+    dup2(se, 2);
+    close(so);
+    close(se);
+    FILE *f[2] = {fo, fe};
+    char *b[2] = {out, err};
+    for (int k = 0; k < 2; k++) {
+        rewind(f[k]);
+        const size_t n = fread(b[k], 1, 1023, f[k]);
+        b[k][n] = '\0';
+        fclose(f[k]);
+    }
+    return st;
+}
+
+static void test_opttab(void)
+{
+    app_cli cli = {.prog = "t", .tab = ttab, .stray_hint = "see --help", .bad = 7};
+    topts o;
+    char out[1024], err[1024];
+    ENSURE(tparse(&cli, &o, (const char *[]){"--x", "2", "--l=0.2,0.7", "--flag", NULL}, out,
+                  err) == 0);
+    ENSURE(o.x == 2.0 && o.nl == 2 && o.l[1] == 0.7 && o.flag == 1 && !err[0]);
+    /* each row's range as it is given, the first bad option's error (argv order) */
+    ENSURE(tparse(&cli, &o, (const char *[]){"--x", "0", "--l", "0.9", NULL}, out, err) == 7);
+    ENSURE_MSG(strcmp(err, "t: --x: 0 must be > 0\n") == 0, "%s", err);
+    ENSURE(tparse(&cli, &o, (const char *[]){"--l", "0.1,0.9", "--x", "0", NULL}, out, err) == 7);
+    ENSURE_MSG(strcmp(err, "t: --l: 0.9 outside (0, 0.7]\n") == 0, "%s", err);
+    ENSURE(tparse(&cli, &o, (const char *[]){"--l", "0", NULL}, out, err) == 7);
+    ENSURE_MSG(strcmp(err, "t: --l: 0 outside (0, 0.7]\n") == 0, "%s", err);
+    ENSURE(tparse(&cli, &o, (const char *[]){"--x", NULL}, out, err) == 7);
+    ENSURE_MSG(strcmp(err, "t: --x: missing value\n") == 0, "%s", err);
+    /* --version and --list-options print and come back (no exit) */
+    ENSURE(tparse(&cli, &o, (const char *[]){"--version", NULL}, out, err) == APP_PARSE_DONE);
+    ENSURE_MSG(strstr(out, "(relcol) ") != NULL, "%s", out);
+    ENSURE(tparse(&cli, &o, (const char *[]){"--list-options", NULL}, out, err) == APP_PARSE_DONE);
+    ENSURE_MSG(strcmp(out, "--x\n--l\n--flag\n--help\n--version\n") == 0, "%s", out);
+    ENSURE(tparse(&cli, &o, (const char *[]){"--help", NULL}, out, err) == APP_PARSE_HELP);
+    /* relcol-sim's wording */
+    cli.option_words = 1;
+    ENSURE(tparse(&cli, &o, (const char *[]){"--x", NULL}, out, err) == 7);
+    ENSURE_MSG(strcmp(err, "t: option --x: needs a value\n") == 0, "%s", err);
+    ENSURE(tparse(&cli, &o, (const char *[]){"--x", "-1", NULL}, out, err) == 7);
+    ENSURE_MSG(strcmp(err, "t: option --x: -1 must be > 0\n") == 0, "%s", err);
+    ENSURE(tparse(&cli, &o, (const char *[]){"stray", NULL}, out, err) == 7);
+    ENSURE_MSG(strcmp(err, "t: unknown option stray (see --help)\n") == 0, "%s", err);
+    /* a rank that does not speak: the same statuses, nothing printed */
+    cli.speaks = quiet_rank;
+    const char *const *quiet_cases[] = {
+        (const char *[]){"--x", "0", NULL}, (const char *[]){"--bogus", NULL},
+        (const char *[]){"--x", NULL}, (const char *[]){"stray", NULL},
+        (const char *[]){"--version", NULL}, (const char *[]){"--list-options", NULL}};
+    const int want[] = {7, 7, 7, 7, APP_PARSE_DONE, APP_PARSE_DONE};
+    for (int k = 0; k < 6; k++) {
+        ENSURE_MSG(tparse(&cli, &o, quiet_cases[k], out, err) == want[k], "case %d", k);
+        ENSURE_MSG(!out[0] && !err[0], "case %d printed '%s' '%s'", k, out, err);
+    }
+}
+
 int main(void)
 {
     RUN_TEST(test_parse_double);
@@ -189,5 +290,6 @@ int main(void)
     RUN_TEST(test_balls);
     RUN_TEST(test_atomic);
     RUN_TEST(test_slope);
+    RUN_TEST(test_opttab);
     RC_TEST_MAIN_END();
 }

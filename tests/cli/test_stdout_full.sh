@@ -20,6 +20,7 @@ for app in "$@"; do
     relcol-toi) printf 'r,x,vx\n1,0,0.5\n1,10,-0.5\n' | "$app" > /dev/full 2> "$T/err" ;;
     relcol-frames) "$app" --points 5 --out "$T/frames" > /dev/full 2> "$T/err" ;;
     relcol-covariance) "$app" --n 50 --density 0.004 --c inf --out "$T/cov" > /dev/full 2> "$T/err" ;;
+    relcol-heat) "$app" --n 200 --aspect 2 --warmup 50 --time 160 --out "$T/heat" > /dev/full 2> "$T/err" ;;
     *) continue ;;
     esac
     st=$?

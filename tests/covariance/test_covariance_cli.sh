@@ -78,11 +78,38 @@ awk -F, 'NR > 1 && $3 == 2 && $17 != "" {n++} END {exit n == 0}' "$csv" && ok \
 if command -v gnuplot > /dev/null 2>&1; then
     [ -s "$T/c/covariance.png" ] && ok || bad "no covariance.png"
 fi
+# the figure explains itself (issue 38): frames named without "(covariant)" and each kind
+# of frame said in the heading; the frames' points offset sideways (one factor per frame,
+# so equal values stay visible); a difference within 10x of its round-off control ringed
+gp=$T/c/covariance.gp
+grep -q "(covariant)" "$gp" && bad "covariance.gp still says (covariant)" || ok
+grep -q "table: contact at one table-frame instant" "$gp" && \
+    grep -q "covariant: frame-independent contact event, each ball changed at its own event" "$gp" \
+    && ok || bad "covariance.gp does not say what each frame is"
+k=$(grep -o 'using (\$5\*[0-9.]*):17' "$gp" | sort -u | wc -l)
+[ "$k" -eq "$nf" ] && ok || bad "covariance.gp: $k sideways offsets for $nf frames"
+if awk -F, 'NR > 1 && $17 != "" && $17 <= 10 * $18 {f = 1} END {exit !f}' "$csv"; then
+    grep -q "title 'not resolved'" "$gp" && grep -qF '$17 <= 10*$18' "$gp" && \
+        grep -q "ringed: within 10× of its round-off control" "$gp" && ok \
+        || bad "covariance.gp: differences within 10x of round-off are not ringed"
+else
+    grep -q "title 'not resolved'" "$gp" && bad "covariance.gp rings with no row to ring" || ok
+fi
 # stdout: one line per row between the heading and the files
 lines=$(wc -l < "$T/out")
 [ "$lines" -eq $((rows + 3)) ] && ok || bad "stdout: $lines lines for $rows rows"
 
 [ ! -e "$T/c/covariance-c.gp" ] && ok || bad "covariance-c.gp with one finite c"
+
+# missing points are marked and explained: at c = 1 and density 0.04 no draw of the default
+# cluster starts collision-free in both frames, so that panel has only an x with its note
+run '' --frames table,zmf --c 1,inf --density 0.04 --out "$T/m"
+expect_ok missing
+gp=$T/m/covariance.gp
+grep -q "no draw starts collision-free" "$T/m/covariance.csv" && \
+    grep -q "×1 no value: no draw starts collision-free in both frames" "$gp" && \
+    grep -q "^set label [0-9]* '1' at first 0.04, graph .* point pt 2" "$gp" && ok \
+    || bad "covariance.gp: the missing rows are not marked with their note"
 
 # the lists come sorted, and with two finite c the figure against c is written too
 run '' --frames zmf --n 50 --density 0.004 --c 3,2 --out "$T/s"

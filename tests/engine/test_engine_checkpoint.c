@@ -221,8 +221,9 @@ static void test_refusals(void)
      * that is not p / M, a count of balls larger than the bytes hold */
     const size_t header = 8 + 4 * 6 + 8 * 3 + 4 * 2;
     /* now, the renumbering clock, the bookkeeping: 20 sums, 24 transfer moments,
-     * 21 + RC_SIM_EV_NKINDS counts and the 4 words of the progress check */
-    const size_t scalars = 8 * (2 + 20 + 24 + 21 + RC_SIM_EV_NKINDS + 4);
+     * 21 + RC_SIM_EV_NKINDS counts, the 4 words of the progress check, the walls' 12
+     * energy and 36 momentum sums and the wall stream's state */
+    const size_t scalars = 8 * (2 + 20 + 24 + 21 + RC_SIM_EV_NKINDS + 4 + 12 + 36 + 1);
     const size_t n = rc_sim_count(s), ball0 = header + scalars, aux0 = ball0 + 64 * n;
     struct { size_t at; size_t len; unsigned char val[8]; int want; } cases[] = {
         {8 + 4 * 5, 4, {3, 0, 0, 0}, RC_EMISMATCH},             /* dim 3 */

@@ -27,11 +27,24 @@ close z-kolafa "$z" 2.409375 0.01
 if command -v gnuplot > /dev/null 2>&1; then
     [ -s "$T/e/eos.png" ] && ok || bad "no eos.png"
 fi
+# the figure explains itself (issue 38): the right panel is relative to Kolafa and names
+# Carnahan-Starling's curve as against Kolafa (not a relcol point); a one-point run writes
+# its numbers; the error bars are not cut at the frame (offsets)
+gp=$T/e/eos.gp
+for want in "title 'Carnahan–Starling against Kolafa'" "title 'relcol against Kolafa'" \
+            "100 * (z2(x) / z1(x) - 1)" "Z_{Kolafa}" "if (npts == 1) { set label 1" \
+            "set offsets 0, 0, graph 0.08, graph 0.08"; do
+    grep -qF "$want" "$gp" && ok || bad "eos.gp lacks: $want"
+done
 # with --transport the CSV carries finite D, eta, lambda
 run '' --n 300 --packing 0.05 --transport --t-run 400 --lag 10 --out "$T/t"
 expect_ok transport
 d=$(awk -F, 'NR == 2 {print ($14 > 0 && $16 > 0 && $18 > 0) ? "ok" : "bad"}' "$T/t/eos.csv")
 [ "$d" = ok ] && ok || bad "transport columns: $(sed -n 2p "$T/t/eos.csv")"
+# its figure: against packing (one theta), the symbols named in the heading (the keys
+# of three panels covered their axes' labels)
+grep -qF "using 4:14:15 with yerrorbars" "$T/t/eos.gp" && grep -qF "{/:Bold blue points}: relcol" "$T/t/eos.gp" \
+    && ok || bad "transport eos.gp: not against packing, or its symbols unnamed"
 
 # fields without a measurement or a theory are empty, never nan (D_chapman_enskog and its
 # two neighbours without --transport)
@@ -46,5 +59,14 @@ expect_ok start-n250
 run '' --dim 2 --n 200 --packing 0.65 --t-run 5 --t-equil 2 --out "$T/d2"
 expect_ok run2d
 close z-luding "$(awk -F, 'NR == 2 {print $10}' "$T/d2/eos.csv")" 8.41536 1e-5
+
+# --sensitivity (a table row like the rest): the sphere frame's 3 runs (base, moved,
+# sequential groups), Z, kT and P of the one point, both files; a folder that cannot be
+# made is the option's error (exit 2)
+run '' --sensitivity --n 64 --packing 0.1 --t-equil 5 --t-run 100 --blocks 5 --out "$T/s"
+if [ "$st" -eq 0 ] && grep -q '^sensitivity: 0 of 3 observables flagged; 3 runs$' "$T/out" &&
+    [ -s "$T/s/sensitivity.csv" ] && [ -s "$T/s/sensitivity.json" ]; then ok
+else bad "--sensitivity: exit $st: $(cat "$T/out" "$T/err")"; fi
+expect_bad sens-out '' '^relcol-eos: --out: cannot create folder' --sensitivity --out /dev/null/x
 
 summary

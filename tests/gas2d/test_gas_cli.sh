@@ -33,6 +33,8 @@ expect_bad memory '' '^relcol-gas: --snapshots: n x snapshots' --n 100000 --snap
 expect_bad obs-dim '' '^relcol-gas: --observer-velocity: 1-D and 2-D only' --dim 3 --observer-velocity 0.5
 expect_bad obs-c '' '^relcol-gas: --observer-velocity: 1 must be below c = 1' --observer-velocity 1
 expect_bad obs-periodic '' '^relcol-gas: --observer-velocity: needs walls' --boundary periodic --observer-velocity 0.5
+expect_bad sens-1d '' '^relcol-gas: --sensitivity: 2-D and 3-D gases only' --dim 1 --sensitivity
+expect_bad sens-out '' '^relcol-gas: --out: cannot create folder' --sensitivity --out /dev/null/x
 
 # jget KEY FILE: the "value" of the first object named KEY in a summary.json (the top
 # level's, which cJSON prints before the species array); jnum KEY FILE: a plain number

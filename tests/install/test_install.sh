@@ -23,7 +23,7 @@ prefix=$("$MESON" introspect "$BUILD" --buildoptions |
 P=$T/root$prefix
 ver=$(sed -n 's/^#define RELCOL_VERSION "\(.*\)"/\1/p' "$BUILD/lib/include/relcol/version.h")
 
-for app in relcol-collide relcol-toi relcol-frames relcol-sweep-c relcol-sweep relcol-sim relcol-gas relcol-eos relcol-covariance; do
+for app in relcol-collide relcol-toi relcol-frames relcol-sweep-c relcol-sweep relcol-sim relcol-gas relcol-eos relcol-covariance relcol-heat; do
     out=$("$P/bin/$app" --version 2> "$T/err")
     st=$?
     if [ $st -eq 0 ] && [ "$out" = "$app (relcol) $ver" ]; then ok; else

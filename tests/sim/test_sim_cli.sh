@@ -376,5 +376,36 @@ else
     ko "outside the regime: exit $st, verdict '$verdict', '$w' against p_model $pm, policy $sp: $(cat "$tmp/err")"
 fi
 
+# the figures explain themselves (issue 38): the GIF has axes with units, the time and a
+# colour key; trajectories.png has the GIF's colours (one palette, by ball number) and its
+# final balls are their shapes in those colours (contracted at finite c), not grey circles
+cat > "$tmp/fig.json" <<JSON
+{"relcol": 1, "dim": 2, "c": 1, "seed": 5, "t_end": 4,
+ "generate": {"kind": "gas", "n": 12, "radius": 1, "packing": 0.1, "v_rms": 0.6},
+ "outputs": {"xyz_every": 0.5, "plots": true, "gif": true}}
+JSON
+"$sim" "$tmp/fig.json" --out "$tmp/fig" > "$tmp/out" 2> "$tmp/err"; st=$?
+tg=$tmp/fig/table.gp; jg=$tmp/fig/trajectories.gp
+if [ $st -eq 0 ] && [ -s "$tg" ] && [ -s "$jg" ]; then
+    bad=
+    for f in "$tg" "$jg"; do
+        for want in "set xlabel 'x (the scenario''s length unit)'" "set ylabel 'y'" \
+                    "set cblabel 'ball number' offset 1,0" "Lorentz-contracted along its velocity"; do
+            grep -qF "$want" "$f" || bad="$bad; $(basename "$f") lacks: $want"
+        done
+    done
+    grep -qF "t = %.3f (the scenario's time unit)" "$tg" || bad="$bad; table.gp: no time with its unit"
+    [ "$(grep '^set palette' "$tg")" = "$(grep '^set palette' "$jg")" ] || bad="$bad; the palettes differ"
+    grep -q "w ellipses lc palette" "$jg" && ! grep -q "ellipses lc rgb 'black'" "$jg" \
+        || bad="$bad; trajectories.gp: final balls not in their colours"
+    if command -v gnuplot > /dev/null 2>&1; then
+        [ -s "$tmp/fig/table.gif" ] && [ -s "$tmp/fig/trajectories.png" ] || bad="$bad; no figures"
+    fi
+    [ -z "$bad" ] && ok "table.gp and trajectories.gp: axes, units, time, colour key, shared colours" \
+        || ko "figures:$bad"
+else
+    ko "figure run: exit $st: $(cat "$tmp/err")"
+fi
+
 echo "$((n - fails)) passed, $fails failed"
 [ $fails -eq 0 ]

@@ -16,6 +16,18 @@ bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
 if command -v gnuplot > /dev/null 2>&1; then
     [ -s "$T/f/frames.png" ] || bad "gnuplot installed but no frames.png"
 fi
+# the figure explains itself (issue 38): the reference lines are named in the key, each
+# pair of frames has its own title (and colour family), and the shading is explained
+gp="$T/f/frames.gp"
+for want in "title '(v/c)^2'" "title '(v/c)^4'" "title 'table vs zmf'" \
+            "title 'table vs sphere (no contraction)'" "light to dark: b/R = 0.25"; do
+    grep -qF "$want" "$gp" || bad "frames.gp lacks: $want"
+done
+# no two pairs of frames share a colour
+awk '/^plot/ { delete owner } /lc rgb/ && /\$1 ==/ { match($0, /\$[0-9]+ > 0/); col = substr($0, RSTART + 1, RLENGTH - 5)
+     match($0, /#[0-9a-f]+/); rgb = substr($0, RSTART, RLENGTH)
+     if ((rgb in owner) && owner[rgb] != col) bad = 1; owner[rgb] = col }
+     END { exit bad }' "$gp" || bad "frames.gp: two pairs of frames share a colour"
 ls "$T/f" | grep -q '\.tmp' && bad "temporary files left in --out"
 # header + 6 impact parameters x 17 values of c
 [ "$(wc -l < "$T/f/frames.csv")" -eq 103 ] || bad "frames.csv has $(wc -l < "$T/f/frames.csv") lines"

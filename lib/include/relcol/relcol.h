@@ -17,5 +17,7 @@
 #include "relcol/gas1d.h"
 #include "relcol/gravity.h"
 #include "relcol/rng.h"
+#include "relcol/wall.h"
+#include "relcol/wall_thermal.h"
 
 #endif

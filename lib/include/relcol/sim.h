@@ -12,6 +12,7 @@
 #include "relcol/law.h"
 #include "relcol/contacts.h"
 #include "relcol/toi.h"
+#include "relcol/wall.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -62,6 +63,9 @@ typedef struct rc_sim_def {
     rc_sim_simd simd;   ///< lanes of the neighbour test (default RC_SIM_SIMD_AUTO)
     rc_sim_defer defer; ///< deferred root finds (default RC_SIM_DEFER_AUTO)
     int boundary[3];    ///< per axis RC_SIM_WALLS (default) or RC_SIM_PERIODIC; mixed freely (z ignored in 2-D)
+    const rc_wall_rule *wall_rule[6]; ///< wall w = 2 d + side's rule (relcol/wall.h; side 1 the far wall): NULL is rc_wall_reflecting; RC_EINVAL for one not rigid on a periodic axis, on a wall beyond dim, or with a per_ball frame
+    double wall_kT[6];  ///< wall w's temperature kT, where its rule declares temperature: finite and > 0 (RC_EINVAL)
+    uint64_t wall_seed; ///< seed of the run's wall stream (rules that declare random), started when balls are placed; its state is in the checkpoint
 } rc_sim_def;
 
 /// The default definition.
@@ -95,7 +99,7 @@ typedef struct rc_sim_diag {
     double time;            ///< engine time
     double mass_rel;        ///< sum of M = E/c^2: conserved exactly when c is finite
     double kinetic;         ///< sum of kinetic energies
-    double heat;            ///< kinetic energy turned into internal energy so far
+    double heat;            ///< kinetic energy turned into internal energy so far (a thermal wall's exchange included: wall_heat_by_wall)
     double energy;          ///< kinetic + heat: conserved for every c and restitution
     double rest_mass;       ///< sum of rest masses
     rc_vec3 momentum;       ///< sum of ball momenta
@@ -116,6 +120,8 @@ typedef struct rc_sim_diag {
     uint64_t group_sequential; ///< groups resolved one contact at a time by a law without a group solver (the outcome depends on the order: a choice)
     uint64_t tube_conflicts, order_conflicts, rollbacks; ///< per-ball frames: contacts on a glued tube's incoming piece left to the overlap policy; kinks put at the previous one by the order rule; collisions undone and solved again (papers/shape-change.md)
     int64_t stall_ball, stall_partner; ///< after RC_ESTALL: the next event's ball (caller's index) and partner (a ball, -1 - w for wall w, or a large negative number for a cell crossing)
+    double wall_heat_by_wall[6]; ///< energy (kinetic) the balls gave wall w so far, contact by contact: a thermal wall's heat, negative when it heated the gas (a joint group solve's rigid-wall contacts are in heat and wall_impulse_by_wall only)
+    rc_vec3 wall_momentum_by_wall[6]; ///< momentum the balls gave wall w so far, every component, contact by contact (the same contacts)
 } rc_sim_diag;
 
 /// A new engine; RC_EINVAL for a bad definition (simd, defer, a frame that cannot defer with RC_SIM_DEFER_ON).
