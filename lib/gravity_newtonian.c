@@ -36,6 +36,22 @@ static int newton_drift(const rc_gravity *f, double m, rc_vec3 *x, rc_vec3 *p, d
     return rc_gravity_put_(x, p, xn, pn);
 }
 
+double rc_gravity_newton_flight_(const rc_gravity *f, double m, rc_vec3 p, double dt)
+{
+    const int ax = f->axis;
+    const double i2 = f->inv_c2, mg = m * f->g;
+    const double pz0 = rc_v3_get(p, ax), pz = pz0 - mg * dt;
+    rc_vec3 pp = p;
+    rc_v3_set(&pp, ax, 0.0);
+    const double a2 = m * m + rc_v3_norm2(pp) * i2;
+    const double m0 = mass_at(a2, pz0, i2), mt = mass_at(a2, pz, i2);
+    const double w = pz0 * pz > 0.0
+                         ? (a2 * a2 + a2 * i2 * (pz0 * pz0 + pz * pz)) / (m0 * mt + pz0 * pz * i2)
+                         : m0 * mt - pz0 * pz * i2;
+    const double q = dt * (a2 + w) / ((m0 + mt) * a2);
+    return q * grav_asinhc(mg * q * sqrt(i2));
+}
+
 static int newton_plane_time(const rc_gravity *f, double m, rc_vec3 x, rc_vec3 p, int k,
                              double X, double *dt)
 {
