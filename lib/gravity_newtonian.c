@@ -143,9 +143,13 @@ static int newton_pair_time(const rc_gravity *f, const rc_toi_ball *a, const rc_
             *dt = t;
             return RC_OK;
         }
-        /* the longest step the gap survives, or, touching and parting, one that lets the
-         * pair part by a rounding's worth before it is looked at again */
-        double step = 2.0 * fmax(gap, 0.0) / (w + sqrt(w * w + 8.0 * f->g * fmax(gap, 0.0)));
+        /* the longest step the gap survives: the straight distance is convex, so it falls
+         * no faster than the approach speed along the centres, wn, and the accelerations
+         * (each at most g) move the pair apart from its line by at most g t^2; the gap is
+         * then at least gap - wn t - g t^2 (a grazing pair takes long steps). Or, touching
+         * and parting, a step that lets the pair part by a rounding's worth. */
+        const double wn = fmax(-rc_v3_dot(dx, dv) / fmax(dist, DBL_MIN), 0.0), gp = fmax(gap, 0.0);
+        double step = 2.0 * gp / (wn + sqrt(wn * wn + 4.0 * f->g * gp));
         if (!(step > 4.0 * DBL_EPSILON * (t + 1.0)))
             step = fmax(tol / fmax(w, DBL_MIN), 4.0 * DBL_EPSILON * (t + 1.0));
         if (t + step > t_max)

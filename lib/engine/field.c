@@ -131,14 +131,17 @@ static double pair_at(rc_sim *s, int32_t i, int32_t k, double horizon)
                            s->a[k].m, pk};
     double dt;
     const int st = s->path->pair_time(s, &A, &B, horizon - s->now, &dt);
-    if (st == RC_OK)
-        return s->now + dt;
-    if (st == RC_EOVERLAP) { /* (the overlap policy, along the centre line, if they
-                                approach; a parting pair is left to separate) */
+    /* a contact now (touching, or overlapping: the overlap policy along the centre line)
+     * is one only if the law sees the pair approach: the slice's distance can shrink
+     * while (v_k - v_i).n > 0 (the lapses differ), and the law would find nothing to
+     * resolve, for ever at this instant. Such a pair parts within a rounding's depth. */
+    if ((st == RC_OK && dt == 0.0) || st == RC_EOVERLAP) {
         const rc_vec3 dv = rc_v3_sub(rc_v3_scale(1.0 / eng_mass_rel(B.m, B.p, s->inv_c2), B.p),
                                      bi->v);
         return rc_v3_dot(rc_v3_sub(B.x, A.x), dv) < 0.0 ? s->now : INFINITY;
     }
+    if (st == RC_OK)
+        return s->now + dt;
     if (st != RC_MISS)
         fail(s, st);
     return INFINITY;
@@ -230,6 +233,11 @@ static int collide_pair(rc_sim *s, int32_t i, int32_t k)
     st = s->def.law->collide(&s->prm, &Q[0], &Q[1], n);
     if (st != RC_OK && st != RC_NO_COLLISION)
         return st < 0 ? st : RC_EINVAL;
+    if (st == RC_NO_COLLISION) { /* (nothing to resolve: predicted afresh) */
+        eng_field_predict(s, i, 1);
+        eng_field_predict(s, k, 1);
+        return RC_OK;
+    }
     const double k0 = eng_kinetic(&P[0], s->inv_c2) + eng_kinetic(&P[1], s->inv_c2);
     const double k1 = eng_kinetic(&Q[0], s->inv_c2) + eng_kinetic(&Q[1], s->inv_c2);
     eng_kahan(&s->bk.heat, &s->bk.heat_c, k0 - k1);

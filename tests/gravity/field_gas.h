@@ -10,7 +10,9 @@
 #include "gravity_util.h"
 
 /* gravity NULL: the same gas without a field */
-static rc_sim *field_gas(const rc_gravity_coupling *cp, double c, double g, size_t n, double r,
+static double field_cell = 0.0; /* the cell edge asked for (0: the engine's) */
+
+static inline rc_sim *field_gas(const rc_gravity_coupling *cp, double c, double g, size_t n, double r,
                          double speed, uint64_t seed)
 {
     rc_sim_def d = rc_sim_def_default();
@@ -22,6 +24,7 @@ static rc_sim *field_gas(const rc_gravity_coupling *cp, double c, double g, size
     d.g = g;
     d.g_axis = -1;
     d.density = 1.0 / (r * r * r); /* (m = 1) */
+    d.cell_size = field_cell;
     rc_sim *s = NULL;
     if (rc_sim_create(&d, &s) != RC_OK)
         return NULL;
@@ -49,7 +52,7 @@ static rc_sim *field_gas(const rc_gravity_coupling *cp, double c, double g, size
 }
 
 /* collisions (ball and wall contacts) so far */
-static uint64_t field_collisions(const rc_sim *s)
+static inline uint64_t field_collisions(const rc_sim *s)
 {
     rc_sim_diag dg;
     rc_sim_diagnostics(s, &dg);
