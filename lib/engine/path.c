@@ -140,6 +140,8 @@ static int newton_pair_time(const rc_sim *s, const rc_toi_ball *a, const rc_toi_
 static int equiv_pair_time(const rc_sim *s, const rc_toi_ball *a, const rc_toi_ball *b,
                            double t_max, double *dt)
 {
+    if (s->inv_c2 == 0.0) /* (classically the quartic is the field-free quadratic: section 3) */
+        return line_pair_time(s, a, b, t_max, dt);
     const rc_gravity f = field_of(s);
     return rc_gravity_equivalence.pair_time(&f, a, b, t_max, dt);
 }

@@ -21,14 +21,18 @@ static double per_collision(const rc_gravity_coupling *cp, double c, size_t n, u
     rc_sim *s = field_gas(cp, c, 1.0, n, 0.005, 0.8, 0xb01);
     if (!s)
         return NAN;
-    while (field_collisions(s) < timed / 10)
-        if (rc_sim_advance(s, INFINITY, 20000) != RC_OK)
-            return NAN;
+    int st = RC_OK;
+    while (st == RC_OK && field_collisions(s) < timed / 10)
+        st = rc_sim_advance(s, INFINITY, 20000);
     const uint64_t c0 = field_collisions(s);
     const double t0 = cpu_s();
-    while (field_collisions(s) < c0 + timed)
-        if (rc_sim_advance(s, INFINITY, 20000) != RC_OK)
-            return NAN;
+    while (st == RC_OK && field_collisions(s) < c0 + timed)
+        st = rc_sim_advance(s, INFINITY, 20000);
+    if (st != RC_OK) {
+        fprintf(stderr, "%s c %g: %s\n", cp ? cp->name : "no field", c, rc_strerror(st));
+        rc_sim_free(&s);
+        return NAN;
+    }
     const double dt = cpu_s() - t0;
     const double per = dt / (double)(field_collisions(s) - c0);
     rc_sim_free(&s);
