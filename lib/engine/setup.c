@@ -402,18 +402,6 @@ int eng_alloc_state(rc_sim *s, size_t n, double rmax)
     double edge = 2.0 * rmax * (1.0 + CELL_MARGIN + 2.0 * s->def.sim_tol);
     if (s->def.cell_size > edge)
         edge = s->def.cell_size;
-    else if (s->path->run && s->def.cell_size == 0.0 && n > 0) {
-        /* (a field's loop predicts afresh at each crossing: automatic cells of about one
-         * ball, not one diameter, spare it most crossings) */
-        double vol = 1.0;
-        for (int d = 0; d < dim; d++)
-            vol *= rc_v3_get(s->def.box, d);
-        double one = pow(vol / (double)n, 1.0 / dim);
-        for (int d = 0; d < dim; d++) /* (a periodic axis keeps its four cells) */
-            if (!(s->walled >> d & 1u) && one > 0.25 * rc_v3_get(s->def.box, d))
-                one = 0.25 * rc_v3_get(s->def.box, d);
-        edge = one > edge ? one : edge;
-    }
     if (!(edge > 0.0))
         edge = 1.0;
     int periodic[3];
