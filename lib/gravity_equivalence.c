@@ -55,6 +55,14 @@ static int equiv_drift(const rc_gravity *f, double m, rc_vec3 *x, rc_vec3 *p, do
     return rc_gravity_put_(x, p, xn, pn);
 }
 
+double rc_gravity_equiv_flight_(const rc_gravity *f, double m, rc_vec3 x, rc_vec3 p, double dt)
+{
+    const double i2 = f->inv_c2, g = f->g;
+    const double vz = rc_v3_get(p, f->axis) / rc_mass_rel(m, p, i2);
+    const double phi = g * dt * sqrt(i2), T = grav_tanhc(phi);
+    return lapse(f, rc_v3_get(x, f->axis)) * dt * T / (1.0 - g * vz * dt * i2 * T);
+}
+
 static int equiv_plane_time(const rc_gravity *f, double m, rc_vec3 x, rc_vec3 p, int k,
                             double X, double *dt)
 {

@@ -36,6 +36,22 @@ static int newton_drift(const rc_gravity *f, double m, rc_vec3 *x, rc_vec3 *p, d
     return rc_gravity_put_(x, p, xn, pn);
 }
 
+double rc_gravity_newton_flight_(const rc_gravity *f, double m, rc_vec3 p, double dt)
+{
+    const int ax = f->axis;
+    const double i2 = f->inv_c2, mg = m * f->g;
+    const double pz0 = rc_v3_get(p, ax), pz = pz0 - mg * dt;
+    rc_vec3 pp = p;
+    rc_v3_set(&pp, ax, 0.0);
+    const double a2 = m * m + rc_v3_norm2(pp) * i2;
+    const double m0 = mass_at(a2, pz0, i2), mt = mass_at(a2, pz, i2);
+    const double w = pz0 * pz > 0.0
+                         ? (a2 * a2 + a2 * i2 * (pz0 * pz0 + pz * pz)) / (m0 * mt + pz0 * pz * i2)
+                         : m0 * mt - pz0 * pz * i2;
+    const double q = dt * (a2 + w) / ((m0 + mt) * a2);
+    return q * grav_asinhc(mg * q * sqrt(i2));
+}
+
 static int newton_plane_time(const rc_gravity *f, double m, rc_vec3 x, rc_vec3 p, int k,
                              double X, double *dt)
 {
@@ -127,9 +143,13 @@ static int newton_pair_time(const rc_gravity *f, const rc_toi_ball *a, const rc_
             *dt = t;
             return RC_OK;
         }
-        /* the longest step the gap survives, or, touching and parting, one that lets the
-         * pair part by a rounding's worth before it is looked at again */
-        double step = 2.0 * fmax(gap, 0.0) / (w + sqrt(w * w + 8.0 * f->g * fmax(gap, 0.0)));
+        /* the longest step the gap survives: the straight distance is convex, so it falls
+         * no faster than the approach speed along the centres, wn, and the accelerations
+         * (each at most g) move the pair apart from its line by at most g t^2; the gap is
+         * then at least gap - wn t - g t^2 (a grazing pair takes long steps). Or, touching
+         * and parting, a step that lets the pair part by a rounding's worth. */
+        const double wn = fmax(-rc_v3_dot(dx, dv) / fmax(dist, DBL_MIN), 0.0), gp = fmax(gap, 0.0);
+        double step = 2.0 * gp / (wn + sqrt(wn * wn + 4.0 * f->g * gp));
         if (!(step > 4.0 * DBL_EPSILON * (t + 1.0)))
             step = fmax(tol / fmax(w, DBL_MIN), 4.0 * DBL_EPSILON * (t + 1.0));
         if (t + step > t_max)

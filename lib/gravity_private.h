@@ -44,4 +44,11 @@ int rc_gravity_pair_check_(const rc_gravity *f, const rc_toi_ball *a, const rc_t
  * derivatives; RC_MISS when it does not fall there. */
 int rc_gravity_poly_first_fall_(const double *c, int deg, double lo, double hi, double *s);
 
+/* The engine's proper-time books (lib/engine/path.c): newtonian, the integral of dt/M
+ * over a drift of dt (x_perp moves by p_perp times it); equivalence, the time t' the drift
+ * spends on the ball's straight line in the box's momentary rest frame at its start. The
+ * same expressions as the drifts'; the field and ball already checked. */
+double rc_gravity_newton_flight_(const rc_gravity *f, double m, rc_vec3 p, double dt);
+double rc_gravity_equiv_flight_(const rc_gravity *f, double m, rc_vec3 x, rc_vec3 p, double dt);
+
 #endif

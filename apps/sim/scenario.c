@@ -679,12 +679,39 @@ static const char *nul_escape(const char *text)
     return NULL;
 }
 
+/* gravity: {"g": g > 0, "coupling": "newtonian" | "equivalence"}; the field points along
+ * -z (the last axis), whose boundary must be walls (its floor and ceiling) */
+static int parse_gravity(const ctx *c, const cJSON *v, scn_scenario *s)
+{
+    static const char *const gk[] = {"g", "coupling", NULL};
+    if (!cJSON_IsObject(v))
+        return bad(c, "gravity", "must be an object {\"g\": g, \"coupling\": "
+                   "\"newtonian\" or \"equivalence\"}");
+    double g = 0;
+    const char *name = NULL;
+    if (only_keys(c, v, "gravity", gk) || get_num(c, v, "gravity", "g", 1, 0, 0, &g) ||
+        get_str(c, v, "gravity", "coupling", NULL, &name))
+        return -1;
+    if (!(g > 0))
+        return bad(c, "gravity.g", "must be > 0 (the acceleration at the floor z = 0)");
+    if (!name)
+        return bad(c, "gravity.coupling", "is required: \"newtonian\" or \"equivalence\"");
+    if (!(s->gravity = rc_gravity_find(name)))
+        return bad(c, "gravity.coupling", "unknown coupling '%s' (expected newtonian or "
+                   "equivalence)", name);
+    if (s->boundary[s->dim - 1] == RC_SIM_PERIODIC)
+        return bad(c, "gravity", "the field's axis (%s, the last) must have walls, its floor "
+                   "and ceiling: boundary is periodic there", s->dim == 3 ? "z" : "y");
+    s->g = g;
+    return 0;
+}
+
 int scn_parse_ext(const char *text, const char *name, const scn_tables *extra,
                   scn_scenario *s, char *err)
 {
     static const char *const keys[] = {"relcol", "dim", "box", "boundary", "walls", "c", "law",
                                        "restitution", "contact_frame", "groups", "tc", "seed",
-                                       "time",
+                                       "time", "gravity",
                                        "t_end", "restart", "checkpoint", "balls", "generate",
                                        "outputs", NULL};
     memset(s, 0, sizeof *s);
@@ -784,8 +811,12 @@ int scn_parse_ext(const char *text, const char *name, const scn_tables *extra,
     }
     s->eps_ball = eps_b;
     s->eps_wall = eps_w;
+    const cJSON *jgrav = cJSON_GetObjectItemCaseSensitive(root, "gravity");
+    if (jgrav && parse_gravity(&c, jgrav, s))
+        goto done;
     const char *frame = NULL;
-    if (get_str(&c, root, "", "contact_frame", "table", &frame))
+    /* (in a field the default frame is the one-instant sphere: papers/gravity.md) */
+    if (get_str(&c, root, "", "contact_frame", s->gravity ? "sphere" : "table", &frame))
         goto done;
     if (!(s->frame = find_frame(extra, frame))) {
         char list[256];
@@ -799,6 +830,20 @@ int scn_parse_ext(const char *text, const char *name, const scn_tables *extra,
             snprintf(p, sizeof p, "walls.%s", scn_wall_names[w]);
             bad(&c, p, "a %s wall cannot go with contact_frame '%s' (its rollbacks would take "
                 "back the wall's draws)", s->wall_rule[w]->name, s->frame->name);
+            goto done;
+        }
+    if (s->gravity && (s->frame->contracted || s->frame->pointlike || s->frame->per_ball ||
+                       s->frame->wall_contracted)) {
+        bad(&c, "contact_frame", "frame '%s' is not defined in a field (the field takes "
+            "one-instant uncontracted frames: sphere; papers/gravity.md, model limits)", frame);
+        goto done;
+    }
+    for (int w = 0; w < 6 && s->gravity; w++)
+        if (s->wall_rule[w] && s->wall_rule[w] != &rc_wall_reflecting) {
+            char p[32];
+            snprintf(p, sizeof p, "walls.%s", scn_wall_names[w]);
+            bad(&c, p, "a %s wall in a field is not built (the field's walls are reflecting; "
+                "papers/gravity.md, model limits)", s->wall_rule[w]->name);
             goto done;
         }
     const char *groups = NULL;
@@ -983,6 +1028,9 @@ rc_sim_def scn_sim_def(const scn_scenario *s)
      * stream shifted (splitmix64 of seed ^ "thermal") */
     rc_rng r = {s->seed ^ 0x7468657266616cULL};
     def.wall_seed = rc_rng_next(&r);
+    def.gravity = s->gravity;
+    def.g = s->gravity ? s->g : 0.0;
+    def.g_axis = -1;
     return def;
 }
 

@@ -42,6 +42,8 @@ typedef struct scn_scenario {
     const rc_toi_frame *frame; /* contact frame (the library's or the caller's table) */
     int groups;                /* rule for simultaneous contacts (rc_group_rule) */
     double t_c;                /* TC model, proper time; 0 off */
+    const rc_gravity_coupling *gravity; /* a uniform field along -z (the last axis), NULL none */
+    double g;                  /* its acceleration at the floor z = 0 */
     uint64_t seed;
     double time;               /* start time (a restart carries the time it stopped at) */
     double t_end;

@@ -94,6 +94,12 @@ static cJSON *header(const scn_scenario *s, double t, double t_end, int periodic
     put_num(x, "ball", s->eps_ball);
     put_num(x, "wall", s->eps_wall);
     put(j, "contact_frame", cJSON_CreateString(s->frame->name));
+    if (s->gravity) { /* (the field, so that a continued run has it) */
+        cJSON *gv;
+        put(j, "gravity", gv = cJSON_CreateObject());
+        put_num(gv, "g", s->g);
+        put(gv, "coupling", cJSON_CreateString(s->gravity->name));
+    }
     put(j, "groups", cJSON_CreateString(rc_group_rule_name(s->groups)));
     put_num(j, "tc", s->t_c);
     snprintf(b, sizeof b, "%llu", (unsigned long long)s->seed); /* (all 64 bits) */

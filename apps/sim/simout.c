@@ -210,9 +210,18 @@ int simout_at(sim_output *o, const rc_sim *sim, char *err)
 {
     double t = rc_sim_time(sim);
     const scn_scenario *s = o->s;
+    if (s->gravity && !o->prof && !(o->prof = calloc(1, sizeof *o->prof))) {
+        app_errf(err, "out of memory");
+        o->failed = 1;
+        return -1;
+    }
+    if (o->prof) /* (a field: its profiles at every output time) */
+        profiles_sample(o->prof, s, sim);
     if (!o->have_d0) {
         rc_sim_diagnostics(sim, &o->d0);
         o->have_d0 = 1;
+        double h, w;
+        o->fe0 = rc_sim_field_energy(sim, &h, &w) == RC_OK ? h - w : NAN;
     }
     while (o->next_snap < s->out.n_snap && s->out.snap[o->next_snap] <= t) {
         if (write_snapshot(o, sim, o->next_snap, err)) {
@@ -405,6 +414,13 @@ static int write_summary(sim_output *o, const rc_sim *sim, double wall, int inte
     double dE = erel ? (d.energy - d0->energy) / d0->energy : d.energy - d0->energy;
     rc_vec3 dP = rc_v3_sub(rc_v3_add(d.momentum, d.wall_impulse),
                            rc_v3_add(d0->momentum, d0->wall_impulse));
+    double h, w;
+    if (s->gravity && rc_sim_field_energy(sim, &h, &w) == RC_OK) {
+        /* a field: its conserved energy (papers/gravity.md section 4), and the momentum
+         * across it (the field pushes along it) */
+        dE = erel ? (h - w - o->fe0) / fabs(o->fe0) : h - w - o->fe0;
+        rc_v3_set(&dP, s->dim - 1, 0.0);
+    }
     double pscale = fmax(d.momentum_scale, d0->momentum_scale);
     double dPrel = pscale > 0 ? rc_v3_norm(dP) / pscale : 0.0;
     size_t n = rc_sim_count(sim);
@@ -642,6 +658,8 @@ int simout_close(sim_output *o, const rc_sim *sim, double wall, int interrupted,
     if (!o->have_d0) {
         rc_sim_diagnostics(sim, &o->d0);
         o->have_d0 = 1;
+        double h, w;
+        o->fe0 = rc_sim_field_energy(sim, &h, &w) == RC_OK ? h - w : NAN;
     }
     if (o->failed)
         goto out;
@@ -663,7 +681,11 @@ int simout_close(sim_output *o, const rc_sim *sim, double wall, int interrupted,
         r = write_summary(o, sim, wall, interrupted, err);
     if (!r)
         r = write_figures(o, err);
+    if (!r && o->prof)
+        r = profiles_write(o->prof, o->s, o->prog, o->dir, err);
 out:
+    free(o->prof);
+    o->prof = NULL;
     if (r || o->failed) {
         /* (err already holds the failure's reason) */
         abort_all(o);

@@ -6,6 +6,7 @@
 #include "app.h"
 #include "scenario.h"
 #include "h5md.h"
+#include "profiles.h"
 
 /* The run's final state: final.json, naming the engine's state final.ckpt (scn_save). */
 #define SIMOUT_FINAL "final"
@@ -32,6 +33,8 @@ typedef struct sim_output {
     rc_sim_diag d0;       /* diagnostics at the start */
     int have_d0;
     char line[256];       /* one-line result for stdout */
+    sim_profiles *prof;   /* a field's profiles (profiles.c), NULL without one */
+    double fe0;           /* a field: its conserved energy at the start (rc_sim_field_energy's h - booked) */
 } sim_output;
 
 /* Open the outputs: files are written into a staging folder and appear in s->out.dir

@@ -107,6 +107,12 @@ static uint64_t def_print(const rc_sim *s)
             const int32_t bk = (int32_t)d->boundary[k];
             h = fnv_bytes(h, &bk, sizeof bk);
         }
+    if (d->gravity) { /* (no field, the default, leaves the print as it was before fields) */
+        h = fnv_string(h, d->gravity->name);
+        h = fnv_double(h, d->g);
+        const int32_t ax = (int32_t)s->fld_axis;
+        h = fnv_bytes(h, &ax, sizeof ax);
+    }
     return h;
 }
 
@@ -168,6 +174,8 @@ static void write_all(const rc_sim *s, ck_cursor *c, const int32_t *next)
         put(c, s->pb->pend, n * sizeof *s->pb->pend);
         c->at += eng_validity_bytes(s, c->p ? c->p + c->at : NULL);
     }
+    if (s->def.gravity) /* (a field: the energy its contacts booked) */
+        put(c, s->fld_work, sizeof s->fld_work);
     if (n) {
         put(c, s->g.slot, s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot);
         put(c, next, n * sizeof *next);
@@ -418,6 +426,10 @@ static int read_all(rc_sim *s, ck_cursor *c)
     if (s->pb && (st = eng_validity_read(s, c->q + c->at, c->size - c->at, &vb)) != RC_OK)
         return st;
     c->at += vb;
+    double work[2] = {0.0, 0.0};
+    if (s->def.gravity &&
+        (get(c, work, sizeof work) || !isfinite(work[0]) || !isfinite(work[1])))
+        return RC_ECORRUPT;
     if (n && (get(c, s->g.slot, s->g.ncells * ENG_CELL_CAP * sizeof *s->g.slot) ||
               get(c, s->g.next, n * sizeof *s->g.next)))
         return RC_ECORRUPT;
@@ -437,6 +449,8 @@ static int read_all(rc_sim *s, ck_cursor *c)
     if (n && (st = check_cells(s)) != RC_OK)
         return st;
     s->bk = bk;
+    s->fld_work[0] = work[0];
+    s->fld_work[1] = work[1];
     s->since_reorder = since_reorder;
     for (size_t k = 0; k < n; k++)
         s->q.e[k].key = key_of(&s->a[k]);

@@ -10,6 +10,7 @@
 #include "private.h"
 #include "group.h"
 #include "model.h"
+#include "path.h"
 #include "relcol/status.h"
 
 /* ---- resolving events ------------------------------------------------------------ */
@@ -297,6 +298,8 @@ int rc_sim_advance(rc_sim *s, double t_end, uint64_t max_events)
         return RC_EINVAL;
     if (isinf(t_end) && max_events == 0)
         return RC_EINVAL;
+    if (s->path->run) /* (paths with a loop of their own: engine/path.h) */
+        return s->path->run(s, t_end, max_events);
     uint64_t done = 0;
     while (s->n > 0) {
         if (s->since_reorder >= ENG_REORDER_EVERY * (uint64_t)s->n) {

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "private.h"
+#include "path.h"
 #include "relcol/status.h"
 
 size_t rc_sim_count(const rc_sim *s) { return s ? s->n : 0; }
@@ -28,6 +29,11 @@ static double overlap_around(const rc_sim *s, size_t i, const rc_vec3 xi)
                         continue;
                     const eng_ball *bk = &s->b[k];
                     rc_vec3 xk = rc_v3_axpy(bk->x, s->now - bk->t, bk->v);
+                    if (s->path->ball_at) { /* (a curved path: engine/path.h) */
+                        rc_sim_ball o;
+                        eng_ball_now(s, (size_t)k, &o, 0);
+                        xk = o.x;
+                    }
                     double sig = s->b[i].r + bk->r;
                     double d = rc_v3_norm(eng_image(s, rc_v3_sub(xk, xi)));
                     if ((sig - d) / sig > worst)
@@ -45,6 +51,14 @@ int rc_sim_diagnostics(const rc_sim *s, rc_sim_diag *d)
     d->time = s->now;
     for (size_t i = 0; i < s->n; i++) {
         const eng_aux *a = &s->a[i];
+        eng_aux now;
+        if (s->path->ball_at) { /* (a curved path: the momentum at now, engine/path.h) */
+            rc_sim_ball o;
+            eng_ball_now(s, i, &o, 0);
+            now = *a;
+            now.p = o.p;
+            a = &now;
+        }
         double M = eng_mass_rel(a->m, a->p, s->inv_c2);
         d->mass_rel += M;
         d->kinetic += rc_v3_norm2(a->p) / (M + a->m);

@@ -255,6 +255,10 @@ struct rc_sim {
     double sc_tx, bx_tx;   ///< prediction scratch: the contact event's time of the pair last put to the frame, and of the best event so far ...
     rc_vec3 sc_dx, bx_dx;  ///< ... and its offset from the ball's centre then
     const struct eng_model_ops *model; ///< where balls change velocity: its properties and ops (engine/model.h)
+    const struct eng_path_ops *path; ///< a ball's path between events: its ops (engine/path.h), chosen at creation
+    int fld_axis;          ///< with a field: its axis
+    int fld_err;           ///< with a field: a path op's failure met by a prediction, which the loop returns
+    double fld_work[2];    ///< with a field: the energy change booked at contacts (Kahan sum, compensation)
     eng_queue q;           ///< the event queue
     eng_cells g;           ///< the cells
     rc_collision_params prm; ///< the law's parameters

@@ -4,6 +4,7 @@
 
 #include "private.h"
 #include "model.h"
+#include "path.h"
 #include "relcol/status.h"
 
 int eng_ball_now(const rc_sim *s, size_t i, rc_sim_ball *o, int truth)
@@ -26,6 +27,10 @@ int eng_ball_at(const rc_sim *s, size_t i, double t, rc_sim_ball *o, int truth)
     o->tau_last = o->collided ? k->tau_last : 0.0;
     if (h != 0.0)
         o->tau += s->inv_c2 == 0.0 ? h : h * (a->m / eng_mass_rel(a->m, a->p, s->inv_c2));
+    if (h != 0.0 && s->path->ball_at) { /* (a curved path: engine/path.h) */
+        o->tau = k->tau;
+        s->path->ball_at(s, i, h, o);
+    }
     const int32_t *img = s->img ? s->img + 3 * i : NULL;
     const int ahead = truth && s->model->ball_at ? s->model->ball_at(s, i, t, o, &img) : 0;
     for (int d = 0; d < 3; d++) {

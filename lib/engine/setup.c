@@ -7,6 +7,7 @@
 #include "lanes.h"
 #include "private.h"
 #include "model.h"
+#include "path.h"
 #include "relcol/status.h"
 
 /* Cell edge margin over the largest bounding diameter (relative): balls that can touch stay in
@@ -36,6 +37,31 @@ rc_sim_def rc_sim_def_default(void)
     d.simd = RC_SIM_SIMD_AUTO;
     d.defer = RC_SIM_DEFER_AUTO;
     return d;
+}
+
+/* A uniform field (papers/gravity.md): a coupling the engine has a path for, g > 0, an
+ * axis of the box with walls (its floor and ceiling); the frame one-instant and
+ * uncontracted, for the field's contact is decided at one instant of the coupling's clock
+ * (a per-ball or contracted frame in a field is not defined: RC_EUNDEFINED); its walls
+ * are hard walls (a thermal wall in a field is not built: RC_EUNDEFINED). */
+static int check_field(const rc_sim_def *d)
+{
+    if (!d->gravity)
+        return RC_OK;
+    if (!eng_path_for(d))
+        return RC_EUNKNOWN;
+    if (!isfinite(d->g))
+        return RC_ENONFINITE;
+    const int ax = d->g_axis < 0 ? d->dim - 1 : d->g_axis;
+    if (!(d->g > 0.0) || d->g_axis < -1 || ax >= d->dim || d->boundary[ax] != RC_SIM_WALLS)
+        return RC_EINVAL;
+    if (d->frame && (d->frame->contracted || d->frame->pointlike || d->frame->per_ball ||
+                     d->frame->wall_contracted))
+        return RC_EUNDEFINED;
+    for (int w = 0; w < 6; w++) /* the field's own loop resolves walls as hard walls only */
+        if (d->wall_rule[w] && d->wall_rule[w] != &rc_wall_reflecting)
+            return RC_EUNDEFINED;
+    return RC_OK;
 }
 
 static int check_def(const rc_sim_def *d)
@@ -93,7 +119,8 @@ static int check_def(const rc_sim_def *d)
     if (!isnan(d->toi.c) && d->toi.c != d->c)
         return RC_EINVAL;
     double k;
-    return rc_inv_c2(d->c, &k);
+    const int st = rc_inv_c2(d->c, &k);
+    return st != RC_OK ? st : check_field(d);
 }
 
 /* The widest lanes this CPU has for the neighbour test (AVX-512F with VL for the walk's
@@ -166,6 +193,8 @@ int rc_sim_create(const rc_sim_def *def, rc_sim **out)
     s->wall_contracted = def->frame && def->frame->wall_contracted && s->inv_c2 > 0.0;
     s->model = eng_model_for(def->frame, s->narrow, s->inv_c2);
     eng_walls_init(s);
+    s->path = eng_path_for(def); /* (once: the loop and the paths it takes) */
+    s->fld_axis = def->g_axis < 0 ? def->dim - 1 : def->g_axis;
     if (s->narrow) {
         if (!def->frame->toi || rc_toi_workspace_create(&s->ws) != RC_OK) {
             free(s);
@@ -267,8 +296,10 @@ static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, i
 
 int rc_sim_set_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad)
 {
-    if (s)
+    if (s) {
         eng_slice_clear(s); /* (slices are of the balls replaced: sim.h) */
+        s->fld_work[0] = s->fld_work[1] = 0.0; /* (a field's books start afresh) */
+    }
     return load_balls(s, n, in, bad, 1);
 }
 
@@ -536,7 +567,7 @@ static int load_balls(rc_sim *s, size_t n, const rc_sim_ball *in, size_t *bad, i
         goto fail;
     }
     for (size_t i = 0; i < n; i++)
-        eng_predict(s, (int32_t)i, 0);
+        s->path->predict(s, (int32_t)i, 0);
     for (size_t i = 0; i < n; i++)
         keys[i] = key_of(&s->a[i]);
     eng_queue_build(&s->q, keys, s->now);

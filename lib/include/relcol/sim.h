@@ -13,6 +13,7 @@
 #include "relcol/contacts.h"
 #include "relcol/toi.h"
 #include "relcol/wall.h"
+#include "relcol/gravity.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -66,6 +67,14 @@ typedef struct rc_sim_def {
     const rc_wall_rule *wall_rule[6]; ///< wall w = 2 d + side's rule (relcol/wall.h; side 1 the far wall): NULL is rc_wall_reflecting; RC_EINVAL for one not rigid on a periodic axis, on a wall beyond dim, or with a per_ball frame
     double wall_kT[6];  ///< wall w's temperature kT, where its rule declares temperature: finite and > 0 (RC_EINVAL)
     uint64_t wall_seed; ///< seed of the run's wall stream (rules that declare random), started when balls are placed; its state is in the checkpoint
+    /// A uniform field (papers/gravity.md): NULL (the default) none; else its coupling
+    /// (rc_gravity_newtonian, rc_gravity_equivalence), pointing along -e_g_axis with
+    /// acceleration g at the floor (coordinate 0). The field's axis must have walls; the
+    /// frame must be uncontracted and one-instant (a per-ball or contracted frame in a
+    /// field is not defined: RC_EUNDEFINED), t_c 0. The engine's clock is the coupling's.
+    const rc_gravity_coupling *gravity;
+    double g;           ///< the field's acceleration at the floor, > 0 (with gravity)
+    int g_axis;         ///< the field's axis, 1 (2-D) or 2 (3-D) by default: -1 = the last axis
 } rc_sim_def;
 
 /// The default definition.
@@ -163,6 +172,12 @@ int rc_sim_get_balls(const rc_sim *s, size_t n, rc_sim_ball *out, int latest, in
 int rc_sim_diagnostics(const rc_sim *s, rc_sim_diag *d);
 /// FNV-1a hash of every ball's state bits at the engine's time (determinism tests).
 uint64_t rc_sim_hash(const rc_sim *s);
+/* With a field: *h the sum of the coupling's conserved energies (relcol/gravity.h's
+ * energy op, rest energy subtracted) plus the heat, and *booked the change the contacts
+ * made to it (g sum z dw over each contact's members, w the mass the field pulls: rest
+ * mass for newtonian, E/c^2 for equivalence -- papers/gravity.md section 4); h - booked
+ * is constant. RC_EINVAL without a field. */
+int rc_sim_field_energy(const rc_sim *s, double *h, double *booked);
 /// Bytes of memory held by the engine.
 size_t rc_sim_bytes(const rc_sim *s);
 

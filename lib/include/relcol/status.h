@@ -32,7 +32,8 @@ enum rc_status {
     RC_ESTALL = -16,       ///< simulated time stands still: events keep coming at one instant
     RC_ENOTREADY = -17,    ///< a delayed slice read before it is final
     RC_ENOSLICE = -18,     ///< no slice held under that id
-    RC_ESCALE = -19        ///< positions too far out for their doubles to resolve the radii
+    RC_ESCALE = -19,       ///< positions too far out for their doubles to resolve the radii
+    RC_EUNDEFINED = -20    ///< a combination the model does not define (a per-ball or contracted frame in a field)
 };
 
 /// A short English description of a status code (static storage, never NULL).
