@@ -35,8 +35,7 @@ static void usage(FILE *f)
 "  --n-right N    right (default 0.002)\n"
 "  --T-left T     temperature, left (default 2)\n"
 "  --T-right T    right (default 1)\n"
-"  --v-left V     table-frame velocity along x, left (default 0; free streaming's\n"
-"                 reference needs both 0)\n"
+"  --v-left V     table-frame velocity along x, left (default 0)\n"
 "  --v-right V    right (default 0)\n"
 "  --radius R     ball radius (default 0.5)\n"
 "  --length L     tube length (default 4000)\n"
@@ -213,9 +212,9 @@ static void jve(FILE *f, const char *key, double v, double e, double ref, int co
     fprintf(f, "}%s", comma ? ",\n    " : "");
 }
 
-/* summary.json: parameters, the references' waves, per time the comparisons. Written
- * section by section so that a validity report's "model" block (relcol/validity.h, another
- * branch) is one more section here. */
+/* summary.json: parameters, the references' waves, where the seeds stand against the
+ * rigid-ball model's regime ("model", relcol/validity.h: the seed of largest p_model,
+ * with the fields relcol-sim writes), per time the comparisons. */
 static int write_summary(const char *dir, const cli *c, const sh_result *r, char *err)
 {
     const sh_opts *o = &c->o;
@@ -248,10 +247,34 @@ static int write_summary(const char *dir, const cli *c, const sh_result *r, char
     fprintf(f, "},\n  \"knudsen\": {");
     jnum(f, "mfp_left", r->lambda[0], 1), jnum(f, "mfp_right", r->lambda[1], 1);
     jnum(f, "mfp_plateau", r->lambda_star, 1), jnum(f, "kn", r->kn, 0);
-    fprintf(f, "},\n  \"collisions\": %llu,\n  \"shock_speed\": {", (unsigned long long)r->collisions);
+    fprintf(f, "},\n  \"collisions\": %llu,\n", (unsigned long long)r->collisions);
+    if (r->model_ok) {
+        const rc_validity *v = &r->model;
+        fprintf(f, "  \"model\": {\"verdict\": \"%s\", \"seeds\": %d, \"seeds_outside\": %d, "
+                   "\"covariant\": %s, ", v->verdict_name, r->seeds, r->seeds_outside,
+                v->covariant ? "true" : "false");
+        jnum(f, "threshold_p_model", v->threshold, 1), jnum(f, "p_model", v->p_model, 1);
+        jnum(f, "p_all", v->p_all, 1), jnum(f, "largest_cluster", v->largest_model, 1);
+        jnum(f, "largest_cluster_all", v->largest_all, 1), jnum(f, "nu_r_c", v->nu_r_c, 1);
+        jnum(f, "policy_share", v->policy_share, 1);
+        fprintf(f, "\"policy\": %llu, \"collisions\": %llu, \"tube_conflicts\": %llu, "
+                   "\"order_conflicts\": %llu, \"undone\": %llu, \"kink_events\": %llu, "
+                   "\"kink_pairs\": %llu, \"kink_pairs_model\": %llu, \"crossing\": %llu, "
+                   "\"crossing_model\": %llu},\n",
+                (unsigned long long)v->policy, (unsigned long long)v->collisions,
+                (unsigned long long)v->tube_conflicts, (unsigned long long)v->order_conflicts,
+                (unsigned long long)v->undone, (unsigned long long)v->kink_events,
+                (unsigned long long)v->kink_pairs, (unsigned long long)v->kink_pairs_model,
+                (unsigned long long)v->crossing, (unsigned long long)v->crossing_model);
+    }
+    fprintf(f, "  \"shock_speed\": {");
     jnum(f, "value", r->vshock, 1), jnum(f, "err", r->vshock_err, 1);
-    jnum(f, "fluid", s->headR, 1), jnum(f, "rel_diff", r->vshock / s->headR - 1.0, 0);
-    fprintf(f, "},\n  \"times\": [");
+    jnum(f, "fluid", s->headR, 1), jnum(f, "rel_diff", r->vshock / s->headR - 1.0, 1);
+    fprintf(f, "\"estimator\": \"(x_s - x0)/t at the last time, x_s the logistic front's "
+               "mid-level point\"},\n  \"shock_speed_local\": {");
+    jnum(f, "value", r->vshock_local, 1), jnum(f, "err", r->vshock_local_err, 1);
+    jnum(f, "fluid", s->headR, 1), jnum(f, "rel_diff", r->vshock_local / s->headR - 1.0, 1);
+    fprintf(f, "\"estimator\": \"least-squares slope of x_s over the times\"},\n  \"times\": [");
     static const char *const cn[3] = {"N0", "g", "Pxx"};
     for (int j = 0; j < r->nt; j++) {
         fprintf(f, "%s\n   {", j ? "," : "");
@@ -260,6 +283,7 @@ static int write_summary(const char *dir, const cli *c, const sh_result *r, char
         jve(f, "plateau_p", r->plat_p[j], r->plat_p_err[j], s->p_star, 1);
         jve(f, "plateau_v", r->plat_v[j], r->plat_v_err[j], s->v_star, 1);
         jve(f, "shock_x", r->xshock[j], r->xshock_err[j], t->x0 + s->headR * o->times[j], 1);
+        jnum(f, "shock_width", r->wshock[j], 1);
         fprintf(f, "\"free_streaming_chi2\": {");
         for (int q = 0; q < 3; q++) {
             fprintf(f, "\"%s\": {", cn[q]);
@@ -333,6 +357,7 @@ int main(int argc, char **argv)
         sh_result_free(&r);
         return app_fail(prog, 1, "%s", err);
     }
+    app_validity_warn(stderr, prog); /* one line, when a seed was outside the model's regime */
     int made = 0;
     if (app_gnuplot_run(prog, c.out, "shock.gp", "shock.png", &made, err)) {
         sh_result_free(&r);
@@ -348,7 +373,8 @@ int main(int argc, char **argv)
                    c.o.times[j], r.plat_p[j], r.plat_p_err[j], s->p_star, r.plat_v[j],
                    r.plat_v_err[j], s->v_star, r.chi2[j][0], r.dof[j][0], r.chi2[j][1],
                    r.dof[j][1], r.chi2[j][2], r.dof[j][2]);
-        printf("shock speed %.5g +- %.2g (fluid %.5g)\n", r.vshock, r.vshock_err, s->headR);
+        printf("shock speed %.5g +- %.2g (fluid %.5g; mean since t = 0), local %.5g +- %.2g\n",
+               r.vshock, r.vshock_err, s->headR, r.vshock_local, r.vshock_local_err);
         printf("wrote %s/profiles.csv, summary.json, shock.gp%s\n", c.out, made ? ", shock.png" : "");
     }
     sh_result_free(&r);

@@ -7,6 +7,7 @@
 #include <gsl/gsl_cdf.h>
 
 #include "app.h"
+#include "front.h"
 #include "shock_run.h"
 
 const char *const sh_q_names[SH_NQ] = {"n", "v", "p", "pperp", "Tp", "Te",
@@ -90,31 +91,6 @@ static double mfp(int dim, double r, double n)
     return 1.0 / (M_SQRT2 * n * sigma);
 }
 
-/* the right shock's position in a profile, by its balls: with x_a inside the right
- * plateau (halfway between the contact and the fluid's shock) and x_b as far beyond the
- * fluid's shock (or the far wall), the step from the plateau's density n* (the
- * profile's mean over [x_c + w/4, x_a], w = x_a - x_c) to the undisturbed n_R that holds
- * as many balls in [x_a, x_b] as the profile does: the equal-area front, which a steady
- * shock structure of any width does not move while its balls stay in the window (the
- * estimator's readings beside a mid-level crossing's: papers/shock-tube.md, section 6) */
-static double shock_pos(const double *N0, const double *xc, int nb, double dx, double xcon,
-                        double xa, double xb, double nR)
-{
-    double star = 0.0, in = 0.0;
-    int ns = 0;
-    for (int k = 0; k < nb; k++) {
-        if (xc[k] - 0.5 * dx >= xcon + 0.25 * (xa - xcon) && xc[k] + 0.5 * dx <= xa)
-            star += N0[k], ns++;
-        const double lo = fmax(xc[k] - 0.5 * dx, xa), hi = fmin(xc[k] + 0.5 * dx, xb);
-        if (hi > lo)
-            in += N0[k] * (hi - lo);
-    }
-    if (!ns)
-        return NAN;
-    star /= ns;
-    return xa + (in - nR * (xb - xa)) / (star - nR);
-}
-
 /* the jackknife error of x[S * stride + j] from its leave-one-out values x[s * stride + j] */
 static double jackknife(const double *x, int S, int stride, int j)
 {
@@ -175,8 +151,8 @@ int sh_run(const sh_opts *o, sh_result *r, int progress, char *err)
         app_errf(err, "the ideal-fluid Riemann solution: %s", rs_strerror(rc));
         goto fail;
     }
-    const fs_def fd = {tb->dim, tb->c, tb->box.x, tb->x0, {tb->n[0], tb->n[1]}, {tb->T[0], tb->T[1]}};
-    const int fs_ok = tb->v[0] == 0.0 && tb->v[1] == 0.0;
+    const fs_def fd = {tb->dim, tb->c, tb->box.x, tb->x0, {tb->n[0], tb->n[1]}, {tb->T[0], tb->T[1]},
+                       {tb->v[0], tb->v[1]}};
     for (int j = 0; j < nt; j++)
         for (int k = 0; k < nb; k++) {
             sh_mom fm, sm;
@@ -185,15 +161,11 @@ int sh_run(const sh_opts *o, sh_result *r, int progress, char *err)
                 goto fail;
             }
             mom_to_q(tb->dim, tb->c, &fm, &r->fluid[sh_idx(r, j, k, 0)]);
-            if (fs_ok) {
-                if ((rc = fs_moments_bin(&fd, k * dx, (k + 1) * dx, o->times[j], &sm))) {
-                    app_errf(err, "the free-streaming reference: %s", rs_strerror(rc));
-                    goto fail;
-                }
-                mom_to_q(tb->dim, tb->c, &sm, &r->freestr[sh_idx(r, j, k, 0)]);
-            } else
-                for (int q = 0; q < SH_NQ; q++)
-                    r->freestr[sh_idx(r, j, k, q)] = NAN;
+            if ((rc = fs_moments_bin(&fd, k * dx, (k + 1) * dx, o->times[j], &sm))) {
+                app_errf(err, "the free-streaming reference: %s", rs_strerror(rc));
+                goto fail;
+            }
+            mom_to_q(tb->dim, tb->c, &sm, &r->freestr[sh_idx(r, j, k, 0)]);
         }
 
     app_progress bar;
@@ -223,6 +195,14 @@ int sh_run(const sh_opts *o, sh_result *r, int progress, char *err)
             for (int k = 0; k < nb; k++)
                 mom_to_q(tb->dim, tb->c, &m[k], &per[(size_t)s * cells + sh_idx(r, j, k, 0)]);
         }
+        rc_validity v;
+        if (rc_sim_validity(sim, &v) == RC_OK) {
+            app_validity_note_report(&v); /* for the app's one warning line */
+            r->seeds_outside += v.verdict == RC_VERDICT_OUTSIDE;
+            if (!r->model_ok || v.p_model > r->model.p_model)
+                r->model = v;
+            r->model_ok = 1;
+        }
         rc_sim_diag d;
         rc_sim_diagnostics(sim, &d);
         r->collisions += d.events[RC_SIM_EV_BALL] + d.events[RC_SIM_EV_MULTI];
@@ -245,7 +225,7 @@ int sh_run(const sh_opts *o, sh_result *r, int progress, char *err)
         for (int a = 0; a < 3; a++) {
             double chi = 0.0;
             int used = 0;
-            for (int k = 0; k < nb && fs_ok && S > 1; k++) {
+            for (int k = 0; k < nb && S > 1; k++) {
                 const size_t i = sh_idx(r, j, k, chi_q[a]);
                 if (!(r->err[i] > 0.0) || !isfinite(r->freestr[i]))
                     continue;
@@ -266,11 +246,14 @@ int sh_run(const sh_opts *o, sh_result *r, int progress, char *err)
      * the shock's position from the seeds' mean N0 profile, errors by the jackknife */
     const rs_solution *so = &r->sol;
     const double w = so->headR - so->tailL;
-    sh_mom mr;
+    sh_mom mr, behind;
     sh_fluid_moments(tb->dim, tb->c, &r->eos, R, &mr);
+    const rs_state star_r = {so->rho_starR, so->v_star, so->p_star};
+    sh_fluid_moments(tb->dim, tb->c, &r->eos, star_r, &behind);
     double *prof = malloc((size_t)nb * sizeof *prof), *tmp = malloc((size_t)(S + 1) * sizeof *tmp);
-    if (!prof || !tmp) {
-        free(prof), free(tmp);
+    double *wt = malloc((size_t)nb * sizeof *wt);
+    if (!prof || !tmp || !wt) {
+        free(prof), free(tmp), free(wt);
         app_errf(err, "out of memory");
         goto fail;
     }
@@ -303,9 +286,18 @@ int sh_run(const sh_opts *o, sh_result *r, int progress, char *err)
             else
                 r->plat_v[j] = mu, r->plat_v_err[j] = e;
         }
-        /* leave-one-out (s_out = 0..S-1) and all (s_out = S) */
+        /* the right shock's mid-level point (front.h) between the fluid's two states, in
+         * a window half the contact-shock distance either side of the fluid's shock;
+         * Poisson weights 1/N0; leave-one-out (s_out = 0..S-1) and all (s_out = S) */
         const double expect = tb->x0 + so->headR * t, xcon = tb->x0 + so->v_star * t;
-        const double xa = 0.5 * (xcon + expect);
+        const double h = 0.5 * (expect - xcon);
+        const sh_front fr = {behind.N0, mr.N0, expect - h, fmin(expect + h, tb->box.x), expect,
+                             fmax(0.05 * h, dx)};
+        for (int k = 0; k < nb; k++) {
+            const double nf = r->fluid[sh_idx(r, j, k, SH_RAW)];
+            wt[k] = nf > 0.0 ? 1.0 / nf : 0.0;
+        }
+        r->wshock[j] = NAN;
         for (int so_ = 0; so_ <= S; so_++) {
             for (int k = 0; k < nb; k++) {
                 double acc = 0.0;
@@ -314,22 +306,39 @@ int sh_run(const sh_opts *o, sh_result *r, int progress, char *err)
                         acc += per[(size_t)s * cells + sh_idx(r, j, k, SH_RAW)];
                 prof[k] = acc / (so_ < S ? S - 1 : S);
             }
-            xs[(size_t)so_ * nt + j] = shock_pos(prof, r->xc, nb, dx, xcon, xa,
-                                                 fmin(2.0 * expect - xa, tb->box.x), mr.N0);
+            xs[(size_t)so_ * nt + j] = NAN;
+            if (so->waveR == RS_SHOCK) /* a rarefaction on the right has no front to fit */
+                sh_front_fit(&fr, r->xc, prof, wt, nb, &xs[(size_t)so_ * nt + j],
+                             so_ == S ? &r->wshock[j] : NULL);
         }
         r->xshock[j] = xs[(size_t)S * nt + j];
         r->xshock_err[j] = jackknife(xs, S, nt, j);
     }
-    if (nt > 1) {
-        const double dt = o->times[nt - 1] - o->times[0];
-        for (int so_ = 0; so_ <= S; so_++)
-            tmp[so_] = (xs[(size_t)so_ * nt + nt - 1] - xs[(size_t)so_ * nt]) / dt;
-        r->vshock = tmp[S];
-        r->vshock_err = jackknife(tmp, S, 1, 0);
+    /* the shock speed: its mean since the membrane opened, (x_s - x0)/t at the last time,
+     * the self-similar solution's x/t (the front's offset from the fluid's shock stays
+     * bounded while it forms, so this converges as 1/t); and its local speed, the
+     * least-squares slope of x_s over all the times, which also reads the approach */
+    r->vshock = (r->xshock[nt - 1] - tb->x0) / o->times[nt - 1];
+    r->vshock_err = r->xshock_err[nt - 1] / o->times[nt - 1];
+    r->vshock_local = r->vshock_local_err = NAN;
+    if (nt > 2) {
+        double tm = 0.0, tt = 0.0;
+        for (int j = 0; j < nt; j++)
+            tm += o->times[j] / nt;
+        for (int j = 0; j < nt; j++)
+            tt += (o->times[j] - tm) * (o->times[j] - tm);
+        for (int so_ = 0; so_ <= S; so_++) {
+            double xm = 0.0, tx = 0.0;
+            for (int j = 0; j < nt; j++)
+                xm += xs[(size_t)so_ * nt + j] / nt;
+            for (int j = 0; j < nt; j++)
+                tx += (o->times[j] - tm) * (xs[(size_t)so_ * nt + j] - xm);
+            tmp[so_] = tx / tt;
+        }
+        r->vshock_local = tmp[S];
+        r->vshock_local_err = jackknife(tmp, S, 1, 0);
     }
-    free(prof), free(tmp);
-    if (nt < 2)
-        r->vshock = r->vshock_err = NAN;
+    free(prof), free(tmp), free(wt);
     r->lambda[0] = mfp(tb->dim, tb->r, tb->n[0]);
     r->lambda[1] = mfp(tb->dim, tb->r, tb->n[1]);
     r->lambda_star = mfp(tb->dim, tb->r, so->rho_starR);

@@ -7,6 +7,8 @@
 
 #include <stdint.h>
 
+#include "relcol/validity.h"
+
 #include "freestream.h"
 #include "moments.h"
 #include "riemann.h"
@@ -33,7 +35,7 @@ typedef struct sh_result {
     uint64_t collisions;         /* ball-ball events over all seeds */
     double *xc;                  /* nb bin centres */
     double *mean, *err;          /* [t][bin][q]: mean over seeds, its standard error */
-    double *fluid, *freestr;     /* [t][bin][q]: the references (freestr NAN if v != 0) */
+    double *fluid, *freestr;     /* [t][bin][q]: the references */
     rs_solution sol;             /* the ideal fluid's Riemann solution (table units) */
     rs_eos eos;
     /* against free streaming, per time: chi^2 of N0, g, Pxx over the bins (Student t's of
@@ -41,14 +43,21 @@ typedef struct sh_result {
     double chi2[SH_MAX_TIMES][3], pval[SH_MAX_TIMES][3];
     int dof[SH_MAX_TIMES][3];
     /* against the fluid, per time: the plateau's p and v (bins inside the central 60 % of
-     * [tail of the left wave, right shock]), the right shock's position */
+     * [tail of the left wave, right shock]), the right shock's mid-level point (front.h)
+     * and its fitted logistic width */
     double plat_p[SH_MAX_TIMES], plat_p_err[SH_MAX_TIMES];
     double plat_v[SH_MAX_TIMES], plat_v_err[SH_MAX_TIMES];
-    double xshock[SH_MAX_TIMES], xshock_err[SH_MAX_TIMES];
+    double xshock[SH_MAX_TIMES], xshock_err[SH_MAX_TIMES], wshock[SH_MAX_TIMES];
     int plat_bins[SH_MAX_TIMES];
-    double vshock, vshock_err;   /* from the first and last times */
+    double vshock, vshock_err;   /* the mean speed since t = 0: (xshock - x0)/t, last time */
+    double vshock_local, vshock_local_err; /* the slope of xshock over the times (>= 3) */
     double lambda_star, kn;      /* mean free path in the right plateau; / shock travel at the last time */
     double lambda[2];            /* mean free paths of the two starting halves */
+    /* where the seeds stand against the rigid-ball model's regime (relcol/validity.h):
+     * the report of the seed of largest p_model (each seed noted for app_validity_warn) */
+    rc_validity model;
+    int model_ok;                /* model was read (rc_sim_validity succeeded for a seed) */
+    int seeds_outside;           /* seeds whose verdict was `outside` */
 } sh_result;
 
 /* -1 with err on failure (engine, placement, references). progress: 1 to draw a bar. */

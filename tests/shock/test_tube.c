@@ -3,7 +3,7 @@
  * t -> 0 limit, c = 100 against Maxwell), the Juttner sampler's moments against the
  * Juttner law (<gamma> and equipartition <p.v> = d T within 4 standard errors), and
  * tubes of nearly point-like balls (r = 1e-4: no collisions in the run) against free
- * streaming in 2-D and 3-D, c = inf and c = 1: each raw moment's chi^2 over the bins with
+ * streaming in 2-D and 3-D, c = inf and c = 1, halves at rest and moving (colliding streams): each raw moment's chi^2 over the bins with
  * its p-value above 1e-3, and the tube's seeds independent. */
 #include <math.h>
 #include <stdio.h>
@@ -20,7 +20,7 @@
 static void test_reference(void)
 {
     for (int d = 2; d <= 3; d++) {
-        fs_def a = {d, INFINITY, 400.0, 150.0, {0.5, 0.125}, {2.0, 0.8}}, b = a;
+        fs_def a = {d, INFINITY, 400.0, 150.0, {0.5, 0.125}, {2.0, 0.8}, {0.0, 0.0}}, b = a;
         b.c = 100.0;
         const double total = a.n[0] * a.x0 + a.n[1] * (a.L - a.x0);
         for (double t = 20.0; t < 1000.0; t *= 2.5) {
@@ -64,6 +64,68 @@ static void test_reference(void)
     }
 }
 
+/* moving halves (v_L = 0.6 c_s-ish right, v_R left; c = inf, 100 and 1): balls (lab density
+ * n W) and energy conserved between the walls, the t -> 0 limit the boosted halves, c = 100
+ * against the drifting Maxwell */
+static void test_reference_moving(void)
+{
+    for (int d = 2; d <= 3; d++)
+        for (int k = 0; k < 3; k++) {
+            const double c = k == 0 ? INFINITY : k == 1 ? 100.0 : 1.0;
+            const double T0 = k == 2 ? 0.5 : 2.0, T1 = 0.4 * T0;
+            const double v0 = k == 2 ? 0.4 : 0.8, v1 = k == 2 ? -0.3 : -0.6;
+            fs_def a = {d, c, 400.0, 150.0, {0.5, 0.125}, {T0, T1}, {v0, v1}};
+            const double W0 = isinf(c) ? 1.0 : 1.0 / sqrt(1.0 - v0 * v0 / (c * c));
+            const double W1 = isinf(c) ? 1.0 : 1.0 / sqrt(1.0 - v1 * v1 / (c * c));
+            const double total = a.n[0] * W0 * a.x0 + a.n[1] * W1 * (a.L - a.x0);
+            /* two times (before and after the fronts reach the walls), 1000 points: the
+             * quadratures at finite c are what this test's time goes to */
+            /* the start's energy: each half's uniform K over its length (no step to sample) */
+            sh_mom kl, kr;
+            ENSURE(fs_moments(&a, 0.5 * a.x0, 0.0, &kl) == 0);
+            ENSURE(fs_moments(&a, 0.5 * (a.x0 + a.L), 0.0, &kr) == 0);
+            const double sk0 = kl.K * a.x0 + kr.K * (a.L - a.x0);
+            for (double t = 20.0; t < 600.0; t *= 15.0) {
+                double sum = 0.0, sk = 0.0;
+                for (int i = 0; i <= 1000; i++) {
+                    const double x = a.L * i / 1000.0, w = (i == 0 || i == 1000) ? 0.5 : 1.0;
+                    sh_mom m;
+                    ENSURE(fs_moments(&a, x, t, &m) == 0);
+                    sum += w * m.N0 * a.L / 1000.0;
+                    sk += w * m.K * a.L / 1000.0;
+                }
+                ENSURE_MSG(fabs(sum / total - 1.0) < 2e-3, "d %d c %g t %g: balls %g of %g", d, c, t, sum, total);
+                ENSURE_MSG(fabs(sk / sk0 - 1.0) < 2e-3, "d %d c %g t %g: K %g of %g", d, c, t, sk, sk0);
+            }
+            /* t -> 0+: each half's lab moments, N0 = n W and Nx = v N0 */
+            sh_mom m;
+            ENSURE(fs_moments(&a, 50.0, 1e-6, &m) == 0);
+            ENSURE_REL(m.N0, a.n[0] * W0, 1e-9);
+            ENSURE_REL(m.Nx, v0 * a.n[0] * W0, 1e-8);
+            ENSURE(fs_moments(&a, 300.0, 1e-6, &m) == 0);
+            ENSURE_REL(m.N0, a.n[1] * W1, 1e-9);
+            ENSURE_REL(m.Nx, v1 * a.n[1] * W1, 1e-8);
+            double q[SH_NDERIVED];
+            sh_derive(d, c, &m, q);
+            ENSURE_REL(q[SH_V], v1, 1e-8);
+            ENSURE_REL(q[SH_N], a.n[1], 1e-8);
+            ENSURE_REL(q[SH_TP], a.T[1], 1e-7);
+            if (k == 1) { /* c = 100 against the drifting Maxwell */
+                fs_def b = a;
+                b.c = INFINITY;
+                for (double x = 10.0; x < a.L; x += 37.0) {
+                    sh_mom m1, m2;
+                    ENSURE(fs_moments(&b, x, 80.0, &m1) == 0);
+                    ENSURE(fs_moments(&a, x, 80.0, &m2) == 0);
+                    ENSURE_CLOSE(m2.N0, m1.N0, 1e-3, a.n[0]);
+                    ENSURE_CLOSE(m2.g, m1.g, 1e-3, a.n[0] * sqrt(T0));
+                    ENSURE_CLOSE(m2.Pxx, m1.Pxx, 1e-3, a.n[0] * T0);
+                    ENSURE_CLOSE(m2.K, m1.K, 1e-3, a.n[0] * T0);
+                }
+            }
+        }
+}
+
 static void test_sampler(void)
 {
     for (int d = 2; d <= 3; d++)
@@ -87,7 +149,7 @@ static void test_sampler(void)
         }
 }
 
-static void tube_case(int dim, double c)
+static void tube_case(int dim, double c, int moving)
 {
     sh_opts o;
     memset(&o, 0, sizeof o);
@@ -98,6 +160,8 @@ static void tube_case(int dim, double c)
     t->x0 = 300.0;
     t->n[0] = dim == 3 ? 0.01 : 0.05, t->n[1] = 0.5 * t->n[0];
     t->T[0] = isinf(c) ? 2.0 : 0.5, t->T[1] = 0.5 * t->T[0];
+    if (moving) /* colliding streams, the left one the faster */
+        t->v[0] = isinf(c) ? 0.8 : 0.4, t->v[1] = isinf(c) ? -0.6 : -0.3;
     o.nt = 2, o.times[0] = 60.0, o.times[1] = 200.0;
     o.bins = 40, o.seeds = 8, o.seed = 3;
     sh_result r;
@@ -112,18 +176,21 @@ static void tube_case(int dim, double c)
     for (int j = 0; j < r.nt; j++)
         for (int q = 0; q < 3; q++) {
             ENSURE(r.dof[j][q] == o.bins);
-            ENSURE_MSG(r.pval[j][q] > 1e-3, "%d-D c %g t %g %s: chi2 %g / %d, p %g", dim, c,
-                       o.times[j], nm[q], r.chi2[j][q], r.dof[j][q], r.pval[j][q]);
+            ENSURE_MSG(r.pval[j][q] > 1e-3, "%d-D c %g v %g %g t %g %s: chi2 %g / %d, p %g", dim,
+                       c, t->v[0], t->v[1], o.times[j], nm[q], r.chi2[j][q], r.dof[j][q],
+                       r.pval[j][q]);
         }
     sh_result_free(&r);
 }
 
 static void test_free_streaming(void)
 {
-    tube_case(3, INFINITY);
-    tube_case(2, INFINITY);
-    tube_case(3, 1.0);
-    tube_case(2, 1.0);
+    for (int moving = 0; moving < 2; moving++) {
+        tube_case(3, INFINITY, moving);
+        tube_case(2, INFINITY, moving);
+        tube_case(3, 1.0, moving);
+        tube_case(2, 1.0, moving);
+    }
 }
 
 /* two seeds give different starts, one seed the same start */
@@ -154,6 +221,7 @@ int main(void)
 {
     gsl_set_error_handler_off();
     RUN_TEST(test_reference);
+    RUN_TEST(test_reference_moving);
     RUN_TEST(test_sampler);
     RUN_TEST(test_seeds);
     RUN_TEST(test_free_streaming);
