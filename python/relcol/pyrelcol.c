@@ -1,8 +1,14 @@
 /* pyrelcol.c — the package-side loops of relcol._relcol (pyrelcol.h). */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "pyrelcol.h"
+
+/* Balls read at a time: a block of states stays in the cache while its fields are
+ * scattered to the balls' indices (whole rc_sim_balls scattered over 1e5 balls cost a
+ * cache and TLB miss each). */
+#define RCPY_BLOCK 256 /* (on the stack: 27 KB) */
 
 int rcpy_sim_read(rc_sim *s, int which, uint32_t slice, size_t n, int dim, double inv_c2,
                   double *x, double *p, double *v, double *r, double *m, double *tau,
@@ -12,45 +18,54 @@ int rcpy_sim_read(rc_sim *s, int which, uint32_t slice, size_t n, int dim, doubl
     if (!s || n != rc_sim_count(s) || dim < 1 || dim > 3 || which < RCPY_NOW ||
         which > RCPY_SLICE)
         return RC_EINVAL;
-    rc_sim_ball *all = malloc((n ? n : 1) * sizeof *all);
-    if (!all)
-        return RC_ENOMEM;
+    rc_sim_ball all[RCPY_BLOCK];
+    size_t id[RCPY_BLOCK];
+    int8_t ah[RCPY_BLOCK];
     int st = RC_OK;
-    if (which == RCPY_SLICE) {
-        for (size_t i = 0; i < n && st == RC_OK; i++)
-            if ((st = rc_sim_slice_get(s, slice, i, &all[i])) != RC_OK)
-                *bad = i;
-    } else {
-        st = rc_sim_get_balls(s, n, all, which == RCPY_LATEST,
-                              which == RCPY_NOW ? ahead : NULL);
-    }
-    for (size_t i = 0; i < n && st == RC_OK; i++) {
-        const rc_sim_ball *b = &all[i];
-        const double bx[3] = {b->x.x, b->x.y, b->x.z}, bp[3] = {b->p.x, b->p.y, b->p.z};
-        const rc_vec3 u = v ? rc_velocity(b->m, b->p, inv_c2) : b->p;
-        const double bv[3] = {u.x, u.y, u.z};
-        for (int d = 0; d < dim; d++) {
-            if (x)
-                x[i * (size_t)dim + (size_t)d] = bx[d];
-            if (p)
-                p[i * (size_t)dim + (size_t)d] = bp[d];
-            if (v)
-                v[i * (size_t)dim + (size_t)d] = bv[d];
-            if (image)
-                image[i * (size_t)dim + (size_t)d] = b->image[d];
+    for (size_t from = 0; from < n && st == RC_OK; from += RCPY_BLOCK) {
+        const size_t count = n - from < RCPY_BLOCK ? n - from : RCPY_BLOCK;
+        if (which == RCPY_SLICE) {
+            for (size_t j = 0; j < count && st == RC_OK; j++) {
+                id[j] = from + j;
+                ah[j] = 0;
+                if ((st = rc_sim_slice_get(s, slice, from + j, &all[j])) != RC_OK)
+                    *bad = from + j;
+            }
+        } else {
+            st = rc_sim_get_balls_stored(s, from, count, all, id, which == RCPY_LATEST,
+                                         which == RCPY_NOW ? ah : NULL);
+            if (which != RCPY_NOW)
+                memset(ah, 0, sizeof ah);
         }
-        if (r)
-            r[i] = b->r;
-        if (m)
-            m[i] = b->m;
-        if (tau)
-            tau[i] = b->tau;
-        if (tau_last)
-            tau_last[i] = b->collided ? b->tau_last : NAN;
-        if (ahead && which != RCPY_NOW)
-            ahead[i] = 0;
+        for (size_t k = 0; k < count && st == RC_OK; k++) {
+            const rc_sim_ball *b = &all[k];
+            const size_t i = id[k], at = i * (size_t)dim;
+            if (x)
+                for (int d = 0; d < dim; d++)
+                    x[at + (size_t)d] = rc_v3_get(b->x, d);
+            if (p)
+                for (int d = 0; d < dim; d++)
+                    p[at + (size_t)d] = rc_v3_get(b->p, d);
+            if (v) {
+                const rc_vec3 u = rc_velocity(b->m, b->p, inv_c2);
+                for (int d = 0; d < dim; d++)
+                    v[at + (size_t)d] = rc_v3_get(u, d);
+            }
+            if (image)
+                for (int d = 0; d < dim; d++)
+                    image[at + (size_t)d] = b->image[d];
+            if (r)
+                r[i] = b->r;
+            if (m)
+                m[i] = b->m;
+            if (tau)
+                tau[i] = b->tau;
+            if (tau_last)
+                tau_last[i] = b->collided ? b->tau_last : NAN;
+            if (ahead)
+                ahead[i] = ah[k];
+        }
     }
-    free(all);
     return st;
 }
 
