@@ -75,34 +75,56 @@ int rcpy_sim_balls(const rc_sim *s, size_t n, rc_sim_ball *out, size_t *bad)
     return rc_sim_get_balls(s, n, out, 0, NULL);
 }
 
-int rcpy_collide_many(const rc_law *law, const rc_collision_params *prm, size_t n_pairs,
-                      const double *c, size_t c_stride, const double *eps, size_t eps_stride,
-                      double *m0, rc_vec3 *p0, double *m1, rc_vec3 *p1, const rc_vec3 *n,
-                      int *status, size_t *hits, size_t *bad)
+static inline rc_vec3 load3(const double *v, int dim)
 {
-    if (!prm || !c || !eps)
+    return rc_v3(v[0], dim > 1 ? v[1] : 0.0, dim > 2 ? v[2] : 0.0);
+}
+
+static inline void store3(double *out, rc_vec3 v, int dim)
+{
+    out[0] = v.x;
+    if (dim > 1)
+        out[1] = v.y;
+    if (dim > 2)
+        out[2] = v.z;
+}
+
+int rcpy_collide(const rc_law *law, const rc_collision_params *prm, size_t n, int dim,
+                 const double *c, size_t c_stride, const double *eps, size_t eps_stride,
+                 const double *m0, size_t m0_stride, const double *p0, size_t p0_stride,
+                 const double *m1, size_t m1_stride, const double *p1, size_t p1_stride,
+                 const double *nrm, size_t n_stride, double *m0o, double *p0o, double *m1o,
+                 double *p1o, int *status, size_t *hits, size_t *bad)
+{
+    *hits = 0;
+    *bad = 0;
+    if (!law || !prm || dim < 1 || dim > 3 || (n && (!c || !eps || !m0 || !p0 || !m1 || !p1 ||
+                                                      !nrm || !m0o || !p0o || !m1o || !p1o)))
         return RC_EINVAL;
     rc_collision_params q = *prm;
-    if (c_stride == 0 && eps_stride == 0) {
-        q.c = c[0];
-        q.eps = eps[0];
-        return rc_collide_many(law, &q, n_pairs, m0, p0, m1, p1, n, status, hits, bad);
-    }
-    /* per-pair parameters: the library's checked batch, one pair at a time */
+    q.c = n ? c[0] : q.c;
+    q.eps = n ? eps[0] : q.eps;
     size_t h = 0;
-    *bad = 0;
-    for (size_t i = 0; i < n_pairs; i++) {
-        size_t hi = 0;
-        q.c = c[i * c_stride];
-        q.eps = eps[i * eps_stride];
-        int st = rc_collide_many(law, &q, 1, m0 + i, p0 + i, m1 + i, p1 + i, n + i,
-                                 status ? status + i : NULL, &hi, NULL);
-        if (st < 0) {
+    for (size_t i = 0; i < n; i++) {
+        if (c_stride)
+            q.c = c[i * c_stride];
+        if (eps_stride)
+            q.eps = eps[i * eps_stride];
+        rc_particle a = {m0[i * m0_stride], load3(p0 + i * p0_stride, dim)};
+        rc_particle b = {m1[i * m1_stride], load3(p1 + i * p1_stride, dim)};
+        const int r = rc_collide(law, &q, &a, &b, load3(nrm + i * n_stride, dim));
+        if (r < 0) {
             *bad = i;
             *hits = h;
-            return st;
+            return r;
         }
-        h += hi;
+        m0o[i] = a.m;
+        m1o[i] = b.m;
+        store3(p0o + i * (size_t)dim, a.p, dim);
+        store3(p1o + i * (size_t)dim, b.p, dim);
+        if (status)
+            status[i] = r;
+        h += r == RC_OK;
     }
     *hits = h;
     return RC_OK;
