@@ -95,11 +95,17 @@ def collide(m0, p0, m1, p1, n, c=math.inf, eps=1.0, law="zmf", alpha=None, azimu
             raise shape_error("collide", name, sh if name in ("m0", "m1", "c", "eps") else
                               sh + (d,), "a number or (N,)" if name in ("m0", "m1", "c", "eps")
                               else "(d,) or (N, d)")
-    npair = max([sh[0] for _, sh in shapes if sh] or [1])
+    # the pairs' count: the most common length given (ties: the first), so that the odd
+    # argument out is the one named
+    lengths = [sh[0] for _, sh in shapes if sh and sh[0] != 1]
+    npair = max(lengths, key=lengths.count) if lengths else 1
     for name, sh in shapes:
         if sh and sh[0] not in (1, npair):
-            raise ValueError("collide: the pairs' arrays do not broadcast: %s" % ", ".join(
-                "%s %s" % (k, v) for k, v in shapes))
+            want = "a number or (%d,)" % npair if name in ("m0", "m1", "c", "eps") else \
+                "(%d,) or (%d, %d)" % (d, npair, d)
+            raise ValueError("collide: %s: has shape %s, expected %s like the other arrays "
+                             "(the pairs' arrays do not broadcast)" % (
+                                 name, sh if name in ("m0", "m1", "c", "eps") else sh + (d,), want))
     prm = ffi.new("rc_collision_params *", lib.rc_collision_params_default())
     # (NaN is the library's "no angle given", which is said with None here: an explicit
     # NaN is refused as relcol-collide --alpha refuses it)
