@@ -138,6 +138,12 @@ rc_collision_params rc_collision_params_default(void);
 int rc_collide(const rc_law *law, const rc_collision_params *prm, rc_particle *a,
                rc_particle *b, rc_vec3 n);
 
+/* rc_collide's checks of one pair, beyond rc_particle_check of each ball and those of the
+ * parameters (rc_inv_c2 gives inv_c2): m^2 + p^2/c^2 and |p_a + p_b|^2 finite, n finite and
+ * not zero, then n made unit as rc_collide makes it. For batches whose parameters are
+ * checked once: rc_particle_check of a and b, this, then law->collide is rc_collide. */
+int rc_pair_check(const rc_particle *a, const rc_particle *b, rc_vec3 *n, double inv_c2);
+
 /* Batch: n_pairs collisions a[i] with b[i] along unit normals n[i] (trusted input).
  * status[i] (may be NULL) receives each kernel's code. Returns the number that collided. */
 size_t rc_collide_batch(const rc_law *law, const rc_collision_params *prm, size_t n_pairs,
