@@ -65,6 +65,13 @@ static int check_pair(const rc_particle *a, const rc_particle *b, rc_vec3 *n, do
     return RC_OK;
 }
 
+int rc_pair_check(const rc_particle *a, const rc_particle *b, rc_vec3 *n, double inv_c2)
+{
+    if (!a || !b || !n)
+        return RC_EINVAL;
+    return check_pair(a, b, n, inv_c2);
+}
+
 /* The group rules by their enum value (relcol/law.h). */
 static const struct {
     const char *name, *summary;

@@ -2,7 +2,8 @@
  * creator), /particles/all with the box and one time-dependent group per quantity (step,
  * time and value datasets, extensible along time, chunked one frame at a time), and
  * /parameters with c and the scenario. The standard elements are position, velocity, mass,
- * species and image; relcol's own are rest_mass, momentum, proper_time and radius. Every
+ * species and image; relcol's own are rest_mass, momentum, proper_time and radius; the
+ * scenario's outputs.h5md chooses which per-frame ones are written, float64 or float32. Every
  * dimensionful dataset has a unit attribute; the box edges are a time series (constant) of
  * D x D matrices sharing the position's step and time, the form MDAnalysis' reader reads.
  *
@@ -25,10 +26,11 @@
 #define RELCOL_SIM_VERSION "unknown"
 #endif
 
-/* Per-frame elements (time-dependent groups under /particles/all). */
-enum { E_POS, E_VEL, E_MASS, E_REST, E_MOM, E_TAU, E_IMAGE, E_N };
-static const char *const e_name[E_N] = {"position",  "velocity", "mass",  "rest_mass",
-                                        "momentum",  "proper_time", "image"};
+/* Per-frame elements (time-dependent groups under /particles/all), named by
+ * scn_h5md_names (the scenario's outputs.h5md.fields). */
+enum { E_POS = SCN_H5MD_POSITION, E_VEL = SCN_H5MD_VELOCITY, E_MASS = SCN_H5MD_MASS,
+       E_REST = SCN_H5MD_REST_MASS, E_MOM = SCN_H5MD_MOMENTUM, E_TAU = SCN_H5MD_PROPER_TIME,
+       E_IMAGE = SCN_H5MD_IMAGE, E_N = SCN_H5MD_N };
 static const int e_vector[E_N] = {1, 1, 0, 0, 1, 0, 1};
 /* H5MD's unit strings (its units module), in the GROMACS system nm, ps, u: relcol's hard
  * balls are scale free (a run in any length unit L, time unit T and mass unit M is the
@@ -36,16 +38,23 @@ static const int e_vector[E_N] = {1, 1, 0, 0, 1, 0, 1};
  * (MDAnalysis demands units) convert from; image is dimensionless and has none. */
 static const char *const e_unit[E_N] = {"nm", "nm ps-1", "u", "u", "u nm ps-1", "ps", NULL};
 
+/* Balls read at a time: a block of their states stays in the cache while its values are
+ * scattered to the balls' indices. */
+#define H5MD_BLOCK 1024
+
 struct sim_h5md {
     hid_t file, all;
     hid_t value[E_N], step, time; /* datasets (H5I_INVALID_HID when absent) */
     hid_t edges;                  /* box/edges/value, one D x D matrix a frame */
     double box[9];
-    int dim, periodic;
+    int dim, f32;
+    unsigned on;                  /* the elements written, bit (1u << E_*) */
     size_t n;
     hsize_t frames;
     double k2;
-    double *buf[E_N]; /* one frame of each element */
+    rc_sim_ball *balls; /* a block of H5MD_BLOCK balls in the engine's storage order, */
+    size_t *ids;        /* and their indices (rc_sim_get_balls_stored) */
+    double *buf[E_N];   /* one frame of each element written (float32: float *) */
     int *img;
     app_atomic tmp;   /* the temporary name; its FILE is closed, HDF5 writes the file */
 };
@@ -127,7 +136,8 @@ static herr_t dataset_text(hid_t loc, const char *name, const char *text)
 
 /* An extensible dataset [0][dims...] (growing along time), chunked one frame at a time:
  * a whole frame is one chunk, written past HDF5's chunk cache in one piece (chunks of
- * 1 MiB cut from a frame cost a partly empty last chunk and a cache pass each). */
+ * 1 MiB cut from a frame cost a partly empty last chunk and a cache pass each; a frame
+ * under 1 MiB would pass through the cache too, so the frames' datasets have none). */
 static hid_t dataset_growing(hid_t loc, const char *name, hid_t type, int rank_frame,
                              const hsize_t *frame)
 {
@@ -140,9 +150,13 @@ static hid_t dataset_growing(hid_t loc, const char *name, hid_t type, int rank_f
         chunk[1] = 1; /* (no balls: HDF5 refuses a zero chunk) */
     hid_t sp = H5Screate_simple(rank_frame + 1, dims, maxd);
     hid_t pl = H5Pcreate(H5P_DATASET_CREATE);
+    hid_t ap = rank_frame > 0 ? H5Pcreate(H5P_DATASET_ACCESS) : H5P_DEFAULT;
     hid_t d = H5I_INVALID_HID;
-    if (sp >= 0 && pl >= 0 && H5Pset_chunk(pl, rank_frame + 1, chunk) >= 0)
-        d = H5Dcreate2(loc, name, type, sp, H5P_DEFAULT, pl, H5P_DEFAULT);
+    if (sp >= 0 && pl >= 0 && ap >= 0 && H5Pset_chunk(pl, rank_frame + 1, chunk) >= 0 &&
+        (rank_frame == 0 || H5Pset_chunk_cache(ap, 0, 0, 1.0) >= 0))
+        d = H5Dcreate2(loc, name, type, sp, H5P_DEFAULT, pl, ap);
+    if (ap >= 0 && ap != H5P_DEFAULT)
+        H5Pclose(ap);
     if (pl >= 0)
         H5Pclose(pl);
     if (sp >= 0)
@@ -287,23 +301,30 @@ static int build(sim_h5md *h, const scn_scenario *s, const char *prog)
     if (r < 0)
         return -1;
 
-    /* the time-dependent elements: step and time made once (in position) and hard-linked
-     * into the others, as H5MD allows for elements sampled together */
+    /* the time-dependent elements chosen: step and time made once (in the first, position
+     * unless it is left out) and hard-linked into the others, as H5MD allows for elements
+     * sampled together */
+    int first = 0;
+    while (first < E_N && !(h->on >> first & 1u))
+        first++;
+    char clock_step[64], clock_time[64];
+    snprintf(clock_step, sizeof clock_step, "%s/step", first < E_N ? scn_h5md_names[first] : "");
+    snprintf(clock_time, sizeof clock_time, "%s/time", first < E_N ? scn_h5md_names[first] : "");
     for (int e = 0; e < E_N; e++) {
-        if (e == E_IMAGE && !h->periodic)
+        if (!(h->on >> e & 1u))
             continue;
-        hid_t eg = H5Gcreate2(h->all, e_name[e], H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+        hid_t eg = H5Gcreate2(h->all, scn_h5md_names[e], H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
         if (eg < 0)
             return -1;
         hsize_t frame[2] = {(hsize_t)h->n, (hsize_t)D};
         int rank = e_vector[e] ? 2 : 1;
-        h->value[e] = e == E_IMAGE ? dataset_growing(eg, "value", H5T_STD_I32LE, rank, frame)
-                                   : dataset_growing(eg, "value", H5T_IEEE_F64LE, rank, frame);
+        h->value[e] = dataset_growing(eg, "value", e == E_IMAGE ? H5T_STD_I32LE : h->f32 ?
+                                      H5T_IEEE_F32LE : H5T_IEEE_F64LE, rank, frame);
         if (h->value[e] >= 0 && e_unit[e] && attr_unit(h->value[e], e_unit[e]) < 0) {
             H5Gclose(eg);
             return -1;
         }
-        if (e == E_POS) {
+        if (e == first) {
             h->step = dataset_growing(eg, "step", H5T_STD_I64LE, 0, NULL);
             h->time = dataset_growing(eg, "time", H5T_IEEE_F64LE, 0, NULL);
             if (h->time >= 0 && attr_unit(h->time, "ps") < 0) {
@@ -317,8 +338,8 @@ static int build(sim_h5md *h, const scn_scenario *s, const char *prog)
                 H5Gclose(eg);
                 return -1;
             }
-        } else if (H5Lcreate_hard(h->all, "position/step", eg, "step", H5P_DEFAULT, H5P_DEFAULT) < 0 ||
-                   H5Lcreate_hard(h->all, "position/time", eg, "time", H5P_DEFAULT, H5P_DEFAULT) < 0) {
+        } else if (H5Lcreate_hard(h->all, clock_step, eg, "step", H5P_DEFAULT, H5P_DEFAULT) < 0 ||
+                   H5Lcreate_hard(h->all, clock_time, eg, "time", H5P_DEFAULT, H5P_DEFAULT) < 0) {
             H5Gclose(eg);
             return -1;
         }
@@ -329,19 +350,21 @@ static int build(sim_h5md *h, const scn_scenario *s, const char *prog)
 
     /* parameters (H5MD's group for a program's own settings): c as a float attribute
      * (HDF5 floats are IEEE: the classical c = inf is stored as inf), and the scenario,
-     * as a text dataset (it holds every ball: too large for an attribute) */
+     * as a text dataset (it holds every ball: too large for an attribute; unless
+     * outputs.h5md.scenario is false: at 1e5 balls its digits cost as much as 20 frames) */
     hid_t pg = H5Gcreate2(h->file, "parameters", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
     if (pg < 0)
         return -1;
-    char *text = scenario_text(s);
-    r = text ? attr_numbers(pg, "c", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, 0, &s->c) : -1;
+    char *text = s->out.h5md_scenario ? scenario_text(s) : NULL;
+    r = text || !s->out.h5md_scenario ? attr_numbers(pg, "c", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
+                                                     0, &s->c) : -1;
     if (r >= 0) /* (an attribute has no attributes: c's unit is its own) */
         r = attr_string(pg, "c_unit", "nm ps-1");
     if (r >= 0)
         r = attr_string(pg, "law", s->law->name);
     if (r >= 0)
         r = attr_string(pg, "contact_frame", s->frame->name);
-    if (r >= 0)
+    if (r >= 0 && text)
         r = dataset_text(pg, "scenario", text);
     free(text);
     H5Gclose(pg);
@@ -363,13 +386,23 @@ int h5md_open(sim_h5md **out, const char *path, const scn_scenario *s, size_t n,
     h->dim = s->dim;
     h->n = n;
     h->k2 = isinf(s->c) ? 0.0 : 1.0 / (s->c * s->c);
-    for (int d = 0; d < s->dim; d++)
-        h->periodic |= s->boundary[d] == RC_SIM_PERIODIC;
+    h->on = s->out.h5md_fields & ((1u << E_N) - 1u);
+    h->f32 = s->out.h5md_float32;
+    if (!h->on) {
+        app_errf(err, "%s: no element chosen to write (outputs.h5md.fields)", path);
+        free(h);
+        return -1;
+    }
     const size_t nn = n ? n : 1;
+    const size_t word = h->f32 ? sizeof(float) : sizeof(double);
     for (int e = 0; e < E_N; e++)
-        if (e != E_IMAGE && !(h->buf[e] = malloc(nn * (size_t)(e_vector[e] ? s->dim : 1) * sizeof(double))))
+        if (e != E_IMAGE && (h->on >> e & 1u) &&
+            !(h->buf[e] = malloc(nn * (size_t)(e_vector[e] ? s->dim : 1) * word)))
             goto nomem;
-    if (!(h->img = malloc(nn * (size_t)s->dim * sizeof *h->img)))
+    if ((h->on >> E_IMAGE & 1u) && !(h->img = malloc(nn * (size_t)s->dim * sizeof *h->img)))
+        goto nomem;
+    if (!(h->balls = malloc(H5MD_BLOCK * sizeof *h->balls)) ||
+        !(h->ids = malloc(H5MD_BLOCK * sizeof *h->ids)))
         goto nomem;
     /* the temporary name (hidden, with our pid: a later run removes it if we are killed);
      * HDF5 then rewrites the file under that name */
@@ -402,22 +435,57 @@ nomem:
     return -1;
 }
 
+/* Store x as element e's value k of this frame, in the file's precision. */
+static inline void put(sim_h5md *h, int e, size_t k, double x)
+{
+    if (h->f32)
+        ((float *)h->buf[e])[k] = (float)x; /* (rounded to nearest) */
+    else
+        h->buf[e][k] = x;
+}
+
 int h5md_frame(sim_h5md *h, const rc_sim *sim, long long step, char *err)
 {
     const int D = h->dim;
-    for (size_t i = 0; i < h->n; i++) {
-        rc_sim_ball b;
-        rc_sim_get_ball(sim, i, &b);
-        rc_vec3 v = rc_velocity(b.m, b.p, h->k2);
-        for (int d = 0; d < D; d++) {
-            h->buf[E_POS][i * (size_t)D + (size_t)d] = rc_v3_get(b.x, d);
-            h->buf[E_VEL][i * (size_t)D + (size_t)d] = rc_v3_get(v, d);
-            h->buf[E_MOM][i * (size_t)D + (size_t)d] = rc_v3_get(b.p, d);
-            h->img[i * (size_t)D + (size_t)d] = b.image[d];
+    /* the balls in the engine's storage order, a block at a time (rc_sim_get_ball's
+     * bits), each value scattered to its ball's index: one ball at a time in caller order,
+     * or whole rc_sim_balls scattered, cost a cache and TLB miss a ball (16 % of a 1e5-ball
+     * run) */
+    const unsigned on = h->on;
+    for (size_t from = 0; from < h->n; from += H5MD_BLOCK) {
+        const size_t count = h->n - from < H5MD_BLOCK ? h->n - from : H5MD_BLOCK;
+        if (rc_sim_get_balls_stored(sim, from, count, h->balls, h->ids, 0, NULL) != RC_OK) {
+            app_errf(err, "cannot read the balls for frame %llu of %s",
+                     (unsigned long long)h->frames, h->tmp.path);
+            return -1;
         }
-        h->buf[E_MASS][i] = b.m * rc_gamma(b.m, b.p, h->k2);
-        h->buf[E_REST][i] = b.m;
-        h->buf[E_TAU][i] = b.tau;
+        for (size_t k = 0; k < count; k++) {
+            const rc_sim_ball *b = &h->balls[k];
+            const size_t i = h->ids[k], at = i * (size_t)D;
+            /* M as rc_mass_rel, v as rc_velocity and M as m rc_gamma form them (the same
+             * operations, so the same bits), inline: a library call a ball was 1/4 of a frame */
+            const double M = on & (1u << E_VEL | 1u << E_MASS)
+                             ? sqrt(b->m * b->m + rc_v3_norm2(b->p) * h->k2) : 0.0;
+            if (on >> E_VEL & 1u) {
+                const rc_vec3 v = rc_v3_scale(1.0 / M, b->p);
+                for (int d = 0; d < D; d++)
+                    put(h, E_VEL, at + (size_t)d, rc_v3_get(v, d));
+            }
+            for (int d = 0; d < D; d++) {
+                if (on >> E_POS & 1u)
+                    put(h, E_POS, at + (size_t)d, rc_v3_get(b->x, d));
+                if (on >> E_MOM & 1u)
+                    put(h, E_MOM, at + (size_t)d, rc_v3_get(b->p, d));
+                if (on >> E_IMAGE & 1u)
+                    h->img[at + (size_t)d] = b->image[d];
+            }
+            if (on >> E_MASS & 1u)
+                put(h, E_MASS, i, b->m * (M / b->m));
+            if (on >> E_REST & 1u)
+                put(h, E_REST, i, b->m);
+            if (on >> E_TAU & 1u)
+                put(h, E_TAU, i, b->tau);
+        }
     }
     const double t = rc_sim_time(sim);
     const int64_t st = step;
@@ -429,11 +497,13 @@ int h5md_frame(sim_h5md *h, const rc_sim *sim, long long step, char *err)
         r = append(h->edges, H5T_NATIVE_DOUBLE, h->frames, 2, nd, h->box);
     for (int e = 0; r >= 0 && e < E_N; e++) {
         hsize_t frame[2] = {(hsize_t)h->n, (hsize_t)D};
+        if (!(on >> e & 1u))
+            continue;
         if (e == E_IMAGE)
-            r = h->periodic ? append(h->value[e], H5T_NATIVE_INT, h->frames, 2, frame, h->img) : 0;
+            r = append(h->value[e], H5T_NATIVE_INT, h->frames, 2, frame, h->img);
         else
-            r = append(h->value[e], H5T_NATIVE_DOUBLE, h->frames, e_vector[e] ? 2 : 1, frame,
-                       h->buf[e]);
+            r = append(h->value[e], h->f32 ? H5T_NATIVE_FLOAT : H5T_NATIVE_DOUBLE, h->frames,
+                       e_vector[e] ? 2 : 1, frame, h->buf[e]);
     }
     if (r < 0) {
         app_errf(err, "cannot write frame %llu of %s (HDF5 write failed: disk full?)",
@@ -471,6 +541,8 @@ int h5md_close(sim_h5md **hp, int commit, char *err)
     for (int e = 0; e < E_N; e++)
         free(h->buf[e]);
     free(h->img);
+    free(h->balls);
+    free(h->ids);
     free(h);
     return r;
 }

@@ -556,16 +556,84 @@ static int cmp_double(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+const char *const scn_h5md_names[SCN_H5MD_N] = {"position", "velocity", "mass", "rest_mass",
+                                                "momentum", "proper_time", "image"};
+
+/* outputs.h5md: {"fields": [names of scn_h5md_names], "precision": "float64" | "float32",
+ * "scenario": true | false}, what trajectory.h5 holds; read after h5md_every, which it
+ * needs. */
+static int parse_h5md(const ctx *c, const cJSON *h, scn_scenario *s)
+{
+    scn_outputs *out = &s->out;
+    int periodic = 0;
+    for (int d = 0; d < s->dim; d++)
+        periodic |= s->boundary[d] == RC_SIM_PERIODIC;
+    out->h5md_fields = (1u << SCN_H5MD_N) - 1u;
+    if (!periodic)
+        out->h5md_fields &= ~(1u << SCN_H5MD_IMAGE);
+    out->h5md_float32 = 0;
+    out->h5md_scenario = 1;
+    if (!h)
+        return 0;
+    static const char *const keys[] = {"fields", "precision", "scenario", NULL};
+    if (!cJSON_IsObject(h))
+        return bad(c, "outputs.h5md", "must be an object {\"fields\": [...], \"precision\": "
+                   "\"float64\" or \"float32\", \"scenario\": true or false}");
+    if (only_keys(c, h, "outputs.h5md", keys))
+        return -1;
+    if (!(out->h5md_every > 0))
+        return bad(c, "outputs.h5md", "says what trajectory.h5 holds, but outputs.h5md_every "
+                   "is not > 0: no trajectory.h5 is written");
+    const char *prec = "float64";
+    if (get_str(c, h, "outputs.h5md", "precision", prec, &prec) ||
+        get_bool(c, h, "outputs.h5md", "scenario", 1, &out->h5md_scenario))
+        return -1;
+    if (strcmp(prec, "float32") == 0)
+        out->h5md_float32 = 1;
+    else if (strcmp(prec, "float64") != 0)
+        return bad(c, "outputs.h5md.precision", "unknown precision '%s' (expected float64 or "
+                   "float32)", prec);
+    const cJSON *f = cJSON_GetObjectItemCaseSensitive(h, "fields");
+    if (!f)
+        return 0;
+    char names[160] = "";
+    for (int e = 0; e < SCN_H5MD_N; e++)
+        snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s", e ? ", " : "",
+                 scn_h5md_names[e]);
+    if (!cJSON_IsArray(f) || !f->child)
+        return bad(c, "outputs.h5md.fields", "must be a non-empty list of names (of: %s)", names);
+    out->h5md_fields = 0;
+    int i = 0;
+    for (const cJSON *e = f->child; e; e = e->next, i++) {
+        char p[64];
+        snprintf(p, sizeof p, "outputs.h5md.fields[%d]", i);
+        if (!cJSON_IsString(e))
+            return bad(c, p, "must be a name (one of: %s)", names);
+        int k = 0;
+        while (k < SCN_H5MD_N && strcmp(e->valuestring, scn_h5md_names[k]) != 0)
+            k++;
+        if (k == SCN_H5MD_N)
+            return bad(c, p, "unknown field '%s' (expected one of: %s)", e->valuestring, names);
+        if (out->h5md_fields >> k & 1u)
+            return bad(c, p, "'%s' given twice", e->valuestring);
+        if (k == SCN_H5MD_IMAGE && !periodic)
+            return bad(c, p, "image (the periodic wraps) needs a periodic axis: every axis "
+                       "has walls");
+        out->h5md_fields |= 1u << k;
+    }
+    return 0;
+}
+
 static int parse_outputs(const ctx *c, const cJSON *o, scn_scenario *s)
 {
     static const char *const keys[] = {"dir", "snapshots", "xyz_every", "xyz_from", "h5md_every",
-                                       "plots",
-                                       "gif", "summary", NULL};
+                                       "h5md", "plots", "gif", "summary", NULL};
     scn_outputs *out = &s->out;
     out->plots = 1;
     out->xyz_from = s->time;
     out->gif = s->dim == 2;
     out->summary = 1;
+    parse_h5md(c, NULL, s); /* (the defaults) */
     const char *dir = "out/sim";
     if (o) {
         if (!cJSON_IsObject(o))
@@ -594,6 +662,8 @@ static int parse_outputs(const ctx *c, const cJSON *o, scn_scenario *s)
             return bad(c, "outputs.h5md_every", "gives %.3g frames from %g to %g, more than %d",
                        (s->t_end - s->time) / out->h5md_every, s->time, s->t_end,
                        SCN_MAX_FRAMES);
+        if (parse_h5md(c, cJSON_GetObjectItemCaseSensitive(o, "h5md"), s))
+            return -1;
         if (!(out->xyz_from <= s->time))
             return bad(c, "outputs.xyz_from", "must be <= the start time %.17g (the grid's "
                        "origin)", s->time);

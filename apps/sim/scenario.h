@@ -15,6 +15,12 @@
 /* Trajectory frames a run may write: bounds the output (a frame of 10^4 balls is ~1 MB) */
 #define SCN_MAX_FRAMES 100000
 
+/* The H5MD trajectory's per-frame elements (outputs.h5md.fields), in the order written;
+ * their names are scn_h5md_names'. image exists only with a periodic axis. */
+enum { SCN_H5MD_POSITION, SCN_H5MD_VELOCITY, SCN_H5MD_MASS, SCN_H5MD_REST_MASS,
+       SCN_H5MD_MOMENTUM, SCN_H5MD_PROPER_TIME, SCN_H5MD_IMAGE, SCN_H5MD_N };
+extern const char *const scn_h5md_names[SCN_H5MD_N];
+
 typedef struct scn_outputs {
     char *dir;                 /* output folder */
     size_t n_snap;             /* snapshot times (CSV), ascending */
@@ -24,6 +30,10 @@ typedef struct scn_outputs {
                                   continued run keeps the grid of the run it continues) */
     double h5md_every;         /* H5MD frame interval (frames at xyz_from + k h5md_every);
                                   0 = no trajectory.h5 */
+    unsigned h5md_fields;      /* bit (1u << SCN_H5MD_*) per element written; default all
+                                  (image only with a periodic axis) */
+    int h5md_float32;          /* per-frame values stored as float32 (else float64) */
+    int h5md_scenario;         /* the scenario's JSON text in parameters/scenario */
     int plots;                 /* trajectory PNG (and GIF for 2-D) when gnuplot exists */
     int gif;                   /* animated GIF for 2-D runs */
     int summary;               /* summary.txt */

@@ -114,6 +114,28 @@ static cJSON *header(const scn_scenario *s, double t, double t_end, int periodic
     put_num(x, "xyz_every", s->out.xyz_every);
     if (s->out.h5md_every > 0)
         put_num(x, "h5md_every", s->out.h5md_every);
+    if (s->out.h5md_every > 0) { /* (the choice of elements, when it is not the default) */
+        unsigned all = (1u << SCN_H5MD_N) - 1u;
+        int periodic = 0;
+        for (int d = 0; d < s->dim; d++)
+            periodic |= s->boundary[d] == RC_SIM_PERIODIC;
+        if (!periodic)
+            all &= ~(1u << SCN_H5MD_IMAGE);
+        if (s->out.h5md_fields != all || s->out.h5md_float32 || !s->out.h5md_scenario) {
+            cJSON *h = cJSON_CreateObject(), *f = h ? cJSON_CreateArray() : NULL;
+            put(x, "h5md", h);
+            if (f)
+                put(h, "fields", f);
+            for (int e = 0; f && e < SCN_H5MD_N; e++)
+                if (s->out.h5md_fields >> e & 1u)
+                    cJSON_AddItemToArray(f, cJSON_CreateString(scn_h5md_names[e]));
+            if (h)
+                put(h, "precision", cJSON_CreateString(s->out.h5md_float32 ? "float32"
+                                                                            : "float64"));
+            if (h)
+                put(h, "scenario", cJSON_CreateBool(s->out.h5md_scenario));
+        }
+    }
     if (s->out.xyz_every > 0 || s->out.h5md_every > 0)
         put_num(x, "xyz_from", s->out.xyz_from);
     put(x, "plots", cJSON_CreateBool(s->out.plots));

@@ -90,6 +90,20 @@ int rc_sim_get_balls(const rc_sim *s, size_t n, rc_sim_ball *out, int latest, in
     return RC_OK;
 }
 
+int rc_sim_get_balls_stored(const rc_sim *s, size_t from, size_t count, rc_sim_ball *out,
+                            size_t *id, int latest, int8_t *ahead)
+{
+    if (!s || (count && (!out || !id)) || from > s->n || count > s->n - from)
+        return RC_EINVAL;
+    for (size_t j = 0; j < count; j++) {
+        const int a = eng_ball_now(s, from + j, &out[j], !latest);
+        id[j] = s->id[from + j];
+        if (ahead)
+            ahead[j] = (int8_t)a;
+    }
+    return RC_OK;
+}
+
 int rc_sim_get_glue(const rc_sim *s, size_t i, rc_glue *out)
 {
     if (!s || !out || i >= s->n || !s->pb)

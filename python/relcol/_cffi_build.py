@@ -36,6 +36,8 @@ const rc_law *rc_law_find(const char *name);
 rc_collision_params rc_collision_params_default(void);
 const char *rc_group_rule_name(int rule);
 int rc_group_rule_find(const char *name);
+int rc_collide(const rc_law *law, const rc_collision_params *prm, rc_particle *a,
+               rc_particle *b, rc_vec3 n);
 int rc_collide_many(const rc_law *law, const rc_collision_params *prm, size_t n_pairs,
                     double *m0, rc_vec3 *p0, double *m1, rc_vec3 *p1, const rc_vec3 *n,
                     int *status, size_t *hits, size_t *bad);

@@ -52,6 +52,13 @@ def check(code, context=None, index=None):
     return code
 
 
+def check_field(code, context=None, index=None, field=None):
+    """check() naming the argument that is wrong (e.g. "m1[3]")."""
+    if code < 0:
+        raise RelcolError(code, context, index, field)
+    return code
+
+
 def shape_error(func, name, got, want):
     """ValueError naming the argument whose array has the wrong shape."""
     return ValueError("%s: %s: has shape %s, expected %s" % (func, name, tuple(got), want))

@@ -9,7 +9,7 @@ import math
 import numpy as np
 
 from ._relcol import ffi, lib
-from .errors import RelcolError, check
+from .errors import RelcolError, check, check_field, shape_error
 
 Law = collections.namedtuple("Law", "name summary uses_angle keeps_zmf_energy")
 Law.__doc__ = """A collision law of the library's table (relcol/law.h)."""
@@ -42,12 +42,24 @@ def find_law(name):
     return law
 
 
-def _vectors(a, what):
+def _vectors(a, what, func="collide"):
     a = np.asarray(a, dtype=float)
     if a.ndim not in (1, 2) or not 1 <= a.shape[-1] <= 3:
-        raise ValueError("%s: expected vectors of 1 to 3 components, shape (3,) or (N, 3), "
-                         "got shape %s" % (what, a.shape))
+        raise shape_error(func, what, a.shape, "vectors of 1 to 3 components, (d,) or (N, d)")
     return a
+
+
+def _per_pair(name, a, npair, d=None):
+    """a as a contiguous float64 array and its stride in elements a pair: 0 when one value
+    (or one vector) serves every pair, 1 (d for vectors) when there is one a pair."""
+    a = np.asarray(a, dtype=float)
+    one, each = ((), (npair,)) if d is None else ((d,), (npair, d))
+    if a.shape == one or a.shape == (1,) + one:
+        return np.ascontiguousarray(a).reshape(-1), 0
+    if a.shape == each:
+        return np.ascontiguousarray(a), 1 if d is None else d
+    raise shape_error("collide", name, a.shape, "%s or %s (one value, or one a pair)"
+                      % (one if one else "a number", each))
 
 
 def collide(m0, p0, m1, p1, n, c=math.inf, eps=1.0, law="zmf", alpha=None, azimuth=0.0):
@@ -57,92 +69,110 @@ def collide(m0, p0, m1, p1, n, c=math.inf, eps=1.0, law="zmf", alpha=None, azimu
     Vectors have 1 to 3 components (the last axis); give one pair as (d,) vectors and
     scalar masses, or N pairs as (N, d) arrays and (N,) or scalar masses (they
     broadcast). c is the speed of light (inf: classical), eps the restitution in [0, 1],
-    each one number or one per pair,
+    each one number or one per pair ((N,) arrays: they broadcast as the masses),
     law a name from laws(); alpha and azimuth the impact angle of laws that use one
     (cm-isotropic; None: the angle follows from n).
 
-    Returns Collision(m0, p0, m1, p1, collided). Invalid input raises RelcolError with
-    the library's reason and the index of the first bad pair.
+    Every pair goes through the library's rc_collide, its checks and the law's kernel,
+    in one C loop (pyrelcol.c). Returns Collision(m0, p0, m1, p1, collided). A wrong
+    shape raises ValueError naming the argument; invalid input raises RelcolError with
+    the library's reason, the first bad pair's index and the field, e.g. "m1[3]".
     """
     lw = find_law(law)
     p0, p1, n = _vectors(p0, "p0"), _vectors(p1, "p1"), _vectors(n, "n")
     d = p0.shape[-1]
-    if p1.shape[-1] != d or n.shape[-1] != d:
-        raise ValueError("p0, p1 and n must have the same number of components "
-                         "(%d, %d, %d)" % (d, p1.shape[-1], n.shape[-1]))
+    for name, v in (("p1", p1), ("n", n)):
+        if v.shape[-1] != d:
+            raise shape_error("collide", name, v.shape, "%d components like p0" % d)
     m0, m1 = np.asarray(m0, dtype=float), np.asarray(m1, dtype=float)
-    single = p0.ndim == 1 and p1.ndim == 1 and n.ndim == 1 and m0.ndim == 0 and m1.ndim == 0
-    try:
-        count = np.broadcast_shapes(m0.shape, m1.shape, p0.shape[:-1], p1.shape[:-1],
-                                    n.shape[:-1])
-    except ValueError:
-        raise ValueError("the pairs' arrays do not broadcast: m0 %s, p0 %s, m1 %s, p1 %s, "
-                         "n %s" % (m0.shape, p0.shape, m1.shape, p1.shape, n.shape)) from None
-    if len(count) > 1:
-        raise ValueError("masses must be scalars or (N,) arrays")
-    npair = count[0] if count else 1
-    # one contiguous column per quantity, as rc_collide_many takes them: copies that the
-    # library collides in place (the caller's arrays are never changed)
-    m0 = np.array(np.broadcast_to(m0, (npair,)), dtype=float, order="C")
-    m1 = np.array(np.broadcast_to(m1, (npair,)), dtype=float, order="C")
-    p0, p1 = (_columns(v, npair, d) for v in (p0, p1))
-    # the normals are only read: used as they are when they already have the layout
-    nn = n if (d == 3 and n.shape == (npair, 3) and n.flags.c_contiguous) else _columns(n, npair, d)
+    cc, ee = np.asarray(c, dtype=float), np.asarray(eps, dtype=float)
+    single = (p0.ndim == 1 and p1.ndim == 1 and n.ndim == 1 and m0.ndim == 0 and
+              m1.ndim == 0 and cc.ndim == 0 and ee.ndim == 0)
+    shapes = (("m0", m0.shape), ("m1", m1.shape), ("p0", p0.shape[:-1]),
+              ("p1", p1.shape[:-1]), ("n", n.shape[:-1]), ("c", cc.shape), ("eps", ee.shape))
+    for name, sh in shapes:
+        if len(sh) > 1:
+            raise shape_error("collide", name, sh if name in ("m0", "m1", "c", "eps") else
+                              sh + (d,), "a number or (N,)" if name in ("m0", "m1", "c", "eps")
+                              else "(d,) or (N, d)")
+    # the pairs' count: the most common length given (ties: the first), so that the odd
+    # argument out is the one named
+    lengths = [sh[0] for _, sh in shapes if sh and sh[0] != 1]
+    npair = max(lengths, key=lengths.count) if lengths else 1
+    for name, sh in shapes:
+        if sh and sh[0] not in (1, npair):
+            want = "a number or (%d,)" % npair if name in ("m0", "m1", "c", "eps") else \
+                "(%d,) or (%d, %d)" % (d, npair, d)
+            raise ValueError("collide: %s: has shape %s, expected %s like the other arrays "
+                             "(the pairs' arrays do not broadcast)" % (
+                                 name, sh if name in ("m0", "m1", "c", "eps") else sh + (d,), want))
     prm = ffi.new("rc_collision_params *", lib.rc_collision_params_default())
     # (NaN is the library's "no angle given", which is said with None here: an explicit
     # NaN is refused as relcol-collide --alpha refuses it)
     if alpha is not None and math.isnan(float(alpha)):
-        raise RelcolError(-2, "collide: alpha")
+        raise RelcolError(-2, "collide", field="alpha")
     prm.alpha = math.nan if alpha is None else float(alpha)
     prm.azimuth = float(azimuth)
-    # c and eps: one number for every pair, or one per pair (they broadcast as the masses)
-    cols = []
-    for name, v in (("c", c), ("eps", eps)):
-        a = np.asarray(v, dtype=float)
-        if a.ndim == 0:
-            cols.append((np.array([float(a)]), 0))
-        elif a.shape == (npair,) or (a.ndim == 1 and len(a) == 1):
-            cols.append((np.ascontiguousarray(np.broadcast_to(a, (npair,))), 1))
-        else:
-            raise ValueError("collide: %s: has shape %s, expected a number or (%d,) like the "
-                             "pairs" % (name, a.shape, npair))
-    (cc, sc), (ee, se) = cols
-    status = np.zeros(npair, dtype=np.intc)
+    cols = [_per_pair("c", cc, npair), _per_pair("eps", ee, npair),
+            _per_pair("m0", m0, npair), _per_pair("p0", p0, npair, d),
+            _per_pair("m1", m1, npair), _per_pair("p1", p1, npair, d),
+            _per_pair("n", n, npair, d)]
+    if cols[0][1] == 0 and cols[1][1] == 0:
+        # shared parameters checked once, by the library's batch call with no pairs: a
+        # failure is then no pair's
+        prm.c, prm.eps = float(cols[0][0][0]), float(cols[1][0][0])
+        rc = lib.rc_collide_many(lw, prm, 0, ffi.NULL, ffi.NULL, ffi.NULL, ffi.NULL, ffi.NULL,
+                                 ffi.NULL, ffi.NULL, ffi.NULL)
+        check_field(rc, "collide", None, _PARAM_FIELD.get(rc))
+    out = [np.empty(npair), np.empty((npair, d)), np.empty(npair), np.empty((npair, d))]
+    status = np.empty(npair, dtype=np.intc)
     hits = ffi.new("size_t *")
     bad = ffi.new("size_t *")
-    rc = lib.rcpy_collide_many(lw, prm, npair, ffi.from_buffer("double[]", cc), sc,
-                               ffi.from_buffer("double[]", ee), se,
-                               _buf("double[]", m0), _buf("rc_vec3[]", p0),
-                               _buf("double[]", m1), _buf("rc_vec3[]", p1),
-                               ffi.from_buffer("rc_vec3[]", nn), _buf("int[]", status), hits, bad)
+    args = []
+    for a, stride in cols:
+        args += [ffi.from_buffer("double[]", a), stride]
+    rc = lib.rcpy_collide(lw, prm, npair, d, *args, *(_buf("double[]", o) for o in out),
+                          _buf("int[]", status), hits, bad)
     if rc < 0:
-        if sc == 0 and se == 0:
-            prm.c, prm.eps = cc[0], ee[0]
-            check(rc, "collide", int(bad[0]) if npair and _params_ok(prm) else None)
-        check(rc, "collide", int(bad[0]) if npair else None)
+        i = int(bad[0])
+        check_field(rc, "collide", i, _pair_field(rc, i, cols, d))
+    m0, p0, m1, p1 = out
     collided = status == lib.RC_OK
-    if d < 3:
-        p0, p1 = p0[:, :d], p1[:, :d]
     if single:
         return Collision(m0[0], p0[0], m1[0], p1[0], bool(collided[0]))
     return Collision(m0, p0, m1, p1, collided)
 
 
+# the shared parameter each of check_params' codes points at (law_table.c)
+_PARAM_FIELD = {-6: "c", -5: "eps", -1: "alpha, azimuth"}
+
+
+def _pair_field(rc, i, cols, d):
+    """The argument of pair i that the library's code rc points at, found by the library's
+    own checks of its pieces (rc_particle_check, rc_inv_c2); None for a law's failure."""
+    (c, sc), (e, se), (m0, s0), (p0, q0), (m1, s1), (p1, q1), (n, sn) = \
+        [(np.ravel(a), stride) for a, stride in cols]
+    at = lambda name, stride: "%s[%d]" % (name, i) if stride else name
+    b = ffi.new("rc_particle *")
+    for mname, m, ms, pname, p, ps in (("m0", m0, s0, "p0", p0, q0), ("m1", m1, s1, "p1", p1, q1)):
+        b.m = m[i * ms]
+        v = list(p[i * ps:i * ps + d]) + [0.0] * (3 - d)
+        b.p.x, b.p.y, b.p.z = v
+        if lib.rc_particle_check(b) != 0:
+            return at(mname, ms) if not (math.isfinite(b.m) and b.m > 0) else at(pname, ps)
+    k = ffi.new("double *")
+    if rc == -6 or lib.rc_inv_c2(float(c[i * sc]), k) != 0:
+        return at("c", sc)
+    if rc == -5:
+        return at("eps", se)
+    if rc == -7 or (rc == -2 and not np.all(np.isfinite(n[i * sn:i * sn + d]))):
+        return at("n", sn)
+    if rc == -2:  # m^2 + p^2/c^2 or |p0 + p1|^2 overflows
+        return "%s, %s" % (at("p0", q0), at("p1", q1))
+    if rc == -1:
+        return "alpha, azimuth"
+    return None
+
+
 def _buf(ctype, a):
     return ffi.from_buffer(ctype, a, require_writable=True)
-
-
-def _columns(v, npair, d):
-    """(npair, 3) C-contiguous copy of (npair, d) or (d,) vectors, zeros beyond d."""
-    if d == 3:
-        return np.array(np.broadcast_to(v, (npair, 3)), dtype=float, order="C")
-    out = np.zeros((npair, 3))
-    out[:, :d] = v
-    return out
-
-
-def _params_ok(prm):
-    """Whether the shared parameters pass the library's checks (so that a failure is the
-    pair's): the same batch call with no pairs checks exactly those."""
-    return lib.rc_collide_many(lib.rc_law_find(b"zmf"), prm, 0, ffi.NULL, ffi.NULL, ffi.NULL,
-                               ffi.NULL, ffi.NULL, ffi.NULL, ffi.NULL, ffi.NULL) == 0

@@ -24,12 +24,18 @@ int rcpy_sim_read(rc_sim *s, int which, uint32_t slice, size_t n, int dim, doubl
 /* Every ball of s as an rc_sim_ball (n = rc_sim_count(s)), for scn_write and add(). */
 int rcpy_sim_balls(const rc_sim *s, size_t n, rc_sim_ball *out, size_t *bad);
 
-/* rc_collide_many with c and eps per pair (stride 1) or shared (stride 0): the library's
- * checks and kernels, the parameters of pair i those at c[i * c_stride], eps[i *
- * eps_stride]; the failing pair in *bad (a parameter's failure too: it is that pair's). */
-int rcpy_collide_many(const rc_law *law, const rc_collision_params *prm, size_t n_pairs,
-                      const double *c, size_t c_stride, const double *eps, size_t eps_stride,
-                      double *m0, rc_vec3 *p0, double *m1, rc_vec3 *p1, const rc_vec3 *n,
-                      int *status, size_t *hits, size_t *bad);
+/* The pairs of relcol.collide, each through the library's rc_collide (every check it
+ * makes, then the law's kernel), read from the caller's arrays and written to fresh ones
+ * in the same pass: no packed copy. Quantity q of pair i is at q[i * q_stride] (a vector's
+ * dim components from there; stride 0: one value shared by every pair); c and eps
+ * likewise. Vectors have dim (1..3) components, the rest taken as 0; out: m0o, m1o n,
+ * p0o, p1o n x dim. The first failing pair in *bad, its code returned (the pairs before it
+ * written). */
+int rcpy_collide(const rc_law *law, const rc_collision_params *prm, size_t n, int dim,
+                 const double *c, size_t c_stride, const double *eps, size_t eps_stride,
+                 const double *m0, size_t m0_stride, const double *p0, size_t p0_stride,
+                 const double *m1, size_t m1_stride, const double *p1, size_t p1_stride,
+                 const double *nrm, size_t n_stride, double *m0o, double *p0o, double *m1o,
+                 double *p1o, int *status, size_t *hits, size_t *bad);
 
 #endif

@@ -3,8 +3,9 @@
 The same work as tests/law/bench_law.c counts: 3-D, c = 1, eps = 0.8, the zmf law,
 masses log-uniform in [0.1, 10], speeds below 0.95 c, normals oriented so that every pair
 approaches; best of 7 timings of one call, pairs per second. The Python figure times the
-whole call (packing the arrays, the library's checks, the kernel, the results), from numpy
-arrays in to numpy arrays out. Usage: bench_collide.py BENCH_LAW [n_pairs [reps]].
+whole call (every pair through the library's rc_collide: its checks and the kernel, read
+from the caller's arrays and written into fresh ones), from numpy arrays in to numpy arrays
+out. Usage: bench_collide.py BENCH_LAW [n_pairs [reps]].
 Prints figures and the ratio to the C rate; the goal is >= 0.5. No verdict (exit 0)."""
 import re
 import subprocess
@@ -49,10 +50,10 @@ def main():
           % (rate_py / 1e6, 1e9 / rate_py, int(out.collided.sum())))
     print("  rc_collide_batch (C)        %8.2f M pairs/s  (bench_law, same process count)"
           % (rate_c / 1e6))
-    # the validating C entry point the package calls: what Python itself adds
+    # the library's validating batch over columns
     many = re.search(r"rc_collide_many\s+([0-9.]+) M pairs/s", text)
     if many:
-        print("  rc_collide_many (C)         %8.2f M pairs/s  (the checked entry point it calls)"
+        print("  rc_collide_many (C)         %8.2f M pairs/s  (the library's checked batch)"
               % float(many.group(1)))
     print("  ratio Python / C            %8.2f  (goal >= 0.5: %s)"
           % (rate_py / rate_c, "met" if rate_py / rate_c >= 0.5 else "NOT met"))

@@ -78,7 +78,7 @@ def test_collide_toi_soft_shapes():
     p = np.zeros((4, 3))
     with pytest.raises(ValueError, match="do not broadcast"):
         relcol.collide(np.ones(3), p, 1.0, p, np.ones((4, 3)))
-    with pytest.raises(ValueError, match="same number of components"):
+    with pytest.raises(ValueError, match=r"collide: p1: has shape \(3,\), expected 2 components"):
         relcol.collide(1.0, np.zeros(2), 1.0, np.zeros(3), np.ones(3))
     with pytest.raises(ValueError, match=r"toi: r0: has shape \(2,\)"):
         relcol.toi(np.zeros((3, 2)), [1, 1], 1, np.zeros((3, 2)), np.ones((3, 2)) * 5, 1, 1,
@@ -87,3 +87,52 @@ def test_collide_toi_soft_shapes():
         relcol.soft_collide([1, 1, 1], np.zeros((2, 2)), np.zeros((2, 2)), 1.0)
     with pytest.raises(ValueError, match=r"soft_collide: r: has shape \(3,\)"):
         relcol.soft_collide(1.0, np.zeros((2, 2)), np.zeros((2, 2)), [1, 1, 1])
+
+
+@pytest.mark.parametrize("fn", [relcol.mass_rel, relcol.gamma, relcol.velocity,
+                                relcol.kinetic_energy, relcol.momentum])
+def test_kinematics_shapes_named(fn):
+    # m of another length than p's vectors was a numpy broadcast error (or, for momentum,
+    # a silently broadcast result); a 4-component vector was taken
+    name = "v" if fn is relcol.momentum else "p"
+    with pytest.raises(ValueError, match=r"%s: m: has shape \(3,\)" % fn.__name__):
+        fn([1.0, 1.0, 1.0], np.zeros((2, 3)) + 0.1, c=1)
+    with pytest.raises(ValueError, match=r"%s: %s: has shape \(2, 4\)" % (fn.__name__, name)):
+        fn(1.0, np.zeros((2, 4)), c=1)
+    with pytest.raises(relcol.RelcolError, match=r"%s: m\[1\]: rest mass must be > 0"
+                       % fn.__name__) as e:
+        fn([1.0, -1.0], np.zeros((2, 3)) + 0.1, c=1)
+    assert e.value.field == "m[1]" and e.value.index == 1
+    with pytest.raises(relcol.RelcolError, match=r"%s: %s\[0\]: not a finite" % (fn.__name__, name)):
+        fn([1.0, 1.0], np.array([[math.nan, 0, 0], [0, 0, 0.1]]), c=1)
+
+
+def test_collide_fields_named():
+    p = np.zeros((4, 3))
+    p[:, 0] = 0.5
+    n = np.tile([1.0, 0, 0], (4, 1))
+    m = np.ones(4)
+    with pytest.raises(relcol.RelcolError, match=r"collide \(item 3\)|collide: m1\[3\]: rest mass"):
+        relcol.collide(m, p, np.array([1, 1, 1, -1.0]), -p, n, c=2)
+    cases = [(dict(m1=np.array([1, 1, 1, -1.0])), "m1[3]", "RC_EMASS"),
+             (dict(p0=np.where(np.arange(4)[:, None] == 2, np.nan, p)), "p0[2]", "RC_ENONFINITE"),
+             (dict(n=np.where(np.arange(4)[:, None] == 1, 0.0, n)), "n[1]", "RC_EZERONORMAL"),
+             (dict(c=np.array([2, -1, 2, 2.0])), "c[1]", "RC_ESPEEDOFLIGHT"),
+             (dict(eps=np.array([1, 1, 1, 1.5])), "eps[3]", "RC_ERESTITUTION"),
+             (dict(eps=1.5), "eps", "RC_ERESTITUTION"),
+             (dict(c=0.0), "c", "RC_ESPEEDOFLIGHT")]
+    for change, field, code in cases:
+        args = dict(m0=m, p0=p, m1=m, p1=-p, n=n, c=2.0, eps=1.0)
+        args.update(change)
+        with pytest.raises(relcol.RelcolError) as e:
+            relcol.collide(**args)
+        assert (e.value.field, e.value.name) == (field, code), (change, str(e.value))
+        assert field in str(e.value)
+    # c and eps as arrays: pair i equals the pair collided alone at c[i], eps[i]
+    cs, es = np.array([1.5, 3.0, np.inf, 2.0]), np.array([1.0, 0.5, 0.8, 0.0])
+    out = relcol.collide(m, p, m, -p, n, c=cs, eps=es)
+    for i in range(4):
+        one = relcol.collide(1.0, p[i], 1.0, -p[i], n[i], c=cs[i], eps=es[i])
+        assert np.array_equal(out.p0[i], one.p0) and out.m1[i] == one.m1
+    with pytest.raises(ValueError, match=r"collide: c: has shape \(3,\)"):
+        relcol.collide(m, p, m, -p, n, c=[1, 2, 3])

@@ -82,6 +82,9 @@ rc_collision_params rc_collision_params_default(void);
 int rc_collide(const rc_law *law, const rc_collision_params *prm, rc_particle *a,
                rc_particle *b, rc_vec3 n);
 
+/// rc_collide's checks of one pair beyond rc_particle_check of each ball and the parameters' (inv_c2 from rc_inv_c2): m^2 + p^2/c^2 and |p_a + p_b|^2 finite, n finite and nonzero, n made unit as rc_collide makes it.
+int rc_pair_check(const rc_particle *a, const rc_particle *b, rc_vec3 *n, double inv_c2);
+
 /// Batch of trusted pairs a[i], b[i] along unit n[i]: status[i] (may be NULL) each kernel's code; returns how many collided.
 size_t rc_collide_batch(const rc_law *law, const rc_collision_params *prm, size_t n_pairs,
                         rc_particle *a, rc_particle *b, const rc_vec3 *n, int *status);

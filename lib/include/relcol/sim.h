@@ -167,6 +167,9 @@ double rc_sim_time(const rc_sim *s);
 int rc_sim_get_ball(const rc_sim *s, size_t i, rc_sim_ball *out);
 /// Every ball at once, out[i] for i < n = rc_sim_count(s) (RC_EINVAL otherwise): rc_sim_get_ball's (latest = 0) or rc_sim_get_ball_latest's (latest != 0) states bit for bit, read in the engine's storage order; ahead (may be NULL, n entries, latest = 0) gets rc_sim_kink_ahead of each ball.
 int rc_sim_get_balls(const rc_sim *s, size_t n, rc_sim_ball *out, int latest, int8_t *ahead);
+/// rc_sim_get_balls by storage slots, unscattered: out[j] is the state (bit for bit) of caller ball id[j], held in slot from + j, for j < count (from + count <= rc_sim_count(s), RC_EINVAL otherwise); ahead (may be NULL) likewise; for readers that keep a few numbers a ball, a cached block at a time (at 1e5 balls rc_sim_get_balls' scattered writes cost a cache and TLB miss a ball).
+int rc_sim_get_balls_stored(const rc_sim *s, size_t from, size_t count, rc_sim_ball *out,
+                            size_t *id, int latest, int8_t *ahead);
 
 /// Diagnostics at the engine's time (O(N)).
 int rc_sim_diagnostics(const rc_sim *s, rc_sim_diag *d);
