@@ -287,13 +287,15 @@ int main(int argc, char **argv)
     }
 
     sim_output o;
+    /* set before the staging folder exists: once it does, a Ctrl-C is seen (and one during
+     * the opening stops the run at its start, the state written) */
+    signal(SIGINT, on_sigint);
+    signal(SIGTERM, on_sigint);
     if (simout_open(&o, &s, prog, err)) {
         rc_sim_free(&sim);
         scn_free(&s);
         return fail(1, "%s", err);
     }
-    signal(SIGINT, on_sigint);
-    signal(SIGTERM, on_sigint);
 
     if (simout_at(&o, sim, err)) { /* the state at the start: frame 0, snapshots due */
         simout_close(&o, sim, 0.0, 0, err);

@@ -244,20 +244,23 @@ grep -q 'interrupted' "$tmp/long/summary.txt" && ok "Ctrl-C: summary written" ||
 # its frames stay on the uninterrupted run's grid
 sed 's/"t_end": 40/"t_end": 300/; s/"snapshots": \[10, 20\], "xyz_every": 5/"xyz_every": 0.7/' "$tmp/run.json" > "$tmp/mid.json"
 "$sim" "$tmp/mid.json" --out "$tmp/mid-full" > /dev/null 2>&1
-# The machine's speed varies: a SIGINT that lands before relcol-sim installs its handler
-# ends it with nothing written (exit 130 too, from the shell); one after the run ends is
-# never seen. Wait longer after the first, shorter after the second, until one lands mid-run.
-i=0; st=0; d=0.03
+# relcol-sim sets its handler before it makes its staging folder DIR/.run.relcol-PID.*
+# (a SIGINT before that is lost: a background job starts with SIGINT ignored): wait for the
+# folder, then interrupt d s later; a run that ended first (exit 0) is retried sooner.
+i=0; st=0; d=0.02
 while [ $i -lt 12 ]; do
     rm -rf "$tmp/mid" "$tmp/mid.1"
     "$sim" "$tmp/mid.json" --out "$tmp/mid" > /dev/null 2> "$tmp/err" &
     pid=$!
+    k=0
+    until ls -d "$tmp"/mid/.run.relcol-* > /dev/null 2>&1 || [ $k -ge 2000 ] || ! kill -0 $pid 2>/dev/null; do
+        sleep 0.005; k=$((k + 1))
+    done
     sleep "$d"
     kill -INT $pid 2>/dev/null
     wait $pid; st=$?
     [ $st -eq 130 ] && [ -f "$tmp/mid/final.json" ] && break
-    if [ $st -eq 130 ]; then d=$(awk -v d="$d" 'BEGIN { print d * 1.6 }')
-    else d=$(awk -v d="$d" 'BEGIN { print d / 2 }'); fi
+    d=$(awk -v d="$d" 'BEGIN { print d / 2 }')
     i=$((i + 1))
 done
 if [ $st -eq 130 ] && [ -f "$tmp/mid/final.json" ]; then
