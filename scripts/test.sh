@@ -8,6 +8,8 @@ cd "$(dirname "$0")/.."
 relcol_install_packages
 dir="${RELCOL_BUILD:-build}"
 relcol_build "$dir" "$@"
-# RELCOL_TIMEOUT_MULTIPLIER stretches every test's time limit (a loaded or emulated machine)
+# RELCOL_TIMEOUT_MULTIPLIER stretches every test's time limit (a loaded or emulated machine);
+# RELCOL_TEST_ARGS goes to meson test (CI's sanitizer build: --no-suite slow)
+# shellcheck disable=SC2086
 meson test -C "$dir" --print-errorlogs --num-processes "$(nproc)" \
-    --timeout-multiplier "${RELCOL_TIMEOUT_MULTIPLIER:-1}"
+    --timeout-multiplier "${RELCOL_TIMEOUT_MULTIPLIER:-1}" ${RELCOL_TEST_ARGS:-}
