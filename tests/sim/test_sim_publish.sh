@@ -150,26 +150,32 @@ done
     ko "$bad of $kills kills left the folder not one run's whole set (A $seen_a, B $seen_b)"
 
 # 2b. kill -9 aimed at the publish itself (after its first rename, before the exit): each run is watched (aim_kill.py) until its last file is written (summary.json in
-# its staging folder), then killed after a random delay uniform over 0 .. 1.25 x the longest
-# time from there to the exit of 3 unkilled runs; tried until PUBKILLS landed there (at most
-# 4 x PUBKILLS), or 40 times without PUBKILLS
+# its staging folder), then killed after a random delay uniform over 0 .. W x the median
+# time from there to the exit of 5 unkilled runs (W from 1.25, narrowed by a tenth after a
+# kill that came too late, widened after one too early); tried until PUBKILLS landed there
+# (at most 6 x PUBKILLS), or 40 times without PUBKILLS
 aim="$(dirname "$0")/aim_kill.py" # (a busy wait in one process: a shell's poll and sleep are coarser than a small publish)
-pspan=0
-for k in 1 2 3; do
-    s=A; [ $k -eq 2 ] && s=B
+# pspan: the median of 5 unkilled runs' times from their last file to their exit
+for k in 1 2 3 4 5; do
+    s=A; [ $((k % 2)) -eq 0 ] && s=B
     read -r st pid us < <(/usr/bin/python3 "$aim" "$sim" "$tmp/$s.json" "$d" -1)
-    [ "${us:-0}" -gt $pspan ] && pspan=$us
-done
+    echo "${us:-0}"
+done | sort -n > "$tmp/pspans"
+pspan=$(sed -n 3p "$tmp/pspans")
+# (the window aimed at, in per mille of pspan: narrowed after a kill that came after the
+# exit, widened after one before the publish, so that most land in it)
+win=1250
 declare -A pwhere=([late]=0 [staged]=0 [publish]=0 [early]=0)
 pbad=0; tries=0; pa=0; pb=0
-want=${pubkills:-0}; maxtries=$((4 * want)); [ -z "$pubkills" ] && maxtries=40
+want=${pubkills:-0}; maxtries=$((6 * want)); [ -z "$pubkills" ] && maxtries=40
 while { [ -z "$pubkills" ] || [ ${pwhere[publish]} -lt "$want" ]; } && [ $tries -lt $maxtries ]; do
     tries=$((tries + 1))
     s=A; [ $((tries % 2)) -eq 0 ] && s=B
-    delay=$(( pspan * (RANDOM % 1250) / 1000 ))
+    delay=$(( pspan * (RANDOM % win) / 1000 ))
     before=$(rundirs "$d")
     read -r st pid us < <(/usr/bin/python3 "$aim" "$sim" "$tmp/$s.json" "$d" "$delay")
     w=$(landed $st $pid "$d" "$before"); pwhere[$w]=$((pwhere[$w] + 1))
+    case $w in late) win=$(( win * 9 / 10 > 50 ? win * 9 / 10 : 50 )) ;; staged) win=$(( win * 11 / 10 )) ;; esac
     if r=$(whole "$d"); then
         [ "$r" = A ] && pa=$((pa + 1)) || pb=$((pb + 1))
     else
@@ -177,7 +183,7 @@ while { [ -z "$pubkills" ] || [ ${pwhere[publish]} -lt "$want" ]; } && [ $tries 
     fi
 done
 [ $pbad -eq 0 ] && [ ${pwhere[publish]} -ge "$want" ] &&
-    ok "${pwhere[publish]} kill -9 landed in the publish (of $tries aimed at 0 .. 1.25 x its $pspan us after the run's last file; ${pwhere[staged]} before its first rename, ${pwhere[late]} after the exit, ${pwhere[early]} before the staging folder): each time one run whole ($pa A, $pb B) and its continuation accepted" ||
+    ok "${pwhere[publish]} kill -9 landed in the publish (of $tries aimed at 0 .. 1.25 x (adapted: $win per mille at the end) its median $pspan us after the run's last file; ${pwhere[staged]} before its first rename, ${pwhere[late]} after the exit, ${pwhere[early]} before the staging folder): each time one run whole ($pa A, $pb B) and its continuation accepted" ||
     ko "aimed kills: $pbad of $tries left a mix; ${pwhere[publish]} of the $want wanted landed in the publish (${pwhere[staged]} before it, ${pwhere[late]} after)"
 
 # 3. every system call of the publish failed, then killed (strace)
