@@ -2,8 +2,10 @@
 # fuzz.sh — fuzz the apps' input readers with libFuzzer under ASan and UBSan: any input
 # must be read or refused with a message, never crash, hang or hand back a bad number.
 #
-#   scripts/fuzz.sh [scenario|table|engine] [seconds]      (default: scenario, 300)
+#   scripts/fuzz.sh [scenario|table|engine] [seconds] [runs]   (default: scenario, 300)
 #
+# runs: stop after that many inputs (libFuzzer's -runs) if the time is not up first; the
+# count it ran is libFuzzer's last line ("Done N runs in S second(s)").
 # scenario: relcol-sim's scenario reader (tests/fuzz/fuzz_scenario.c; what it reads must
 # write back as a scenario that reads again), from data/scenarios/*.json with a dictionary
 # of the schema's keys. table: the CSV reader and ball rows every other app reads
@@ -20,6 +22,7 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 target=${1:-scenario}
 secs=${2:-300}
+runs=${3:--1}
 case "$target" in
 scenario) seeds=("$here"/data/scenarios/*.json); extra=("$here/apps/sim/scenario.c" "$here/apps/sim/scenario_write.c"); libs=(-lcjson) ;;
 table) seeds=("$here"/data/examples/*.csv "$here"/tests/fuzz/table-seeds/*.csv); extra=(); libs=() ;;
@@ -27,6 +30,7 @@ engine) seeds=("$here"/tests/fuzz/engine-seeds/*); extra=(); libs=() ;;
 *) echo "fuzz: target '$target': not scenario, table or engine" >&2; exit 2 ;;
 esac
 [[ "$secs" =~ ^[1-9][0-9]*$ ]] || { echo "fuzz: seconds '$secs': not a positive whole number" >&2; exit 2; }
+[[ "$runs" =~ ^(-1|[1-9][0-9]*)$ ]] || { echo "fuzz: runs '$runs': not a positive whole number" >&2; exit 2; }
 command -v clang >/dev/null || { echo "fuzz: needs clang and libFuzzer (apt-get install clang libclang-rt-14-dev)" >&2; exit 2; }
 out="$here/build-fuzz/$target"
 mkdir -p "$out/corpus"
@@ -76,4 +80,4 @@ dictarg=()
 [ "$target" = scenario ] && dictarg=(-dict="$dict")
 # allocator_may_return_null: a huge ball count must be refused as out of memory, not abort
 ASAN_OPTIONS=allocator_may_return_null=1 "./fuzz_$target" corpus "${dictarg[@]}" \
-    -max_len=4096 -timeout=60 -rss_limit_mb=2048 -max_total_time="$secs"
+    -max_len=4096 -timeout=60 -rss_limit_mb=2048 -max_total_time="$secs" -runs="$runs"

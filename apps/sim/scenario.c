@@ -493,6 +493,13 @@ static int parse_generate(const ctx *c, const cJSON *g, const cJSON *jbox, scn_s
         int st = rc_sim_gas_init(&gd, &s->box, s->balls);
         if (st == RC_ENONFINITE)
             return bad(c, "generate.v_rms", "too large: the momenta would overflow");
+        if (st == RC_ENOMEM) {
+            const size_t need = rc_sim_gas_bytes(&gd);
+            return bad(c, "generate.n", "out of memory for %zu balls: placing them needs %zu "
+                       "bytes (%.3g GiB) beside the %zu bytes (%.3g GiB) of their description",
+                       s->n, need, (double)need / 1073741824.0, s->n * sizeof *s->balls,
+                       (double)(s->n * sizeof *s->balls) / 1073741824.0);
+        }
         if (st != RC_OK)
             return bad(c, "generate", "cannot make the gas: %s", rc_strerror(st));
         if (scaled_generated(c, s, "generate.radius"))

@@ -2,6 +2,7 @@
  * checked against its balls, or its balls at its time. One place for relcol-sim and for
  * the Python package (relcol.Sim), so that both start a run, and refuse one, alike. */
 #include <errno.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -87,6 +88,33 @@ done:
     return r;
 }
 
+/* The bytes an engine of s's definition holds with the first k of its balls (0: it could
+ * not be made). */
+static size_t probe_bytes(const scn_scenario *s, size_t k)
+{
+    rc_sim_def def = scn_sim_def(s);
+    rc_sim *p = NULL;
+    size_t bad = 0, b = 0;
+    if (rc_sim_create(&def, &p) == RC_OK && rc_sim_set_time(p, s->time) == RC_OK &&
+        rc_sim_set_balls(p, k, s->balls, &bad) == RC_OK)
+        b = rc_sim_bytes(p);
+    rc_sim_free(&p);
+    return b;
+}
+
+/* About the bytes the engine needs for s's n balls (rc_sim_bytes): measured on engines of
+ * s's definition holding its first k and 2k balls -- what the box costs counted once, the
+ * rest per ball -- and extrapolated to n. 0 if those cannot be made either. */
+static size_t engine_bytes(const scn_scenario *s)
+{
+    const size_t k = s->n / 2 < 4096 ? s->n / 2 : 4096;
+    const size_t b1 = k ? probe_bytes(s, k) : 0, b2 = b1 ? probe_bytes(s, 2 * k) : 0;
+    if (!b2 || b2 < b1)
+        return 0;
+    const double need = (double)b1 + (double)(b2 - b1) / (double)k * (double)(s->n - k);
+    return need < (double)SIZE_MAX ? (size_t)need : SIZE_MAX;
+}
+
 int scn_start(rc_sim *sim, const scn_scenario *s, const char *file, char *err)
 {
     if (s->checkpoint)
@@ -97,6 +125,19 @@ int scn_start(rc_sim *sim, const scn_scenario *s, const char *file, char *err)
         st = rc_sim_set_balls(sim, s->n, s->balls, &bad);
     if (st == RC_OK)
         return 0;
+    if (st == RC_ENOMEM) { /* (not a ball's fault: the whole set's size) */
+        const size_t need = engine_bytes(s), have = s->n * sizeof *s->balls;
+        if (need)
+            app_errf(err, "%s: balls: out of memory for %zu balls: the engine needs about "
+                     "%zu bytes (%.3g GiB) for them, beside the %zu bytes (%.3g GiB) of their "
+                     "description", file, s->n, need, (double)need / 1073741824.0, have,
+                     (double)have / 1073741824.0);
+        else
+            app_errf(err, "%s: balls: out of memory for %zu balls: their description alone "
+                     "takes %zu bytes (%.3g GiB), and an engine for a few of them could not "
+                     "be made", file, s->n, have, (double)have / 1073741824.0);
+        return -1;
+    }
     app_errf(err, "%s: balls[%zu]: %s", file, bad,
              st == RC_EOVERLAP ? "overlaps another ball"
              : st == RC_EINVAL ? "the ball's shape is not inside the box"
@@ -111,8 +152,13 @@ static int save_checkpoint(const char *path, const rc_sim *sim, char *err)
     unsigned char *buf = NULL;
     app_atomic a;
     int r = -1, st = rc_sim_checkpoint_size(sim, &bytes);
-    if (st != RC_OK || !(buf = malloc(bytes ? bytes : 1))) {
-        app_errf(err, "cannot make the checkpoint: %s", st != RC_OK ? rc_strerror(st) : "out of memory");
+    if (st != RC_OK) {
+        app_errf(err, "cannot make the checkpoint: %s", rc_strerror(st));
+        goto done;
+    }
+    if (!(buf = malloc(bytes ? bytes : 1))) {
+        app_errf(err, "cannot make the checkpoint: out of memory for its %zu bytes (%.3g GiB)",
+                 bytes, (double)bytes / 1073741824.0);
         goto done;
     }
     if ((st = rc_sim_checkpoint_write(sim, buf, bytes)) != RC_OK) {
@@ -146,6 +192,12 @@ int scn_save(const char *dir, const char *name, const scn_scenario *s, const rc_
         snprintf(js, len + 6, "%s.json", name);
         ck_path = app_path_join(dir, ck);
         js_path = app_path_join(dir, js);
+    }
+    if (!b) {
+        app_errf(err, "cannot write %s.json: out of memory for a copy of its %zu balls "
+                 "(%zu bytes, %.3g GiB)", name, n, n * sizeof *b,
+                 (double)(n * sizeof *b) / 1073741824.0);
+        goto done;
     }
     if (!ck_path || !js_path) {
         app_errf(err, "out of memory");

@@ -155,31 +155,37 @@ static cJSON *header(const scn_scenario *s, double t, double t_end, int periodic
     return j;
 }
 
-static cJSON *ball(const rc_sim_ball *b, int dim, int periodic)
+/* One ball, printed straight into f: the bytes cJSON_PrintUnformatted made of the ball's
+ * object of raw %.17g numbers (so -0 stays -0 and every double reads back to its bits),
+ * without a tree of a dozen nodes and as many strings per ball (at 1e5 balls that tree
+ * cost several times the printing). Keys in the order the reader names them. */
+static void put_vec(FILE *f, const char *key, rc_vec3 v, int dim)
 {
-    cJSON *j = cJSON_CreateObject();
-    put_num(j, "r", b->r);
-    put_num(j, "m", b->m);
-    put_num(j, "tau", b->tau);
-    if (b->collided)
-        put_num(j, "tau_last", b->tau_last);
-    put(j, "x", vec(b->x, dim));
-    put(j, "p", vec(b->p, dim));
-    if (periodic) { /* (the wraps: x + image L is the unwrapped position) */
-        cJSON *a = cJSON_CreateArray();
-        put(j, "image", a);
-        for (int d = 0; a && d < dim; d++) {
-            char n[16];
-            snprintf(n, sizeof n, "%d", (int)b->image[d]);
-            cJSON_AddItemToArray(a, cJSON_CreateRaw(n));
-        }
-    }
-    return j;
+    fprintf(f, ",\"%s\":[", key);
+    for (int d = 0; d < dim; d++)
+        fprintf(f, d ? ",%.17g" : "%.17g", rc_v3_get(v, d));
+    putc(']', f);
 }
 
-/* Printed by cJSON (strings escaped by it, numbers as scn_json_number), one ball a line:
- * the balls are streamed, each its own small tree, so that a million balls never make
- * one tree of millions of nodes. */
+static void ball(FILE *f, const rc_sim_ball *b, int dim, int periodic)
+{
+    fprintf(f, "{\"r\":%.17g,\"m\":%.17g,\"tau\":%.17g", b->r, b->m, b->tau);
+    if (b->collided)
+        fprintf(f, ",\"tau_last\":%.17g", b->tau_last);
+    put_vec(f, "x", b->x, dim);
+    put_vec(f, "p", b->p, dim);
+    if (periodic) { /* (the wraps: x + image L is the unwrapped position) */
+        fputs(",\"image\":[", f);
+        for (int d = 0; d < dim; d++)
+            fprintf(f, d ? ",%d" : "%d", (int)b->image[d]);
+        putc(']', f);
+    }
+    putc('}', f);
+}
+
+/* The header printed by cJSON (strings escaped by it, numbers as scn_json_number); the
+ * balls streamed one a line by ball(), which holds only numbers, so a million balls make
+ * no tree at all. */
 int scn_write(FILE *f, const scn_scenario *s, double t, double t_end, size_t n,
               const rc_sim_ball *balls)
 {
@@ -200,13 +206,9 @@ int scn_write(FILE *f, const scn_scenario *s, double t, double t_end, size_t n,
     fprintf(f, "%s,\n \"balls\": [\n", text);
     free(text);
     for (size_t i = 0; i < n; i++) {
-        cJSON *b = ball(&balls[i], s->dim, periodic);
-        char *bt = b ? cJSON_PrintUnformatted(b) : NULL;
-        cJSON_Delete(b);
-        if (!bt)
-            return -1;
-        fprintf(f, "  %s%s\n", bt, i + 1 < n ? "," : "");
-        free(bt);
+        fputs("  ", f);
+        ball(f, &balls[i], s->dim, periodic);
+        fputs(i + 1 < n ? ",\n" : "\n", f);
     }
     fprintf(f, " ]}\n");
     return ferror(f) ? -1 : 0;

@@ -64,6 +64,25 @@ static double rms_speed(const rc_sim_ball *b, size_t n, double scale, double m, 
     return sqrt(sum / (double)n);
 }
 
+/* The lattice's side: the smallest whose side^dim sites hold n balls. */
+static size_t lattice_side(int dim, size_t n)
+{
+    size_t side = (size_t)ceil(pow((double)n, 1.0 / dim) - 1e-9);
+    while ((dim == 3 ? side * side * side : side * side) < n)
+        side++;
+    return side;
+}
+
+size_t rc_sim_gas_bytes(const rc_sim_gas_def *g)
+{
+    if (!g || (g->dim != 2 && g->dim != 3) || g->n == 0)
+        return 0;
+    const size_t side = lattice_side(g->dim, g->n);
+    const size_t sites = g->dim == 3 ? side * side * side : side * side;
+    /* the sites' permutation, and the random placement's positions where it may be taken */
+    return sites * sizeof(size_t) + (g->n <= GAS_RSA_MAX_N ? g->n * sizeof(rc_vec3) : 0);
+}
+
 int rc_sim_gas_init(const rc_sim_gas_def *g, rc_vec3 *box, rc_sim_ball *balls)
 {
     if (!g || !box || !balls)
@@ -88,9 +107,7 @@ int rc_sim_gas_init(const rc_sim_gas_def *g, rc_vec3 *box, rc_sim_ball *balls)
     const double r = g->radius;
     const double vball = dim == 3 ? 4.0 / 3.0 * M_PI * r * r * r : M_PI * r * r;
     const double L = pow((double)g->n * vball / g->packing, 1.0 / dim);
-    size_t side = (size_t)ceil(pow((double)g->n, 1.0 / dim) - 1e-9);
-    while ((dim == 3 ? side * side * side : side * side) < g->n)
-        side++;
+    const size_t side = lattice_side(dim, g->n);
     const double a = L / (double)side;
     rc_rng R = {g->seed};
     rc_vec3 *xs = NULL; /* positions placed at random, where the lattice has no room */

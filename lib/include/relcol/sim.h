@@ -202,6 +202,8 @@ typedef struct rc_sim_gas_def {
 
 /// n equal balls on random sites of a lattice filling a cubic box of the exact packing (n <= 64 without room: random placement, RC_EOVERLAP if none), isotropic momenta of rms speed v_rms and zero total; RC_EINVAL (n = 1 with v_rms > 0), RC_ENONFINITE. Melt it before measuring a fluid.
 int rc_sim_gas_init(const rc_sim_gas_def *g, rc_vec3 *box, rc_sim_ball *balls);
+/// The bytes rc_sim_gas_init takes for g beside the balls (its working memory; 0 for a g it refuses for its dim or n): what an out-of-memory refusal names.
+size_t rc_sim_gas_bytes(const rc_sim_gas_def *g);
 
 #ifdef __cplusplus
 }
