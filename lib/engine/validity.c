@@ -22,8 +22,10 @@ typedef struct val_kink {
     uint32_t node, pad;
 } val_kink;
 
-/* per caller's ball, one block of five cache lines: its kink time and velocity when last read
- * and its last VAL_DEPTH kinks (a hook prefetches it for the next flush) */
+/* per ball, at its storage slot (the hooks' b: the engine's renumbering keeps the balls of one
+ * event close, eng_validity_reorder permutes them with it), one block of five cache lines:
+ * its kink time and velocity when last read and its last VAL_DEPTH kinks (a hook prefetches
+ * it for the next flush); a checkpoint holds them in the caller's order */
 typedef struct val_ball {
     double last_t;
     rc_vec3 last_v;
@@ -51,7 +53,7 @@ typedef struct val_books {
 struct eng_validity {
     val_books k;
     val_ball *ball;
-    uint8_t *mark;  /* per caller's ball: listed in dirty */
+    uint8_t *mark;  /* per slot: listed in dirty */
     uint32_t *dirty;
     uint8_t *pol;   /* per node: an overlap-policy decision */
     val_uf all, model;
@@ -142,10 +144,9 @@ static int start(rc_sim *s)
         s->val_failed = 1;
         return RC_ENOMEM;
     }
-    for (size_t i = 0; i < s->n; i++) {
-        const uint32_t b = s->slot[i];
-        V->ball[i].last_t = s->pb->cov[b].t_k;
-        V->ball[i].last_v = s->b[b].v;
+    for (size_t b = 0; b < s->n; b++) {
+        V->ball[b].last_t = s->pb->cov[b].t_k;
+        V->ball[b].last_v = s->b[b].v;
     }
     s->val = V;
     return RC_OK;
@@ -302,9 +303,8 @@ static void flush(const rc_sim *s, eng_validity *V)
 {
     uint32_t node = VAL_NONE;
     for (size_t q = 0; q < V->k.nd; q++) {
-        const uint32_t i = V->dirty[q], b = s->slot[i];
-        val_ball *B = &V->ball[i];
-        V->mark[i] = 0;
+        const uint32_t b = V->dirty[q];
+        val_ball *B = &V->ball[b];
         const double t = s->pb->cov[b].t_k;
         const rc_vec3 v = s->b[b].v;
         if (t == B->last_t && v.x == B->last_v.x && v.y == B->last_v.y && v.z == B->last_v.z)
@@ -371,7 +371,7 @@ static void mark(rc_sim *s, int32_t b)
     eng_validity *V = enter(s);
     if (!V)
         return;
-    const uint32_t i = s->id[b];
+    const uint32_t i = (uint32_t)b;
     if (!V->mark[i]) {
         V->mark[i] = 1;
         for (size_t l = 0; l < sizeof(val_ball); l += 64)
@@ -383,6 +383,35 @@ static void mark(rc_sim *s, int32_t b)
 void eng_validity_kink(rc_sim *s, int32_t b) { mark(s, b); }
 
 void eng_validity_undone(rc_sim *s, int32_t b) { mark(s, b); }
+
+/* The engine renumbered its balls (engine/reorder.c): ball slot `from` is now inv's
+ * preimage, i.e. new slot k holds old slot inv[k]; each cycle walked as reorder.c walks it,
+ * the listed balls (an event not yet flushed) renamed in their order. done: n zeroed bytes. */
+void eng_validity_reorder(rc_sim *s, const uint32_t *np, const uint32_t *inv, unsigned char *done)
+{
+    eng_validity *V = s->val;
+    if (!V)
+        return;
+    const size_t n = (size_t)V->k.n;
+    for (size_t q = 0; q < V->k.nd; q++) {
+        V->mark[V->dirty[q]] = 0;
+        V->dirty[q] = np[V->dirty[q]];
+    }
+    for (size_t q = 0; q < V->k.nd; q++)
+        V->mark[V->dirty[q]] = 1;
+    for (size_t i = 0; i < n; i++) {
+        if (done[i])
+            continue;
+        const val_ball c = V->ball[i];
+        size_t o = i;
+        for (size_t from = inv[o]; from != i; o = from, from = inv[o]) {
+            V->ball[o] = V->ball[from];
+            done[o] = 1;
+        }
+        V->ball[o] = c;
+        done[o] = 1;
+    }
+}
 
 void eng_validity_policy(rc_sim *s)
 {
@@ -457,7 +486,8 @@ size_t eng_validity_bytes(const rc_sim *s, unsigned char *p)
     at = put(p, at, &V->k, sizeof V->k);
     const uint64_t big[2] = {V->all.big, V->model.big};
     at = put(p, at, big, sizeof big);
-    at = put(p, at, V->ball, n * sizeof *V->ball);
+    for (size_t i = 0; i < n; i++) /* (caller's order: the same bytes whatever the slots) */
+        at = put(p, at, &V->ball[s->slot[i]], sizeof *V->ball);
     at = put(p, at, V->pol, nodes);
     at = put(p, at, V->all.parent, nodes * sizeof(uint32_t));
     at = put(p, at, V->all.size, nodes * sizeof(uint32_t));
@@ -504,7 +534,20 @@ int eng_validity_read(rc_sim *s, const unsigned char *q, size_t size, size_t *us
     V->all.big = big[0];
     V->model.big = big[1];
     const size_t n = (size_t)k.n, nodes = (size_t)k.nodes;
-    int st = take(q, size, &at, V->ball, n * sizeof *V->ball) ||
+    /* caller's ball i's block to its slot k (id[k] = i): s->id is read, not yet checked */
+    int st = n * sizeof *V->ball > size - at ? RC_ECORRUPT : RC_OK;
+    for (size_t k = 0; k < n && st == RC_OK; k++) {
+        const uint32_t i = s->id[k];
+        if (i >= n || V->mark[i])
+            st = RC_ECORRUPT;
+        else {
+            V->mark[i] = 1;
+            memcpy(&V->ball[k], q + at + i * sizeof *V->ball, sizeof *V->ball);
+        }
+    }
+    memset(V->mark, 0, n ? n : 1);
+    at += st == RC_OK ? n * sizeof *V->ball : 0;
+    st = st != RC_OK ||
              take(q, size, &at, V->pol, nodes) ||
              take(q, size, &at, V->all.parent, nodes * sizeof(uint32_t)) ||
              take(q, size, &at, V->all.size, nodes * sizeof(uint32_t)) ||
