@@ -35,11 +35,12 @@ typedef struct val_ball {
 } val_ball;
 _Static_assert(sizeof(val_ball) == 320, "a ball's block is five cache lines");
 
-/* union-find over nodes: all links, and the model's (neither end a policy decision) */
-typedef struct val_uf {
-    uint32_t *parent, *size;
-    uint64_t big;
-} val_uf;
+/* a node of the two union-finds, [UF_ALL] over all links and [UF_MODEL] over the model's
+ * (neither end a policy decision): one record, so that a link's two finds share its lines */
+enum { UF_ALL, UF_MODEL };
+typedef struct val_node {
+    uint32_t up[2], size[2];
+} val_node;
 
 /* the counters and the current event, as stored in a checkpoint (no padding) */
 typedef struct val_books {
@@ -56,7 +57,8 @@ struct eng_validity {
     uint8_t *mark;  /* per slot: listed in dirty */
     uint32_t *dirty;
     uint8_t *pol;   /* per node: an overlap-policy decision */
-    val_uf all, model;
+    val_node *node; /* per node: its two union-find records */
+    uint64_t big[2]; /* per union-find: its largest cluster ever */
     int failed; /* out of memory once: the clusters are short of some events */
 };
 
@@ -80,10 +82,7 @@ static void state_free(eng_validity *V)
         free(V->mark);
         free(V->dirty);
         free(V->pol);
-        free(V->all.parent);
-        free(V->all.size);
-        free(V->model.parent);
-        free(V->model.size);
+        free(V->node);
         free(V);
     }
 }
@@ -97,14 +96,10 @@ void eng_validity_free(rc_sim *s)
 
 static int nodes_alloc(eng_validity *V, size_t cap)
 {
-    uint32_t *p[4];
-    uint32_t **f[4] = {&V->all.parent, &V->all.size, &V->model.parent, &V->model.size};
-    for (int j = 0; j < 4; j++) {
-        p[j] = realloc(*f[j], cap * sizeof *p[j]);
-        if (!p[j])
-            return RC_ENOMEM;
-        *f[j] = p[j];
-    }
+    val_node *p = realloc(V->node, cap * sizeof *p);
+    if (!p)
+        return RC_ENOMEM;
+    V->node = p;
     uint8_t *q = realloc(V->pol, cap);
     if (!q)
         return RC_ENOMEM;
@@ -152,37 +147,38 @@ static int start(rc_sim *s)
     return RC_OK;
 }
 
-static uint32_t uf_find(val_uf *u, uint32_t a)
+static uint32_t uf_find(val_node *nd, int m, uint32_t a)
 {
-    while (u->parent[a] != a) {
-        u->parent[a] = u->parent[u->parent[a]];
-        a = u->parent[a];
+    while (nd[a].up[m] != a) {
+        nd[a].up[m] = nd[nd[a].up[m]].up[m];
+        a = nd[a].up[m];
     }
     return a;
 }
 
-static void uf_union(val_uf *u, uint32_t a, uint32_t b)
+static void uf_union(eng_validity *V, int m, uint32_t a, uint32_t b)
 {
-    a = uf_find(u, a);
-    b = uf_find(u, b);
+    val_node *nd = V->node;
+    a = uf_find(nd, m, a);
+    b = uf_find(nd, m, b);
     if (a == b)
         return;
-    if (u->size[a] < u->size[b]) {
+    if (nd[a].size[m] < nd[b].size[m]) {
         const uint32_t t = a;
         a = b;
         b = t;
     }
-    u->parent[b] = a;
-    u->size[a] += u->size[b];
-    if (u->size[a] > u->big)
-        u->big = u->size[a];
+    nd[b].up[m] = a;
+    nd[a].size[m] += nd[b].size[m];
+    if (nd[a].size[m] > V->big[m])
+        V->big[m] = nd[a].size[m];
 }
 
 static void link_nodes(eng_validity *V, uint32_t a, uint32_t b)
 {
-    uf_union(&V->all, a, b);
+    uf_union(V, UF_ALL, a, b);
     if (!V->pol[a] && !V->pol[b])
-        uf_union(&V->model, a, b);
+        uf_union(V, UF_MODEL, a, b);
 }
 
 /* Keep only the nodes some ball's kinks name, renumbered in their old order; each cluster
@@ -208,8 +204,8 @@ static int compact(eng_validity *V)
     /* (the roots before anything is rewritten: finds read the old arrays) */
     for (size_t x = 0; x < nodes; x++)
         if (map[x] != VAL_NONE) {
-            rep_a[x] = uf_find(&V->all, (uint32_t)x);
-            rep_m[x] = uf_find(&V->model, (uint32_t)x);
+            rep_a[x] = uf_find(V->node, UF_ALL, (uint32_t)x);
+            rep_m[x] = uf_find(V->node, UF_MODEL, (uint32_t)x);
         }
     /* in place: new index y = map[x] <= x, so a slot is read before it is overwritten,
      * except the roots' sizes, read from their old slots first */
@@ -220,8 +216,8 @@ static int compact(eng_validity *V)
     }
     for (size_t x = 0; x < nodes; x++)
         if (map[x] != VAL_NONE) {
-            sz[2 * map[x]] = V->all.size[rep_a[x]];
-            sz[2 * map[x] + 1] = V->model.size[rep_m[x]];
+            sz[2 * map[x]] = V->node[rep_a[x]].size[UF_ALL];
+            sz[2 * map[x] + 1] = V->node[rep_m[x]].size[UF_MODEL];
         }
     /* the first live node of each old root becomes the new root */
     uint32_t *first_a = malloc(2 * (nodes ? nodes : 1) * sizeof *first_a);
@@ -242,10 +238,7 @@ static int compact(eng_validity *V)
             first_a[rep_a[x]] = y;
         if (first_m[rep_m[x]] == VAL_NONE)
             first_m[rep_m[x]] = y;
-        V->all.parent[y] = first_a[rep_a[x]];
-        V->model.parent[y] = first_m[rep_m[x]];
-        V->all.size[y] = sz[2 * y];
-        V->model.size[y] = sz[2 * y + 1];
+        V->node[y] = (val_node){{first_a[rep_a[x]], first_m[rep_m[x]]}, {sz[2 * y], sz[2 * y + 1]}};
     }
     for (size_t i = 0; i < n; i++)
         for (size_t j = 0; j < V->ball[i].hn; j++)
@@ -266,10 +259,9 @@ static uint32_t new_node(eng_validity *V, int policy)
             return VAL_NONE;
     }
     const uint32_t x = (uint32_t)V->k.nodes++;
-    V->all.parent[x] = V->model.parent[x] = x;
-    V->all.size[x] = V->model.size[x] = 1;
-    V->all.big = V->all.big ? V->all.big : 1;
-    V->model.big = V->model.big ? V->model.big : 1;
+    V->node[x] = (val_node){{x, x}, {1, 1}};
+    V->big[UF_ALL] = V->big[UF_ALL] ? V->big[UF_ALL] : 1;
+    V->big[UF_MODEL] = V->big[UF_MODEL] ? V->big[UF_MODEL] : 1;
     V->pol[x] = (uint8_t)(policy != 0);
     V->k.events++;
     return x;
@@ -446,8 +438,8 @@ int rc_sim_validity(const rc_sim *s, rc_validity *out)
         out->kinks_popped = k->popped;
         out->p_all = k->pairs ? (double)k->crossing / (double)k->pairs : 0.0;
         out->p_model = k->pairs_model ? (double)k->crossing_model / (double)k->pairs_model : 0.0;
-        out->largest_all = k->events ? (double)V->all.big / (double)k->events : 0.0;
-        out->largest_model = k->events ? (double)V->model.big / (double)k->events : 0.0;
+        out->largest_all = k->events ? (double)V->big[UF_ALL] / (double)k->events : 0.0;
+        out->largest_model = k->events ? (double)V->big[UF_MODEL] / (double)k->events : 0.0;
     }
     double rsum = 0.0;
     for (size_t j = 0; j < s->n; j++)
@@ -484,15 +476,18 @@ size_t eng_validity_bytes(const rc_sim *s, unsigned char *p)
     flush(s, V); /* (one form for one state: what a report would read) */
     const size_t n = (size_t)V->k.n, nodes = (size_t)V->k.nodes;
     at = put(p, at, &V->k, sizeof V->k);
-    const uint64_t big[2] = {V->all.big, V->model.big};
+    const uint64_t big[2] = {V->big[UF_ALL], V->big[UF_MODEL]};
     at = put(p, at, big, sizeof big);
     for (size_t i = 0; i < n; i++) /* (caller's order: the same bytes whatever the slots) */
         at = put(p, at, &V->ball[s->slot[i]], sizeof *V->ball);
     at = put(p, at, V->pol, nodes);
-    at = put(p, at, V->all.parent, nodes * sizeof(uint32_t));
-    at = put(p, at, V->all.size, nodes * sizeof(uint32_t));
-    at = put(p, at, V->model.parent, nodes * sizeof(uint32_t));
-    at = put(p, at, V->model.size, nodes * sizeof(uint32_t));
+    /* (format 16's four arrays: all's parents, sizes, the model's parents, sizes) */
+    for (int m = 0; m < 2; m++) {
+        for (size_t x = 0; x < nodes; x++)
+            at = put(p, at, &V->node[x].up[m], sizeof(uint32_t));
+        for (size_t x = 0; x < nodes; x++)
+            at = put(p, at, &V->node[x].size[m], sizeof(uint32_t));
+    }
     return at;
 }
 
@@ -531,8 +526,8 @@ int eng_validity_read(rc_sim *s, const unsigned char *q, size_t size, size_t *us
     if (!V)
         return RC_ENOMEM;
     V->k = k;
-    V->all.big = big[0];
-    V->model.big = big[1];
+    V->big[UF_ALL] = big[0];
+    V->big[UF_MODEL] = big[1];
     const size_t n = (size_t)k.n, nodes = (size_t)k.nodes;
     /* caller's ball i's block to its slot k (id[k] = i): s->id is read, not yet checked */
     int st = n * sizeof *V->ball > size - at ? RC_ECORRUPT : RC_OK;
@@ -549,12 +544,15 @@ int eng_validity_read(rc_sim *s, const unsigned char *q, size_t size, size_t *us
     at += st == RC_OK ? n * sizeof *V->ball : 0;
     st = st != RC_OK ||
              take(q, size, &at, V->pol, nodes) ||
-             take(q, size, &at, V->all.parent, nodes * sizeof(uint32_t)) ||
-             take(q, size, &at, V->all.size, nodes * sizeof(uint32_t)) ||
-             take(q, size, &at, V->model.parent, nodes * sizeof(uint32_t)) ||
-             take(q, size, &at, V->model.size, nodes * sizeof(uint32_t))
+             4 * nodes * sizeof(uint32_t) > size - at
                  ? RC_ECORRUPT
                  : RC_OK;
+    for (int m = 0; m < 2 && st == RC_OK; m++) {
+        for (size_t x = 0; x < nodes; x++)
+            (void)take(q, size, &at, &V->node[x].up[m], sizeof(uint32_t));
+        for (size_t x = 0; x < nodes; x++)
+            (void)take(q, size, &at, &V->node[x].size[m], sizeof(uint32_t));
+    }
     for (size_t i = 0; i < n && st == RC_OK; i++) {
         if (V->ball[i].hn > VAL_DEPTH)
             st = RC_ECORRUPT;
@@ -563,7 +561,7 @@ int eng_validity_read(rc_sim *s, const unsigned char *q, size_t size, size_t *us
                 st = RC_ECORRUPT;
     }
     for (size_t x = 0; x < nodes && st == RC_OK; x++)
-        if (V->all.parent[x] >= nodes || V->model.parent[x] >= nodes || V->pol[x] > 1)
+        if (V->node[x].up[UF_ALL] >= nodes || V->node[x].up[UF_MODEL] >= nodes || V->pol[x] > 1)
             st = RC_ECORRUPT;
     if (st != RC_OK) {
         state_free(V);
