@@ -19,7 +19,7 @@
 typedef struct val_kink {
     double t;
     rc_vec3 v_in, v_out;
-    uint32_t node, pad;
+    uint32_t node, pol; /* pol: its node's policy flag, kept here (a cold node's byte is a miss; a checkpoint has 0) */
 } val_kink;
 
 /* per ball, at its storage slot (the hooks' b: the engine's renumbering keeps the balls of one
@@ -174,10 +174,11 @@ static void uf_union(eng_validity *V, int m, uint32_t a, uint32_t b)
         V->big[m] = nd[a].size[m];
 }
 
-static void link_nodes(eng_validity *V, uint32_t a, uint32_t b)
+/* a and b linked; pa, pb: their policy flags */
+static void link_nodes(eng_validity *V, uint32_t a, int pa, uint32_t b, int pb)
 {
     uf_union(V, UF_ALL, a, b);
-    if (!V->pol[a] && !V->pol[b])
+    if (!pa && !pb)
         uf_union(V, UF_MODEL, a, b);
 }
 
@@ -286,6 +287,8 @@ static double cross_tau(double inv_c2, double r, rc_vec3 v0, rc_vec3 v1, rc_vec3
  * allowed in case a rebuild recomputes it */
 static int same_v(rc_vec3 a, rc_vec3 b)
 {
+    if (a.x == b.x && a.y == b.y && a.z == b.z) /* (the usual case: d = 0 below) */
+        return 1;
     const double d = rc_v3_norm(rc_v3_sub(a, b)), sc = rc_v3_norm(a) + rc_v3_norm(b);
     return d <= 1e-12 * (sc > 1e-300 ? sc : 1.0);
 }
@@ -311,7 +314,7 @@ static void flush(const rc_sim *s, eng_validity *V)
         val_kink *h = B->hk;
         const rc_vec3 vin = s->pb->glu[b].v_in;
         while (B->hn > 0 && !same_v(h[B->hn - 1].v_out, vin)) {
-            link_nodes(V, node, h[B->hn - 1].node);
+            link_nodes(V, node, V->pol[node], h[B->hn - 1].node, (int)h[B->hn - 1].pol);
             B->hn--;
             V->k.popped++;
         }
@@ -319,7 +322,7 @@ static void flush(const rc_sim *s, eng_validity *V)
             const val_kink *p = &h[B->hn - 1];
             const double g1 = 1.0 / sqrt(1.0 - rc_v3_dot(vin, vin) * s->inv_c2);
             const double dtau = (t - p->t) / g1;
-            const int model = !V->pol[node] && !V->pol[p->node];
+            const int model = !V->pol[node] && !p->pol;
             const int cross = s->pb->glu[b].r == 0.0 ||
                               !(dtau >= cross_tau(s->inv_c2, s->b[b].r, p->v_in, vin, v));
             V->k.pairs++;
@@ -327,13 +330,13 @@ static void flush(const rc_sim *s, eng_validity *V)
             V->k.crossing += (uint64_t)cross;
             V->k.crossing_model += (uint64_t)(cross && model);
             if (cross)
-                link_nodes(V, node, p->node);
+                link_nodes(V, node, V->pol[node], p->node, (int)p->pol);
         }
         if (B->hn == VAL_DEPTH) { /* (the oldest can no longer be undone) */
             memmove(h, h + 1, (VAL_DEPTH - 1) * sizeof *h);
             B->hn--;
         }
-        h[B->hn++] = (val_kink){t, vin, v, node, 0};
+        h[B->hn++] = (val_kink){t, vin, v, node, V->pol[node]};
         B->last_t = t;
         B->last_v = v;
     }
@@ -478,8 +481,12 @@ size_t eng_validity_bytes(const rc_sim *s, unsigned char *p)
     at = put(p, at, &V->k, sizeof V->k);
     const uint64_t big[2] = {V->big[UF_ALL], V->big[UF_MODEL]};
     at = put(p, at, big, sizeof big);
-    for (size_t i = 0; i < n; i++) /* (caller's order: the same bytes whatever the slots) */
-        at = put(p, at, &V->ball[s->slot[i]], sizeof *V->ball);
+    for (size_t i = 0; i < n; i++) { /* (caller's order: the same bytes whatever the slots) */
+        val_ball B = V->ball[s->slot[i]];
+        for (size_t j = 0; j < VAL_DEPTH; j++)
+            B.hk[j].pol = 0; /* (rebuilt from pol on reading) */
+        at = put(p, at, &B, sizeof B);
+    }
     at = put(p, at, V->pol, nodes);
     /* (format 16's four arrays: all's parents, sizes, the model's parents, sizes) */
     for (int m = 0; m < 2; m++) {
@@ -563,6 +570,9 @@ int eng_validity_read(rc_sim *s, const unsigned char *q, size_t size, size_t *us
     for (size_t x = 0; x < nodes && st == RC_OK; x++)
         if (V->node[x].up[UF_ALL] >= nodes || V->node[x].up[UF_MODEL] >= nodes || V->pol[x] > 1)
             st = RC_ECORRUPT;
+    for (size_t i = 0; i < n && st == RC_OK; i++)
+        for (size_t j = 0; j < V->ball[i].hn; j++)
+            V->ball[i].hk[j].pol = V->pol[V->ball[i].hk[j].node];
     if (st != RC_OK) {
         state_free(V);
         return st;
