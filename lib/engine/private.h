@@ -469,6 +469,8 @@ void eng_validity_kink(rc_sim *s, int32_t b);
 void eng_validity_policy(rc_sim *s);
 void eng_validity_undone(rc_sim *s, int32_t b);
 void eng_validity_free(rc_sim *s);
+/* the balls renumbered (engine/reorder.c): np old slot -> new, inv its inverse, done n zeroed bytes */
+void eng_validity_reorder(rc_sim *s, const uint32_t *np, const uint32_t *inv, unsigned char *done);
 /* checkpoint: the state as bytes (p NULL: only counted), and back (*used: bytes read) */
 size_t eng_validity_bytes(const rc_sim *s, unsigned char *p);
 int eng_validity_read(rc_sim *s, const unsigned char *q, size_t size, size_t *used);

@@ -128,6 +128,8 @@ void eng_reorder(rc_sim *s)
         put(s, o, &c);
         done[o] = 1;
     }
+    memset(done, 0, n);
+    eng_validity_reorder(s, np, inv, done); /* (its blocks by slot too) */
     free(inv);
     free(done);
     free(np);

@@ -19,11 +19,13 @@
 typedef struct val_kink {
     double t;
     rc_vec3 v_in, v_out;
-    uint32_t node, pad;
+    uint32_t node, pol; /* pol: its node's policy flag, kept here (a cold node's byte is a miss; a checkpoint has 0) */
 } val_kink;
 
-/* per caller's ball, one block of five cache lines: its kink time and velocity when last read
- * and its last VAL_DEPTH kinks (a hook prefetches it for the next flush) */
+/* per ball, at its storage slot (the hooks' b: the engine's renumbering keeps the balls of one
+ * event close, eng_validity_reorder permutes them with it), one block of five cache lines:
+ * its kink time and velocity when last read and its last VAL_DEPTH kinks (a hook prefetches
+ * it for the next flush); a checkpoint holds them in the caller's order */
 typedef struct val_ball {
     double last_t;
     rc_vec3 last_v;
@@ -33,11 +35,12 @@ typedef struct val_ball {
 } val_ball;
 _Static_assert(sizeof(val_ball) == 320, "a ball's block is five cache lines");
 
-/* union-find over nodes: all links, and the model's (neither end a policy decision) */
-typedef struct val_uf {
-    uint32_t *parent, *size;
-    uint64_t big;
-} val_uf;
+/* a node of the two union-finds, [UF_ALL] over all links and [UF_MODEL] over the model's
+ * (neither end a policy decision): one record, so that a link's two finds share its lines */
+enum { UF_ALL, UF_MODEL };
+typedef struct val_node {
+    uint32_t up[2], size[2];
+} val_node;
 
 /* the counters and the current event, as stored in a checkpoint (no padding) */
 typedef struct val_books {
@@ -51,10 +54,11 @@ typedef struct val_books {
 struct eng_validity {
     val_books k;
     val_ball *ball;
-    uint8_t *mark;  /* per caller's ball: listed in dirty */
+    uint8_t *mark;  /* per slot: listed in dirty */
     uint32_t *dirty;
     uint8_t *pol;   /* per node: an overlap-policy decision */
-    val_uf all, model;
+    val_node *node; /* per node: its two union-find records */
+    uint64_t big[2]; /* per union-find: its largest cluster ever */
     int failed; /* out of memory once: the clusters are short of some events */
 };
 
@@ -78,10 +82,7 @@ static void state_free(eng_validity *V)
         free(V->mark);
         free(V->dirty);
         free(V->pol);
-        free(V->all.parent);
-        free(V->all.size);
-        free(V->model.parent);
-        free(V->model.size);
+        free(V->node);
         free(V);
     }
 }
@@ -95,14 +96,10 @@ void eng_validity_free(rc_sim *s)
 
 static int nodes_alloc(eng_validity *V, size_t cap)
 {
-    uint32_t *p[4];
-    uint32_t **f[4] = {&V->all.parent, &V->all.size, &V->model.parent, &V->model.size};
-    for (int j = 0; j < 4; j++) {
-        p[j] = realloc(*f[j], cap * sizeof *p[j]);
-        if (!p[j])
-            return RC_ENOMEM;
-        *f[j] = p[j];
-    }
+    val_node *p = realloc(V->node, cap * sizeof *p);
+    if (!p)
+        return RC_ENOMEM;
+    V->node = p;
     uint8_t *q = realloc(V->pol, cap);
     if (!q)
         return RC_ENOMEM;
@@ -142,46 +139,47 @@ static int start(rc_sim *s)
         s->val_failed = 1;
         return RC_ENOMEM;
     }
-    for (size_t i = 0; i < s->n; i++) {
-        const uint32_t b = s->slot[i];
-        V->ball[i].last_t = s->pb->cov[b].t_k;
-        V->ball[i].last_v = s->b[b].v;
+    for (size_t b = 0; b < s->n; b++) {
+        V->ball[b].last_t = s->pb->cov[b].t_k;
+        V->ball[b].last_v = s->b[b].v;
     }
     s->val = V;
     return RC_OK;
 }
 
-static uint32_t uf_find(val_uf *u, uint32_t a)
+static uint32_t uf_find(val_node *nd, int m, uint32_t a)
 {
-    while (u->parent[a] != a) {
-        u->parent[a] = u->parent[u->parent[a]];
-        a = u->parent[a];
+    while (nd[a].up[m] != a) {
+        nd[a].up[m] = nd[nd[a].up[m]].up[m];
+        a = nd[a].up[m];
     }
     return a;
 }
 
-static void uf_union(val_uf *u, uint32_t a, uint32_t b)
+static void uf_union(eng_validity *V, int m, uint32_t a, uint32_t b)
 {
-    a = uf_find(u, a);
-    b = uf_find(u, b);
+    val_node *nd = V->node;
+    a = uf_find(nd, m, a);
+    b = uf_find(nd, m, b);
     if (a == b)
         return;
-    if (u->size[a] < u->size[b]) {
+    if (nd[a].size[m] < nd[b].size[m]) {
         const uint32_t t = a;
         a = b;
         b = t;
     }
-    u->parent[b] = a;
-    u->size[a] += u->size[b];
-    if (u->size[a] > u->big)
-        u->big = u->size[a];
+    nd[b].up[m] = a;
+    nd[a].size[m] += nd[b].size[m];
+    if (nd[a].size[m] > V->big[m])
+        V->big[m] = nd[a].size[m];
 }
 
-static void link_nodes(eng_validity *V, uint32_t a, uint32_t b)
+/* a and b linked; pa, pb: their policy flags */
+static void link_nodes(eng_validity *V, uint32_t a, int pa, uint32_t b, int pb)
 {
-    uf_union(&V->all, a, b);
-    if (!V->pol[a] && !V->pol[b])
-        uf_union(&V->model, a, b);
+    uf_union(V, UF_ALL, a, b);
+    if (!pa && !pb)
+        uf_union(V, UF_MODEL, a, b);
 }
 
 /* Keep only the nodes some ball's kinks name, renumbered in their old order; each cluster
@@ -207,8 +205,8 @@ static int compact(eng_validity *V)
     /* (the roots before anything is rewritten: finds read the old arrays) */
     for (size_t x = 0; x < nodes; x++)
         if (map[x] != VAL_NONE) {
-            rep_a[x] = uf_find(&V->all, (uint32_t)x);
-            rep_m[x] = uf_find(&V->model, (uint32_t)x);
+            rep_a[x] = uf_find(V->node, UF_ALL, (uint32_t)x);
+            rep_m[x] = uf_find(V->node, UF_MODEL, (uint32_t)x);
         }
     /* in place: new index y = map[x] <= x, so a slot is read before it is overwritten,
      * except the roots' sizes, read from their old slots first */
@@ -219,8 +217,8 @@ static int compact(eng_validity *V)
     }
     for (size_t x = 0; x < nodes; x++)
         if (map[x] != VAL_NONE) {
-            sz[2 * map[x]] = V->all.size[rep_a[x]];
-            sz[2 * map[x] + 1] = V->model.size[rep_m[x]];
+            sz[2 * map[x]] = V->node[rep_a[x]].size[UF_ALL];
+            sz[2 * map[x] + 1] = V->node[rep_m[x]].size[UF_MODEL];
         }
     /* the first live node of each old root becomes the new root */
     uint32_t *first_a = malloc(2 * (nodes ? nodes : 1) * sizeof *first_a);
@@ -241,10 +239,7 @@ static int compact(eng_validity *V)
             first_a[rep_a[x]] = y;
         if (first_m[rep_m[x]] == VAL_NONE)
             first_m[rep_m[x]] = y;
-        V->all.parent[y] = first_a[rep_a[x]];
-        V->model.parent[y] = first_m[rep_m[x]];
-        V->all.size[y] = sz[2 * y];
-        V->model.size[y] = sz[2 * y + 1];
+        V->node[y] = (val_node){{first_a[rep_a[x]], first_m[rep_m[x]]}, {sz[2 * y], sz[2 * y + 1]}};
     }
     for (size_t i = 0; i < n; i++)
         for (size_t j = 0; j < V->ball[i].hn; j++)
@@ -265,10 +260,9 @@ static uint32_t new_node(eng_validity *V, int policy)
             return VAL_NONE;
     }
     const uint32_t x = (uint32_t)V->k.nodes++;
-    V->all.parent[x] = V->model.parent[x] = x;
-    V->all.size[x] = V->model.size[x] = 1;
-    V->all.big = V->all.big ? V->all.big : 1;
-    V->model.big = V->model.big ? V->model.big : 1;
+    V->node[x] = (val_node){{x, x}, {1, 1}};
+    V->big[UF_ALL] = V->big[UF_ALL] ? V->big[UF_ALL] : 1;
+    V->big[UF_MODEL] = V->big[UF_MODEL] ? V->big[UF_MODEL] : 1;
     V->pol[x] = (uint8_t)(policy != 0);
     V->k.events++;
     return x;
@@ -293,6 +287,8 @@ static double cross_tau(double inv_c2, double r, rc_vec3 v0, rc_vec3 v1, rc_vec3
  * allowed in case a rebuild recomputes it */
 static int same_v(rc_vec3 a, rc_vec3 b)
 {
+    if (a.x == b.x && a.y == b.y && a.z == b.z) /* (the usual case: d = 0 below) */
+        return 1;
     const double d = rc_v3_norm(rc_v3_sub(a, b)), sc = rc_v3_norm(a) + rc_v3_norm(b);
     return d <= 1e-12 * (sc > 1e-300 ? sc : 1.0);
 }
@@ -302,9 +298,8 @@ static void flush(const rc_sim *s, eng_validity *V)
 {
     uint32_t node = VAL_NONE;
     for (size_t q = 0; q < V->k.nd; q++) {
-        const uint32_t i = V->dirty[q], b = s->slot[i];
-        val_ball *B = &V->ball[i];
-        V->mark[i] = 0;
+        const uint32_t b = V->dirty[q];
+        val_ball *B = &V->ball[b];
         const double t = s->pb->cov[b].t_k;
         const rc_vec3 v = s->b[b].v;
         if (t == B->last_t && v.x == B->last_v.x && v.y == B->last_v.y && v.z == B->last_v.z)
@@ -319,7 +314,7 @@ static void flush(const rc_sim *s, eng_validity *V)
         val_kink *h = B->hk;
         const rc_vec3 vin = s->pb->glu[b].v_in;
         while (B->hn > 0 && !same_v(h[B->hn - 1].v_out, vin)) {
-            link_nodes(V, node, h[B->hn - 1].node);
+            link_nodes(V, node, V->pol[node], h[B->hn - 1].node, (int)h[B->hn - 1].pol);
             B->hn--;
             V->k.popped++;
         }
@@ -327,7 +322,7 @@ static void flush(const rc_sim *s, eng_validity *V)
             const val_kink *p = &h[B->hn - 1];
             const double g1 = 1.0 / sqrt(1.0 - rc_v3_dot(vin, vin) * s->inv_c2);
             const double dtau = (t - p->t) / g1;
-            const int model = !V->pol[node] && !V->pol[p->node];
+            const int model = !V->pol[node] && !p->pol;
             const int cross = s->pb->glu[b].r == 0.0 ||
                               !(dtau >= cross_tau(s->inv_c2, s->b[b].r, p->v_in, vin, v));
             V->k.pairs++;
@@ -335,13 +330,13 @@ static void flush(const rc_sim *s, eng_validity *V)
             V->k.crossing += (uint64_t)cross;
             V->k.crossing_model += (uint64_t)(cross && model);
             if (cross)
-                link_nodes(V, node, p->node);
+                link_nodes(V, node, V->pol[node], p->node, (int)p->pol);
         }
         if (B->hn == VAL_DEPTH) { /* (the oldest can no longer be undone) */
             memmove(h, h + 1, (VAL_DEPTH - 1) * sizeof *h);
             B->hn--;
         }
-        h[B->hn++] = (val_kink){t, vin, v, node, 0};
+        h[B->hn++] = (val_kink){t, vin, v, node, V->pol[node]};
         B->last_t = t;
         B->last_v = v;
     }
@@ -371,7 +366,7 @@ static void mark(rc_sim *s, int32_t b)
     eng_validity *V = enter(s);
     if (!V)
         return;
-    const uint32_t i = s->id[b];
+    const uint32_t i = (uint32_t)b;
     if (!V->mark[i]) {
         V->mark[i] = 1;
         for (size_t l = 0; l < sizeof(val_ball); l += 64)
@@ -383,6 +378,35 @@ static void mark(rc_sim *s, int32_t b)
 void eng_validity_kink(rc_sim *s, int32_t b) { mark(s, b); }
 
 void eng_validity_undone(rc_sim *s, int32_t b) { mark(s, b); }
+
+/* The engine renumbered its balls (engine/reorder.c): ball slot `from` is now inv's
+ * preimage, i.e. new slot k holds old slot inv[k]; each cycle walked as reorder.c walks it,
+ * the listed balls (an event not yet flushed) renamed in their order. done: n zeroed bytes. */
+void eng_validity_reorder(rc_sim *s, const uint32_t *np, const uint32_t *inv, unsigned char *done)
+{
+    eng_validity *V = s->val;
+    if (!V)
+        return;
+    const size_t n = (size_t)V->k.n;
+    for (size_t q = 0; q < V->k.nd; q++) {
+        V->mark[V->dirty[q]] = 0;
+        V->dirty[q] = np[V->dirty[q]];
+    }
+    for (size_t q = 0; q < V->k.nd; q++)
+        V->mark[V->dirty[q]] = 1;
+    for (size_t i = 0; i < n; i++) {
+        if (done[i])
+            continue;
+        const val_ball c = V->ball[i];
+        size_t o = i;
+        for (size_t from = inv[o]; from != i; o = from, from = inv[o]) {
+            V->ball[o] = V->ball[from];
+            done[o] = 1;
+        }
+        V->ball[o] = c;
+        done[o] = 1;
+    }
+}
 
 void eng_validity_policy(rc_sim *s)
 {
@@ -417,8 +441,8 @@ int rc_sim_validity(const rc_sim *s, rc_validity *out)
         out->kinks_popped = k->popped;
         out->p_all = k->pairs ? (double)k->crossing / (double)k->pairs : 0.0;
         out->p_model = k->pairs_model ? (double)k->crossing_model / (double)k->pairs_model : 0.0;
-        out->largest_all = k->events ? (double)V->all.big / (double)k->events : 0.0;
-        out->largest_model = k->events ? (double)V->model.big / (double)k->events : 0.0;
+        out->largest_all = k->events ? (double)V->big[UF_ALL] / (double)k->events : 0.0;
+        out->largest_model = k->events ? (double)V->big[UF_MODEL] / (double)k->events : 0.0;
     }
     double rsum = 0.0;
     for (size_t j = 0; j < s->n; j++)
@@ -455,14 +479,22 @@ size_t eng_validity_bytes(const rc_sim *s, unsigned char *p)
     flush(s, V); /* (one form for one state: what a report would read) */
     const size_t n = (size_t)V->k.n, nodes = (size_t)V->k.nodes;
     at = put(p, at, &V->k, sizeof V->k);
-    const uint64_t big[2] = {V->all.big, V->model.big};
+    const uint64_t big[2] = {V->big[UF_ALL], V->big[UF_MODEL]};
     at = put(p, at, big, sizeof big);
-    at = put(p, at, V->ball, n * sizeof *V->ball);
+    for (size_t i = 0; i < n; i++) { /* (caller's order: the same bytes whatever the slots) */
+        val_ball B = V->ball[s->slot[i]];
+        for (size_t j = 0; j < VAL_DEPTH; j++)
+            B.hk[j].pol = 0; /* (rebuilt from pol on reading) */
+        at = put(p, at, &B, sizeof B);
+    }
     at = put(p, at, V->pol, nodes);
-    at = put(p, at, V->all.parent, nodes * sizeof(uint32_t));
-    at = put(p, at, V->all.size, nodes * sizeof(uint32_t));
-    at = put(p, at, V->model.parent, nodes * sizeof(uint32_t));
-    at = put(p, at, V->model.size, nodes * sizeof(uint32_t));
+    /* (format 16's four arrays: all's parents, sizes, the model's parents, sizes) */
+    for (int m = 0; m < 2; m++) {
+        for (size_t x = 0; x < nodes; x++)
+            at = put(p, at, &V->node[x].up[m], sizeof(uint32_t));
+        for (size_t x = 0; x < nodes; x++)
+            at = put(p, at, &V->node[x].size[m], sizeof(uint32_t));
+    }
     return at;
 }
 
@@ -501,17 +533,33 @@ int eng_validity_read(rc_sim *s, const unsigned char *q, size_t size, size_t *us
     if (!V)
         return RC_ENOMEM;
     V->k = k;
-    V->all.big = big[0];
-    V->model.big = big[1];
+    V->big[UF_ALL] = big[0];
+    V->big[UF_MODEL] = big[1];
     const size_t n = (size_t)k.n, nodes = (size_t)k.nodes;
-    int st = take(q, size, &at, V->ball, n * sizeof *V->ball) ||
+    /* caller's ball i's block to its slot k (id[k] = i): s->id is read, not yet checked */
+    int st = n * sizeof *V->ball > size - at ? RC_ECORRUPT : RC_OK;
+    for (size_t k = 0; k < n && st == RC_OK; k++) {
+        const uint32_t i = s->id[k];
+        if (i >= n || V->mark[i])
+            st = RC_ECORRUPT;
+        else {
+            V->mark[i] = 1;
+            memcpy(&V->ball[k], q + at + i * sizeof *V->ball, sizeof *V->ball);
+        }
+    }
+    memset(V->mark, 0, n ? n : 1);
+    at += st == RC_OK ? n * sizeof *V->ball : 0;
+    st = st != RC_OK ||
              take(q, size, &at, V->pol, nodes) ||
-             take(q, size, &at, V->all.parent, nodes * sizeof(uint32_t)) ||
-             take(q, size, &at, V->all.size, nodes * sizeof(uint32_t)) ||
-             take(q, size, &at, V->model.parent, nodes * sizeof(uint32_t)) ||
-             take(q, size, &at, V->model.size, nodes * sizeof(uint32_t))
+             4 * nodes * sizeof(uint32_t) > size - at
                  ? RC_ECORRUPT
                  : RC_OK;
+    for (int m = 0; m < 2 && st == RC_OK; m++) {
+        for (size_t x = 0; x < nodes; x++)
+            (void)take(q, size, &at, &V->node[x].up[m], sizeof(uint32_t));
+        for (size_t x = 0; x < nodes; x++)
+            (void)take(q, size, &at, &V->node[x].size[m], sizeof(uint32_t));
+    }
     for (size_t i = 0; i < n && st == RC_OK; i++) {
         if (V->ball[i].hn > VAL_DEPTH)
             st = RC_ECORRUPT;
@@ -520,8 +568,11 @@ int eng_validity_read(rc_sim *s, const unsigned char *q, size_t size, size_t *us
                 st = RC_ECORRUPT;
     }
     for (size_t x = 0; x < nodes && st == RC_OK; x++)
-        if (V->all.parent[x] >= nodes || V->model.parent[x] >= nodes || V->pol[x] > 1)
+        if (V->node[x].up[UF_ALL] >= nodes || V->node[x].up[UF_MODEL] >= nodes || V->pol[x] > 1)
             st = RC_ECORRUPT;
+    for (size_t i = 0; i < n && st == RC_OK; i++)
+        for (size_t j = 0; j < V->ball[i].hn; j++)
+            V->ball[i].hk[j].pol = V->pol[V->ball[i].hk[j].node];
     if (st != RC_OK) {
         state_free(V);
         return st;
