@@ -1,8 +1,9 @@
 """Two-ball collisions over numpy arrays of pairs, through the library's law table.
 
-collide() copies each quantity into one contiguous column and makes one call,
-rc_collide_many, which checks every pair as rc_collide does and runs the law's kernel over
-all of them in place: the per-pair cost is the C kernel's, not Python's."""
+collide() makes one C call over the caller's arrays at their strides (pyrelcol.c; with
+shared c and eps the library's rc_collide_columns, which checks a block of pairs at a time
+as rc_collide does, branch-free, then runs the law's kernel over it) into one output
+block: the per-pair cost is the C loop's, not Python's."""
 import collections
 import math
 import sys
