@@ -41,6 +41,8 @@ static int check_params(const rc_collision_params *prm, double *inv_c2)
     return RC_OK;
 }
 
+static inline int unit_normal(rc_vec3 *n);
+
 /* The checks of one pair whose particles passed rc_particle_check, and its normal
  * made unit. */
 static int check_pair(const rc_particle *a, const rc_particle *b, rc_vec3 *n, double k)
@@ -53,6 +55,12 @@ static int check_pair(const rc_particle *a, const rc_particle *b, rc_vec3 *n, do
         return RC_ENONFINITE;
     if (!rc_v3_isfinite(*n))
         return RC_ENONFINITE;
+    return unit_normal(n);
+}
+
+/* A finite normal made unit as rc_collide makes it (RC_EZERONORMAL for 0). */
+static inline int unit_normal(rc_vec3 *n)
+{
     /* (any finite length: a normal of 1e300 or 1e-300 is a direction like any other; one
      * of length exactly 1 is already what rc_v3_unit would make of it) */
     const double n2 = rc_v3_norm2(*n);
@@ -149,6 +157,102 @@ int rc_collide_many(const rc_law *law, const rc_collision_params *prm, size_t n_
         h += (r == RC_OK);
         if (status)
             status[i] = r;
+    }
+    if (hits)
+        *hits = h;
+    return st;
+}
+
+/* Pairs checked at a time: the block's branch-free pass stays in the cache for its
+ * kernels. */
+#define COLUMNS_BLOCK 256
+
+static inline rc_vec3 load3(const double *v, int dim)
+{
+    return rc_v3(v[0], dim > 1 ? v[1] : 0.0, dim > 2 ? v[2] : 0.0);
+}
+
+static inline void store3(double *out, rc_vec3 v, int dim)
+{
+    out[0] = v.x;
+    if (dim > 1)
+        out[1] = v.y;
+    if (dim > 2)
+        out[2] = v.z;
+}
+
+static inline int finite3(rc_vec3 v) { return isfinite(v.x) & isfinite(v.y) & isfinite(v.z); }
+
+/* 1 when every pair of [from, from + count) passes rc_collide's checks (particles, pair,
+ * normal nonzero), by one branch-free pass (no early exit: the compiler may vectorise);
+ * 0 means some pair fails, found again pair by pair with the exact checks. */
+static int block_ok(size_t from, size_t count, int dim, double k, const double *m0, size_t s0,
+                    const double *p0, size_t q0, const double *m1, size_t s1, const double *p1,
+                    size_t q1, const double *nrm, size_t sn)
+{
+    int ok = 1;
+    for (size_t i = from; i < from + count; i++) {
+        const double ma = m0[i * s0], mb = m1[i * s1];
+        const rc_vec3 pa = load3(p0 + i * q0, dim), pb = load3(p1 + i * q1, dim);
+        const rc_vec3 n = load3(nrm + i * sn, dim);
+        ok &= isfinite(ma) & isfinite(mb) & (ma > 0.0) & (mb > 0.0) & finite3(pa) &
+              finite3(pb) & isfinite(ma * ma + rc_v3_norm2(pa) * k) &
+              isfinite(mb * mb + rc_v3_norm2(pb) * k) & isfinite(rc_v3_norm2(rc_v3_add(pa, pb))) &
+              finite3(n) & ((n.x != 0.0) | (n.y != 0.0) | (n.z != 0.0));
+    }
+    return ok;
+}
+
+int rc_collide_columns(const rc_law *law, const rc_collision_params *prm, size_t n_pairs,
+                       int dim, const double *m0, size_t m0_stride, const double *p0,
+                       size_t p0_stride, const double *m1, size_t m1_stride, const double *p1,
+                       size_t p1_stride, const double *nrm, size_t n_stride, double *m0o,
+                       double *p0o, double *m1o, double *p1o, int *status, size_t *hits,
+                       size_t *bad)
+{
+    if (hits)
+        *hits = 0;
+    if (bad)
+        *bad = 0;
+    if (!law || !law->collide || !prm || dim < 1 || dim > 3 ||
+        (n_pairs && (!m0 || !p0 || !m1 || !p1 || !nrm || !m0o || !p0o || !m1o || !p1o)))
+        return RC_EINVAL;
+    double k;
+    int st = check_params(prm, &k);
+    if (st != RC_OK)
+        return st;
+    const rc_law_fn f = law->collide;
+    size_t h = 0;
+    for (size_t from = 0; from < n_pairs && st == RC_OK; from += COLUMNS_BLOCK) {
+        const size_t count = n_pairs - from < COLUMNS_BLOCK ? n_pairs - from : COLUMNS_BLOCK;
+        const int checked = block_ok(from, count, dim, k, m0, m0_stride, p0, p0_stride, m1,
+                                     m1_stride, p1, p1_stride, nrm, n_stride);
+        for (size_t i = from; i < from + count; i++) {
+            rc_particle a = {m0[i * m0_stride], load3(p0 + i * p0_stride, dim)};
+            rc_particle b = {m1[i * m1_stride], load3(p1 + i * p1_stride, dim)};
+            rc_vec3 ni = load3(nrm + i * n_stride, dim);
+            int r;
+            if (checked ? (r = unit_normal(&ni)) != RC_OK
+                        : ((r = rc_particle_check(&a)) != RC_OK ||
+                           (r = rc_particle_check(&b)) != RC_OK ||
+                           (r = check_pair(&a, &b, &ni, k)) != RC_OK)) {
+                st = r;
+            } else if ((r = f(prm, &a, &b, ni)) < 0) {
+                st = r;
+            }
+            if (st != RC_OK) {
+                if (bad)
+                    *bad = i;
+                break;
+            }
+            m0o[i] = a.m;
+            m1o[i] = b.m;
+            store3(p0o + i * (size_t)dim, a.p, dim);
+            store3(p1o + i * (size_t)dim, b.p, dim);
+            if (status)
+                status[i] = r;
+            h += r == RC_OK;
+        }
     }
     if (hits)
         *hits = h;

@@ -7,6 +7,34 @@
 #include "path.h"
 #include "relcol/status.h"
 
+/* Periodic axes: x put in [0, L) (a ball exactly at its wrap, not yet processed, may lie
+ * a rounding error outside), with the wrap counted in image from the stored img. */
+static inline void wrap(const rc_sim *s, const int32_t *img, rc_vec3 *xo, int32_t image[3])
+{
+    for (int d = 0; d < 3; d++) {
+        image[d] = 0;
+        if (!s->img || s->walled >> d & 1u || d >= s->def.dim)
+            continue;
+        int32_t im = img[d];
+        double x = rc_v3_get(*xo, d);
+        const double L = s->L[d];
+        if (x >= L) {
+            x -= L;
+            im++;
+        } else if (x < 0.0) {
+            const double y = x + L;
+            if (y < L) {
+                x = y;
+                im--;
+            } else {
+                x = 0.0; /* (within half an ulp of L below 0) */
+            }
+        }
+        rc_v3_set(xo, d, x);
+        image[d] = im;
+    }
+}
+
 int eng_ball_now(const rc_sim *s, size_t i, rc_sim_ball *o, int truth)
 {
     return eng_ball_at(s, i, s->now, o, truth);
@@ -33,30 +61,7 @@ int eng_ball_at(const rc_sim *s, size_t i, double t, rc_sim_ball *o, int truth)
     }
     const int32_t *img = s->img ? s->img + 3 * i : NULL;
     const int ahead = truth && s->model->ball_at ? s->model->ball_at(s, i, t, o, &img) : 0;
-    for (int d = 0; d < 3; d++) {
-        o->image[d] = 0;
-        if (!s->img || s->walled >> d & 1u || d >= s->def.dim)
-            continue;
-        /* periodic: in [0, L) (a ball exactly at its wrap, not yet processed, may lie a
-         * rounding error outside), with the wrap counted */
-        int32_t im = img[d];
-        double x = rc_v3_get(o->x, d);
-        const double L = s->L[d];
-        if (x >= L) {
-            x -= L;
-            im++;
-        } else if (x < 0.0) {
-            const double y = x + L;
-            if (y < L) {
-                x = y;
-                im--;
-            } else {
-                x = 0.0; /* (within half an ulp of L below 0) */
-            }
-        }
-        rc_v3_set(&o->x, d, x);
-        o->image[d] = im;
-    }
+    wrap(s, img, &o->x, o->image);
     return ahead;
 }
 
@@ -100,6 +105,33 @@ int rc_sim_get_balls_stored(const rc_sim *s, size_t from, size_t count, rc_sim_b
         id[j] = s->id[from + j];
         if (ahead)
             ahead[j] = (int8_t)a;
+    }
+    return RC_OK;
+}
+
+int rc_sim_get_positions(const rc_sim *s, size_t n, int dim, double *x, int latest)
+{
+    if (!s || (n && !x) || n != s->n || dim != s->def.dim)
+        return RC_EINVAL;
+    /* the full read's centres without its proper time (a square root and a division a
+     * ball): a curved path or a per-ball frame's kinks ahead take the full read */
+    const int full = s->path->ball_at || (!latest && s->model->ball_at);
+    for (size_t k = 0; k < n; k++) {
+        rc_vec3 c;
+        int32_t image[3];
+        if (full) {
+            rc_sim_ball o;
+            eng_ball_now(s, k, &o, !latest);
+            c = o.x;
+        } else {
+            const eng_ball *b = &s->b[k];
+            const double h = s->now - b->t;
+            c = h == 0.0 ? b->x : rc_v3_axpy(b->x, h, b->v);
+            wrap(s, s->img ? s->img + 3 * k : NULL, &c, image);
+        }
+        double *to = x + s->id[k] * (size_t)dim;
+        for (int d = 0; d < dim; d++)
+            to[d] = rc_v3_get(c, d);
     }
     return RC_OK;
 }

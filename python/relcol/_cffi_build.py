@@ -115,6 +115,7 @@ size_t rc_sim_count(const rc_sim *s);
 double rc_sim_time(const rc_sim *s);
 int rc_sim_get_ball(const rc_sim *s, size_t i, rc_sim_ball *out);
 int rc_sim_get_ball_latest(const rc_sim *s, size_t i, rc_sim_ball *out);
+int rc_sim_get_positions(const rc_sim *s, size_t n, int dim, double *x, int latest);
 int rc_sim_kink_ahead(const rc_sim *s, size_t i);
 typedef struct rc_sim_slice_info {
     double ts; double t_final; int final; uint64_t late; double reach;

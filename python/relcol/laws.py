@@ -1,10 +1,12 @@
 """Two-ball collisions over numpy arrays of pairs, through the library's law table.
 
-collide() copies each quantity into one contiguous column and makes one call,
-rc_collide_many, which checks every pair as rc_collide does and runs the law's kernel over
-all of them in place: the per-pair cost is the C kernel's, not Python's."""
+collide() makes one C call over the caller's arrays at their strides (pyrelcol.c; with
+shared c and eps the library's rc_collide_columns, which checks a block of pairs at a time
+as rc_collide does, branch-free, then runs the law's kernel over it) into one output
+block: the per-pair cost is the C loop's, not Python's."""
 import collections
 import math
+import sys
 
 import numpy as np
 
@@ -124,8 +126,7 @@ def collide(m0, p0, m1, p1, n, c=math.inf, eps=1.0, law="zmf", alpha=None, azimu
         rc = lib.rc_collide_many(lw, prm, 0, ffi.NULL, ffi.NULL, ffi.NULL, ffi.NULL, ffi.NULL,
                                  ffi.NULL, ffi.NULL, ffi.NULL)
         check_field(rc, "collide", None, _PARAM_FIELD.get(rc))
-    out = [np.empty(npair), np.empty((npair, d)), np.empty(npair), np.empty((npair, d))]
-    status = np.empty(npair, dtype=np.intc)
+    *out, status = _outputs(npair, d)
     hits = ffi.new("size_t *")
     bad = ffi.new("size_t *")
     args = []
@@ -172,6 +173,39 @@ def _pair_field(rc, i, cols, d):
     if rc == -1:
         return "alpha, azimuth"
     return None
+
+
+# Output blocks of earlier large calls, reused once every array of their result is gone
+# (the block's only references are then this list's and the lookup's): fresh pages cost
+# the kernel's zeroing of them, a third of a 10^6-pair call, that the C batch writing in
+# place does not pay. The library writes every element of a result it returns.
+_SPARE = []
+_SPARE_MAX, _SPARE_MIN_BYTES = 2, 1 << 20
+
+
+def _outputs(npair, d):
+    """m0, p0, m1, p1 (float64; (npair,), (npair, d)) and status (intc, (npair,)),
+    uninitialised views of one block."""
+    nf = npair * (2 + 2 * d)
+    nbytes = 8 * nf + np.dtype(np.intc).itemsize * npair
+    block = None
+    if nbytes >= _SPARE_MIN_BYTES:
+        for b in _SPARE:
+            # (3: the list's reference, b's and getrefcount's argument: no view alive)
+            if b.nbytes == nbytes and sys.getrefcount(b) == 3:
+                block = b
+                break
+        if block is None:
+            block = np.empty(nbytes, dtype=np.uint8)
+            _SPARE.append(block)
+            if len(_SPARE) > _SPARE_MAX:
+                del _SPARE[0]
+    else:
+        block = np.empty(nbytes, dtype=np.uint8)
+    f = block[:8 * nf].view(np.float64)
+    m0, p0 = f[:npair], f[npair:npair * (1 + d)].reshape(npair, d)
+    m1, p1 = f[npair * (1 + d):npair * (2 + d)], f[npair * (2 + d):].reshape(npair, d)
+    return m0, p0, m1, p1, block[8 * nf:].view(np.intc)
 
 
 def _buf(ctype, a):

@@ -104,39 +104,15 @@ int rcpy_collide(const rc_law *law, const rc_collision_params *prm, size_t n, in
     rc_collision_params q = *prm;
     q.c = n ? c[0] : q.c;
     q.eps = n ? eps[0] : q.eps;
-    size_t h = 0;
-    double k = 0.0;
     const int shared = !c_stride && !eps_stride;
-    /* shared parameters: rc_collide's checks of them made once (its batch call with no
-     * pairs), then per pair the rest of its checks and the kernel, as rc_collide runs them */
-    if (shared && n) {
-        const int r = rc_collide_many(law, &q, 0, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL);
-        if (r < 0)
-            return r;
-        rc_inv_c2(q.c, &k);
-    }
+    /* shared parameters: the library's checked batch over the caller's columns (its
+     * checks a block at a time, branch-free, then the kernels) */
+    if (shared)
+        return rc_collide_columns(law, &q, n, dim, m0, m0_stride, p0, p0_stride, m1,
+                                  m1_stride, p1, p1_stride, nrm, n_stride, m0o, p0o, m1o, p1o,
+                                  status, hits, bad);
+    size_t h = 0; /* per-pair c or eps: rc_collide a pair */
     for (size_t i = 0; i < n; i++) {
-        if (shared) {
-            rc_particle a = {m0[i * m0_stride], load3(p0 + i * p0_stride, dim)};
-            rc_particle b = {m1[i * m1_stride], load3(p1 + i * p1_stride, dim)};
-            rc_vec3 ni = load3(nrm + i * n_stride, dim);
-            int r;
-            if ((r = rc_particle_check(&a)) != RC_OK || (r = rc_particle_check(&b)) != RC_OK ||
-                (r = rc_pair_check(&a, &b, &ni, k)) != RC_OK ||
-                (r = law->collide(&q, &a, &b, ni)) < 0) {
-                *bad = i;
-                *hits = h;
-                return r;
-            }
-            m0o[i] = a.m;
-            m1o[i] = b.m;
-            store3(p0o + i * (size_t)dim, a.p, dim);
-            store3(p1o + i * (size_t)dim, b.p, dim);
-            if (status)
-                status[i] = r;
-            h += r == RC_OK;
-            continue;
-        }
         if (c_stride)
             q.c = c[i * c_stride];
         if (eps_stride)

@@ -24,8 +24,8 @@ int rcpy_sim_read(rc_sim *s, int which, uint32_t slice, size_t n, int dim, doubl
 /* Every ball of s as an rc_sim_ball (n = rc_sim_count(s)), for scn_write and add(). */
 int rcpy_sim_balls(const rc_sim *s, size_t n, rc_sim_ball *out, size_t *bad);
 
-/* The pairs of relcol.collide, each through the library's rc_collide (every check it
- * makes, then the law's kernel), read from the caller's arrays and written to fresh ones
+/* The pairs of relcol.collide, with rc_collide's checks and bits (shared c and eps:
+ * rc_collide_columns, the checks a block at a time; per-pair c or eps: rc_collide), read from the caller's arrays and written to fresh ones
  * in the same pass: no packed copy. Quantity q of pair i is at q[i * q_stride] (a vector's
  * dim components from there; stride 0: one value shared by every pair); c and eps
  * likewise. Vectors have dim (1..3) components, the rest taken as 0; out: m0o, m1o n,

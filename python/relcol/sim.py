@@ -279,7 +279,16 @@ class Sim:
         """Drop slice sid."""
         check(lib.rc_sim_slice_release(self._sim, int(sid)), "slice %d" % sid)
 
-    positions = property(lambda self: self._read(("x",))["x"], doc="centres, (N, dim)")
+    @property
+    def positions(self):
+        """centres, (N, dim): the library's lean read (rc_sim_get_positions), state()'s x
+        bit for bit"""
+        x = np.empty((self.n, self.dim))
+        check(lib.rc_sim_get_positions(self._sim, x.shape[0], x.shape[1],
+                                       ffi.from_buffer("double[]", x, require_writable=True), 0),
+              "positions")
+        return x
+
     momenta = property(lambda self: self._read(("p",))["p"], doc="momenta, (N, dim)")
     radii = property(lambda self: self._read(("r",))["r"], doc="rest radii, (N,)")
     rest_masses = property(lambda self: self._read(("m",))["m"], doc="rest masses, (N,)")

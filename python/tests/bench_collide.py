@@ -3,9 +3,10 @@
 The same work as tests/law/bench_law.c counts: 3-D, c = 1, eps = 0.8, the zmf law,
 masses log-uniform in [0.1, 10], speeds below 0.95 c, normals oriented so that every pair
 approaches; best of 7 timings of one call, pairs per second. The Python figure times the
-whole call (every pair through the library's rc_collide: its checks and the kernel, read
-from the caller's arrays and written into fresh ones), from numpy arrays in to numpy arrays
-out. Usage: bench_collide.py BENCH_LAW [n_pairs [reps]].
+whole call (every pair with rc_collide's checks and the kernel, rc_collide_columns, read
+from the caller's arrays and written into new result arrays: views of an output block that
+laws.py reuses once no array of an earlier result is alive, here the call before last's),
+from numpy arrays in to numpy arrays out. Usage: bench_collide.py BENCH_LAW [n_pairs [reps]].
 Prints figures and the ratio to the C rate; the goal is >= 0.5. No verdict (exit 0)."""
 import re
 import subprocess

@@ -94,6 +94,14 @@ int rc_collide_many(const rc_law *law, const rc_collision_params *prm, size_t n_
                     double *m0, rc_vec3 *p0, double *m1, rc_vec3 *p1, const rc_vec3 *n,
                     int *status, size_t *hits, size_t *bad);
 
+/// rc_collide_many over strided columns of dim (1..3) components, read and written apart (numpy's layout): pair i is (m0[i * m0_stride], p0 + i * p0_stride) against (m1, p1 likewise) along nrm + i * n_stride (components past dim taken as 0; stride 0: one value for every pair), c and eps from prm; out m0o, m1o (n_pairs) and p0o, p1o (n_pairs x dim, row-major), status (may be NULL), *hits; rc_collide's checks and bits, the checks of a block of pairs in one branch-free pass before its kernels; the first failing pair stops it (its code, *bad its index; those before written).
+int rc_collide_columns(const rc_law *law, const rc_collision_params *prm, size_t n_pairs,
+                       int dim, const double *m0, size_t m0_stride, const double *p0,
+                       size_t p0_stride, const double *m1, size_t m1_stride, const double *p1,
+                       size_t p1_stride, const double *nrm, size_t n_stride, double *m0o,
+                       double *p0o, double *m1o, double *p1o, int *status, size_t *hits,
+                       size_t *bad);
+
 /// Ball against an infinitely massive wall, n from the ball into it: p_n' = -eps_w p_n, tangential and M kept, m'^2 = m^2 + (1 - eps_w^2) p_n^2 / c^2; RC_NO_COLLISION if p.n <= 0.
 int rc_collide_wall(double inv_c2, double eps_w, rc_particle *a, rc_vec3 n);
 

@@ -171,6 +171,9 @@ int rc_sim_get_balls(const rc_sim *s, size_t n, rc_sim_ball *out, int latest, in
 int rc_sim_get_balls_stored(const rc_sim *s, size_t from, size_t count, rc_sim_ball *out,
                             size_t *id, int latest, int8_t *ahead);
 
+/// Centres only, rc_sim_get_balls' x bit for bit (latest likewise) without the rest of each ball's state: x[i * dim + d] for caller ball i < n = rc_sim_count(s), dim the definition's (RC_EINVAL otherwise).
+int rc_sim_get_positions(const rc_sim *s, size_t n, int dim, double *x, int latest);
+
 /// Diagnostics at the engine's time (O(N)).
 int rc_sim_diagnostics(const rc_sim *s, rc_sim_diag *d);
 /// FNV-1a hash of every ball's state bits at the engine's time (determinism tests).
