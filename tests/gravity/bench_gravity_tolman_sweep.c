@@ -103,7 +103,7 @@ static double order_of(const sweep_pt *P, int np, int closed, double *ke)
 
 int main(int argc, char **argv)
 {
-    const size_t n = argc > 1 ? (size_t)atol(argv[1]) : 3000;
+    const size_t n = argc > 1 ? (size_t)atol(argv[1]) : 2000;
     const double t_relax = argc > 2 ? atof(argv[2]) : 40.0, g = 0.5;
     const double cs[NC] = {1.0, 1.5, 2.0, 3.0, INFINITY};
     sweep_pt P[NC];
