@@ -119,8 +119,16 @@ static int newton_energy(const rc_gravity *f, double m, rc_vec3 x, rc_vec3 p, do
 
 /* Two balls at one table instant. Their accelerations differ with their momenta, so the
  * contact has no closed form: conservative advancement, each step one the gap cannot close
- * in (a ball's acceleration is at most g, the pair's relative one at most 2 g), until the
- * gap is a few roundings of the contact distance. */
+ * in, until the gap is a few roundings of the contact distance. The pair's relative
+ * acceleration is at most rel_accel_bound's (papers/gravity.md section 3): 2 g, and
+ * 2 g |u_a - u_b| / c with u = p/m constant in difference, so that nearly comoving balls
+ * take long steps instead of the 2 g ones' sqrt(gap / g). */
+static double rel_accel_bound(const rc_gravity *f, const rc_toi_ball *a, const rc_toi_ball *b)
+{
+    const double du = rc_v3_norm(rc_v3_sub(rc_v3_scale(1.0 / a->m, a->p), rc_v3_scale(1.0 / b->m, b->p)));
+    return f->g * fmin(2.0, 2.0 * du * sqrt(f->inv_c2));
+}
+
 static int newton_pair_time(const rc_gravity *f, const rc_toi_ball *a, const rc_toi_ball *b,
                             double t_max, double *dt)
 {
@@ -130,6 +138,7 @@ static int newton_pair_time(const rc_gravity *f, const rc_toi_ball *a, const rc_
     if (!isfinite(t_max))
         return RC_EINVAL; /* the advancement needs a horizon */
     const double i2 = f->inv_c2, d = a->r + b->r, tol = RC_GRAVITY_TOUCH * d;
+    const double acc = rel_accel_bound(f, a, b); /* (the same all along: du is constant) */
     rc_vec3 xa = a->x, pa = a->p, xb = b->x, pb = b->p;
     double t = 0.0;
     for (long it = 0; it < 1000000; it++) {
@@ -144,12 +153,13 @@ static int newton_pair_time(const rc_gravity *f, const rc_toi_ball *a, const rc_
             return RC_OK;
         }
         /* the longest step the gap survives: the straight distance is convex, so it falls
-         * no faster than the approach speed along the centres, wn, and the accelerations
-         * (each at most g) move the pair apart from its line by at most g t^2; the gap is
-         * then at least gap - wn t - g t^2 (a grazing pair takes long steps). Or, touching
-         * and parting, a step that lets the pair part by a rounding's worth. */
+         * no faster than the approach speed along the centres, wn, and the relative
+         * acceleration (at most acc) moves the pair apart from its line by at most
+         * acc t^2 / 2; the gap is then at least gap - wn t - acc t^2 / 2 (a grazing pair
+         * takes long steps). Or, touching and parting, a step that lets the pair part by a
+         * rounding's worth. */
         const double wn = fmax(-rc_v3_dot(dx, dv) / fmax(dist, DBL_MIN), 0.0), gp = fmax(gap, 0.0);
-        double step = 2.0 * gp / (wn + sqrt(wn * wn + 4.0 * f->g * gp));
+        double step = 2.0 * gp / (wn + sqrt(wn * wn + 2.0 * acc * gp));
         if (!(step > 4.0 * DBL_EPSILON * (t + 1.0)))
             step = fmax(tol / fmax(w, DBL_MIN), 4.0 * DBL_EPSILON * (t + 1.0));
         if (t + step > t_max)

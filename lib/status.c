@@ -26,7 +26,7 @@ const char *rc_strerror(int status)
     case RC_ENOTREADY: return "slice not final yet: advance the engine past its final time";
     case RC_ENOSLICE: return "no slice held under that id (released, or dropped with the balls, c or a checkpoint read)";
     case RC_ESCALE: return "positions too far from the origin for their doubles to resolve the radii";
-    case RC_EUNDEFINED: return "not defined by the model: a uniform field takes only one-instant uncontracted frames (papers/gravity.md, model limits)";
+    case RC_EUNDEFINED: return "not defined by the model: a uniform field takes only one-instant uncontracted frames and hard walls, and has no delayed slices or collisional moments (papers/gravity.md, model limits)";
     default: return "unknown status code";
     }
 }

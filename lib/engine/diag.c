@@ -89,6 +89,9 @@ int rc_sim_diagnostics(const rc_sim *s, rc_sim_diag *d)
     d->pinned = s->bk.pinned;
     memcpy(d->virial, s->bk.vir, sizeof d->virial);
     memcpy(d->virial_energy, s->bk.vir_e, sizeof d->virial_energy);
+    if (s->def.gravity) /* the field's loop books no collisional transfer: NaN, not a silent 0 */
+        for (int k = 0; k < 9; k++)
+            d->virial[k] = NAN, d->virial_energy[k / 3] = NAN;
     memcpy(d->helfand_wrap, s->bk.wrap, sizeof d->helfand_wrap);
     memcpy(d->helfand_wrap_energy, s->bk.wrap_e, sizeof d->helfand_wrap_energy);
     d->collisions = s->bk.collisions;

@@ -53,6 +53,8 @@ int rc_sim_moments_get(const rc_sim *s, rc_sim_moments *out)
 {
     if (!s || !out)
         return RC_EINVAL;
+    if (s->def.gravity)
+        return RC_EUNDEFINED; /* the field's loop books no collisional transfer, and G's rate is not the pressure there */
     memset(out, 0, sizeof *out);
     int st;
     const int dim = s->def.dim;

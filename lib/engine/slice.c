@@ -112,6 +112,8 @@ int rc_sim_slice_request(rc_sim *s, double ts, uint32_t *id)
 {
     if (!s || !id || s->n == 0 || !isfinite(ts) || ts < s->now)
         return RC_EINVAL;
+    if (s->def.gravity)
+        return RC_EUNDEFINED; /* the field's loop (engine/field.c) takes no slices: never ready */
     if (s->slc_n == s->slc_cap) {
         const size_t cap = s->slc_cap ? 2 * s->slc_cap : 4;
         struct eng_slice *p = realloc(s->slc, cap * sizeof *p);

@@ -125,6 +125,7 @@ int rc_sim_slice_ready(const rc_sim *s, uint32_t id, rc_sim_slice_info *info);
 int rc_sim_slice_get(rc_sim *s, uint32_t id, size_t i, rc_sim_ball *out);
 int rc_sim_slice_release(rc_sim *s, uint32_t id);
 int rc_sim_diagnostics(const rc_sim *s, rc_sim_diag *d);
+int rc_sim_field_energy(const rc_sim *s, double *h, double *booked);
 typedef enum { RC_VERDICT_DEFINED = 0, RC_VERDICT_OUTSIDE = 1,
                RC_VERDICT_NON_COVARIANT = 2 } rc_sim_verdict;
 typedef struct rc_validity {

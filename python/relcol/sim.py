@@ -251,7 +251,8 @@ class Sim:
         rc_sim_slice_request): every ball's state at t on its worldline, kept by the engine
         as later collisions place or undo kinks before t. Returns its id."""
         sid = ffi.new("uint32_t *")
-        check(lib.rc_sim_slice_request(self._sim, float(t), sid), "slice at t = %g" % t)
+        check(lib.rc_sim_slice_request(self._sim, float(t), sid),
+              "slice at t = %g (not in a scenario with \"gravity\")" % t)
         return int(sid[0])
 
     def slice_ready(self, sid):
@@ -301,6 +302,14 @@ class Sim:
         d = ffi.new("rc_sim_diag *")
         check(lib.rc_sim_diagnostics(self._sim, d), "diagnostics")
         return d
+
+    def field_energy(self):
+        """With a uniform field ("gravity"): (h, booked), the sum of the coupling's conserved
+        energies and the change booked at contacts (rc_sim_field_energy, papers/gravity.md
+        section 4); h - booked stays constant. RelcolError (RC_EINVAL) without a field."""
+        h, w = ffi.new("double *"), ffi.new("double *")
+        check(lib.rc_sim_field_energy(self._sim, h, w), "field_energy (a scenario with \"gravity\")")
+        return float(h[0]), float(w[0])
 
     def diagnostics(self):
         """Conservation and counts since the Sim was made, as relcol-sim's summary.json

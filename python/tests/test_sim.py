@@ -198,3 +198,29 @@ def test_diagnostics_model_block():
     sim = relcol.Sim(dim=2, box=box, c=math.inf, balls=balls, boundary="periodic")
     sim.advance(5.0)
     assert sim.diagnostics()["model"]["verdict"] == "defined"
+
+
+@pytest.mark.parametrize("coupling", ["newtonian", "equivalence"])
+def test_gravity_scenario_field_energy_and_refusals(coupling):
+    # a scenario with "gravity" through the C reader: h - booked (rc_sim_field_energy) kept
+    # to round-off (papers/gravity.md section 4), the balls above the floor; a delayed slice
+    # refused in the field (RC_EUNDEFINED), field_energy refused without one (RC_EINVAL)
+    scn = {"relcol": 1, "dim": 2, "c": 2, "t_end": 20, "seed": 3,
+           "boundary": ["periodic", "walls"],
+           "gravity": {"g": 0.05, "coupling": coupling},
+           "generate": {"kind": "gas", "n": 100, "radius": 0.5, "packing": 0.05, "v_rms": 0.5}}
+    s = relcol.Sim(scn)
+    h0, w0 = s.field_energy()
+    s.run()
+    h, w = s.field_energy()
+    assert s.diagnostics()["collisions"] > 100
+    assert abs((h - w) - (h0 - w0)) <= 1e-10 * abs(h0)
+    assert np.all(s.state()["x"][:, 1] > 0)
+    with pytest.raises(relcol.RelcolError) as e:
+        s.slice_request(s.time + 1.0)
+    assert e.value.name == "RC_EUNDEFINED" and "gravity" in str(e.value)
+    box, balls = relcol.gas_init(2, 20, 1.0, 0.3, 0.5, c=1.0, seed=3)
+    free = relcol.Sim(dim=2, box=box, c=1.0, balls=balls, boundary="periodic")
+    with pytest.raises(relcol.RelcolError) as e:
+        free.field_energy()
+    assert e.value.name == "RC_EINVAL"

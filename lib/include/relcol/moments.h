@@ -28,7 +28,8 @@ typedef struct rc_sim_moments {
     double position[3];        ///< sum_i x_i,a (unwrapped)
 } rc_sim_moments;
 
-/// Read the moments of s at its time (O(N)); RC_EINVAL for NULL arguments.
+/// Read the moments of s at its time (O(N)); RC_EINVAL for NULL arguments, RC_EUNDEFINED in a
+/// uniform field (its loop books no collisional transfer; papers/gravity.md, model limits).
 int rc_sim_moments_get(const rc_sim *s, rc_sim_moments *out);
 
 #ifdef __cplusplus

@@ -35,7 +35,7 @@ typedef struct rc_sim_slice_info {
     double reach;   ///< largest engine time minus ts at which an event changed the slice (-inf: none)
 } rc_sim_slice_info;
 
-/// Ask for the slice at table time ts >= the engine's time (*id names it); RC_EINVAL (bad argument, no balls, or a ball whose line at ts was not recorded), RC_ENOMEM.
+/// Ask for the slice at table time ts >= the engine's time (*id names it); RC_EINVAL (bad argument, no balls, or a ball whose line at ts was not recorded), RC_ENOMEM, RC_EUNDEFINED in a uniform field (its loop takes no slices).
 int rc_sim_slice_request(rc_sim *s, double ts, uint32_t *id);
 /// 1 if slice id is final, 0 if not yet; *info (may be NULL) filled; RC_EINVAL, RC_ENOSLICE.
 int rc_sim_slice_ready(const rc_sim *s, uint32_t id, rc_sim_slice_info *info);

@@ -116,7 +116,7 @@ typedef struct rc_sim_diag {
     double wall_impulse_by_wall[6]; ///< ... by wall w = 2 d + side (side 1 the far wall): its component along e_d
     uint64_t wall_shared;   ///< groups touching both walls of one axis, whose share between them is the solver's split (a choice)
     uint64_t pinned;        ///< wall contacts of a ball as wide as the box, made plastic along the axis (a model choice: papers/relcol.md, "Limits")
-    double virial[9], virial_energy[3]; ///< sum over events of r_j,a dp_j,b (r from the event's first ball, nearest image) and r_j,a dE_j: the collisional transfer (papers/pressure.md)
+    double virial[9], virial_energy[3]; ///< sum over events of r_j,a dp_j,b (r from the event's first ball, nearest image) and r_j,a dE_j: the collisional transfer (papers/pressure.md); NaN in a uniform field, which books none
     double helfand_wrap[9], helfand_wrap_energy[3]; ///< the same with r replaced by nearest image minus unwrapped separation (relcol/moments.h)
     double momentum_scale;  ///< sum of |p_i| (scale for relative momentum checks)
     double max_overlap;     ///< deepest sphere overlap now, relative to ri + rj (NAN with a contracted frame)
