@@ -23,6 +23,7 @@ typedef struct cli {
     double length, width;
     const char *out;
     int quiet;
+    int c_given;                 /* --c was given (refused beside --sweep-c) */
     int nsweep;                  /* --sweep-c's count (0: one run at --c) */
     double sweep[SH_MAX_SWEEP];  /* its speeds of light, inf allowed */
 } cli;
@@ -73,6 +74,7 @@ static int parse_sweep(const char *val, void *dst, void *opts, char *err)
 static const app_opt opts[] = {
     {"--dim", "D", APP_T_INT, OFF(o.tube.dim), "3", .lo = 2, .hi = 3, .help = "2 or 3 (default %D)"},
     {"--c", "C", APP_T_DOUBLE_INF, OFF(o.tube.c), "inf", .valid = app_valid_c,
+     .given = APP_GIVEN(cli, c_given),
      .help = "speed of light (default %D)"},
     {"--n-left", "N", APP_T_DOUBLE, OFF(o.tube.n[0]), "0.004", .valid = app_valid_positive,
      .help = "balls per unit volume (area in 2-D), left (default %D)"},
@@ -148,6 +150,8 @@ static int check(void *vc)
 {
     cli *c = vc;
     sh_tube *t = &c->o.tube;
+    if (c->nsweep && c->c_given)
+        return app_fail(prog, EXIT_BAD, "--sweep-c: not with --c (the sweep sets c)");
     double cmin = c->nsweep ? INFINITY : t->c; /* (a sweep holds |v| below its every c) */
     for (int k = 0; k < c->nsweep; k++)
         cmin = fmin(cmin, c->sweep[k]);

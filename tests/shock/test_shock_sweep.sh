@@ -20,6 +20,7 @@ expect() { # expect CODE PATTERN ARGS...
 expect 2 "\-\-sweep-c: c = 0 must be > 0" --sweep-c 1,0
 expect 2 "\-\-sweep-c: not a number" --sweep-c 1,x
 expect 2 "\-\-sweep-c: more than 16" --sweep-c 1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17
+expect 2 "\-\-sweep-c: not with \-\-c" --sweep-c inf,2 --c 3
 expect 2 "\-\-v-left: |v| = 1 must be < c" --sweep-c inf,1 --v-left 1
 # 3-D, 1728 balls a seed, 4 seeds, read at t = 200 (Kn 0.05 at c = inf, 0.09 at c = 1.5)
 "$app" --out "$dir/s" --sweep-c inf,3,1.5 --seeds 4 --length 1000 --width 12 \
