@@ -5,14 +5,113 @@
  * c = inf, relativistic with the Synge equation of state at finite c) and free streaming
  * (Kn -> inf), with summary.json and a figure (papers/shock-tube.md). */
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "app.h"
 #include "shock_run.h"
+#include "sweep.h"
 
-static const char *prog = "relcol-shock";
+static const char *const prog = "relcol-shock";
+
+enum { EXIT_BAD = 2, SH_MAX_SWEEP = 16 };
+
+typedef struct cli {
+    sh_opts o;
+    double length, width;
+    const char *out;
+    int quiet;
+    int c_given;                 /* --c was given (refused beside --sweep-c) */
+    int nsweep;                  /* --sweep-c's count (0: one run at --c) */
+    double sweep[SH_MAX_SWEEP];  /* its speeds of light, inf allowed */
+} cli;
+
+/* --times: every time > 0 and each above the one before */
+static int valid_times(const app_opt *o, const void *opts, char *err)
+{
+    (void)o;
+    const sh_opts *so = &((const cli *)opts)->o;
+    for (int j = 0; j < so->nt; j++)
+        if (!(so->times[j] > 0.0) || (j && !(so->times[j] > so->times[j - 1]))) {
+            app_errf(err, "times must be > 0 and increasing");
+            return -1;
+        }
+    return 0;
+}
+
+/* --sweep-c: 1..SH_MAX_SWEEP comma-separated speeds of light, each finite > 0 or inf */
+static int parse_sweep(const char *val, void *dst, void *opts, char *err)
+{
+    (void)dst;
+    cli *c = opts;
+    c->nsweep = 0;
+    char tok[64];
+    for (const char *s = val;;) {
+        const char *e = strchr(s, ',');
+        size_t l = e ? (size_t)(e - s) : strlen(s);
+        if (l >= sizeof tok) {
+            app_errf(err, "a value longer than %zu characters", sizeof tok - 1);
+            return -1;
+        }
+        if (c->nsweep == SH_MAX_SWEEP) {
+            app_errf(err, "more than %d speeds of light", SH_MAX_SWEEP);
+            return -1;
+        }
+        memcpy(tok, s, l), tok[l] = '\0';
+        double x;
+        if (app_parse_double(tok, 1, &x, err) || app_check_c(x, err))
+            return -1;
+        c->sweep[c->nsweep++] = x;
+        if (!e)
+            return 0;
+        s = e + 1;
+    }
+}
+
+#define OFF(field) offsetof(cli, field)
+static const app_opt opts[] = {
+    {"--dim", "D", APP_T_INT, OFF(o.tube.dim), "3", .lo = 2, .hi = 3, .help = "2 or 3 (default %D)"},
+    {"--c", "C", APP_T_DOUBLE_INF, OFF(o.tube.c), "inf", .valid = app_valid_c,
+     .given = APP_GIVEN(cli, c_given),
+     .help = "speed of light (default %D)"},
+    {"--n-left", "N", APP_T_DOUBLE, OFF(o.tube.n[0]), "0.004", .valid = app_valid_positive,
+     .help = "balls per unit volume (area in 2-D), left (default %D)"},
+    {"--n-right", "N", APP_T_DOUBLE, OFF(o.tube.n[1]), "0.002", .valid = app_valid_positive,
+     .help = "right (default %D)"},
+    {"--T-left", "T", APP_T_DOUBLE, OFF(o.tube.T[0]), "2", .valid = app_valid_positive,
+     .help = "temperature, left (default %D)"},
+    {"--T-right", "T", APP_T_DOUBLE, OFF(o.tube.T[1]), "1", .valid = app_valid_positive,
+     .help = "right (default %D)"},
+    {"--v-left", "V", APP_T_DOUBLE, OFF(o.tube.v[0]), "0",
+     .help = "table-frame velocity along x, left (default %D)"},
+    {"--v-right", "V", APP_T_DOUBLE, OFF(o.tube.v[1]), "0", .help = "right (default %D)"},
+    {"--radius", "R", APP_T_DOUBLE, OFF(o.tube.r), "0.5", .valid = app_valid_positive,
+     .help = "ball radius (default %D)"},
+    {"--length", "L", APP_T_DOUBLE, OFF(length), "4000", .valid = app_valid_positive,
+     .help = "tube length (default %D)"},
+    {"--width", "W", APP_T_DOUBLE, OFF(width), "12", .valid = app_valid_positive,
+     .help = "across, >= 4 diameters (default %D)"},
+    {"--times", "LIST", APP_T_LIST, OFF(o.times), "500,1000", .hi = SH_MAX_TIMES,
+     .count = OFF(o.nt), .valid = valid_times, .help = "times of the profiles, increasing (default %D)"},
+    {"--bins", "B", APP_T_INT, OFF(o.bins), "100", .lo = 1, .hi = 100000,
+     .help = "bins of x (default %D)"},
+    {"--seeds", "S", APP_T_INT, OFF(o.seeds), "4", .lo = 1, .hi = 100000,
+     .help = "independent runs, >= 2 for error bars (default %D)"},
+    {"--seed", "S0", APP_T_U64, OFF(o.seed), "1", .help = "first seed (default %D)"},
+    {"--frame", "NAME", APP_T_CUSTOM, OFF(o.tube.frame), .parse = app_opt_toi_frame,
+     .help = "contact frame (default: uncontracted spheres)"},
+    {"--law", "NAME", APP_T_CUSTOM, OFF(o.tube.law), .parse = app_opt_law,
+     .help = "collision law (default zmf)"},
+    {"--sweep-c", "LIST", APP_T_CUSTOM, OFF(sweep), .parse = parse_sweep,
+     .help = "the same tube at each c of LIST (inf allowed; at most 16) in place of --c:\n"
+             "sweep.csv, sweep_profiles.csv and sweep.png (below)"},
+    {"--out", "DIR", APP_T_CUSTOM, OFF(out), "shock-out", .parse = app_opt_dir,
+     .help = "output folder (default %D)"},
+    {"--quiet", NULL, APP_T_FLAG, OFF(quiet), .help = "no summary lines on stdout"},
+    {NULL},
+};
 
 static void usage(FILE *f)
 {
@@ -20,7 +119,9 @@ static void usage(FILE *f)
 "usage: relcol-shock [--dim 2|3] [--c C] [--n-left N] [--n-right N] [--T-left T]\n"
 "                    [--T-right T] [--v-left V] [--v-right V] [--radius R] [--length L]\n"
 "                    [--width W] [--times T1,T2,...] [--bins B] [--seeds S] [--seed S0]\n"
-"                    [--frame NAME] [--law NAME] [--out DIR] [--quiet]\n"
+"                    [--frame NAME] [--law NAME] [--sweep-c C1,C2,...] [--out DIR]\n"
+"                    [--quiet]\n"
+"\n"
 "The shock tube of hard balls (rest mass 1, k_B = 1): a box [0, L] x [0, W] (x [0, W])\n"
 "walled at x = 0 and L, periodic across, a membrane at x = L/2 removed at t = 0; each side\n"
 "a Juttner gas (Maxwell at c = inf) at its rest-frame density n, temperature T and\n"
@@ -29,129 +130,45 @@ static void usage(FILE *f)
 "Te (from the rest-frame energy), the lab densities N0, Nx, g = T0x/c, K = T00 - N0 c^2,\n"
 "Pxx, Pyy, each with its standard error over the seeds, then the ideal fluid's\n"
 "(_fluid) and free streaming's (_free) values of each), DIR/summary.json and DIR/shock.png.\n"
-"  --dim D        2 or 3 (default 3)\n"
-"  --c C          speed of light (default inf)\n"
-"  --n-left N     balls per unit volume (area in 2-D), left (default 0.004)\n"
-"  --n-right N    right (default 0.002)\n"
-"  --T-left T     temperature, left (default 2)\n"
-"  --T-right T    right (default 1)\n"
-"  --v-left V     table-frame velocity along x, left (default 0)\n"
-"  --v-right V    right (default 0)\n"
-"  --radius R     ball radius (default 0.5)\n"
-"  --length L     tube length (default 4000)\n"
-"  --width W      across, >= 4 diameters (default 12)\n"
-"  --times LIST   times of the profiles, increasing (default 500,1000)\n"
-"  --bins B       bins of x (default 100)\n"
-"  --seeds S      independent runs, >= 2 for error bars (default 4)\n"
-"  --seed S0      first seed (default 1)\n"
-"  --frame NAME   contact frame (default: uncontracted spheres)\n"
-"  --law NAME     collision law (default zmf)\n"
-"  --out DIR      output folder (default shock-out)\n"
-"  --quiet        no summary lines on stdout\n");
+"\n"
+"options:\n");
+    app_opts_help(f, opts, 18);
+    fprintf(f,
+"\n"
+"--sweep-c writes instead, at the last time: DIR/sweep.csv, one row per c: the plateau's\n"
+"p and v and the shock speed measured (with seed errors) beside the exact relativistic\n"
+"solution at that c (_rel: Synge's gas) and Sod's (_sod: the Euler solution, c = inf);\n"
+"DIR/sweep_profiles.csv, per c and bin: n, v, p measured, _rel and _sod; DIR/sweep.gp\n"
+"and sweep.png, the profiles at each c on one page.\n"
+"\n"
+"exit status: 0 done; 2 bad option (one line naming it); 1 a start it cannot place, a\n"
+"failed run or write.\n");
 }
 
-typedef struct cli {
-    sh_opts o;
-    const char *out;
-    int quiet;
-} cli;
-
-static int parse(int argc, char **argv, cli *c)
+/* the checks between options, then the tube's box */
+static int check(void *vc)
 {
-    static const char *const valued[] = {"--dim", "--c", "--n-left", "--n-right", "--T-left",
-        "--T-right", "--v-left", "--v-right", "--radius", "--length", "--width", "--times",
-        "--bins", "--seeds", "--seed", "--frame", "--law", "--out", NULL};
-    static const char *const flags[] = {"--quiet", NULL};
-    sh_opts *o = &c->o;
-    memset(c, 0, sizeof *c);
-    sh_tube *t = &o->tube;
-    t->dim = 3, t->c = INFINITY, t->r = 0.5;
-    t->n[0] = 0.004, t->n[1] = 0.002, t->T[0] = 2.0, t->T[1] = 1.0;
-    double length = 4000.0, width = 12.0;
-    o->nt = 2, o->times[0] = 500.0, o->times[1] = 1000.0;
-    o->bins = 100, o->seeds = 4, o->seed = 1;
-    c->out = "shock-out";
-    app_opts it;
-    app_opts_init(&it, prog, argc, argv, valued, flags, "see --help");
-    const char *name, *val;
-    char err[APP_ERR_LEN], buf[512];
-    int k;
-    while ((k = app_opts_next(&it, &name, &val)) != APP_OPT_END) {
-        if (k == APP_OPT_ERROR)
-            return 2;
-        if (k == APP_OPT_HELP)
-            return app_help(usage) ? 1 : -1;
-        if (k == APP_OPT_FLAG) {
-            c->quiet = 1;
-            continue;
-        }
-        double x = 0.0;
-        long l = 0;
-        int bad = 0;
-        if (!strcmp(name, "--dim")) {
-            bad = app_parse_long(val, 2, 3, &l, err);
-            t->dim = (int)l;
-        } else if (!strcmp(name, "--bins")) {
-            bad = app_parse_long(val, 1, 100000, &l, err);
-            o->bins = (int)l;
-        } else if (!strcmp(name, "--seeds")) {
-            bad = app_parse_long(val, 1, 100000, &l, err);
-            o->seeds = (int)l;
-        } else if (!strcmp(name, "--seed")) {
-            bad = app_parse_u64(val, &o->seed, err);
-        } else if (!strcmp(name, "--times")) {
-            bad = app_parse_list(val, o->times, SH_MAX_TIMES, &o->nt, err);
-            for (int j = 0; !bad && j < o->nt; j++)
-                if (!(o->times[j] > 0.0) || (j && !(o->times[j] > o->times[j - 1]))) {
-                    app_errf(err, "times must be > 0 and increasing");
-                    bad = -1;
-                }
-        } else if (!strcmp(name, "--frame")) {
-            t->frame = rc_toi_frame_find(val);
-            if (!t->frame)
-                return app_fail(prog, 2, "--frame: unknown frame '%s' (known: %s)", val,
-                                app_toi_frame_list(buf, sizeof buf));
-        } else if (!strcmp(name, "--law")) {
-            t->law = rc_law_find(val);
-            if (!t->law)
-                return app_fail(prog, 2, "--law: unknown law '%s' (known: %s)", val,
-                                app_law_list(buf, sizeof buf));
-        } else if (!strcmp(name, "--out")) {
-            c->out = val;
-        } else {
-            bad = app_parse_double(val, !strcmp(name, "--c"), &x, err);
-            if (!bad && !strcmp(name, "--c"))
-                bad = app_check_c(x, err);
-            else if (!bad && (!strncmp(name, "--v-", 4) ? 0 : !(x > 0.0))) {
-                app_errf(err, "%s must be > 0", val);
-                bad = -1;
-            }
-            if (!bad) {
-                if (!strcmp(name, "--c")) t->c = x;
-                else if (!strcmp(name, "--n-left")) t->n[0] = x;
-                else if (!strcmp(name, "--n-right")) t->n[1] = x;
-                else if (!strcmp(name, "--T-left")) t->T[0] = x;
-                else if (!strcmp(name, "--T-right")) t->T[1] = x;
-                else if (!strcmp(name, "--v-left")) t->v[0] = x;
-                else if (!strcmp(name, "--v-right")) t->v[1] = x;
-                else if (!strcmp(name, "--radius")) t->r = x;
-                else if (!strcmp(name, "--length")) length = x;
-                else if (!strcmp(name, "--width")) width = x;
-            }
-        }
-        if (bad)
-            return app_fail(prog, 2, "%s: %s", name, err);
-    }
+    cli *c = vc;
+    sh_tube *t = &c->o.tube;
+    if (c->nsweep && c->c_given)
+        return app_fail(prog, EXIT_BAD, "--sweep-c: not with --c (the sweep sets c)");
+    double cmin = c->nsweep ? INFINITY : t->c; /* (a sweep holds |v| below its every c) */
+    for (int k = 0; k < c->nsweep; k++)
+        cmin = fmin(cmin, c->sweep[k]);
     for (int s = 0; s < 2; s++)
-        if (!(fabs(t->v[s]) < t->c))
-            return app_fail(prog, 2, "--v-%s: |v| = %g must be < c", s ? "right" : "left", fabs(t->v[s]));
-    if (width < 8.0 * t->r)
-        return app_fail(prog, 2, "--width: %g is below four ball diameters (%g): the periodic "
-                        "axes need four cells", width, 8.0 * t->r);
-    t->box.x = length, t->box.y = width, t->box.z = t->dim == 3 ? width : 0.0;
-    t->x0 = 0.5 * length;
+        if (!(fabs(t->v[s]) < cmin))
+            return app_fail(prog, EXIT_BAD, "--v-%s: |v| = %g must be < c", s ? "right" : "left",
+                            fabs(t->v[s]));
+    if (c->width < 8.0 * t->r)
+        return app_fail(prog, EXIT_BAD, "--width: %g is below four ball diameters (%g): the "
+                        "periodic axes need four cells", c->width, 8.0 * t->r);
+    t->box.x = c->length, t->box.y = c->width, t->box.z = t->dim == 3 ? c->width : 0.0;
+    t->x0 = 0.5 * c->length;
     return 0;
 }
+
+static const app_cli shock_cli = {.prog = "relcol-shock", .tab = opts, .usage = usage,
+                                  .stray_hint = "see --help", .bad = EXIT_BAD, .check = check};
 
 /* dir/name opened for an atomic write */
 static int open_out(const char *dir, const char *name, app_atomic *a, char *err)
@@ -341,14 +358,20 @@ static int write_gp(const char *dir, const sh_opts *o, char *err)
 
 int main(int argc, char **argv)
 {
-    app_init(prog);
     cli c;
-    int rc = parse(argc, argv, &c);
-    if (rc)
-        return rc < 0 ? 0 : rc;
+    memset(&c, 0, sizeof c);
+    int rc = app_start(&shock_cli, argc, argv, &c);
+    if (rc >= 0)
+        return rc;
     char err[APP_ERR_LEN];
     if (app_mkdir_p(c.out, err))
         return app_fail(prog, 1, "--out: %s", err);
+    if (c.nsweep) {
+        if (sh_sweep(prog, &c.o, c.sweep, c.nsweep, c.out, !c.quiet, err))
+            return app_fail(prog, 1, "%s", err);
+        app_validity_warn(stderr, prog);
+        return 0;
+    }
     sh_result r;
     if (sh_run(&c.o, &r, !c.quiet, err))
         return app_fail(prog, 1, "%s", err);

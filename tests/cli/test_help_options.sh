@@ -1,19 +1,19 @@
 #!/bin/sh
 # test_help_options.sh — each app's --help names exactly the options its option table
-# holds (apps/common/opttab.c): the names that open an option line of --help ("  --name")
-# are the names the hidden --list-options prints from the table, and every "--name" of the
-# usage synopsis is one of them. A fake app whose help and table disagree must fail the
-# same comparison (the check can fail).
+# holds (apps/common/opttab.c): the names that open an option line of --help ("  --name",
+# capitals allowed: relcol-shock's --T-left) are the names the hidden --list-options
+# prints from the table, and every "--name" of the usage synopsis is one of them. A fake
+# app whose help and table disagree must fail the same comparison (the check can fail).
 # Usage: test_help_options.sh APP...
 . "$(dirname "$0")/harness.sh"
 
 # compare NAME HELP_FILE LIST_FILE: 0 if they agree, else 1 with the differences on stdout
 compare() {
-    awk '/^  --[a-z]/ { print $1 }' "$2" | sort -u > "$T/h"
+    awk '/^  --[a-zA-Z]/ { print $1 }' "$2" | sort -u > "$T/h"
     sort -u "$3" > "$T/l"
     # the synopsis: from "usage:" to the first blank line
     awk '/^usage:/ { u = 1 } u && /^$/ { exit } u' "$2" |
-        grep -o -- '--[a-z][a-z0-9-]*' | sort -u > "$T/s"
+        grep -o -- '--[a-zA-Z][a-zA-Z0-9-]*' | sort -u > "$T/s"
     r=0
     d=$(comm -3 "$T/h" "$T/l" | tr -s ' \t\n' ' ')
     [ -z "$d" ] || { echo "$1: help lines and table differ: $d (left: help only)"; r=1; }

@@ -1,0 +1,182 @@
+/* sweep.c — relcol-shock --sweep-c (issue 40 item 4): the same initial state at each c,
+ * so that the measured plateau can be held to Sod's values and to the relativistic ones
+ * at once; papers/shock-tube.md, section 6. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "app.h"
+#include "sweep.h"
+
+/* per c and bin: n, v, p measured and their errors, then _rel and _sod */
+enum { PQ = 12 };
+static const int meas_q[3] = {SH_N, SH_V, SH_P};
+
+typedef struct row {
+    double c, kn, p, pe, v, ve, s, se;
+    size_t balls;
+    unsigned long long collisions;
+    rs_solution rel;
+} row;
+
+static int open_out(const char *dir, const char *name, app_atomic *a, char *err)
+{
+    char *path = app_path_join(dir, name);
+    if (!path) {
+        app_errf(err, "out of memory");
+        return -1;
+    }
+    int rc = app_atomic_open(a, path, err);
+    free(path);
+    return rc;
+}
+
+static void cnum(FILE *f, double x) { isinf(x) ? fputs("inf", f) : fprintf(f, "%.10g", x); }
+
+static int write_rows(const char *dir, const sh_opts *o, const row *rw, int n,
+                      const rs_solution *sod, char *err)
+{
+    app_atomic a;
+    if (open_out(dir, "sweep.csv", &a, err))
+        return -1;
+    fprintf(a.f, "c,balls,collisions,t,kn,p,p_err,p_rel,p_sod,v,v_err,v_rel,v_sod,"
+                 "shock,shock_err,shock_rel,shock_sod\n");
+    for (int k = 0; k < n; k++) {
+        const row *r = &rw[k];
+        cnum(a.f, r->c);
+        fprintf(a.f, ",%zu,%llu,%.10g,%.4g,%.10g,%.4g,%.10g,%.10g,%.10g,%.4g,%.10g,%.10g,"
+                     "%.10g,%.4g,%.10g,%.10g\n",
+                r->balls, r->collisions, o->times[o->nt - 1], r->kn, r->p, r->pe,
+                r->rel.p_star, sod->p_star, r->v, r->ve, r->rel.v_star, sod->v_star, r->s,
+                r->se, r->rel.headR, sod->headR);
+    }
+    return app_atomic_commit(&a, err);
+}
+
+static int write_profiles(const char *dir, const double *cs, int n, int nb, const double *xc,
+                          const double *prof, char *err)
+{
+    app_atomic a;
+    if (open_out(dir, "sweep_profiles.csv", &a, err))
+        return -1;
+    fprintf(a.f, "k,c,x,n,n_err,v,v_err,p,p_err,n_rel,v_rel,p_rel,n_sod,v_sod,p_sod\n");
+    for (int k = 0; k < n; k++)
+        for (int b = 0; b < nb; b++) {
+            fprintf(a.f, "%d,", k);
+            cnum(a.f, cs[k]);
+            fprintf(a.f, ",%.10g", xc[b]);
+            for (int q = 0; q < PQ; q++)
+                fprintf(a.f, ",%.10g", prof[((size_t)k * nb + b) * PQ + q]);
+            fputc('\n', a.f);
+        }
+    return app_atomic_commit(&a, err);
+}
+
+/* rows: one per c; columns: n, v, p with the balls' points, the relativistic solution's
+ * line and Sod's dashed */
+static int write_gp(const char *dir, const sh_opts *o, const double *cs, int n, char *err)
+{
+    app_atomic a;
+    if (open_out(dir, "sweep.gp", &a, err))
+        return -1;
+    FILE *f = a.f;
+    char term[96];
+    snprintf(term, sizeof term, "size 1500,%d enhanced font 'Sans,10' linewidth 1.2", 80 + 260 * n);
+    app_gnuplot_head(f, "sweep.png", term, 0);
+    fprintf(f, "set multiplot layout %d,3 title 'relcol-shock --sweep-c: %d-D, t = %g; points: "
+               "balls (seed errors), line: relativistic ideal fluid at c, dashed: Sod (c = inf)'\n",
+            n, o->tube.dim, o->times[o->nt - 1]);
+    fprintf(f, "set key top right font ',8'\nset xlabel 'x'\n");
+    static const char *const ylab[3] = {"rest density n", "Eckart velocity v", "pressure p"};
+    for (int k = 0; k < n; k++)
+        for (int q = 0; q < 3; q++) {
+            char cs_txt[32];
+            if (isinf(cs[k]))
+                snprintf(cs_txt, sizeof cs_txt, "inf");
+            else
+                snprintf(cs_txt, sizeof cs_txt, "%g", cs[k]);
+            fprintf(f, "set ylabel '%s'\nset title 'c = %s'\n", ylab[q], cs_txt);
+            const int cm = 4 + 2 * q, cr = 10 + q, csd = 13 + q;
+            fprintf(f, "plot 'sweep_profiles.csv' skip 1 using 3:($1==%d?$%d:1/0):%d with "
+                       "yerrorbars pt 7 ps 0.4 lc 1 title 'balls', '' skip 1 using "
+                       "3:($1==%d?$%d:1/0) with lines lc 2 title 'relativistic', '' skip 1 "
+                       "using 3:($1==%d?$%d:1/0) with lines dt 2 lc 3 title 'Sod'\n",
+                    k, cm, cm + 1, k, cr, k, csd);
+        }
+    fprintf(f, "unset multiplot\n");
+    return app_atomic_commit(&a, err);
+}
+
+int sh_sweep(const char *prog, const sh_opts *o, const double *cs, int n, const char *dir,
+             int verbose, char *err)
+{
+    const sh_tube *tb = &o->tube;
+    const int nb = o->bins, j = o->nt - 1;
+    rs_solution sod;
+    const rs_eos ideal = rs_eos_ideal(1.0 + 2.0 / tb->dim);
+    rs_state L = {tb->n[0], tb->v[0], tb->n[0] * tb->T[0]}, R = {tb->n[1], tb->v[1], tb->n[1] * tb->T[1]};
+    int rc = rs_solve(&ideal, INFINITY, L, R, &sod);
+    if (rc) {
+        app_errf(err, "Sod's (Euler) Riemann solution: %s", rs_strerror(rc));
+        return -1;
+    }
+    row *rw = calloc((size_t)n, sizeof *rw);
+    double *prof = calloc((size_t)n * nb * PQ, sizeof *prof), *xc = malloc((size_t)nb * sizeof *xc);
+    if (!rw || !prof || !xc) {
+        free(rw), free(prof), free(xc);
+        app_errf(err, "out of memory for the sweep");
+        return -1;
+    }
+    int st = 0;
+    for (int k = 0; k < n && !st; k++) {
+        sh_opts ok = *o;
+        ok.tube.c = cs[k];
+        sh_result r;
+        char e2[APP_ERR_LEN];
+        if (sh_run(&ok, &r, verbose, e2)) {
+            char cf[APP_FMT_LEN];
+            app_errf(err, "c = %s: %s", app_fmt(cs[k], cf), e2);
+            st = -1;
+            break;
+        }
+        row *w = &rw[k];
+        w->c = cs[k], w->kn = r.kn, w->balls = r.nballs, w->collisions = r.collisions;
+        w->p = r.plat_p[j], w->pe = r.plat_p_err[j], w->v = r.plat_v[j], w->ve = r.plat_v_err[j];
+        w->s = r.vshock, w->se = r.vshock_err, w->rel = r.sol;
+        for (int b = 0; b < nb; b++) {
+            double *pr = prof + ((size_t)k * nb + b) * PQ;
+            xc[b] = r.xc[b];
+            for (int q = 0; q < 3; q++) {
+                pr[2 * q] = r.mean[sh_idx(&r, j, b, meas_q[q])];
+                pr[2 * q + 1] = r.err[sh_idx(&r, j, b, meas_q[q])];
+                pr[6 + q] = r.fluid[sh_idx(&r, j, b, meas_q[q])];
+            }
+            rs_state s;
+            if ((rc = rs_sample(&sod, (r.xc[b] - tb->x0) / o->times[j], &s))) {
+                app_errf(err, "sampling Sod's solution: %s", rs_strerror(rc));
+                st = -1;
+                break;
+            }
+            pr[9] = s.rho, pr[10] = s.v, pr[11] = s.p;
+        }
+        sh_result_free(&r);
+        if (!st && verbose) {
+            char cf[APP_FMT_LEN];
+            printf("c = %s: %zu balls, Kn %.3g; plateau p %.5g +- %.2g (relativistic %.5g, Sod "
+                   "%.5g), v %.5g +- %.2g (%.5g, %.5g), shock %.5g +- %.2g (%.5g, %.5g)\n",
+                   app_fmt(cs[k], cf), w->balls, w->kn, w->p, w->pe, w->rel.p_star, sod.p_star,
+                   w->v, w->ve, w->rel.v_star, sod.v_star, w->s, w->se, w->rel.headR, sod.headR);
+            fflush(stdout);
+        }
+    }
+    int made = 0;
+    if (!st && (write_rows(dir, o, rw, n, &sod, err) || write_profiles(dir, cs, n, nb, xc, prof, err) ||
+                write_gp(dir, o, cs, n, err) ||
+                app_gnuplot_run(prog, dir, "sweep.gp", "sweep.png", &made, err)))
+        st = -1;
+    if (!st && verbose)
+        printf("wrote %s/sweep.csv, sweep_profiles.csv, sweep.gp%s\n", dir, made ? ", sweep.png" : "");
+    free(rw), free(prof), free(xc);
+    return st;
+}
