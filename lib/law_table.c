@@ -181,7 +181,12 @@ static inline void store3(double *out, rc_vec3 v, int dim)
         out[2] = v.z;
 }
 
-static inline int finite3(rc_vec3 v) { return isfinite(v.x) & isfinite(v.y) & isfinite(v.z); }
+/* int-valued tests, so that the branch-free '&' below combines ints, not comparisons */
+static inline int fin(double x) { return isfinite(x) ? 1 : 0; }
+static inline int pos(double x) { return x > 0.0 ? 1 : 0; }
+static inline int nonzero3(rc_vec3 v) { return (v.x != 0.0 || v.y != 0.0 || v.z != 0.0) ? 1 : 0; }
+
+static inline int finite3(rc_vec3 v) { return fin(v.x) & fin(v.y) & fin(v.z); }
 
 /* 1 when every pair of [from, from + count) passes rc_collide's checks (particles, pair,
  * normal nonzero), by one branch-free pass (no early exit: the compiler may vectorise);
@@ -195,10 +200,10 @@ static int block_ok(size_t from, size_t count, int dim, double k, const double *
         const double ma = m0[i * s0], mb = m1[i * s1];
         const rc_vec3 pa = load3(p0 + i * q0, dim), pb = load3(p1 + i * q1, dim);
         const rc_vec3 n = load3(nrm + i * sn, dim);
-        ok &= isfinite(ma) & isfinite(mb) & (ma > 0.0) & (mb > 0.0) & finite3(pa) &
-              finite3(pb) & isfinite(ma * ma + rc_v3_norm2(pa) * k) &
-              isfinite(mb * mb + rc_v3_norm2(pb) * k) & isfinite(rc_v3_norm2(rc_v3_add(pa, pb))) &
-              finite3(n) & ((n.x != 0.0) | (n.y != 0.0) | (n.z != 0.0));
+        ok &= fin(ma) & fin(mb) & pos(ma) & pos(mb) & finite3(pa) &
+              finite3(pb) & fin(ma * ma + rc_v3_norm2(pa) * k) &
+              fin(mb * mb + rc_v3_norm2(pb) * k) & fin(rc_v3_norm2(rc_v3_add(pa, pb))) &
+              finite3(n) & nonzero3(n);
     }
     return ok;
 }
