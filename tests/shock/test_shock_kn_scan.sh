@@ -1,5 +1,5 @@
 #!/bin/sh
-# relcol-shock --kn-scan on a small tube (3-D, c = inf, 2880 balls, 8 seeds, t = 400, Kn
+# relcol-shock --kn-scan on a small tube (3-D, c = inf, 2400 balls, 8 seeds, t = 400, Kn
 # 0.025, 0.2, 5; about 20 s of CPU): the files; the distance from the ideal fluid rises and the distance from
 # free streaming falls as Kn grows; at the smallest Kn the fluid is the nearer reference,
 # at the largest free streaming (the same checks with the two references swapped must
@@ -28,8 +28,9 @@ expect 2 "\-\-kn-scan: not with \-\-sweep-c" --kn-scan 0.1,1 --sweep-c inf,2
 expect 2 "\-\-kn-scan: Kn = 0.001 needs radius .* packed" --kn-scan 0.001,1
 expect 2 "\-\-kn-scan: the right wave is not a shock" --kn-scan 0.1,1 --n-left 0.001 --T-left 0.5
 expect 2 "\-\-gif: not with \-\-kn-scan" --kn-scan 0.1,1 --gif
-# (the three Kn lie a factor 8-25 apart: measured, d_fluid 0.34, 0.70, 0.96 and d_free
-# 0.81, 0.42, 0 with errors 0.03-0.16 over two seed sets; closer neighbours, 0.5 and 5 at
+# (the three Kn lie a factor 8-25 apart: measured, d_fluid 0.33, 0.72, 0.92 and d_free
+# 0.80, 0.43, 0 with errors 0.03-0.19, and each within 0.07 at W = 12 over two seed sets;
+# closer neighbours, 0.5 and 5 at
 # t = 200, reversed d_free in one set of three, both near free streaming)
 "$app" --out "$dir/k" --kn-scan 0.025,0.2,5 --seeds 8 --length 2000 --width 10 \
     --n-left 0.016 --n-right 0.008 --times 400 --bins 80 --quiet 2>"$dir/k.err" ||
