@@ -25,9 +25,10 @@ int sh_gif(const char *prog, const char *dir, const sh_opts *o, const sh_result 
                     if (isfinite(v[u]))
                         lo[a] = fmin(lo[a], v[u]), hi[a] = fmax(hi[a], v[u]);
             }
-        const double pad = 0.05 * (hi[a] - lo[a]) + 1e-12 * fabs(hi[a]) + 1e-300;
-        if (!(hi[a] >= lo[a]))
+        if (!(hi[a] >= lo[a])) /* no finite value at any time */
             lo[a] = 0.0, hi[a] = 1.0;
+        /* (a flat panel still gets a range gnuplot accepts) */
+        const double pad = 0.05 * (hi[a] - lo[a]) + 1e-6 * fabs(hi[a]) + 1e-300;
         lo[a] -= pad, hi[a] += pad;
     }
     char *path = app_path_join(dir, "profiles_gif.gp");
