@@ -257,7 +257,8 @@ async function checksRun() {
         'a scenario file runs', s.main.diag.coll + ' collisions, energy error ' + s.main.diag.eerr.toExponential(2));
   const bad = good.replace('"r":0.1', '"r":-1');
   await page.setInputFiles('#file', { name: 'bad.json', mimeType: 'application/json', buffer: Buffer.from(bad) });
-  await waitFor(async () => /bad|radius|r:|balls/.test(await page.locator('#status').innerText()), 5000, 'the refusal');
+  // (the status said "ready: three.json (3 balls)" before: wait for the refusal itself)
+  await waitFor(async () => /bad\.json/.test(await page.locator('#status').innerText()), 10000, 'the refusal');
   const msg = await page.locator('#status').innerText();
   s = await state();
   check(/balls\[2\]\.r/.test(msg) && s.scenario === 'three.json', 'a bad file is refused by the reader', msg);
@@ -270,7 +271,7 @@ async function checksRun() {
   const rules = await page.locator('#groups option').allInnerTexts();
   check(rules.join(',') === 'simultaneous,sequential,drop', 'group rules from the library', rules.join(', '));
   await page.selectOption('#groups', { label: 'sequential' });
-  await page.waitForTimeout(300);
+  await waitFor(async () => (await state()).main.diag.groups === 1, 5000, 'the sequential rule').catch(() => {});
   s = await state();
   check(s.main.diag.groups === 1 && !s.error, 'the sequential rule applied', 'groups ' + s.main.diag.groups + (s.error ? ', ' + s.error : ''));
 
