@@ -68,7 +68,8 @@ static const app_opt opts[] = {
      .help = "also D, eta, lambda (Einstein–Helfand; reads every position)"},
     {"--lag", "T", APP_T_DOUBLE, OFF(in.lag), "20", .valid = app_valid_positive,
      .help = "Helfand lag in mean free times (default %D, within a block;\n"
-             "D of a dense gas needs about 100 to take in the long-time tail)"},
+             "D of a dense gas needs about 100 to take in the long-time tail;\n"
+             "eta_gk - eta beyond eta_gk_eh_diff_se says the lag is short)"},
     {"--seed", "S", APP_T_U64, OFF(in.seed), "1",
      .help = "seed of the gas drawn and of the theory integrals (default %D)"},
     {"--out", "DIR", APP_T_CUSTOM, OFF(out), "out/eos", .parse = app_opt_dir,
