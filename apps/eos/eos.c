@@ -69,7 +69,8 @@ static const app_opt opts[] = {
      .help = "also D, eta, lambda (Einstein–Helfand; reads every position)"},
     {"--lag", "T", APP_T_DOUBLE, OFF(in.lag), "20", .valid = app_valid_positive,
      .help = "Helfand lag in mean free times (default %D, within a block;\n"
-             "D of a dense gas needs about 100 to take in the long-time tail)"},
+             "D of a dense gas needs about 100 to take in the long-time tail;\n"
+             "eta_gk - eta beyond eta_gk_eh_diff_se says the lag is short)"},
     {"--seed", "S", APP_T_U64, OFF(in.seed), "1",
      .help = "seed of the gas drawn and of the theory integrals (default %D)"},
     {"--out", "DIR", APP_T_CUSTOM, OFF(out), "out/eos", .parse = app_opt_dir,
@@ -103,7 +104,11 @@ static void usage(FILE *f)
 "covariant, transport) at finite c, eta and lambda of the invariant Boltzmann gas\n"
 "(converged, dilute) instead, and no D. Fields without a measurement or a theory in\n"
 "this run are empty.\n"
-"Z, kT, P, D, eta, lambda each with a standard error from the blocks.\n");
+"Z, kT, P, D, eta, lambda each with a standard error from the blocks; eta and lambda\n"
+"are Einstein-Helfand over every time origin (eta on the five traceless components),\n"
+"and beside them Green-Kubo on the same readings (eta_gk, lambda_gk: the binned flux's\n"
+"autocorrelation integrated to the cutoff eta_gk_cut, lambda_gk_cut in mean free times,\n"
+"where the next stretch adds less than its error; *_gk_eh_diff_se the error of GK - EH).\n");
 }
 
 /* The checks between options, after the table's parse: 0, else an exit code. */
@@ -239,6 +244,10 @@ static int write_script(const char *path, const options *o, char *err)
         const int by_pack = o->ntheta == 1, joined = o->npack == 1 || o->ntheta == 1;
         const int xc = by_pack ? 4 : 5;
         const char *with = joined ? "linespoints" : "points";
+        /* the Green–Kubo points set 1.5 % right of the Einstein–Helfand ones (a factor:
+         * the theta axis is logarithmic) so both error bars show */
+        const int gkx = xc;
+        const char *xshift = "1.015";
         char xr[96];
         if (by_pack)
             snprintf(xr, sizeof xr, "set xrange [0:%.4g]\nset logscale y", pmax + 0.05);
@@ -247,9 +256,9 @@ static int write_script(const char *path, const options *o, char *err)
                      2.0 * tmax);
         app_gnuplot_head(f, "eos.png", "size 1500,600 enhanced font 'Sans,12' linewidth 1.4", 0);
         fprintf(f,
-"set multiplot layout 1,3 title \"Transport coefficients of %d-D hard balls (Einstein–Helfand), "
+"set multiplot layout 1,3 title \"Transport coefficients of %d-D hard balls (Einstein–Helfand; η, λ also Green–Kubo), "
 "N = %zu, c = %s, frame %s\\n{/*0.8 {/:Bold blue points}: relcol, error bars one standard "
-"error over blocks;   {/:Bold red}: Enskog (classical) at the same kT}\\n{/*0.8 {/:Bold violet, "
+"error over blocks;   {/:Bold orange circles} (η, λ): Green–Kubo on the same run, set a little right;   {/:Bold red}: Enskog (classical) at the same kT}\\n{/*0.8 {/:Bold violet, "
 "dotted}: %s;   {/:Bold green, dashed} (D): Speedy's "
 "N = 500 fit moved to this box}\"\n"
 "set xlabel '%s'\nset grid lc rgb '#dddddd'\nunset key\n"
@@ -262,18 +271,21 @@ static int write_script(const char *path, const options *o, char *err)
 "set ylabel 'η_s'\n"
 "plot 'eos.csv' skip 1 using %d:21 with %s lc rgb '#d62728' title 'Enskog', \\\n"
 "     '' skip 1 using %d:28 with %s dt 3 lc rgb '#9467bd' title 'Chapman–Enskog', \\\n"
-"     '' skip 1 using %d:16:17 with yerrorbars pt 7 ps 1.2 lc rgb '#1f77b4' title 'relcol'\n"
+"     '' skip 1 using %d:16:17 with yerrorbars pt 7 ps 1.2 lc rgb '#1f77b4' title 'relcol', \\\n"
+"     '' skip 1 using ($%d*%s):30:31 with yerrorbars pt 6 ps 1.2 lc rgb '#ff7f0e' title 'relcol, Green–Kubo'\n"
 "set ylabel 'λ'\n"
 "plot 'eos.csv' skip 1 using %d:22 with %s lc rgb '#d62728' title 'Enskog', \\\n"
 "     '' skip 1 using %d:29 with %s dt 3 lc rgb '#9467bd' title 'Chapman–Enskog', \\\n"
-"     '' skip 1 using %d:18:19 with yerrorbars pt 7 ps 1.2 lc rgb '#1f77b4' title 'relcol'\n"
+"     '' skip 1 using %d:18:19 with yerrorbars pt 7 ps 1.2 lc rgb '#1f77b4' title 'relcol', \\\n"
+"     '' skip 1 using ($%d*%s):32:33 with yerrorbars pt 6 ps 1.2 lc rgb '#ff7f0e' title 'relcol, Green–Kubo'\n"
 "unset multiplot\n",
                 in->dim, in->n, app_fmt(in->c, fc), in->frame ? in->frame->name : "sphere",
                 eos_invariant_rate(in) ? "the invariant Boltzmann gas's converged Chapman–Enskog "
                                          "(dilute; no D)"
                                        : "the sphere kernel's own Chapman–Enskog",
                 by_pack ? "packing fraction η" : isinf(in->c) ? "θ (kT at c = ∞)" : "θ = kT/(mc^2)", xr, xc, with, xc, with, xc,
-                with, xc, xc, with, xc, with, xc, xc, with, xc, with, xc);
+                with, xc, xc, with, xc, with, xc, gkx, xshift, xc, with, xc, with, xc, gkx,
+                xshift);
     }
     return app_atomic_commit(&a, err);
 }
@@ -371,7 +383,8 @@ int main(int argc, char **argv)
     fprintf(a.f, "dim,c,n,packing,theta,kT,kT_se,Z,Z_se,Z_theory,Z_theory2,P,P_se,D,D_se,"
                  "eta,eta_se,lambda,lambda_se,D_enskog,eta_enskog,lambda_enskog,D_speedy_box,"
                  "collisions,overlaps,seconds,D_chapman_enskog,eta_chapman_enskog,"
-                 "lambda_chapman_enskog\n");
+                 "lambda_chapman_enskog,eta_gk,eta_gk_se,lambda_gk,lambda_gk_se,eta_gk_cut,"
+                 "lambda_gk_cut,eta_gk_eh_diff_se,lambda_gk_eh_diff_se\n");
     printf("%s: %d-D, N = %zu, c = %s, frame %s, periodic box; Z against %s\n", prog,
            o.in.dim, o.in.n, app_fmt(o.in.c, fc), o.in.frame ? o.in.frame->name : "sphere",
            o.in.dim == 3 ? "Kolafa (Z_theory) and Carnahan–Starling"
@@ -437,6 +450,14 @@ int main(int argc, char **argv)
             csv_field(a.f, "%.6g", dce);
             csv_field(a.f, "%.6g", ece);
             csv_field(a.f, "%.6g", lce);
+            /* Green–Kubo beside Einstein–Helfand (eos_flux.h): the cutoffs in mean free
+             * times, and the block error of the difference (the two share the data) */
+            const eos_flux_est *fe = &r.eta_f, *fl = &r.lambda_f;
+            const double tail2[] = {tr * fe->gk, tr * fe->gk_se, tr * fl->gk, tr * fl->gk_se,
+                                    tr * fe->gk_cut / r.tau_free, tr * fl->gk_cut / r.tau_free,
+                                    tr * fe->diff_se, tr * fl->diff_se};
+            for (size_t q = 0; q < sizeof tail2 / sizeof *tail2; q++)
+                csv_field(a.f, q < 4 && q % 2 ? "%.3g" : "%.6g", tail2[q]);
             fputc('\n', a.f);
             if (bar.bar.tty && bar.bar.last_pct >= 0) { /* the results below the bar */
                 fputc('\n', stderr);
@@ -451,6 +472,16 @@ int main(int argc, char **argv)
                        "of this kernel %.5f)  eta = %.5f +- %.5f (Enskog %.5f, Chapman-Enskog %.5f)  "
                        "lambda = %.5f +- %.5f (Enskog %.5f, Chapman-Enskog %.5f)\n", r.d, r.d_se,
                        de, ds, dce, r.eta, r.eta_se, ee, ece, r.lambda, r.lambda_se, le, lce);
+            if (in.transport)
+                printf("    Green-Kubo (binned flux, cutoff by the plateau rule): eta = %.5f +- %.5f "
+                       "(cut at %.3g mean free times%s; GK - EH = %+.5f +- %.5f)  lambda = %.5f "
+                       "+- %.5f (cut at %.3g%s; GK - EH = %+.5f +- %.5f)\n", r.eta_f.gk,
+                       r.eta_f.gk_se, r.eta_f.gk_cut / r.tau_free,
+                       r.eta_f.gk_found ? "" : ", no plateau within the lag", r.eta_f.gk - r.eta,
+                       r.eta_f.diff_se, r.lambda_f.gk, r.lambda_f.gk_se,
+                       r.lambda_f.gk_cut / r.tau_free,
+                       r.lambda_f.gk_found ? "" : ", no plateau within the lag",
+                       r.lambda_f.gk - r.lambda, r.lambda_f.diff_se);
             fflush(stdout);
         }
     if (rc != 0) {

@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "eos_flux.h"
 #include "eos_lattice.h"
 #include "eos_theory.h"
 #include "juttner.h"
@@ -35,6 +36,8 @@ typedef struct eos_in {
     double move;              /* --sensitivity: the start moved by move_balls(b, n, dim,
                                  move) when move_balls is set */
     void (*move_balls)(rc_sim_ball *b, size_t n, int dim, double move);
+    double *curve_eta, *curve_lambda; /* NULL, or 2 (per_block + 1) values: the running
+                                         Green–Kubo integrals and errors (eos_flux.h) */
 } eos_in;
 
 typedef struct eos_out {
@@ -42,7 +45,10 @@ typedef struct eos_out {
     double kT, kT_se;              /* <p.v> / d, time-averaged exactly */
     double z, z_se;                /* P V / (N kT) */
     double p, p_se;                /* pressure */
-    double d, d_se, eta, eta_se, lambda, lambda_se;
+    double d, d_se, eta, eta_se, lambda, lambda_se;  /* eta, lambda: eta_f.eh, lambda_f.eh */
+    eos_flux_est eta_f, lambda_f;  /* both estimators of each (eos_flux.h) */
+    size_t lag_readings;           /* the lag L in readings (the curves' length L + 1) */
+    double dt;                     /* time between readings */
     uint64_t collisions, overlaps;
     double seconds_engine;         /* (the caller times; kept for reports) */
     rc_validity val;               /* the run's validity report (relcol/validity.h) */
@@ -217,11 +223,9 @@ static inline int eos_measure_ticked(const eos_in *in, eos_out *o, char *err,
     rc_sim_moments *M = malloc(m * sizeof *M);
     double *X = in->transport ? malloc((pb + 1) * n * 3 * sizeof *X) : NULL;
     double *zb = malloc(nb * sizeof *zb), *kb = malloc(nb * sizeof *kb),
-           *pbk = malloc(nb * sizeof *pbk), *db = malloc(nb * sizeof *db),
-           *eb = malloc(nb * sizeof *eb), *lb = malloc(nb * sizeof *lb);
-    double *series = malloc((pb + 1) * 9 * sizeof *series);
+           *pbk = malloc(nb * sizeof *pbk), *db = malloc(nb * sizeof *db);
     int rc = -1;
-    if (!M || (in->transport && !X) || !zb || !kb || !pbk || !db || !eb || !lb || !series) {
+    if (!M || (in->transport && !X) || !zb || !kb || !pbk || !db) {
         snprintf(err, 256, "out of memory");
         goto out;
     }
@@ -232,6 +236,8 @@ static inline int eos_measure_ticked(const eos_in *in, eos_out *o, char *err,
         L = 2;
     if (L > pb)
         L = pb - pb % 2;
+    o->lag_readings = L;
+    o->dt = dt;
     int st = rc_sim_advance(s, t0, 0);
     const double t_all = t0 + in->t_run * o->tau_free;
     for (size_t k = 0; k < m && st == RC_OK; k++) {
@@ -289,34 +295,33 @@ static inline int eos_measure_ticked(const eos_in *in, eos_out *o, char *err,
     o->overlaps = dg.overlaps;
     if (in->transport) {
         o->d = eos_mean_se(db, (int)nb, &o->d_se);
-        for (size_t b = 0; b < nb; b++) {
-            const rc_sim_moments *A = &M[b * pb];
-            /* shear: the off-diagonal Helfand moments, every a != b */
-            double eta = 0.0;
-            int ne = 0;
-            for (int a = 0; a < dim; a++)
-                for (int c = 0; c < dim; c++) {
-                    if (a == c)
-                        continue;
-                    for (size_t k = 0; k <= pb; k++)
-                        series[k] = A[k].helfand[3 * a + c];
-                    eta += eos_helfand_slope(series, 1, pb + 1, L, dt);
-                    ne++;
-                }
-            eb[b] = eta / ne / (2.0 * V * o->kT);
-            /* heat (Eckart): energy moment minus h times the position moment, h the
-             * enthalpy per ball (kinetic energy and P V over N) */
-            const double h = (A[0].energy + o->p * V) / (double)n;
-            double lam = 0.0;
-            for (int a = 0; a < dim; a++) {
-                for (size_t k = 0; k <= pb; k++)
-                    series[k] = A[k].helfand_energy[a] - h * A[k].position[a];
-                lam += eos_helfand_slope(series, 1, pb + 1, L, dt);
-            }
-            lb[b] = lam / dim / (2.0 * V * o->kT * o->kT);
+        /* shear: the five (2-D: two) independent traceless components; heat (Eckart):
+         * energy moment minus h times the position moment, h the enthalpy per ball
+         * (kinetic energy and P V over N); every time origin of the run */
+        const int ns = eos_flux_shear_count(dim);
+        double *xs = malloc((size_t)(ns > dim ? ns : dim) * m * sizeof *xs);
+        if (!xs) {
+            snprintf(err, 256, "out of memory");
+            goto out;
         }
-        o->eta = eos_mean_se(eb, (int)nb, &o->eta_se);
-        o->lambda = eos_mean_se(lb, (int)nb, &o->lambda_se);
+        eos_flux_shear_series(M, m, dim, xs);
+        const int se = eos_flux_estimate(xs, ns, m, nb, pb, L, dt,
+                                         1.0 / (2.0 * V * o->kT), &o->eta_f,
+                                         in->curve_eta);
+        const double h = (M[0].energy + o->p * V) / (double)n;
+        eos_flux_heat_series(M, m, dim, h, xs);
+        const int sl = eos_flux_estimate(xs, dim, m, nb, pb, L, dt,
+                                         1.0 / (2.0 * V * o->kT * o->kT), &o->lambda_f,
+                                         in->curve_lambda);
+        free(xs);
+        if (se != 0 || sl != 0) {
+            snprintf(err, 256, "transport estimators: lag %zu readings, %zu a block", L, pb);
+            goto out;
+        }
+        o->eta = o->eta_f.eh;
+        o->eta_se = o->eta_f.eh_se;
+        o->lambda = o->lambda_f.eh;
+        o->lambda_se = o->lambda_f.eh_se;
     }
     rc = 0;
 out:
@@ -326,9 +331,6 @@ out:
     free(kb);
     free(pbk);
     free(db);
-    free(eb);
-    free(lb);
-    free(series);
     if (s)
         rc_sim_validity(s, &o->val);
     rc_sim_free(&s);

@@ -19,7 +19,7 @@ static double now(void)
 
 int main(int argc, char **argv)
 {
-    eos_in in = {3, 10000, 0.3, 1.0, INFINITY, NULL, 3, 20.0, 40.0, 20, 50, 0, 1.0, 0, 0.0, NULL};
+    eos_in in = {3, 10000, 0.3, 1.0, INFINITY, NULL, 3, 20.0, 40.0, 20, 50, 0, 1.0, 0, 0.0, NULL, NULL, NULL};
     in.frame = rc_toi_frame_find("sphere");
     if (argc > 1)
         in.n = (size_t)atol(argv[1]);

@@ -17,7 +17,7 @@
 
 static eos_in base(void)
 {
-    eos_in in = {3, 500, 0.1, 1.0, INFINITY, NULL, 7, 20.0, 400.0, 20, 50, 0, 10.0, 0, 0.0, NULL};
+    eos_in in = {3, 500, 0.1, 1.0, INFINITY, NULL, 7, 20.0, 400.0, 20, 50, 0, 10.0, 0, 0.0, NULL, NULL, NULL};
     in.frame = rc_toi_frame_find("sphere");
     return in;
 }

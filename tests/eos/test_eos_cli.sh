@@ -41,6 +41,12 @@ run '' --n 300 --packing 0.05 --transport --t-run 400 --lag 10 --out "$T/t"
 expect_ok transport
 d=$(awk -F, 'NR == 2 {print ($14 > 0 && $16 > 0 && $18 > 0) ? "ok" : "bad"}' "$T/t/eos.csv")
 [ "$d" = ok ] && ok || bad "transport columns: $(sed -n 2p "$T/t/eos.csv")"
+# and Green-Kubo beside them (eta_gk, lambda_gk with errors, cutoffs within the lag of 10),
+# named in the header and drawn in the figure
+d=$(awk -F, 'NR == 1 {ok = ($30 == "eta_gk" && $32 == "lambda_gk")} NR == 2 {print (ok && $30 > 0 && $31 > 0 &&
+    $32 > 0 && $33 > 0 && $34 > 0 && $34 <= 10 && $35 > 0 && $35 <= 10) ? "ok" : "bad"}' "$T/t/eos.csv")
+[ "$d" = ok ] && ok || bad "Green-Kubo columns: $(sed -n 2p "$T/t/eos.csv")"
+grep -qF "title 'relcol, Green–Kubo'" "$T/t/eos.gp" && ok || bad "eos.gp: no Green-Kubo points"
 # its figure: against packing (one theta), the symbols named in the heading (the keys
 # of three panels covered their axes' labels)
 grep -qF "using 4:14:15 with yerrorbars" "$T/t/eos.gp" && grep -qF "{/:Bold blue points}: relcol" "$T/t/eos.gp" \
@@ -49,7 +55,7 @@ grep -qF "using 4:14:15 with yerrorbars" "$T/t/eos.gp" && grep -qF "{/:Bold blue
 # fields without a measurement or a theory are empty, never nan (D_chapman_enskog and its
 # two neighbours without --transport)
 grep -q nan "$T/e/eos.csv" && bad "nan in eos.csv: $(sed -n 2p "$T/e/eos.csv")" || ok
-d=$(awk -F, 'NR == 2 {print ($14 == "" && $27 == "" && $28 == "" && $29 == "") ? "ok" : "bad"}' "$T/e/eos.csv")
+d=$(awk -F, 'NR == 2 {print ($14 == "" && $27 == "" && $28 == "" && $29 == "" && $30 == "" && $37 == "") ? "ok" : "bad"}' "$T/e/eos.csv")
 [ "$d" = ok ] && ok || bad "unmeasured columns not empty: $(sed -n 2p "$T/e/eos.csv")"
 # a start for N that rc_sim_gas_init's cubic lattice cannot hold at 0.45 (250 on 7^3 sites)
 run '' --n 250 --packing 0.45 --t-run 10 --t-equil 2 --out "$T/p"

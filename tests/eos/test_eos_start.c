@@ -44,7 +44,7 @@ static void test_every_packing(void)
         for (size_t a = 0; a < sizeof ns / sizeof *ns; a++)
             for (int k = 0; k < 3; k++) {
                 eos_in in = {dim, ns[a], dim == 3 ? p3[k] : p2[k], 1.0, INFINITY, NULL, 7,
-                             1.0, 1.0, 2, 1, 0, 1.0, 0, 0.0, NULL};
+                             1.0, 1.0, 2, 1, 0, 1.0, 0, 0.0, NULL, NULL, NULL};
                 in.frame = rc_toi_frame_find("sphere");
                 rc_sim *s = NULL;
                 double L = 0.0;
