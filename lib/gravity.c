@@ -141,10 +141,35 @@ static int poly_sign_changes(const double *c, int deg, double lo, double hi, dou
     return m;
 }
 
+/* 1 when the polynomial stays above its evaluation's rounding on [0, hi] (hi >= 0
+ * finite), by a lower bound: the quadratic part's minimum there, and each higher term at
+ * its most negative, c_k hi^k when c_k < 0. The margin, 1e-12 of sum |c_k| hi^k, is far
+ * above the rounding of poly_at (a few units of 1e-16 of it), so a polynomial this passes
+ * has no evaluated sign change for the root isolation to find. It costs a few products,
+ * where the isolation costs its derivatives' roots and bisections. */
+static int poly_stays_above(const double *c, int deg, double hi)
+{
+    if (!(hi >= 0.0) || !isfinite(hi))
+        return 0;
+    double q = fmin(c[0], c[0] + hi * (c[1] + hi * (deg >= 2 ? c[2] : 0.0)));
+    if (deg >= 2 && c[2] > 0.0 && c[1] < 0.0 && -c[1] < 2.0 * c[2] * hi)
+        q = fmin(q, c[0] - c[1] * c[1] / (4.0 * c[2])); /* (the vertex inside) */
+    double size = 0.0, hk = 1.0;
+    for (int k = 0; k <= deg; k++) {
+        size += fabs(c[k]) * hk;
+        if (k >= 3 && c[k] < 0.0)
+            q += c[k] * hk;
+        hk *= hi;
+    }
+    return q > 1e-12 * size;
+}
+
 int rc_gravity_poly_first_fall_(const double *c, int deg, double lo, double hi, double *s)
 {
     double r[4];
     if (!(hi > lo))
+        return RC_MISS;
+    if (lo >= 0.0 && poly_stays_above(c, deg, hi))
         return RC_MISS;
     const int n = poly_sign_changes(c, deg, lo, hi, r);
     for (int i = 0; i < n; i++) {

@@ -118,9 +118,8 @@ static double pair_at(rc_sim *s, int32_t i, int32_t k, double horizon)
 {
     const eng_ball *bi = &s->b[i], *bk = &s->b[k];
     rc_vec3 xk = bk->x, pk = s->a[k].p;
-    double dtau;
     if (s->now > bk->t) {
-        const int st = s->path->drift(s, s->a[k].m, &xk, &pk, s->now - bk->t, &dtau);
+        const int st = s->path->drift(s, s->a[k].m, &xk, &pk, s->now - bk->t, NULL);
         if (st != RC_OK) {
             fail(s, st);
             return INFINITY;

@@ -14,7 +14,8 @@ static int line_drift(const rc_sim *s, double m, rc_vec3 *x, rc_vec3 *p, double 
 {
     const double M = eng_mass_rel(m, *p, s->inv_c2);
     *x = rc_v3_axpy(*x, dt, rc_v3_scale(1.0 / M, *p));
-    *dtau = s->inv_c2 == 0.0 ? dt : dt * (m / M);
+    if (dtau)
+        *dtau = s->inv_c2 == 0.0 ? dt : dt * (m / M);
     return RC_OK;
 }
 
@@ -95,9 +96,10 @@ static rc_gravity field_of(const rc_sim *s)
 static int newton_drift(const rc_sim *s, double m, rc_vec3 *x, rc_vec3 *p, double dt, double *dtau)
 {
     const rc_gravity f = field_of(s);
-    const double flight = rc_gravity_newton_flight_(&f, m, *p, dt); /* (before p moves) */
+    /* (before p moves; not asked when a neighbour is brought to an instant for a pair) */
+    const double flight = dtau ? rc_gravity_newton_flight_(&f, m, *p, dt) : 0.0;
     const int st = rc_gravity_newtonian.drift(&f, m, x, p, dt);
-    if (st == RC_OK)
+    if (st == RC_OK && dtau)
         *dtau = m * flight;
     return st;
 }
@@ -106,10 +108,10 @@ static int equiv_drift(const rc_sim *s, double m, rc_vec3 *x, rc_vec3 *p, double
 {
     const rc_gravity f = field_of(s);
     /* proper time on the line in the box's frame at the start: t' m / M there */
-    const double flight = rc_gravity_equiv_flight_(&f, m, *x, *p, dt);
-    const double M = rc_mass_rel(m, *p, s->inv_c2);
+    const double flight = dtau ? rc_gravity_equiv_flight_(&f, m, *x, *p, dt) : 0.0;
+    const double M = dtau ? rc_mass_rel(m, *p, s->inv_c2) : 1.0;
     const int st = rc_gravity_equivalence.drift(&f, m, x, p, dt);
-    if (st == RC_OK)
+    if (st == RC_OK && dtau)
         *dtau = flight * (m / M);
     return st;
 }

@@ -15,7 +15,7 @@ typedef struct eng_path_ops {
     int (*run)(rc_sim *s, double t_end, uint64_t max_events);
     /// Ball i's events predicted from its stored state (the queue updated if asked).
     void (*predict)(rc_sim *s, int32_t i, int update_heap);
-    /// A ball (rest mass m, *x, *p) moved along its path by dt >= 0 of the engine's clock, *dtau its proper time on the way; changed only on RC_OK.
+    /// A ball (rest mass m, *x, *p) moved along its path by dt >= 0 of the engine's clock, *dtau its proper time on the way (dtau NULL: not asked); changed only on RC_OK.
     int (*drift)(const rc_sim *s, double m, rc_vec3 *x, rc_vec3 *p, double dt, double *dtau);
     /// Earliest dt > 0 at which coordinate k of the ball equals X (RC_MISS: never).
     int (*plane_time)(const rc_sim *s, double m, rc_vec3 x, rc_vec3 p, int k, double X, double *dt);

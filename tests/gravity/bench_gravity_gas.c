@@ -3,8 +3,10 @@
  * field_gas.h's box, N balls of radius 0.005 (packing 1e-3 at N = 2000), one speed 0.8
  * (classically; at c = 2 that is 0.4 c), g = 1, the engine's own cells. Each gas first
  * runs `warm` collisions (not timed), then `timed` collisions are timed.
- * Usage: bench_gravity_gas [N [timed]]. */
+ * Usage: bench_gravity_gas [N [timed [coupling c]]]; a coupling ("none", "newtonian",
+ * "equivalence") and c time that one case alone (for a profiler). */
 #include <stdio.h>
+#include <string.h>
 #include <time.h>
 
 #include "field_gas.h"
@@ -44,6 +46,18 @@ int main(int argc, char **argv)
     const size_t n = argc > 1 ? (size_t)atol(argv[1]) : 4000;
     const uint64_t timed = argc > 2 ? (uint64_t)atol(argv[2]) : 200000;
     const double cs[2] = {INFINITY, 2.0};
+    if (argc > 4) { /* one case */
+        const rc_gravity_coupling *cp = strcmp(argv[3], "none") ? rc_gravity_find(argv[3]) : NULL;
+        if (strcmp(argv[3], "none") && !cp) {
+            fprintf(stderr, "bench_gravity_gas: coupling %s: not one of none, newtonian, "
+                            "equivalence\n", argv[3]);
+            return 2;
+        }
+        const double c = atof(argv[4]);
+        const double t = per_collision(cp, c > 0.0 ? c : INFINITY, n, timed);
+        printf("  %s c %g: %.3g us/collision\n", argv[3], c, 1e6 * t);
+        return isfinite(t) ? 0 : 1;
+    }
     printf("gravity gas: N %zu, %llu collisions timed a case (CPU time)\n", n,
            (unsigned long long)timed);
     for (int j = 0; j < 2; j++) {
