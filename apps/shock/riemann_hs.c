@@ -162,7 +162,6 @@ int rs_hs_solve(const rs_hs *g, rs_state L, rs_state R, rs_hs_solution *sol)
         if (!(st[k].rho > 0.0) || !(st[k].p > 0.0) || !isfinite(st[k].v) ||
             !(st[k].rho * g->vball < 0.7)) /* beyond phi 0.7: no fluid (Z's pole at 1) */
             return RS_EINVAL;
-    gsl_set_error_handler_off();
     star q = {g, L.rho, 0.0, R.rho, 0.0, R.v - L.v};
     q.TL = L.p / (L.rho * g->z(g, L.rho * g->vball));
     q.TR = R.p / (R.rho * g->z(g, R.rho * g->vball));
