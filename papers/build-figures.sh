@@ -32,6 +32,13 @@ run frames "$frames" --out "$fig/frames"
 run rack "$sim" --builtin rack --out "$fig/rack"
 run gas "$sim" --builtin gas --t-end 10 --out "$fig/gas"
 
+# transport by contact frame over theta (transport.md §12): drawn from the measured CSV, no run
+if command -v gnuplot > /dev/null 2>&1; then
+    mkdir -p "$fig/tsweep"
+    gnuplot -e "csv='$src/../data/reproductions/ghodrat2020.csv'; out='$fig/tsweep/tsweep.png'" \
+        "$src/scripts/tsweep.gp"
+fi
+
 cp "$src"/*.md "$out"/
 if command -v gnuplot > /dev/null 2>&1; then
     echo "paper: $out/relcol.md with figures in $fig"

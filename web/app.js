@@ -12,7 +12,16 @@
   const WD = { TIME: 0, COLL: 1, ENERGY: 2, EERR: 3, PERR: 4, OVERLAPS: 5, OVSHARE: 6,
                MEANG: 7, VMAX: 8, C: 9, KINETIC: 10, HEAT: 11, GROUPSEQ: 12, MAXGROUP: 13,
                N: 14, BOXX: 15, BOXY: 16, PCLASS: 17, EPS: 18, FRAME: 19, LAW: 20,
-               CONTRACTED: 21, GROUPS: 22, VERDICT: 23, PMODEL: 24, COUNT: 25 };
+               CONTRACTED: 21, GROUPS: 22, VERDICT: 23, PMODEL: 24, FIELD: 25, G: 26,
+               COUPLING: 27, COUNT: 28 };
+  // web_profile's columns of PROF_BINS slabs, then its tail (relcol_web.c, enum WP_*)
+  const PROF_BINS = 12, PROF_COLS = 5;
+  const PT = { FIT: 0, H: 1, G: 2, COUPLING: 3, M: 4, N: 5, COUNT: 6 };
+  const G_POS_MAX = 1000;  // the g slider: 0 .. gMax linearly in G_POS_MAX steps
+  // the page's third scenario: data/scenarios/atmosphere.json (its outputs block dropped)
+  const ATMOSPHERE = JSON.stringify({ relcol: 1, dim: 2, c: 1, t_end: 2000, seed: 1,
+    boundary: ['periodic', 'walls'], gravity: { g: 0.002, coupling: 'equivalence' },
+    generate: { kind: 'gas', n: 400, radius: 1, packing: 0.05, v_rms: 0.5 } });
   // rc_sim_verdict (relcol/validity.h)
   const VERDICTS = ['defined', 'outside (p_model > 1e-3: depends on the model’s rules)',
                     'non-covariant model (counted, not bounded)'];
@@ -32,6 +41,8 @@
     canvasRef: $('canvas-ref'), canvasMain: $('canvas-main'), hist: $('hist'),
     theta: $('theta'), tip: $('tip'), capRef: $('cap-ref'), keyText: $('colour-key-text'),
     keyScale: $('colour-key-scale'), keyBar: $('colour-key-bar'), keyTicks: $('colour-key-ticks'),
+    g: $('g'), gOut: $('g-out'), gValue: $('g-value'), coupling: $('coupling'), gMsg: $('g-msg'),
+    profile: $('profile'), profileCap: $('profile-cap'),
   };
 
   let M = null;      // the wasm module
@@ -52,6 +63,11 @@
     workMs: 0,
     lastNow: null,
     error: null,
+    g: 0,            // the field now (0: none) and its coupling (index into the library's)
+    coupling: 0,
+    gMax: 1,         // the g slider's top (set at each load from the gas's kT: gasGMax)
+    prof: null,      // the profile averaged over engine time (sampleProfile)
+    profAxes: null,
   };
 
   function fmt(x, digits) {
@@ -103,6 +119,11 @@
                                                   'number', 'number']),
       benchRun: f('web_bench_run', 'number', ['number', 'number']),
       benchFree: f('web_bench_free', null, ['number']),
+      setGravity: f('web_set_gravity', 'number', ['number', 'number', 'number']),
+      couplingCount: f('web_coupling_count', 'number', []),
+      couplingName: f('web_coupling_name', 'string', ['number']),
+      couplingSummary: f('web_coupling_summary', 'string', ['number']),
+      profile: f('web_profile', 'number', ['number', 'number']),
     };
   }
 
@@ -156,6 +177,17 @@
     ui.frame.value = String(main.diag[WD.FRAME]);
     ui.law.value = String(main.diag[WD.LAW]);
     ui.groups.value = String(main.diag[WD.GROUPS]);
+    // the field: the scenario's own, or (a reset) the one chosen before
+    const g0 = app.g, cp0 = app.coupling;
+    app.g = main.diag[WD.G];
+    if (main.diag[WD.COUPLING] >= 0) app.coupling = main.diag[WD.COUPLING];
+    app.gMax = gasGMax(main);
+    if (keepC && (g0 !== app.g || (g0 > 0 && cp0 !== app.coupling))) {
+      if (api.setGravity(main.w, g0, cp0) === 0) { app.g = g0; app.coupling = cp0; readWorld(main); }
+    }
+    if (app.g > app.gMax) app.gMax = niceUp(2 * app.g);
+    app.prof = null;
+    showField();
     if (app.split && !makeRef()) return false;
     sizeCanvases();
     showControls();
@@ -173,6 +205,10 @@
         ref.diag[WD.LAW] !== md[WD.LAW] || ref.diag[WD.GROUPS] !== md[WD.GROUPS]) {
       if (api.setModel(ref.w, md[WD.EPS], md[WD.FRAME], md[WD.LAW], md[WD.GROUPS]) !== 0) { fail('split view'); return false; }
     }
+    // the field, from the reference's start (its history differs from the main world's
+    // when the field was switched on later there: the caption says so)
+    if ((ref.diag[WD.G] !== app.g || ref.diag[WD.COUPLING] !== (app.g > 0 ? app.coupling : -1)) &&
+        api.setGravity(ref.w, app.g, app.coupling) !== 0) { fail('split view'); return false; }
     if (api.advance(ref.w, app.t) !== 0) { fail('split view'); return false; }
     readWorld(ref);
     app.ref = ref;
@@ -208,9 +244,86 @@
     if (api.setC(app.main.w, c) !== 0) { fail('c'); return false; }
     app.c = c;
     readWorld(app.main);
+    app.prof = null;
     showControls();
     draw();
     return true;
+  }
+
+  // ---- the field ------------------------------------------------------------------------
+
+  // 1, 2 or 5 times a power of ten, >= x
+  function niceUp(x) {
+    if (!(x > 0) || !isFinite(x)) return 1;
+    const p = Math.pow(10, Math.floor(Math.log10(x)));
+    return [1, 2, 5, 10].map((k) => k * p).find((v) => v >= x * (1 - 1e-12));
+  }
+
+  // The slider's top: the g at which m g H = 5 kT for this gas (kT = <p.v>/d from the
+  // library's profile), so that the slider spans from no field to a dense floor layer.
+  function gasGMax(v) {
+    const t = readProfile(v);
+    const kT = t.tail[PT.FIT], m = t.tail[PT.M], H = t.tail[PT.H];
+    return niceUp(kT > 0 && m > 0 && H > 0 ? 5 * kT / (m * H) : 1);
+  }
+
+  function gFor(pos) { return app.gMax * Math.min(G_POS_MAX, Math.max(0, pos)) / G_POS_MAX; }
+  function sliderForG(g) { return Math.min(G_POS_MAX, Math.max(0, Math.round(G_POS_MAX * g / app.gMax))); }
+
+  function fieldMessage(msg) {
+    ui.gMsg.textContent = msg || '';
+    ui.gMsg.hidden = !msg;
+  }
+
+  // The field on every world: g >= 0 (0: none) with the chosen coupling. The glue refuses
+  // a bad g (negative, not finite) or a scenario that cannot have a field, naming why; the
+  // run then goes on as it was, and the message shows beside the slider and in the status.
+  function setGravity(g, coupling) {
+    if (!app.main) return false;
+    for (const v of worlds()) {
+      if (api.setGravity(v.w, g, coupling) !== 0) {
+        // (a refused input is no failure of the run: it goes on, app.error stays clear)
+        const msg = 'field: ' + M.UTF8ToString(api.error());
+        setStatus(msg, true);
+        fieldMessage(msg);
+        showField();
+        return false;
+      }
+      readWorld(v);
+    }
+    app.g = g;
+    app.coupling = coupling;
+    app.prof = null;
+    fieldMessage('');
+    setStatus('field: ' + (g > 0 ? 'g = ' + fmt(g, 4) + ', ' + api.couplingName(coupling) +
+              ' coupling (contact frame ' + ui.frame.options[app.main.diag[WD.FRAME]].textContent + ')' : 'off'));
+    ui.frame.value = String(app.main.diag[WD.FRAME]);
+    showField();
+    draw();
+    return true;
+  }
+
+  // g as typed: a number (the glue judges its value), else refused here by what was typed
+  function takeTypedG() {
+    const txt = ui.gValue.value.trim();
+    const g = txt === '' ? NaN : Number(txt);
+    if (txt === '' || (Number.isNaN(g) && !/^[-+]?nan$/i.test(txt))) {
+      const msg = 'field: g = "' + txt + '": not a number (type g >= 0; 0 switches the field off)';
+      setStatus(msg, true);
+      fieldMessage(msg);
+      showField();
+      return false;
+    }
+    return setGravity(g, Number(ui.coupling.value));
+  }
+
+  function showField() {
+    if (app.g > app.gMax) app.gMax = niceUp(2 * app.g);
+    ui.g.value = String(sliderForG(app.g));
+    ui.gOut.textContent = app.g > 0 ? fmt(app.g, 4) : 'off';
+    // (a refused g stays in the box beside its message)
+    if (ui.gMsg.hidden && document.activeElement !== ui.gValue) ui.gValue.value = String(app.g);
+    ui.coupling.value = String(app.coupling);
   }
 
   function setModel() {
@@ -248,6 +361,7 @@
   }
 
   function showControls() {
+    ui.gOut.textContent = app.g > 0 ? fmt(app.g, 4) : 'off';
     ui.cOut.textContent = isFinite(app.c) ? fmt(app.c, 4) : '∞';
     ui.epsOut.textContent = Number(ui.eps.value).toFixed(2);
     ui.speedOut.textContent = fmt(app.speed, 3) + ' / s';
@@ -269,6 +383,14 @@
       o.title = api.lawSummary(i);
       ui.law.appendChild(o);
     }
+    ui.coupling.innerHTML = '';
+    for (let i = 0; i < api.couplingCount(); i++) {
+      const o = document.createElement('option');
+      o.value = String(i);
+      o.textContent = api.couplingName(i);
+      o.title = api.couplingSummary(i);
+      ui.coupling.appendChild(o);
+    }
     ui.groups.innerHTML = '';
     for (let i = 0; i < api.groupCount(); i++) {
       const o = document.createElement('option');
@@ -281,7 +403,9 @@
 
   function wire() {
     ui.scenario.addEventListener('change', () => {
-      app.source = { builtin: ui.scenario.value, text: null, name: ui.scenario.value };
+      app.source = ui.scenario.value === 'atmosphere'
+        ? { builtin: null, text: ATMOSPHERE, name: 'atmosphere' }
+        : { builtin: ui.scenario.value, text: null, name: ui.scenario.value };
       pause();
       load();
       draw();
@@ -316,6 +440,9 @@
     ui.frame.addEventListener('change', setModel);
     ui.law.addEventListener('change', setModel);
     ui.groups.addEventListener('change', setModel);
+    ui.g.addEventListener('input', () => { const g = gFor(Number(ui.g.value)); ui.gValue.value = String(g); setGravity(g, Number(ui.coupling.value)); });
+    ui.gValue.addEventListener('change', takeTypedG);
+    ui.coupling.addEventListener('change', () => { if (app.g > 0) setGravity(app.g, Number(ui.coupling.value)); else app.coupling = Number(ui.coupling.value); });
     for (const cv of [ui.canvasMain, ui.canvasRef]) {
       cv.addEventListener('mousemove', (e) => hover(e, cv));
       cv.addEventListener('mouseleave', () => { ui.tip.hidden = true; });
@@ -341,6 +468,8 @@
     ui.hist.width = hw;
     // (short enough that the table, its colour key and the histogram's axis fit a window)
     ui.hist.height = Math.round(Math.min(0.22 * hw, 0.26 * window.innerHeight * dpr));
+    ui.profile.width = hw;
+    ui.profile.height = Math.round(Math.min(0.3 * hw, 0.34 * window.innerHeight * dpr));
   }
 
   function ballColour(i, n, gamma, isRack) {
@@ -527,6 +656,166 @@
       (isFinite(theta) ? ', θ = kT/mc² = ' + fmt(theta, 4) : '');
   }
 
+  // ---- the profile along the field ------------------------------------------------------
+
+  // The library's profile of the balls as web_update last read them (web_profile)
+  function readProfile(v) {
+    const pp = api.profile(v.w, PROF_BINS) >> 3;
+    const a = M.HEAPF64.slice(pp, pp + PROF_COLS * PROF_BINS + PT.COUNT);
+    const col = (k) => Array.from(a.subarray(k * PROF_BINS, (k + 1) * PROF_BINS));
+    return { density: col(0), kT: col(1), kTerr: col(2), theoryDensity: col(3), theoryKT: col(4),
+             tail: Array.from(a.subarray(PROF_COLS * PROF_BINS)), raw: a };
+  }
+
+  // Averaged over engine time with weight 1 - exp(-dt/tau), tau the time the fastest ball
+  // takes to cross the box's height: one snapshot of 400 balls in 12 slabs is noisy. Reset
+  // at every change of the model (app.prof = null).
+  function sampleProfile() {
+    const v = app.main, t = v.diag[WD.TIME];
+    if (app.prof && app.prof.t === t) return;
+    const now = readProfile(v);
+    const tau = Math.max(now.tail[PT.H] / Math.max(v.diag[WD.VMAX], 1e-300), 1e-300);
+    if (!app.prof) {
+      app.prof = { t: t, t0: t, avg: Float64Array.from(now.raw), now: now };
+      return;
+    }
+    const w = 1 - Math.exp(-(t - app.prof.t) / tau), avg = app.prof.avg;
+    for (let k = 0; k < avg.length; k++) {
+      const x = now.raw[k];
+      if (!isFinite(avg[k])) avg[k] = x;
+      else if (isFinite(x)) avg[k] += w * (x - avg[k]);
+    }
+    app.prof.t = t;
+    app.prof.now = now;
+    app.prof.tau = tau;
+  }
+
+  function profileState() {
+    if (!app.prof) return null;
+    const a = app.prof.avg, col = (k) => Array.from(a.subarray(k * PROF_BINS, (k + 1) * PROF_BINS));
+    const tail = Array.from(a.subarray(PROF_COLS * PROF_BINS));
+    return { bins: PROF_BINS, density: col(0), kT: col(1), kTerr: col(2), theoryDensity: col(3),
+             theoryKT: col(4), kTfit: tail[PT.FIT], height: tail[PT.H], g: tail[PT.G],
+             coupling: tail[PT.COUPLING] >= 0 ? api.couplingName(tail[PT.COUPLING]) : null,
+             mass: tail[PT.M], since: app.prof.t0, tau: app.prof.tau || null,
+             now: { density: app.prof.now.density, kT: app.prof.now.kT } };
+  }
+
+  // Two panels, height y up: the balls' density (bars, per slab) against the dilute gas's
+  // equilibrium, and kT per slab (points, one snapshot's standard error) against the
+  // coupling's kT(y); axes ticked and labelled, a legend in each.
+  function drawProfile() {
+    const cv = ui.profile, ctx = cv.getContext('2d');
+    ctx.clearRect(0, 0, cv.width, cv.height);
+    const P = profileState();
+    if (!P) return;
+    const c = app.main.diag[WD.C], field = P.g > 0;
+    const equiv = field && P.coupling === 'equivalence';
+    const dpr = window.devicePixelRatio || 1, fs = Math.round(11 * dpr);
+    const mL = Math.round(56 * dpr), mR = Math.round(12 * dpr), mT = Math.round(10 * dpr),
+          mB = Math.round(40 * dpr), gap = Math.round(60 * dpr);
+    const W = (cv.width - mL - gap - mR) / 2, H = cv.height - mT - mB;
+    const panels = [
+      { x0: mL, label: 'density (share of balls per unit height)', bars: P.density, curve: P.theoryDensity },
+      { x0: mL + W + gap, label: 'kT in the slab (' + (isFinite(c) ? '= θ mc²' : 'c = ∞') + ')', pts: P.kT, err: P.kTerr, curve: P.theoryKT },
+    ];
+    const yOf = (z) => mT + H - H * z / P.height;
+    ctx.font = fs + 'px system-ui, sans-serif';
+    const axes = [];
+    for (const pn of panels) {
+      const vals = (pn.bars || pn.pts).concat(pn.curve).filter(isFinite);
+      if (pn.err) pn.pts.forEach((x, k) => { if (isFinite(x) && isFinite(pn.err[k])) vals.push(x + pn.err[k]); });
+      let top = Math.max(...vals, 0);
+      if (!(top > 0)) top = 1;
+      const xt = niceTicks(top), xs = xt.length > 1 ? xt[1] : top;
+      const xTop = Math.ceil(top / xs - 1e-9) * xs;
+      const ticks = [];
+      for (let k = 0; k * xs <= xTop * (1 + 1e-12); k++) ticks.push(k * xs);
+      const X = (x) => pn.x0 + W * x / xTop;
+      // grid, ticks and labels
+      ctx.lineWidth = 1;
+      ctx.fillStyle = '#444';
+      ctx.textAlign = 'center';
+      ctx.textBaseline = 'top';
+      for (const t of ticks) {
+        const x = Math.round(X(t)) + 0.5;
+        ctx.strokeStyle = '#e4e4e4';
+        ctx.beginPath(); ctx.moveTo(x, mT); ctx.lineTo(x, mT + H); ctx.stroke();
+        ctx.fillText(tickText(t, xs), x, mT + H + 4 * dpr);
+      }
+      ctx.fillText(pn.label, pn.x0 + W / 2, mT + H + 6 * dpr + fs);
+      const zt = niceTicks(P.height), zs = zt.length > 1 ? zt[1] : P.height;
+      ctx.textAlign = 'right';
+      ctx.textBaseline = 'middle';
+      for (const z of zt) ctx.fillText(tickText(z, zs), pn.x0 - 4 * dpr, yOf(z));
+      ctx.save();
+      ctx.translate(pn.x0 - 40 * dpr, mT + H / 2);
+      ctx.rotate(-Math.PI / 2);
+      ctx.textAlign = 'center';
+      ctx.fillText('height y (floor 0)', 0, 0);
+      ctx.restore();
+      ctx.strokeStyle = '#666';
+      ctx.beginPath(); ctx.moveTo(pn.x0 + 0.5, mT); ctx.lineTo(pn.x0 + 0.5, mT + H + 0.5); ctx.lineTo(pn.x0 + W, mT + H + 0.5); ctx.stroke();
+      const dz = P.height / P.bins;
+      if (pn.bars) {
+        ctx.fillStyle = '#9fb8d8';
+        pn.bars.forEach((x, k) => {
+          if (!isFinite(x)) return;
+          const y1 = yOf(k * dz), y0 = yOf((k + 1) * dz);
+          ctx.fillRect(pn.x0 + 1, y0 + 1, X(x) - pn.x0, y1 - y0 - 2);
+        });
+      } else {
+        ctx.strokeStyle = '#1f4fb4';
+        ctx.fillStyle = '#1f4fb4';
+        pn.pts.forEach((x, k) => {
+          if (!isFinite(x)) return;
+          const y = yOf((k + 0.5) * dz), e = pn.err[k];
+          if (isFinite(e)) { ctx.beginPath(); ctx.moveTo(X(x - e), y); ctx.lineTo(X(x + e), y); ctx.stroke(); }
+          ctx.beginPath(); ctx.arc(X(x), y, 2.5 * dpr, 0, 2 * Math.PI); ctx.fill();
+        });
+      }
+      ctx.beginPath();
+      pn.curve.forEach((x, k) => {
+        const px = X(x), py = yOf((k + 0.5) * dz);
+        if (k === 0) ctx.moveTo(px, py); else ctx.lineTo(px, py);
+      });
+      ctx.strokeStyle = '#c0392b';
+      ctx.lineWidth = 2;
+      ctx.stroke();
+      axes.push({ xLabel: pn.label, yLabel: 'height y (floor 0)', xTicks: ticks, xTop: xTop });
+    }
+    // legends (top right of each panel)
+    const theoryN = !field ? 'no field: uniform' : equiv
+      ? (isFinite(c) ? 'local Jüttner at kT₀/(1 + gy/c²)' : 'barometric e^(−mgy/kT)')
+      : 'barometric e^(−mgy/kT)';
+    const theoryT = !field ? 'uniform kT' : equiv && isFinite(c) ? 'Tolman kT₀/(1 + gy/c²)' : 'uniform kT';
+    const legends = [
+      [['bars', '#9fb8d8', 'balls (this run)'], ['line', '#c0392b', 'theory: ' + theoryN]],
+      [['dot', '#1f4fb4', 'balls ± 1 snapshot’s s.e.'], ['line', '#c0392b', 'theory: ' + theoryT]],
+    ];
+    ctx.textAlign = 'right';
+    ctx.textBaseline = 'middle';
+    legends.forEach((lg, i) => {
+      const right = panels[i].x0 + W - 4 * dpr;
+      lg.forEach(([kind, colour, text], j) => {
+        const y = mT + (8 + 15 * j) * dpr;
+        ctx.fillStyle = '#333';
+        ctx.fillText(text, right - 26 * dpr, y);
+        ctx.fillStyle = colour;
+        ctx.strokeStyle = colour;
+        if (kind === 'bars') ctx.fillRect(right - 20 * dpr, y - 4 * dpr, 20 * dpr, 8 * dpr);
+        else if (kind === 'dot') { ctx.beginPath(); ctx.arc(right - 10 * dpr, y, 2.5 * dpr, 0, 2 * Math.PI); ctx.fill(); }
+        else { ctx.lineWidth = 2; ctx.beginPath(); ctx.moveTo(right - 20 * dpr, y); ctx.lineTo(right, y); ctx.stroke(); }
+      });
+    });
+    app.profAxes = { panels: axes, legends: legends.map((lg) => lg.map((e) => e[2])) };
+    ui.profileCap.textContent = 'profile along the field (' + P.bins + ' slabs of the height): ' +
+      (field ? P.coupling + ' coupling, g = ' + fmt(P.g, 4) : 'no field') + ', c = ' +
+      (isFinite(c) ? fmt(c, 4) : '∞') + '; fitted ' + (equiv ? 'kT₀ = ' : 'kT = ') + fmt(P.kTfit, 4) +
+      '; averaged over engine time (weight e^(−Δt/τ), τ = ' + fmt(P.tau || 0, 3) + ') since t = ' +
+      P.since.toFixed(1) + '; theory for the dilute gas of one mass';
+  }
+
   function showReadouts() {
     const d = app.main.diag;
     $('r-time').textContent = d[WD.TIME].toFixed(4);
@@ -557,6 +846,8 @@
     drawWorld(app.main, ui.canvasMain);
     if (app.ref) drawWorld(app.ref, ui.canvasRef);
     drawHistogram();
+    sampleProfile();
+    drawProfile();
     drawColourKey();
     showReadouts();
   }
@@ -626,10 +917,14 @@
       fps: app.fps, frames: app.frames, workMs: app.workMs, error: app.error, scenario: app.source.name,
       main: worldState(app.main), ref: app.ref ? worldState(app.ref) : null,
       hist: app.hist ? Array.from(app.hist) : null, histAxes: app.histAxes || null,
+      profile: profileState(), profileAxes: app.profAxes || null,
+      field: { g: app.g, coupling: api.couplingName(app.coupling), gMax: app.gMax,
+               message: ui.gMsg.hidden ? '' : ui.gMsg.textContent },
       colourKey: ui.keyText.textContent, colourKeyScale: !ui.keyScale.hidden,
     }),
     sliderFor: sliderFor,
     cFor: cFor,
+    sliderForG: (g) => sliderForG(g),
     advanceTo: (t) => { const ok = advanceTo(t); draw(); return ok; },
     // bench_engine's set-up in the page: benchSetup makes and melts it (a handle), benchRun
     // times the measured part (wall clock; the caller may read CPU time around it)

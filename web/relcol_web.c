@@ -25,7 +25,10 @@ enum { WB_X, WB_Y, WB_PX, WB_PY, WB_R, WB_M, WB_TAU, WB_GAMMA, WB_SPEED, WB_A, W
 enum { WD_TIME, WD_COLL, WD_ENERGY, WD_EERR, WD_PERR, WD_OVERLAPS, WD_OVSHARE, WD_MEANG,
        WD_VMAX, WD_C, WD_KINETIC, WD_HEAT, WD_GROUPSEQ, WD_MAXGROUP, WD_N, WD_BOXX, WD_BOXY,
        WD_PCLASS, WD_EPS, WD_FRAME, WD_LAW, WD_CONTRACTED, WD_GROUPS, WD_VERDICT, WD_PMODEL,
-       WD_COUNT };
+       WD_FIELD, WD_G, WD_COUPLING, WD_COUNT };
+
+/* web_profile's array: WP_COLS columns of nb slabs, then WP_TAIL numbers (app.js, PROF) */
+enum { WP_MAXBINS = 64, WP_COLS = 5, WP_TAIL = 6 };
 
 typedef struct web_world {
     scn_scenario sc; /* as read: reset starts from it */
@@ -41,6 +44,10 @@ typedef struct web_world {
     double *balls;
     double diag[WD_COUNT];
     double hist[4 * 256 + 4];
+    /* the frame the scenario had before a field switched it to a one-instant sphere (the
+     * engine defines no contracted or per-ball frame in a field), given back when it goes */
+    const rc_toi_frame *frame_nofield;
+    double prof[WP_MAXBINS * WP_COLS + WP_TAIL];
 } web_world;
 
 static char web_err[1024];
@@ -49,12 +56,26 @@ WEB_EXPORT const char *web_error(void) { return web_err; }
 
 static double inv_c2_of(double c) { return isinf(c) ? 0.0 : 1.0 / (c * c); }
 
+/* The energy the run conserves: without a field the balls' energy; in a field the
+ * coupling's H summed over the balls minus what contacts booked (rc_sim_field_energy:
+ * E + m g z for newtonian, (1 + g z/c^2) E for equivalence, rest energy subtracted), and
+ * its scale for the relative error. */
+static double conserved(const web_world *w, const rc_sim_diag *d, double *scale)
+{
+    double h = 0.0, booked = 0.0;
+    if (w->sc.gravity && rc_sim_field_energy(w->s, &h, &booked) == RC_OK) {
+        *scale = h != 0.0 ? fabs(h) : 1.0;
+        return h - booked;
+    }
+    *scale = d->energy != 0.0 ? fabs(d->energy) : 1.0;
+    return d->energy;
+}
+
 static void take_reference(web_world *w)
 {
     rc_sim_diag d;
     rc_sim_diagnostics(w->s, &d);
-    w->e0 = d.energy;
-    w->escale = d.energy != 0.0 ? fabs(d.energy) : 1.0;
+    w->e0 = conserved(w, &d, &w->escale);
     w->pw0 = rc_v3_add(d.momentum, d.wall_impulse);
     w->pscale = d.momentum_scale > 0.0 ? d.momentum_scale : 1.0;
 }
@@ -152,11 +173,10 @@ WEB_EXPORT int web_set_c(web_world *w, double c)
     return RC_OK;
 }
 
-/* Restitution, contact frame, law and group rule (indices into rc_toi_frames, rc_laws and
- * the rc_group_rule names; -1 keeps):
- * the run goes on from its state now in a new engine (a restart of the synced state). On
- * failure the old engine runs on. */
-WEB_EXPORT int web_set_model(web_world *w, double eps_ball, int frame, int law, int groups)
+/* The run goes on from its state now in a new engine of definition def (a restart of the
+ * synced state); on failure the old engine runs on and web_error() says why (what names
+ * the change). */
+static int rebuild(web_world *w, rc_sim_def *def, const char *what)
 {
     int st = rc_sim_sync(w->s);
     size_t n = rc_sim_count(w->s), bad = 0;
@@ -179,38 +199,169 @@ WEB_EXPORT int web_set_model(web_world *w, double eps_ball, int frame, int law, 
             b[i].tau_last = b[i].tau;
         }
     }
-    rc_sim_def def = scn_sim_def(&w->sc);
-    def.c = w->c;
-    def.eps_ball = eps_ball;
-    size_t nf = 0, nl = 0;
-    while (rc_toi_frames[nf])
-        nf++;
-    while (rc_laws[nl])
-        nl++;
-    def.frame = frame >= 0 && (size_t)frame < nf ? rc_toi_frames[frame] : w->sc.frame;
-    def.law = law >= 0 && (size_t)law < nl ? rc_laws[law] : w->sc.law;
-    def.groups = rc_group_rule_name(groups) ? groups : w->sc.groups;
-    def.restart = 1;
+    /* a contracted frame's ball may lie closer to a wall than its rest radius; an
+     * uncontracted frame (the field's sphere) takes it back to r from that wall */
+    const int to_r = !(def->frame && def->frame->wall_contracted);
+    for (size_t i = 0; to_r && i < n; i++)
+        for (int k = 0; k < def->dim; k++)
+            if (def->boundary[k] == RC_SIM_WALLS) {
+                const double L = rc_v3_get(def->box, k), x = rc_v3_get(b[i].x, k);
+                rc_v3_set(&b[i].x, k, fmin(fmax(x, b[i].r), L - b[i].r));
+            }
+    def->c = w->c;
+    def->restart = 1;
     rc_sim *s = NULL;
-    st = rc_sim_create(&def, &s);
+    st = rc_sim_create(def, &s);
     if (st == RC_OK)
         st = rc_sim_set_time(s, rc_sim_time(w->s));
     if (st == RC_OK)
         st = rc_sim_set_balls(s, n, b, &bad);
     free(b);
     if (st != RC_OK) {
-        snprintf(web_err, sizeof web_err, "cannot change the model here: %s (ball %zu)",
-                 rc_strerror(st), bad);
+        if (st == RC_EOVERLAP && !(def->frame && def->frame->contracted))
+            snprintf(web_err, sizeof web_err, "cannot %s here: ball %zu overlaps another as an "
+                     "uncontracted sphere (the run's contracted shapes let them come that "
+                     "close); reset the run, whose start has no overlap, and %s there", what,
+                     bad, what);
+        else
+            snprintf(web_err, sizeof web_err, "cannot %s here: %s (ball %zu)", what,
+                     rc_strerror(st), bad);
         rc_sim_free(&s);
         return st;
     }
     keep_counts(w);
     rc_sim_free(&w->s);
     w->s = s;
+    return RC_OK;
+}
+
+/* Restitution, contact frame, law and group rule (indices into rc_toi_frames, rc_laws and
+ * the rc_group_rule names; -1 keeps): the run goes on from its state now in a new engine.
+ * In a field the frame must be one-instant and uncontracted (sphere): another is refused
+ * by name. On failure the old engine runs on. */
+WEB_EXPORT int web_set_model(web_world *w, double eps_ball, int frame, int law, int groups)
+{
+    size_t nf = 0, nl = 0;
+    while (rc_toi_frames[nf])
+        nf++;
+    while (rc_laws[nl])
+        nl++;
+    rc_sim_def def = scn_sim_def(&w->sc);
+    def.eps_ball = eps_ball;
+    def.frame = frame >= 0 && (size_t)frame < nf ? rc_toi_frames[frame] : w->sc.frame;
+    def.law = law >= 0 && (size_t)law < nl ? rc_laws[law] : w->sc.law;
+    def.groups = rc_group_rule_name(groups) ? groups : w->sc.groups;
+    if (w->sc.gravity && (def.frame->contracted || def.frame->per_ball ||
+                          def.frame->pointlike || def.frame->wall_contracted)) {
+        snprintf(web_err, sizeof web_err, "contact frame '%s' is not defined in a field (the "
+                 "field takes the one-instant uncontracted frame: sphere); switch g to 0 first",
+                 def.frame->name);
+        return RC_EUNDEFINED;
+    }
+    const int st = rebuild(w, &def, "change the model");
+    if (st != RC_OK)
+        return st;
     w->sc.eps_ball = def.eps_ball;
     w->sc.frame = def.frame;
     w->sc.law = def.law;
     w->sc.groups = def.groups;
+    take_reference(w);
+    return RC_OK;
+}
+
+/* ---- a uniform field along -y (papers/gravity.md) ---------------------------------- */
+
+WEB_EXPORT int web_coupling_count(void)
+{
+    int n = 0;
+    while (rc_gravity_couplings[n])
+        n++;
+    return n;
+}
+WEB_EXPORT const char *web_coupling_name(int i) { return rc_gravity_couplings[i]->name; }
+WEB_EXPORT const char *web_coupling_summary(int i) { return rc_gravity_couplings[i]->summary; }
+
+static int index_of_coupling(const rc_gravity_coupling *cp)
+{
+    for (int i = 0; cp && rc_gravity_couplings[i]; i++)
+        if (rc_gravity_couplings[i] == cp)
+            return i;
+    return -1;
+}
+
+static const rc_toi_frame *sphere_frame(void)
+{
+    for (int i = 0; rc_toi_frames[i]; i++) {
+        const rc_toi_frame *f = rc_toi_frames[i];
+        if (!f->contracted && !f->per_ball && !f->pointlike && !f->wall_contracted)
+            return f;
+    }
+    return NULL;
+}
+
+/* The field: g >= 0 along -y (0: none), coupling an index into rc_gravity_couplings. The
+ * floor is the wall y = 0 and the ceiling y = box: the y axis must have walls. The engine
+ * defines the field's contacts at one instant of the coupling's clock with uncontracted
+ * spheres, so a contracted or per-ball frame gives way to the sphere frame while the field
+ * is on (and comes back when it goes). The run goes on from its state now; every bad
+ * input is refused with web_error() naming it, the old engine running on. */
+WEB_EXPORT int web_set_gravity(web_world *w, double g, int coupling)
+{
+    if (!isfinite(g)) {
+        snprintf(web_err, sizeof web_err, "g = %g: must be a finite number", g);
+        return RC_ENONFINITE;
+    }
+    if (g < 0.0) {
+        snprintf(web_err, sizeof web_err, "g = %g: must be >= 0 (0 switches the field off; "
+                 "the field points down, along -y)", g);
+        return RC_EINVAL;
+    }
+    if (g > 0.0 && (coupling < 0 || coupling >= web_coupling_count())) {
+        snprintf(web_err, sizeof web_err, "coupling %d: unknown (the library has %d)",
+                 coupling, web_coupling_count());
+        return RC_EUNKNOWN;
+    }
+    if (g > 0.0 && w->sc.boundary[w->sc.dim - 1] == RC_SIM_PERIODIC) {
+        snprintf(web_err, sizeof web_err, "g = %g: the field needs walls along y (its floor "
+                 "and ceiling), and this scenario is periodic along y", g);
+        return RC_EINVAL;
+    }
+    for (int k = 0; k < 6 && g > 0.0; k++)
+        if (w->sc.wall_rule[k] && w->sc.wall_rule[k] != &rc_wall_reflecting) {
+            snprintf(web_err, sizeof web_err, "g = %g: a %s wall in a field is not built (the "
+                     "field's walls are hard walls)", g, w->sc.wall_rule[k]->name);
+            return RC_EUNDEFINED;
+        }
+    if (g > 0.0 && w->sc.t_c > 0.0) {
+        snprintf(web_err, sizeof web_err, "g = %g: the TC model (tc > 0) is not defined in a "
+                 "field", g);
+        return RC_EUNDEFINED;
+    }
+    const rc_gravity_coupling *cp = g > 0.0 ? rc_gravity_couplings[coupling] : NULL;
+    const rc_toi_frame *f0 = w->sc.frame, *nofield = w->frame_nofield;
+    const rc_toi_frame *frame = f0;
+    if (cp && (f0->contracted || f0->per_ball || f0->pointlike || f0->wall_contracted)) {
+        frame = sphere_frame();
+        nofield = f0;
+    } else if (!cp && nofield) {
+        frame = nofield;
+        nofield = NULL;
+    }
+    const rc_gravity_coupling *cp0 = w->sc.gravity;
+    const double g0 = w->sc.g;
+    w->sc.gravity = cp;
+    w->sc.g = g;
+    w->sc.frame = frame;
+    rc_sim_def def = scn_sim_def(&w->sc);
+    def.eps_ball = w->sc.eps_ball;
+    const int st = rebuild(w, &def, cp ? "switch the field on" : "switch the field off");
+    if (st != RC_OK) {
+        w->sc.gravity = cp0;
+        w->sc.g = g0;
+        w->sc.frame = f0;
+        return st;
+    }
+    w->frame_nofield = nofield;
     take_reference(w);
     return RC_OK;
 }
@@ -311,9 +462,15 @@ WEB_EXPORT double *web_update(web_world *w)
     double *x = w->diag;
     x[WD_TIME] = d.time;
     x[WD_COLL] = (double)coll;
-    x[WD_ENERGY] = d.energy;
-    x[WD_EERR] = fabs(d.energy - w->e0) / w->escale;
-    x[WD_PERR] = rc_v3_norm(rc_v3_sub(pw, w->pw0)) / w->pscale;
+    double escale;
+    const double e = conserved(w, &d, &escale);
+    x[WD_ENERGY] = e;
+    x[WD_EERR] = fabs(e - w->e0) / w->escale;
+    /* (in a field the momentum along it is not conserved: the error is the one across) */
+    rc_vec3 dp = rc_v3_sub(pw, w->pw0);
+    if (w->sc.gravity)
+        rc_v3_set(&dp, w->sc.dim - 1, 0.0);
+    x[WD_PERR] = rc_v3_norm(dp) / w->pscale;
     x[WD_OVERLAPS] = (double)ov;
     x[WD_OVSHARE] = coll ? (double)ov / (double)coll : 0.0;
     x[WD_MEANG] = n ? gsum / (double)n : 1.0;
@@ -337,6 +494,9 @@ WEB_EXPORT double *web_update(web_world *w)
     rc_sim_validity(w->s, &val);
     x[WD_VERDICT] = (double)val.verdict;
     x[WD_PMODEL] = val.p_model;
+    x[WD_FIELD] = w->sc.gravity != NULL;
+    x[WD_G] = w->sc.gravity ? w->sc.g : 0.0;
+    x[WD_COUPLING] = index_of_coupling(w->sc.gravity);
     return x;
 }
 
@@ -401,6 +561,94 @@ WEB_EXPORT double *web_histogram(web_world *w, int nb, double vtop)
     h[3 * nb] = theta;
     h[3 * nb + 1] = vtop;
     return h;
+}
+
+/* ---- the profile along the field against its equilibrium (papers/gravity.md s. 5) --- */
+
+/* The dilute gas's equilibrium density along y, unnormalised, at height z: with the
+ * newtonian coupling exp(-m g z/kT) at every c (the momentum integral does not depend on
+ * z); with equivalence local Juttner at kT(z) = kT0/(1 + g z/c^2), whose 2-D
+ * normalisation T (mc^2 + kT) exp(-mc^2/kT) is, over its value at the floor,
+ * (1 + theta(z)) / ((1 + g z/c^2)(1 + theta0)) exp(-m g z/kT0), theta = kT/mc^2. */
+static double dens_theory(int equiv, double z, double m, double g, double kt, double k2)
+{
+    const double a = 1.0 + g * z * k2, th0 = kt * k2 / m;
+    const double bar = exp(-m * g * z / kt);
+    return equiv ? bar * (1.0 + th0 / a) / (a * (1.0 + th0)) : bar;
+}
+
+/* nb slabs (1..64) of the box's height along y, from the balls as web_update last filled
+ * them. Columns of nb values: [0] the balls' density along y (share of the balls per unit
+ * height), [1] kT in the slab, <p.v>/d (kT in local Juttner or Maxwell equilibrium; NAN:
+ * empty), [2] its standard error (NAN: fewer than two balls), [3] the theory's density
+ * (share per unit height, centres on [r, H - r] with r the mean radius), [4] the theory's
+ * kT at the slab's centre: uniform kT (newtonian, or no field) or kT0/(1 + g z/c^2)
+ * (equivalence, Tolman-Ehrenfest). Then: the fitted kT (newtonian, no field: <p.v>/d over
+ * every ball) or kT0 (equivalence: <(1 + g z/c^2) p.v>/d, Tolman's constant), the height
+ * H, g, the coupling's index (-1: none), the mean rest mass (the theory takes one mass),
+ * the balls counted. */
+WEB_EXPORT double *web_profile(web_world *w, int nb)
+{
+    nb = nb < 1 ? 1 : nb > WP_MAXBINS ? WP_MAXBINS : nb;
+    double *o = w->prof;
+    for (size_t k = 0; k < sizeof w->prof / sizeof *o; k++)
+        o[k] = NAN;
+    const size_t n = rc_sim_count(w->s);
+    const int d = w->sc.dim, equiv = w->sc.gravity == &rc_gravity_equivalence;
+    const double H = rc_v3_get(w->sc.box, d - 1), dz = H / nb, k2 = inv_c2_of(w->c);
+    const double g = w->sc.gravity ? w->sc.g : 0.0;
+    double cnt[WP_MAXBINS] = {0}, s1[WP_MAXBINS] = {0}, s2[WP_MAXBINS] = {0};
+    double fit = 0.0, msum = 0.0, rsum = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        const double *b = &w->balls[i * WB_N];
+        const double z = d == 2 ? b[WB_Y] : NAN; /* (the page shows 2-D tables) */
+        const double p2 = b[WB_PX] * b[WB_PX] + b[WB_PY] * b[WB_PY];
+        const double pv = p2 / (b[WB_M] * b[WB_GAMMA]) / d; /* p.v/d, v = p/(gamma m) */
+        int k = (int)(z / dz);
+        k = k < 0 ? 0 : k >= nb ? nb - 1 : k;
+        cnt[k]++;
+        s1[k] += pv;
+        s2[k] += pv * pv;
+        fit += (equiv ? 1.0 + g * z * k2 : 1.0) * pv;
+        msum += b[WB_M];
+        rsum += b[WB_R];
+    }
+    if (n == 0)
+        return o;
+    fit /= (double)n;
+    const double m = msum / (double)n, r = rsum / (double)n;
+    /* the theory's shares: Simpson over each slab's part of [r, H - r] */
+    double th[WP_MAXBINS], tot = 0.0;
+    for (int k = 0; k < nb; k++) {
+        const double lo = fmax(k * dz, r), hi = fmin((k + 1) * dz, H - r);
+        th[k] = 0.0;
+        if (hi > lo && fit > 0.0) {
+            enum { SIMPSON = 16 };
+            double sum = 0.0;
+            for (int j = 0; j <= SIMPSON; j++)
+                sum += (j == 0 || j == SIMPSON ? 1 : j % 2 ? 4 : 2) *
+                       dens_theory(equiv, lo + (hi - lo) * j / SIMPSON, m, g, fit, k2);
+            th[k] = sum * (hi - lo) / (3 * SIMPSON);
+        }
+        tot += th[k];
+    }
+    for (int k = 0; k < nb; k++) {
+        const double zc = (k + 0.5) * dz, c = cnt[k];
+        o[k] = c / ((double)n * dz);
+        o[nb + k] = c > 0 ? s1[k] / c : NAN;
+        o[2 * nb + k] = c > 1 ? sqrt(fmax(s2[k] / c - o[nb + k] * o[nb + k], 0.0) / (c - 1))
+                              : NAN;
+        o[3 * nb + k] = tot > 0.0 ? th[k] / (tot * dz) : NAN;
+        o[4 * nb + k] = equiv ? fit / (1.0 + g * zc * k2) : fit;
+    }
+    double *t = &o[WP_COLS * nb];
+    t[0] = fit;
+    t[1] = H;
+    t[2] = g;
+    t[3] = index_of_coupling(w->sc.gravity);
+    t[4] = m;
+    t[5] = (double)n;
+    return o;
 }
 
 /* ---- the library's tables, by name ------------------------------------------------ */

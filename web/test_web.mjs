@@ -9,7 +9,8 @@
 // dropped scenario file runs and a bad one is refused with the reader's message; a
 // screenshot (OUT_DIR/web-screenshot.png) is not blank; the speed histogram has ticked,
 // labelled axes, the balls' colours a key (the rack's set, the gas's gamma - 1 scale), and
-// the time shows in each table's caption, not on the table under the balls.
+// the time shows in each table's caption, not on the table under the balls; the field
+// (fieldChecks): the g slider, the profile, the field's energy, bad g refused.
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import http from 'node:http';
@@ -256,7 +257,8 @@ async function checksRun() {
         'a scenario file runs', s.main.diag.coll + ' collisions, energy error ' + s.main.diag.eerr.toExponential(2));
   const bad = good.replace('"r":0.1', '"r":-1');
   await page.setInputFiles('#file', { name: 'bad.json', mimeType: 'application/json', buffer: Buffer.from(bad) });
-  await waitFor(async () => /bad|radius|r:|balls/.test(await page.locator('#status').innerText()), 5000, 'the refusal');
+  // (the status said "ready: three.json (3 balls)" before: wait for the refusal itself)
+  await waitFor(async () => /bad\.json/.test(await page.locator('#status').innerText()), 10000, 'the refusal');
   const msg = await page.locator('#status').innerText();
   s = await state();
   check(/balls\[2\]\.r/.test(msg) && s.scenario === 'three.json', 'a bad file is refused by the reader', msg);
@@ -269,7 +271,7 @@ async function checksRun() {
   const rules = await page.locator('#groups option').allInnerTexts();
   check(rules.join(',') === 'simultaneous,sequential,drop', 'group rules from the library', rules.join(', '));
   await page.selectOption('#groups', { label: 'sequential' });
-  await page.waitForTimeout(300);
+  await waitFor(async () => (await state()).main.diag.groups === 1, 5000, 'the sequential rule').catch(() => {});
   s = await state();
   check(s.main.diag.groups === 1 && !s.error, 'the sequential rule applied', 'groups ' + s.main.diag.groups + (s.error ? ', ' + s.error : ''));
 
@@ -286,7 +288,115 @@ async function checksRun() {
   check(gax && gax.xUnit === 'c' && Math.abs(gax.vtop / s.main.diag.c - 1) < 1e-12 && /units of c/.test(gax.xLabel),
         'the gas\'s histogram: speeds in units of c, 0 to c', gax ? gax.xLabel + ', top ' + gax.vtop : 'none');
   await page.screenshot({ path: path.join(out, 'web-gas-key.png') });
+  await fieldChecks();
   check(consoleErrors.length === 0, 'no console error in the whole run', consoleErrors.join(' | '));
+}
+
+// The field (issue 41 item 4): the g slider and the coupling beside the c slider; switched
+// on in the gas, the floor's density grows over the ceiling's as the gas settles, the
+// energy read-out (the field's conserved H minus what contacts booked) stays at round-off,
+// and a bad g is refused with a visible message while the run goes on as it was.
+async function fieldChecks() {
+  const dom = await page.evaluate(() => {
+    const g = document.getElementById('g'), c = document.getElementById('c');
+    return { range: g && g.type === 'range', typed: !!document.getElementById('g-value'),
+             beside: !!g && g.closest('fieldset') === c.closest('fieldset'),
+             couplings: Array.from(document.querySelectorAll('#coupling option')).map((o) => o.textContent) };
+  });
+  check(dom.range && dom.typed && dom.beside && dom.couplings.join(',') === 'newtonian,equivalence',
+        'the g slider, a typed g and the coupling beside the c slider', JSON.stringify(dom));
+  // the gas afresh (its contracted shapes may come closer than two rest radii, which the
+  // field's uncontracted spheres refuse), in the sphere frame the field takes
+  await page.click('#reset');
+  await page.selectOption('#frame', { label: 'sphere (spheres)' });
+  let s = await state();
+  check(!s.error && s.main.diag.time === 0, 'the gas reset in the sphere frame', s.error || '');
+  const relax = async (span, steps) => {
+    const t0 = (await state()).t;
+    for (let k = 1; k <= steps; k++) await page.evaluate((t) => window.relcol.advanceTo(t), t0 + span * k / steps);
+    return state();
+  };
+  // the gas (c = 1) without a field: nearly uniform along y
+  s = await relax(200, 10);
+  const p0 = s.profile;
+  // (centres lie in [r, H - r]: the end slabs hold less; the inner ones 1/(H - 2r) each)
+  check(p0 && p0.g === 0 && p0.density.length === p0.bins &&
+        p0.theoryDensity.slice(1, -1).every((x) => Math.abs(x * p0.height - 1) < 0.05),
+        'no field: the profile\'s theory is uniform', p0 ? 'floor ' + p0.density[0].toFixed(5) + ', top ' + p0.density[p0.bins - 1].toFixed(5) : 'none');
+  const ratio0 = p0.density[0] / p0.density[p0.bins - 1];
+  // the slider's top: m g H = 5 kT (newtonian, the gas's c = 1)
+  await page.selectOption('#coupling', { label: 'newtonian' });
+  await setSlider('g', 1000);
+  s = await state();
+  const frameName = (await page.locator('#frame option').allInnerTexts())[s.main.diag.frame];
+  check(s.field.g === s.field.gMax && s.main.diag.g === s.field.g && s.field.coupling === 'newtonian' &&
+        /^sphere/.test(frameName) && !s.error, 'the g slider switches the field on (contact frame sphere)',
+        'g ' + s.field.g + ' (top ' + s.field.gMax + '), frame ' + frameName + (s.error ? ', ' + s.error : '') +
+        '; status: ' + (await page.locator('#status').innerText()));
+  // (the fall takes sqrt(2 H/g) ~ 150 time units; 3000 is some 20 falls and 10^5 collisions)
+  s = await relax(3000, 30);
+  const p1 = s.profile, nb = p1.bins;
+  check(p1.g === s.field.g && p1.density[0] > 3 * p1.density[nb - 1] && p1.density[0] / p1.density[nb - 1] > 3 * ratio0 &&
+        p1.theoryDensity[0] > 10 * p1.theoryDensity[nb - 1],
+        'switching g on changes the profile: the floor\'s density exceeds the top\'s',
+        'floor/top ' + (p1.density[0] / p1.density[nb - 1]).toFixed(2) + ' (no field ' + ratio0.toFixed(2) +
+        '; dilute theory ' + (p1.theoryDensity[0] / p1.theoryDensity[nb - 1]).toFixed(1) + '), ' + s.main.diag.coll + ' collisions');
+  // 1e-10: H - booked is conserved to round-off by every contact (papers/gravity.md s. 4)
+  check(s.main.diag.eerr < 1e-10 && s.main.diag.coll > 1e4, 'newtonian field: the energy read-out (H minus booked) stays conserved',
+        s.main.diag.eerr.toExponential(2) + ' over ' + s.main.diag.coll + ' collisions');
+  const eread = await page.textContent('#r-eerr');
+  check(eread === s.main.diag.eerr.toExponential(2), 'the page shows that energy error', eread);
+  const pax = s.profileAxes;
+  check(pax && pax.panels.length === 2 && /density/.test(pax.panels[0].xLabel) && /kT/.test(pax.panels[1].xLabel) &&
+        pax.panels.every((a) => /height/.test(a.yLabel) && a.xTicks.length >= 2) &&
+        /barometric/.test(pax.legends[0][1]) && /balls/.test(pax.legends[0][0]),
+        'the profile has labelled axes and a legend', pax ? JSON.stringify(pax.legends) : 'none');
+  await page.selectOption('#coupling', { label: 'equivalence' });
+  s = await relax(500, 5);
+  check(s.main.diag.coupling === 1 && s.field.coupling === 'equivalence' && s.main.diag.eerr < 1e-10 &&
+        s.profile.theoryKT[0] > s.profile.theoryKT[nb - 1],
+        'equivalence: H conserved, the theory\'s kT falls with height (Tolman)',
+        'energy error ' + s.main.diag.eerr.toExponential(2) + ', theory kT ' + s.profile.theoryKT[0].toFixed(4) + ' .. ' +
+        s.profile.theoryKT[nb - 1].toFixed(4));
+  const shotF = path.join(out, 'web-field.png');
+  await page.screenshot({ path: shotF });
+  const stF = await pngStats(shotF);
+  check(stF.colours > 20, 'field screenshot not blank', shotF + ': ' + stF.colours + ' colours');
+  await page.evaluate(() => document.getElementById('profile-fig').scrollIntoView());
+  await page.screenshot({ path: path.join(out, 'web-profile.png') });
+  await page.evaluate(() => window.scrollTo(0, 0));
+  // bad g, typed: refused by name, visible, and the field as it was
+  const gNow = s.field.g;
+  for (const [typed, want] of [['-1', /g = -1: must be >= 0/], ['abc', /not a number/], ['Infinity', /g = inf: must be a finite number/],
+                               ['nan', /g = nan: must be a finite number/]]) {
+    await page.evaluate((v) => {
+      const el = document.getElementById('g-value');
+      el.value = v;
+      el.dispatchEvent(new Event('change', { bubbles: true }));
+    }, typed);
+    const msg = await page.evaluate(() => { const m = document.getElementById('g-msg'); return m.hidden ? '' : m.innerText; });
+    const status = await page.locator('#status').innerText();
+    s = await state();
+    check(want.test(msg) && want.test(status) && s.field.g === gNow && s.main.diag.g === gNow && !s.error,
+          'a bad g (' + typed + ') is refused with a visible message', msg);
+  }
+  await page.evaluate(() => window.relcol.advanceTo(window.relcol.state().t + 10));
+  s = await state();
+  check(s.main.diag.time > 0 && !s.error, 'the run goes on after a refused g', 't = ' + s.main.diag.time.toFixed(1));
+  // off again: the frame chosen before the field (sphere) stays
+  await setSlider('g', 0);
+  s = await state();
+  const frameOff = (await page.locator('#frame option').allInnerTexts())[s.main.diag.frame];
+  check(s.field.g === 0 && s.main.diag.g === 0 && /^sphere/.test(frameOff) && (await page.evaluate(() => document.getElementById('g-msg').hidden)),
+        'g = 0 switches the field off (the frame chosen before stays)', frameOff);
+  // the atmosphere scenario: its own field (equivalence, c = 1), Tolman's kT in the theory
+  await page.selectOption('#scenario', 'atmosphere');
+  await waitFor(async () => (await state()).scenario === 'atmosphere', 5000, 'the atmosphere');
+  s = await relax(400, 4);
+  check(s.field.g === 0.002 && s.field.coupling === 'equivalence' && s.main.diag.eerr < 1e-10 &&
+        s.profile.theoryKT[0] / s.profile.theoryKT[nb - 1] > 1.2,
+        'the atmosphere scenario runs in its field', 'g ' + s.field.g + ', energy error ' + s.main.diag.eerr.toExponential(2) +
+        ', theory kT floor/top ' + (s.profile.theoryKT[0] / s.profile.theoryKT[nb - 1]).toFixed(3));
 }
 
 async function bench() {

@@ -12,6 +12,7 @@
 #include <time.h>
 
 #include "app.h"
+#include "ce_rel.h"
 #include "eos_theory.h"
 #include "eos_run.h"
 #include "tr_first_order.h"
@@ -98,7 +99,10 @@ static void usage(FILE *f)
 "spheres at any c their own Chapman-Enskog D, eta and lambda (D_chapman_enskog,\n"
 "eta_chapman_enskog, lambda_chapman_enskog: dilute values times Enskog-type factors;\n"
 "classically D_chapman_enskog is the first Sonine approximation, about 2 %% below the\n"
-"converged value). Fields without a measurement or a theory in this run are empty.\n"
+"converged value); for the frames that collide at the invariant rate (table, zmf,\n"
+"covariant, transport) at finite c, eta and lambda of the invariant Boltzmann gas\n"
+"(converged, dilute) instead, and no D. Fields without a measurement or a theory in\n"
+"this run are empty.\n"
 "Z, kT, P, D, eta, lambda each with a standard error from the blocks.\n");
 }
 
@@ -131,6 +135,36 @@ static void csv_field(FILE *f, const char *fmt, double x)
     fputc(',', f);
     if (!isnan(x))
         fprintf(f, fmt, x);
+}
+
+/* Frames that collide at the invariant (Møller) rate, at finite c in 3-D: contracted shapes
+ * (table, zmf, covariant) and the transport codes' points (papers/transport.md, section 7).
+ * Their reference is the invariant Boltzmann gas's Chapman–Enskog, not the sphere kernel's. */
+static int eos_invariant_rate(const eos_in *in)
+{
+    return in->dim == 3 && !isinf(in->c) && in->frame &&
+           (in->frame->contracted || in->frame->pointlike);
+}
+
+/* The invariant Boltzmann gas's converged (CE_REL_MAX_ORDER functions) dilute eta and
+ * lambda (apps/eos/ce_rel.c, papers/transport.md, section 6) in relcol-eos's units: diameter
+ * 1, so sigma_T = pi, m = 1, z = c^2/kT; eta comes in kT/(sigma_T c), lambda in
+ * k c/sigma_T. lambda carries r^2, r = (<E> + Z kT)/(<E> + kT) with the run's own Z: the
+ * measured heat moment subtracts the dense enthalpy (section 4). No density factor: these
+ * frames' contact value of g is not the spheres' (section 12). 0, or -1. */
+static int ce_invariant(double c, double kT, double z_meas, double *eta_s, double *lambda)
+{
+    const double z = c * c / kT;
+    ce_rel_coeffs co;
+    ce_rel_juttner ju;
+    const char *why;
+    if (ce_rel_compute(z, CE_REL_MAX_ORDER, NULL, &co, &why) != 0 ||
+        ce_rel_juttner_moments(z, &ju, &why) != 0)
+        return -1;
+    const double e = z + ju.mean_k, r = (e + z_meas) / (e + 1.0); /* in kT */
+    *eta_s = co.eta * kT / (M_PI * c);
+    *lambda = co.lambda * c / M_PI * r * r;
+    return 0;
 }
 
 static double z_theory(int dim, double eta) { return dim == 3 ? eos_z_kolafa(eta) : eos_z_disc(eta); }
@@ -216,25 +250,28 @@ static int write_script(const char *path, const options *o, char *err)
 "set multiplot layout 1,3 title \"Transport coefficients of %d-D hard balls (Einstein–Helfand), "
 "N = %zu, c = %s, frame %s\\n{/*0.8 {/:Bold blue points}: relcol, error bars one standard "
 "error over blocks;   {/:Bold red}: Enskog (classical) at the same kT}\\n{/*0.8 {/:Bold violet, "
-"dotted}: the sphere kernel's own Chapman–Enskog;   {/:Bold green, dashed} (D): Speedy's "
+"dotted}: %s;   {/:Bold green, dashed} (D): Speedy's "
 "N = 500 fit moved to this box}\"\n"
 "set xlabel '%s'\nset grid lc rgb '#dddddd'\nunset key\n"
 "%s\n"
 "set ylabel 'D'\n"
 "plot 'eos.csv' skip 1 using %d:20 with %s lc rgb '#d62728' title 'Enskog', \\\n"
 "     '' skip 1 using %d:23 with %s dt 2 lc rgb '#2ca02c' title 'Speedy (N = 500) moved to this box', \\\n"
-"     '' skip 1 using %d:27 with %s dt 3 lc rgb '#9467bd' title 'Chapman–Enskog, sphere kernel', \\\n"
+"     '' skip 1 using %d:27 with %s dt 3 lc rgb '#9467bd' title 'Chapman–Enskog', \\\n"
 "     '' skip 1 using %d:14:15 with yerrorbars pt 7 ps 1.2 lc rgb '#1f77b4' title 'relcol'\n"
 "set ylabel 'η_s'\n"
 "plot 'eos.csv' skip 1 using %d:21 with %s lc rgb '#d62728' title 'Enskog', \\\n"
-"     '' skip 1 using %d:28 with %s dt 3 lc rgb '#9467bd' title 'Chapman–Enskog, sphere kernel', \\\n"
+"     '' skip 1 using %d:28 with %s dt 3 lc rgb '#9467bd' title 'Chapman–Enskog', \\\n"
 "     '' skip 1 using %d:16:17 with yerrorbars pt 7 ps 1.2 lc rgb '#1f77b4' title 'relcol'\n"
 "set ylabel 'λ'\n"
 "plot 'eos.csv' skip 1 using %d:22 with %s lc rgb '#d62728' title 'Enskog', \\\n"
-"     '' skip 1 using %d:29 with %s dt 3 lc rgb '#9467bd' title 'Chapman–Enskog, sphere kernel', \\\n"
+"     '' skip 1 using %d:29 with %s dt 3 lc rgb '#9467bd' title 'Chapman–Enskog', \\\n"
 "     '' skip 1 using %d:18:19 with yerrorbars pt 7 ps 1.2 lc rgb '#1f77b4' title 'relcol'\n"
 "unset multiplot\n",
                 in->dim, in->n, app_fmt(in->c, fc), in->frame ? in->frame->name : "sphere",
+                eos_invariant_rate(in) ? "the invariant Boltzmann gas's converged Chapman–Enskog "
+                                         "(dilute; no D)"
+                                       : "the sphere kernel's own Chapman–Enskog",
                 by_pack ? "packing fraction η" : isinf(in->c) ? "θ (kT at c = ∞)" : "θ = kT/(mc^2)", xr, xc, with, xc, with, xc,
                 with, xc, xc, with, xc, with, xc, xc, with, xc, with, xc);
     }
@@ -370,8 +407,9 @@ int main(int argc, char **argv)
             }
             /* the uncontracted-sphere kernel's own Chapman–Enskog D (tr_first_order.h):
              * Galerkin on {p_x, v_x}, over Enskog's chi; other kernels have none here */
+            const int inv = eos_invariant_rate(&in);
             double dce = NAN, dce_se;
-            if (in.dim == 3 && in.transport && !(in.frame && in.frame->contracted) &&
+            if (in.dim == 3 && in.transport && !(in.frame && in.frame->contracted) && !inv &&
                 tr_nd_sphere(in.c, r.kT, 2, 200000, in.seed, &dce, &dce_se) == 0)
                 dce /= 6.0 * eta / M_PI * eos_chi(3, eta);
             /* and its eta, lambda (tr_shear_heat.h): Galerkin on two functions each, the
@@ -379,9 +417,12 @@ int main(int argc, char **argv)
              * own collisional transfer and the measured heat moment's enthalpy */
             double ece = NAN, lce = NAN;
             tr_shear_heat sh;
-            if (in.dim == 3 && in.transport && !(in.frame && in.frame->contracted) &&
+            if (in.dim == 3 && in.transport && !(in.frame && in.frame->contracted) && !inv &&
                 tr_shear_heat_sphere(3, in.c, r.kT, 2, 200000, in.seed, &sh) == 0)
                 tr_shear_heat_enskog(&sh, in.c, r.kT, eta, &ece, &lce);
+            /* invariant-rate frames: the invariant Boltzmann gas's, dilute */
+            if (in.transport && inv && ce_invariant(in.c, r.kT, r.z, &ece, &lce) != 0)
+                ece = lce = NAN;
             fprintf(a.f, "%d,%s,%zu,%.6g,%.6g,%.8g,%.3g,%.8g,%.3g,%.8g,%.8g,%.8g,%.3g", in.dim,
                     app_fmt(in.c, fc), in.n, eta, in.theta, r.kT, r.kT_se, r.z, r.z_se, zt, zt2,
                     r.p, r.p_se);

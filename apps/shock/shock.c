@@ -11,6 +11,8 @@
 #include <string.h>
 
 #include "app.h"
+#include "gif.h"
+#include "kn_scan.h"
 #include "shock_run.h"
 #include "sweep.h"
 
@@ -26,6 +28,10 @@ typedef struct cli {
     int c_given;                 /* --c was given (refused beside --sweep-c) */
     int nsweep;                  /* --sweep-c's count (0: one run at --c) */
     double sweep[SH_MAX_SWEEP];  /* its speeds of light, inf allowed */
+    int r_given;                 /* --radius was given (refused beside --kn-scan) */
+    int nkn;                     /* --kn-scan's count (0: one run at --radius) */
+    double kn[SH_MAX_KN];        /* its Knudsen numbers, increasing */
+    int gif;                     /* --gif: the profiles over time as an animated GIF */
 } cli;
 
 /* --times: every time > 0 and each above the one before */
@@ -70,6 +76,49 @@ static int parse_sweep(const char *val, void *dst, void *opts, char *err)
     }
 }
 
+/* --kn-scan: 2..SH_MAX_KN comma-separated Knudsen numbers, finite, in (0, SH_KN_MAX],
+ * increasing (the crossing is read between neighbours) */
+static int parse_kn(const char *val, void *dst, void *opts, char *err)
+{
+    (void)dst;
+    cli *c = opts;
+    c->nkn = 0;
+    char tok[64];
+    for (const char *s = val;;) {
+        const char *e = strchr(s, ',');
+        size_t l = e ? (size_t)(e - s) : strlen(s);
+        if (l >= sizeof tok) {
+            app_errf(err, "a value longer than %zu characters", sizeof tok - 1);
+            return -1;
+        }
+        if (c->nkn == SH_MAX_KN) {
+            app_errf(err, "more than %d Knudsen numbers", SH_MAX_KN);
+            return -1;
+        }
+        memcpy(tok, s, l), tok[l] = '\0';
+        double x;
+        if (app_parse_double(tok, 0, &x, err))
+            return -1;
+        if (!(x > 0.0) || x > SH_KN_MAX) {
+            app_errf(err, "Kn = %s must be in (0, %g]", tok, SH_KN_MAX);
+            return -1;
+        }
+        if (c->nkn && !(x > c->kn[c->nkn - 1])) {
+            app_errf(err, "Kn = %s is not above the one before (the list must increase)", tok);
+            return -1;
+        }
+        c->kn[c->nkn++] = x;
+        if (!e)
+            break;
+        s = e + 1;
+    }
+    if (c->nkn < 2) {
+        app_errf(err, "a scan needs at least two Knudsen numbers");
+        return -1;
+    }
+    return 0;
+}
+
 #define OFF(field) offsetof(cli, field)
 static const app_opt opts[] = {
     {"--dim", "D", APP_T_INT, OFF(o.tube.dim), "3", .lo = 2, .hi = 3, .help = "2 or 3 (default %D)"},
@@ -88,7 +137,7 @@ static const app_opt opts[] = {
      .help = "table-frame velocity along x, left (default %D)"},
     {"--v-right", "V", APP_T_DOUBLE, OFF(o.tube.v[1]), "0", .help = "right (default %D)"},
     {"--radius", "R", APP_T_DOUBLE, OFF(o.tube.r), "0.5", .valid = app_valid_positive,
-     .help = "ball radius (default %D)"},
+     .given = APP_GIVEN(cli, r_given), .help = "ball radius (default %D)"},
     {"--length", "L", APP_T_DOUBLE, OFF(length), "4000", .valid = app_valid_positive,
      .help = "tube length (default %D)"},
     {"--width", "W", APP_T_DOUBLE, OFF(width), "12", .valid = app_valid_positive,
@@ -107,6 +156,12 @@ static const app_opt opts[] = {
     {"--sweep-c", "LIST", APP_T_CUSTOM, OFF(sweep), .parse = parse_sweep,
      .help = "the same tube at each c of LIST (inf allowed; at most 16) in place of --c:\n"
              "sweep.csv, sweep_profiles.csv and sweep.png (below)"},
+    {"--kn-scan", "LIST", APP_T_CUSTOM, OFF(kn), .parse = parse_kn,
+     .help = "the same tube at each Knudsen number of LIST (increasing, 2 to 16, each in\n"
+             "(0, 1000]), the radius set for it, read at the last time: kn_scan.csv, .json,\n"
+             "kn_scan_profiles.csv, kn_scan.png and kn_scan_profiles.png (below)"},
+    {"--gif", NULL, APP_T_FLAG, OFF(gif),
+     .help = "also profiles.gif: n, v, p against x, one frame per time (2 or more times)"},
     {"--out", "DIR", APP_T_CUSTOM, OFF(out), "shock-out", .parse = app_opt_dir,
      .help = "output folder (default %D)"},
     {"--quiet", NULL, APP_T_FLAG, OFF(quiet), .help = "no summary lines on stdout"},
@@ -119,8 +174,8 @@ static void usage(FILE *f)
 "usage: relcol-shock [--dim 2|3] [--c C] [--n-left N] [--n-right N] [--T-left T]\n"
 "                    [--T-right T] [--v-left V] [--v-right V] [--radius R] [--length L]\n"
 "                    [--width W] [--times T1,T2,...] [--bins B] [--seeds S] [--seed S0]\n"
-"                    [--frame NAME] [--law NAME] [--sweep-c C1,C2,...] [--out DIR]\n"
-"                    [--quiet]\n"
+"                    [--frame NAME] [--law NAME] [--sweep-c C1,C2,...]\n"
+"                    [--kn-scan KN1,KN2,...] [--gif] [--out DIR] [--quiet]\n"
 "\n"
 "The shock tube of hard balls (rest mass 1, k_B = 1): a box [0, L] x [0, W] (x [0, W])\n"
 "walled at x = 0 and L, periodic across, a membrane at x = L/2 removed at t = 0; each side\n"
@@ -141,6 +196,14 @@ static void usage(FILE *f)
 "DIR/sweep_profiles.csv, per c and bin: n, v, p measured, _rel and _sod; DIR/sweep.gp\n"
 "and sweep.png, the profiles at each c on one page.\n"
 "\n"
+"--kn-scan writes instead, at the last time, for each Kn = (the fluid's right-plateau mean\n"
+"free path) / (shock speed t) of the list (the radius set to give it): DIR/kn_scan.csv,\n"
+"one row per Kn: the normalised L2 distance of n, v, p from the ideal fluid (d_fluid) and\n"
+"from free streaming (d_free), 0 at the reference and 1 at the other, with errors;\n"
+"kn_scan.json with the Kn where the two distances cross; kn_scan_profiles.csv;\n"
+"kn_scan.png (the distances against Kn) and kn_scan_profiles.png (profiles at up to four\n"
+"Kn beside both references).\n"
+"\n"
 "exit status: 0 done; 2 bad option (one line naming it); 1 a start it cannot place, a\n"
 "failed run or write.\n");
 }
@@ -152,6 +215,15 @@ static int check(void *vc)
     sh_tube *t = &c->o.tube;
     if (c->nsweep && c->c_given)
         return app_fail(prog, EXIT_BAD, "--sweep-c: not with --c (the sweep sets c)");
+    if (c->nkn && c->nsweep)
+        return app_fail(prog, EXIT_BAD, "--kn-scan: not with --sweep-c (a scan runs at one c)");
+    if (c->nkn && c->r_given)
+        return app_fail(prog, EXIT_BAD, "--kn-scan: not with --radius (the scan sets the radius)");
+    if (c->gif && (c->nkn || c->nsweep))
+        return app_fail(prog, EXIT_BAD, "--gif: not with %s (it animates one run's times)",
+                        c->nkn ? "--kn-scan" : "--sweep-c");
+    if (c->gif && c->o.nt < 2)
+        return app_fail(prog, EXIT_BAD, "--gif: needs at least two --times (one frame each)");
     double cmin = c->nsweep ? INFINITY : t->c; /* (a sweep holds |v| below its every c) */
     for (int k = 0; k < c->nsweep; k++)
         cmin = fmin(cmin, c->sweep[k]);
@@ -159,6 +231,15 @@ static int check(void *vc)
         if (!(fabs(t->v[s]) < cmin))
             return app_fail(prog, EXIT_BAD, "--v-%s: |v| = %g must be < c", s ? "right" : "left",
                             fabs(t->v[s]));
+    for (int k = 0; k < c->nkn; k++) { /* each Kn's radius, before any run */
+        char e2[APP_ERR_LEN];
+        double pk;
+        if (sh_kn_radius(t, c->o.times[c->o.nt - 1], c->kn[k], &t->r, &pk, e2))
+            return app_fail(prog, EXIT_BAD, "--kn-scan: %s", e2);
+        if (c->width < 8.0 * t->r)
+            return app_fail(prog, EXIT_BAD, "--kn-scan: Kn = %g needs radius %g, and --width %g "
+                            "is below four of its diameters", c->kn[k], t->r, c->width);
+    }
     if (c->width < 8.0 * t->r)
         return app_fail(prog, EXIT_BAD, "--width: %g is below four ball diameters (%g): the "
                         "periodic axes need four cells", c->width, 8.0 * t->r);
@@ -372,6 +453,12 @@ int main(int argc, char **argv)
         app_validity_warn(stderr, prog);
         return 0;
     }
+    if (c.nkn) {
+        if (sh_kn_scan(prog, &c.o, c.kn, c.nkn, c.out, !c.quiet, err))
+            return app_fail(prog, 1, "%s", err);
+        app_validity_warn(stderr, prog);
+        return 0;
+    }
     sh_result r;
     if (sh_run(&c.o, &r, !c.quiet, err))
         return app_fail(prog, 1, "%s", err);
@@ -386,6 +473,11 @@ int main(int argc, char **argv)
         sh_result_free(&r);
         return app_fail(prog, 1, "gnuplot: %s", err);
     }
+    int made_gif = 0;
+    if (c.gif && sh_gif(prog, c.out, &c.o, &r, &made_gif, err)) {
+        sh_result_free(&r);
+        return app_fail(prog, 1, "--gif: %s", err);
+    }
     if (!c.quiet) {
         const rs_solution *s = &r.sol;
         printf("%zu balls, %d seeds, %llu collisions; Kn = %.3g (plateau mean free path %.4g)\n",
@@ -398,7 +490,8 @@ int main(int argc, char **argv)
                    r.dof[j][1], r.chi2[j][2], r.dof[j][2]);
         printf("shock speed %.5g +- %.2g (fluid %.5g; mean since t = 0), local %.5g +- %.2g\n",
                r.vshock, r.vshock_err, s->headR, r.vshock_local, r.vshock_local_err);
-        printf("wrote %s/profiles.csv, summary.json, shock.gp%s\n", c.out, made ? ", shock.png" : "");
+        printf("wrote %s/profiles.csv, summary.json, shock.gp%s%s%s\n", c.out, made ? ", shock.png" : "",
+               c.gif ? ", profiles_gif.gp" : "", made_gif ? ", profiles.gif" : "");
     }
     sh_result_free(&r);
     return 0;

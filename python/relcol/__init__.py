@@ -8,6 +8,8 @@ RelcolError carrying the library's message. c = inf (math.inf) is the classical 
     toi(x0, r0, m0, p0, x1, r1, m1, p1, c=, frame=)   time of first contact
     soft_collide(m, p, x, r, c=, eps=, stiffness=)    the soft-sphere reference
     Sim(scenario)                                 the event-driven engine
+    Sim(scenario, gravity={"g":, "coupling":})    ... in a uniform field; sim.profile()
+    read_profiles(path), couplings()              relcol-sim's profiles.csv; the field's couplings
     read_summary, read_snapshot(s), read_h5md, read_run   relcol-sim's outputs
     gas_init(...), Gas1D(...)                     gases
     laws(), frames(), steppers()                  the library's tables
@@ -23,6 +25,7 @@ from .scenario import ScenarioError, load_scenario
 from .sim import Sim
 from .outputs import read_h5md, read_run, read_snapshot, read_snapshots, read_summary
 from .gas import Gas1D, gas_init
+from .field import couplings, read_profiles
 
 __version__ = _ffi.string(_lib.rc_version()).decode()
 
@@ -30,4 +33,4 @@ __all__ = ["RelcolError", "strerror", "gamma", "inv_c2", "kinetic_energy", "mass
            "momentum", "velocity", "Collision", "Law", "collide", "laws", "Contact",
            "Frame", "frames", "toi", "SoftResult", "soft_collide", "steppers", "Sim",
            "load_scenario", "ScenarioError", "Gas1D", "gas_init", "read_summary", "read_snapshot",
-           "read_snapshots", "read_h5md", "read_run", "__version__"]
+           "read_snapshots", "read_h5md", "read_run", "couplings", "read_profiles", "__version__"]

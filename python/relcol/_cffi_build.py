@@ -53,7 +53,7 @@ typedef struct rc_toi_contact { double t; rc_vec3 x; rc_vec3 n; } rc_toi_contact
 typedef struct rc_toi_workspace rc_toi_workspace;
 typedef struct rc_toi_frame {
     const char *name; const char *summary; int wall_contracted; int contracted;
-    int covariant; int deferrable; int per_ball; ...;
+    int covariant; int deferrable; int per_ball; int pointlike; ...;
 } rc_toi_frame;
 extern const rc_toi_frame *const rc_toi_frames[];
 const rc_toi_frame *rc_toi_frame_find(const char *name);
@@ -81,6 +81,12 @@ int rc_soft_collide(const rc_soft_stepper *stepper, const rc_soft_params *prm, s
                     rc_particle *b, rc_vec3 *x, const double *r, double *u_int,
                     rc_soft_result *res);
 
+/* a uniform field (relcol/gravity.h) */
+typedef struct rc_gravity_coupling { const char *name; const char *summary; ...; }
+    rc_gravity_coupling;
+extern const rc_gravity_coupling *const rc_gravity_couplings[];
+const rc_gravity_coupling *rc_gravity_find(const char *name);
+
 /* event-driven engine */
 typedef struct rc_sim rc_sim;
 typedef int... rc_sim_simd;
@@ -89,7 +95,8 @@ typedef struct rc_sim_def {
     int dim; rc_vec3 box; double c; double eps_ball; double eps_wall; double t_c;
     const rc_law *law; const rc_toi_frame *frame; rc_toi_params toi; double sim_tol;
     double approach_tol; double overlap_tol; double cell_size; double density; int restart;
-    int boundary[3]; int groups; ...;
+    int boundary[3]; int groups; const rc_gravity_coupling *gravity; double g; int g_axis;
+    ...;
 } rc_sim_def;
 typedef struct rc_sim_ball {
     rc_vec3 x; rc_vec3 p; double r; double m; double tau; int collided; double tau_last;
@@ -178,7 +185,7 @@ int rc_gas1d_segment_get(const rc_gas1d *g, size_t i, rc_gas1d_segment *out);
 typedef struct scn_scenario {
     int dim; rc_vec3 box; int boundary[3]; double c; const rc_law *law;
     double eps_ball; double eps_wall; const rc_toi_frame *frame; int groups; double t_c;
-    uint64_t seed; double time; double t_end; int restart; char *checkpoint; size_t n;
+    const rc_gravity_coupling *gravity; double g; uint64_t seed; double time; double t_end; int restart; char *checkpoint; size_t n;
     rc_sim_ball *balls; char generator[16]; ...;
 } scn_scenario;
 #define APP_ERR_LEN ...

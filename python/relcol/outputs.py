@@ -102,7 +102,8 @@ def read_h5md(path):
 def read_run(folder):
     """A whole relcol-sim output folder as a dict: summary (read_summary), snapshots
     (read_snapshots), final (final.json as a dict: the state it ended in), h5md
-    (read_h5md of trajectory.h5, if written)."""
+    (read_h5md of trajectory.h5, if written), profiles (relcol.field.read_profiles of
+    profiles.csv, a run with "gravity")."""
     out = {"summary": read_summary(folder), "snapshots": read_snapshots(folder)}
     fin = os.path.join(folder, "final.json")
     if os.path.exists(fin):
@@ -111,4 +112,7 @@ def read_run(folder):
     h5 = os.path.join(folder, "trajectory.h5")
     if os.path.exists(h5):
         out["h5md"] = read_h5md(h5)
+    if os.path.exists(os.path.join(folder, "profiles.csv")):
+        from .field import read_profiles
+        out["profiles"] = read_profiles(folder)
     return out

@@ -115,7 +115,26 @@ class Scenario:
             s.pop("outputs", None)
         if "checkpoint" in s and s["checkpoint"] is None:
             del s["checkpoint"]  # (start afresh from the balls)
-        text = json.dumps(_plain(s), allow_nan=False)
+        # the field: checked here by name; along the last axis the reader takes it (its rules,
+        # its messages), along another one it is set on the parsed scenario (the reader's
+        # "gravity" key has the last axis only), with the reader's default frame in a field
+        self.field_axis, field, to_c = None, None, s
+        if s.get("gravity") is not None:
+            from .field import check_gravity
+            dim = s.get("dim")
+            known = isinstance(dim, int) and not isinstance(dim, bool) and dim in (2, 3)
+            grav = s["gravity"] if known else {k: v for k, v in s["gravity"].items()
+                                               if k != "axis"} if isinstance(s["gravity"], dict) else s["gravity"]
+            g, cp, axis = check_gravity(grav, dim if known else 0, name)
+            to_c = dict(s)
+            if axis is None or axis == dim - 1:
+                to_c["gravity"] = {"g": g, "coupling": cp}
+                self.field_axis = axis
+            else:
+                del to_c["gravity"]
+                to_c.setdefault("contact_frame", "sphere")
+                field, self.field_axis = (g, cp), axis
+        text = json.dumps(_plain(to_c), allow_nan=False)
         self.name = name
         # the file whose folder holds the checkpoint it names
         self.file = base if base is not None else os.path.join(os.getcwd(), "scenario.json")
@@ -125,6 +144,24 @@ class Scenario:
             raise ScenarioError(ffi.string(err).decode())
         self.ptr = ffi.gc(self._raw, lib.scn_free)
         self.dict = s
+        if field is not None:
+            self._field_across(name, *field)
+
+    def _field_across(self, name, g, coupling):
+        """The field along an axis other than the last, set on the parsed scenario, with the
+        reader's rules for the field's axis and frame."""
+        p, ax = self.ptr, self.field_axis
+        if p.boundary[ax] != lib.RC_SIM_WALLS:
+            raise ScenarioError("%s: gravity.axis: axis %d is periodic: the field's axis must "
+                                "have walls (its floor and ceiling)" % (name, ax))
+        f = p.frame
+        if f.contracted or f.pointlike or f.per_ball or f.wall_contracted:
+            raise ScenarioError("%s: contact_frame: frame '%s' is not defined in a field (the "
+                                "field takes one-instant uncontracted frames: sphere; "
+                                "papers/gravity.md, model limits)"
+                                % (name, ffi.string(f.name).decode()))
+        p.gravity = lib.rc_gravity_find(coupling.encode())
+        p.g = g
 
     @property
     def t_end(self):

@@ -47,6 +47,8 @@ class Sim:
         self.t_end = self._scn.t_end
         self.box = np.array([p.box.x, p.box.y, p.box.z][:self.dim])
         self._def = ffi.new("rc_sim_def *", lib.scn_sim_def(p))
+        if self._scn.field_axis is not None:
+            self._def.g_axis = self._scn.field_axis
         ptr = ffi.new("rc_sim **")
         check(lib.rc_sim_create(self._def, ptr), "Sim")
         self._sim = ffi.gc(ptr[0], lambda q: lib.rc_sim_free(ffi.new("rc_sim **", q)))
@@ -55,6 +57,30 @@ class Sim:
             raise ScenarioError(ffi.string(err).decode())
         self.t0 = self.time
         self._d0 = self._diag()
+        self._h0 = self._field_total() if self.gravity else None
+
+    @property
+    def gravity(self):
+        """The field as {"g", "coupling", "axis"} (the axis it points against), or None."""
+        d = self._def
+        if d.gravity == ffi.NULL:
+            return None
+        return {"g": float(d.g), "coupling": ffi.string(d.gravity.name).decode(),
+                "axis": self.dim - 1 if d.g_axis < 0 else int(d.g_axis)}
+
+    def _field_total(self):
+        h, booked = self.field_energy()
+        return h - booked, abs(h) if h != 0 else 1.0
+
+    def profile(self, slabs=20):
+        """The gas's profile along the field's axis now (the last axis without a field), in
+        `slabs` slabs of the box's height: a structured numpy array with relcol-sim's
+        profiles.csv columns (relcol.field), from one read of every ball's x, p, v."""
+        from .field import profile
+        grav = self.gravity or {"g": 0.0, "coupling": None, "axis": self.dim - 1}
+        st = self._read(("x", "p", "v"))
+        return profile(st, self.box[grav["axis"]], grav["g"], self.c, grav["coupling"],
+                       grav["axis"], slabs, self.box)
 
     @classmethod
     def load(cls, path, **overrides):
@@ -131,6 +157,8 @@ class Sim:
         self.c = c
         self._def.c = c
         self._scn.ptr.c = c
+        if self._h0:  # (the field's H is a function of c: its reference is taken anew)
+            self._h0 = self._field_total()
         return self
 
     def add(self, balls=None, **ball):
@@ -175,6 +203,10 @@ class Sim:
         t_end: the end written (default the scenario's, or as long again as run so far).
         Both files are written atomically. Returns path."""
         path = os.fspath(path)
+        grav = self.gravity
+        if grav and grav["axis"] != self.dim - 1:
+            raise ValueError("save: the field is along axis %d, and relcol-sim's scenario has "
+                             "it along the last axis only (gravity.axis)" % grav["axis"])
         folder, base = os.path.split(os.path.abspath(path))
         if not base.endswith(".json") or len(base) <= 5:
             raise ValueError("save: %r: the file name must end in .json" % path)
@@ -352,6 +384,9 @@ class Sim:
             "order_conflicts": int(d.order_conflicts - d0.order_conflicts),
             "rollbacks": int(d.rollbacks - d0.rollbacks),
             "model": self._model(),
+            # (a field: the relative change of its conserved H minus what contacts booked)
+            **({"field_energy_error": (self._field_total()[0] - self._h0[0]) / self._h0[1]}
+               if self._h0 else {}),
         }
 
     def _model(self):
