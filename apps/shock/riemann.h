@@ -80,4 +80,24 @@ int rs_rel_sample(const rs_solution *sol, double xi, rs_state *out);
  * v_rel^2 = (pb - pa)(eb - ea) / ((ea + pb)(eb + pa)), e = rho h - p the energy density. */
 int rs_rel_shock(const rs_eos *eos, rs_state a, double pb, double *rhob, double *vrel);
 
+/* ---- c = inf, the dense hard-sphere gas: P = n T Z(phi), phi = n vball, e = 3/2 T ---- */
+typedef struct rs_hs rs_hs;
+struct rs_hs {
+    double (*z)(const rs_hs *g, double phi);  /* the compressibility factor */
+    double (*dz)(const rs_hs *g, double phi); /* its derivative */
+    double (*zm1p)(const rs_hs *g, double phi); /* (Z - 1)/phi without cancellation */
+    double vball;                             /* a ball's volume, (4/3) pi r^3 */
+    double z0;                                /* rs_hs_constz's Z */
+};
+rs_hs rs_hs_kolafa(double vball);          /* Kolafa's Z (apps/eos/eos_theory.h) */
+rs_hs rs_hs_constz(double vball, double z0); /* Z held at z0: the gamma-law, gamma = 1 + 2 z0/3 */
+double rs_hs_cs2(const rs_hs *g, double n, double T); /* T (Z + phi Z' + 2/3 Z^2) */
+typedef struct rs_hs_solution {
+    double p_star, v_star, rho_starL, rho_starR, T_starL, T_starR;
+    int waveL, waveR;
+    double headL, tailL, headR, tailR;
+} rs_hs_solution;
+/* rho is the number density n (m = 1); each side's packing below 0.7 */
+int rs_hs_solve(const rs_hs *g, rs_state L, rs_state R, rs_hs_solution *sol);
+
 #endif

@@ -10,7 +10,7 @@
 #include "sweep.h"
 
 /* per c and bin: n, v, p measured and their errors, then _rel and _sod */
-enum { PQ = 12 };
+enum { PQ = 12, SWEEP_MAX = 64 };
 static const int meas_q[3] = {SH_N, SH_V, SH_P};
 
 typedef struct row {
@@ -70,6 +70,80 @@ static int write_profiles(const char *dir, const double *cs, int n, int nb, cons
                 fprintf(a.f, ",%.10g", prof[((size_t)k * nb + b) * PQ + q]);
             fputc('\n', a.f);
         }
+    return app_atomic_commit(&a, err);
+}
+
+/* The fitted order of the balls' approach to their own c = inf value (issue 40 item 4):
+ * the weighted least-squares slope of ln|q(c)/q(inf) - 1| on ln c over the finite c whose
+ * deviation exceeds three of its errors (the two runs' seed errors in quadrature), its
+ * error from those; beside it the exact relativistic solution's slope over the same c (the
+ * local order falls below 2 as v/c grows, so -2 is the reference only at large c). */
+typedef struct order {
+    double slope, err, exact;
+    int used;
+} order;
+
+static order fit_order(const row *rw, int n, int q)
+{
+    order o = {NAN, NAN, NAN, 0};
+    int k0 = -1;
+    for (int k = 0; k < n; k++)
+        if (isinf(rw[k].c))
+            k0 = k;
+    if (k0 < 0)
+        return o;
+    double sw = 0, sx = 0, sy = 0, sxx = 0, sxy = 0, ex[SWEEP_MAX], ey[SWEEP_MAX];
+    const double x0 = q == 0 ? rw[k0].p : q == 1 ? rw[k0].v : rw[k0].s;
+    const double e0 = q == 0 ? rw[k0].pe : q == 1 ? rw[k0].ve : rw[k0].se;
+    const double r0 = q == 0 ? rw[k0].rel.p_star : q == 1 ? rw[k0].rel.v_star : rw[k0].rel.headR;
+    for (int k = 0; k < n; k++) {
+        if (isinf(rw[k].c))
+            continue;
+        const double x = q == 0 ? rw[k].p : q == 1 ? rw[k].v : rw[k].s;
+        const double e = q == 0 ? rw[k].pe : q == 1 ? rw[k].ve : rw[k].se;
+        const double rr = q == 0 ? rw[k].rel.p_star : q == 1 ? rw[k].rel.v_star : rw[k].rel.headR;
+        const double r = x / x0, dev = r - 1.0, er = fabs(r) * hypot(e / x, e0 / x0);
+        if (!(fabs(dev) > 3.0 * er) || !(er > 0.0))
+            continue;
+        const double lx = log(rw[k].c), ly = log(fabs(dev)), sg = er / fabs(dev), w = 1.0 / (sg * sg);
+        sw += w, sx += w * lx, sy += w * ly, sxx += w * lx * lx, sxy += w * lx * ly;
+        ex[o.used] = lx, ey[o.used] = log(fabs(rr / r0 - 1.0));
+        o.used++;
+    }
+    if (o.used < 2)
+        return o;
+    const double d = sw * sxx - sx * sx;
+    o.slope = (sw * sxy - sx * sy) / d;
+    o.err = sqrt(sw / d);
+    double mx = 0, my = 0, cxx = 0, cxy = 0;
+    for (int i = 0; i < o.used; i++)
+        mx += ex[i] / o.used, my += ey[i] / o.used;
+    for (int i = 0; i < o.used; i++)
+        cxx += (ex[i] - mx) * (ex[i] - mx), cxy += (ex[i] - mx) * (ey[i] - my);
+    o.exact = cxy / cxx;
+    return o;
+}
+
+static void jnum(FILE *f, double x) { isfinite(x) ? fprintf(f, "%.6g", x) : fputs("null", f); }
+
+static int write_summary(const char *dir, const row *rw, int n, char *err)
+{
+    app_atomic a;
+    if (open_out(dir, "summary.json", &a, err))
+        return -1;
+    static const char *const qn[3] = {"p_star", "v_star", "shock"};
+    fprintf(a.f, "{\n  \"relcol\": 1, \"program\": \"relcol-shock --sweep-c\",\n  \"order\": {\n");
+    for (int q = 0; q < 3; q++) {
+        const order o = fit_order(rw, n, q);
+        fprintf(a.f, "    \"%s\": {\"slope\": ", qn[q]);
+        jnum(a.f, o.slope);
+        fputs(", \"err\": ", a.f);
+        jnum(a.f, o.err);
+        fputs(", \"exact_slope_same_c\": ", a.f);
+        jnum(a.f, o.exact);
+        fprintf(a.f, ", \"points\": %d}%s\n", o.used, q < 2 ? "," : "");
+    }
+    fprintf(a.f, "  }\n}\n");
     return app_atomic_commit(&a, err);
 }
 
@@ -171,12 +245,12 @@ int sh_sweep(const char *prog, const sh_opts *o, const double *cs, int n, const 
         }
     }
     int made = 0;
-    if (!st && (write_rows(dir, o, rw, n, &sod, err) || write_profiles(dir, cs, n, nb, xc, prof, err) ||
+    if (!st && (write_rows(dir, o, rw, n, &sod, err) || write_summary(dir, rw, n, err) || write_profiles(dir, cs, n, nb, xc, prof, err) ||
                 write_gp(dir, o, cs, n, err) ||
                 app_gnuplot_run(prog, dir, "sweep.gp", "sweep.png", &made, err)))
         st = -1;
     if (!st && verbose)
-        printf("wrote %s/sweep.csv, sweep_profiles.csv, sweep.gp%s\n", dir, made ? ", sweep.png" : "");
+        printf("wrote %s/sweep.csv, summary.json, sweep_profiles.csv, sweep.gp%s\n", dir, made ? ", sweep.png" : "");
     free(rw), free(prof), free(xc);
     return st;
 }

@@ -6,7 +6,8 @@
 
 #include "shock_run.h"
 
-/* Runs o at each of cs[0..n-1] (o->tube.c ignored), writes dir/sweep.csv,
+/* Runs o at each of cs[0..n-1] (o->tube.c ignored), writes dir/sweep.csv, summary.json
+ * (the fitted order of approach, with inf in cs),
  * sweep_profiles.csv, sweep.gp (and sweep.png with gnuplot). 0, or -1 with err. */
 int sh_sweep(const char *prog, const sh_opts *o, const double *cs, int n, const char *dir,
              int verbose, char *err);

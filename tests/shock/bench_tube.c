@@ -28,16 +28,21 @@ static uint64_t ball_collisions(const rc_sim *s)
     return dg.events[RC_SIM_EV_BALL] + dg.events[RC_SIM_EV_MULTI];
 }
 
-/* advance until t_end or `until` collisions (0: no bound); CPU and wall seconds */
+/* advance until t_end or `until` collisions (0: no bound); CPU and wall seconds. The
+ * chunk grows with N and the collisions are read once a chunk: rc_sim_diagnostics scans
+ * every ball (its overlap check), which at 20 000 events a chunk and two reads was 10 % of
+ * a 25 000-ball run's profile */
 static int run(rc_sim *s, double t_end, uint64_t until, double *cpu, double *wall)
 {
     const double c0 = now(CLOCK_PROCESS_CPUTIME_ID), w0 = now(CLOCK_MONOTONIC);
+    const size_t chunk = 20000 + 20 * rc_sim_count(s);
     int st = RC_OK;
-    while (st == RC_OK && (until ? ball_collisions(s) < until : 1)) {
-        st = rc_sim_advance(s, t_end, 20000);
+    for (;;) {
+        st = rc_sim_advance(s, t_end, chunk);
         rc_sim_diag dg;
         rc_sim_diagnostics(s, &dg);
-        if (st == RC_OK && !until && dg.time >= t_end)
+        if (st != RC_OK || (until ? dg.events[RC_SIM_EV_BALL] + dg.events[RC_SIM_EV_MULTI] >= until
+                                  : dg.time >= t_end))
             break;
     }
     *cpu = now(CLOCK_PROCESS_CPUTIME_ID) - c0, *wall = now(CLOCK_MONOTONIC) - w0;

@@ -26,7 +26,7 @@ expect 2 "\-\-v-left: |v| = 1 must be < c" --sweep-c inf,1 --v-left 1
 "$app" --out "$dir/s" --sweep-c inf,3,1.5 --seeds 4 --length 1000 --width 12 \
     --n-left 0.016 --n-right 0.008 --times 100,200 --bins 40 --quiet 2>"$dir/s.err" ||
     fail "the sweep: $(cat "$dir/s.err")"
-for f in sweep.csv sweep_profiles.csv sweep.gp; do
+for f in sweep.csv summary.json sweep_profiles.csv sweep.gp; do
     [ -s "$dir/s/$f" ] || fail "no $f"
 done
 [ "$(wc -l < "$dir/s/sweep.csv")" -eq 4 ] || fail "sweep.csv rows"
@@ -48,6 +48,22 @@ if out=$(judge 2 3); then
     [ "$(echo "$out" | tail -1)" -ge 3 ] || fail "only $out comparisons beyond the errors"
 else
     fail "$out"
+fi
+# the fitted order of v* (summary.json) against the same weighted least squares done here
+# from sweep.csv: ln|v(c)/v(inf) - 1| on ln c over the c beyond three errors
+fit=$(awk -F, 'NR > 1 && $1 == "inf" { v0 = $10; e0 = $11 }
+    NR > 1 && $1 != "inf" { c[++k] = $1; v[k] = $10; e[k] = $11 }
+    END { for (i = 1; i <= k; i++) { r = v[i] / v0; d = r - 1; er = r * sqrt((e[i] / v[i])^2 + (e0 / v0)^2)
+            if (d < 0) d = -d; if (!(d > 3 * er)) continue
+            x = log(c[i]); y = log(d); w = (d / er)^2; n++
+            sw += w; sx += w * x; sy += w * y; sxx += w * x * x; sxy += w * x * y }
+          if (n < 2) print "none"; else printf "%.5g\n", (sw * sxy - sx * sy) / (sw * sxx - sx * sx) }' "$dir/s/sweep.csv")
+got=$(sed -n 's/.*"v_star": {"slope": \([^,]*\),.*/\1/p' "$dir/s/summary.json")
+if [ "$fit" = none ]; then
+    [ "$got" = null ] || fail "v* order $got where no two c are beyond the errors"
+else
+    awk -v a="$got" -v b="$fit" 'BEGIN { d = a - b; exit !(d < 1e-3 && d > -1e-3) }' ||
+        fail "v* order: summary.json $got, sweep.csv's fit $fit"
 fi
 judge 3 2 > /dev/null && fail "the control (references swapped) passed"
 echo "$fails failed"
