@@ -21,7 +21,8 @@ from .kinematics import gamma, inv_c2, kinetic_energy, mass_rel, momentum, veloc
 from .laws import Collision, Law, collide, laws
 from .toi import Contact, Frame, frames, toi
 from .soft import SoftResult, soft_collide, steppers
-from .scenario import ScenarioError, load_scenario
+from .errors import ScenarioError
+from .scenario import load_scenario
 from .sim import Sim
 from .outputs import read_h5md, read_run, read_snapshot, read_snapshots, read_summary
 from .gas import Gas1D, gas_init

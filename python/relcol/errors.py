@@ -62,3 +62,14 @@ def check_field(code, context=None, index=None, field=None):
 def shape_error(func, name, got, want):
     """ValueError naming the argument whose array has the wrong shape."""
     return ValueError("%s: %s: has shape %s, expected %s" % (func, name, tuple(got), want))
+
+
+class ScenarioError(ValueError):
+    """A scenario the reader refuses: the message is relcol-sim's, "NAME: PATH: reason";
+    path is the JSON path of the wrong value ("balls[3].v"), reason the rest."""
+
+    def __init__(self, message):
+        super().__init__(message)
+        parts = message.split(": ", 2)
+        self.path = parts[1] if len(parts) == 3 else None
+        self.reason = parts[-1]

@@ -19,6 +19,7 @@ import re
 import numpy as np
 
 from ._relcol import ffi, lib
+from .errors import ScenarioError
 
 
 def couplings():
@@ -31,7 +32,6 @@ def couplings():
 
 
 def _err(name, where, reason):
-    from .scenario import ScenarioError
     return ScenarioError("%s: %s: %s" % (name, where, reason))
 
 

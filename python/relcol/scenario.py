@@ -12,17 +12,7 @@ import sys
 import numpy as np
 
 from ._relcol import ffi, lib
-
-
-class ScenarioError(ValueError):
-    """A scenario the reader refuses: the message is relcol-sim's, "NAME: PATH: reason";
-    path is the JSON path of the wrong value ("balls[3].v"), reason the rest."""
-
-    def __init__(self, message):
-        super().__init__(message)
-        parts = message.split(": ", 2)
-        self.path = parts[1] if len(parts) == 3 else None
-        self.reason = parts[-1]
+from .errors import ScenarioError
 
 
 def load_scenario(source):
