@@ -301,6 +301,8 @@ typedef struct app_atomic {
     char *tmp;
 } app_atomic;
 int app_atomic_open(app_atomic *a, const char *path, char *err);
+/* app_atomic_open of DIR/NAME */
+int app_atomic_open_in(app_atomic *a, const char *dir, const char *name, char *err);
 int app_atomic_commit(app_atomic *a, char *err);
 void app_atomic_abort(app_atomic *a);
 

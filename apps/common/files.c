@@ -231,3 +231,15 @@ int app_atomic_commit(app_atomic *a, char *err)
     app_atomic_abort(a); /* frees path; tmp is gone, so nothing is unlinked */
     return 0;
 }
+
+int app_atomic_open_in(app_atomic *a, const char *dir, const char *name, char *err)
+{
+    char *path = app_path_join(dir, name);
+    if (!path) {
+        app_errf(err, "out of memory");
+        return -1;
+    }
+    int rc = app_atomic_open(a, path, err);
+    free(path);
+    return rc;
+}

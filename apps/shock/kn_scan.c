@@ -19,18 +19,6 @@ typedef struct row {
     sh_dist fl, fr;
 } row;
 
-static int open_out(const char *dir, const char *name, app_atomic *a, char *err)
-{
-    char *path = app_path_join(dir, name);
-    if (!path) {
-        app_errf(err, "out of memory");
-        return -1;
-    }
-    int rc = app_atomic_open(a, path, err);
-    free(path);
-    return rc;
-}
-
 int sh_kn_radius(const sh_tube *t, double tread, double kn, double *r, double *packing, char *err)
 {
     const rs_eos eos = isinf(t->c) ? rs_eos_ideal(1.0 + 2.0 / t->dim) : rs_eos_synge(t->dim);
@@ -91,7 +79,7 @@ static void cfmt(double c, char *buf, size_t len)
 static int write_rows(const char *dir, const sh_opts *o, const row *rw, int n, char *err)
 {
     app_atomic a;
-    if (open_out(dir, "kn_scan.csv", &a, err))
+    if (app_atomic_open_in(&a, dir, "kn_scan.csv", err))
         return -1;
     fprintf(a.f, "kn,radius,packing,balls,seeds,collisions_per_ball,t,bins,d_fluid,d_fluid_err,"
                  "d_free,d_free_err,dn_fluid,dv_fluid,dp_fluid,dn_free,dv_free,dp_free\n");
@@ -110,7 +98,7 @@ static int write_profiles(const char *dir, const row *rw, int n, int nb, const d
                           const double *prof, char *err)
 {
     app_atomic a;
-    if (open_out(dir, "kn_scan_profiles.csv", &a, err))
+    if (app_atomic_open_in(&a, dir, "kn_scan_profiles.csv", err))
         return -1;
     fprintf(a.f, "k,kn,x,n,n_err,v,v_err,p,p_err,n_fluid,v_fluid,p_fluid,n_free,v_free,p_free\n");
     for (int k = 0; k < n; k++)
@@ -136,7 +124,7 @@ static int write_json(const char *dir, const sh_opts *o, const row *rw, int n, d
 {
     const sh_tube *t = &o->tube;
     app_atomic a;
-    if (open_out(dir, "kn_scan.json", &a, err))
+    if (app_atomic_open_in(&a, dir, "kn_scan.json", err))
         return -1;
     FILE *f = a.f;
     fprintf(f, "{\n  \"relcol\": 1, \"program\": \"relcol-shock --kn-scan\",\n  \"parameters\": {");
@@ -177,7 +165,7 @@ static void state_txt(const sh_opts *o, size_t balls, char *buf, size_t len)
 static int write_gp(const char *dir, const sh_opts *o, const row *rw, int n, double kx, char *err)
 {
     app_atomic a;
-    if (open_out(dir, "kn_scan.gp", &a, err))
+    if (app_atomic_open_in(&a, dir, "kn_scan.gp", err))
         return -1;
     FILE *f = a.f;
     char st[256];
@@ -216,7 +204,7 @@ static int shown(int n, int *idx)
 static int write_gp_profiles(const char *dir, const sh_opts *o, const row *rw, int n, char *err)
 {
     app_atomic a;
-    if (open_out(dir, "kn_scan_profiles.gp", &a, err))
+    if (app_atomic_open_in(&a, dir, "kn_scan_profiles.gp", err))
         return -1;
     FILE *f = a.f;
     int idx[SH_KN_SHOWN];

@@ -251,23 +251,10 @@ static int check(void *vc)
 static const app_cli shock_cli = {.prog = "relcol-shock", .tab = opts, .usage = usage,
                                   .stray_hint = "see --help", .bad = EXIT_BAD, .check = check};
 
-/* dir/name opened for an atomic write */
-static int open_out(const char *dir, const char *name, app_atomic *a, char *err)
-{
-    char *path = app_path_join(dir, name);
-    if (!path) {
-        app_errf(err, "out of memory");
-        return -1;
-    }
-    int rc = app_atomic_open(a, path, err);
-    free(path);
-    return rc;
-}
-
 static int write_csv(const char *dir, const sh_opts *o, const sh_result *r, char *err)
 {
     app_atomic a;
-    if (open_out(dir, "profiles.csv", &a, err))
+    if (app_atomic_open_in(&a, dir, "profiles.csv", err))
         return -1;
     fprintf(a.f, "t,x,xi");
     for (int q = 0; q < SH_NQ; q++)
@@ -318,7 +305,7 @@ static int write_summary(const char *dir, const cli *c, const sh_result *r, char
     const sh_opts *o = &c->o;
     const sh_tube *t = &o->tube;
     app_atomic a;
-    if (open_out(dir, "summary.json", &a, err))
+    if (app_atomic_open_in(&a, dir, "summary.json", err))
         return -1;
     FILE *f = a.f;
     fprintf(f, "{\n  \"relcol\": 1, \"program\": \"%s\",\n  \"parameters\": {", prog);
@@ -404,7 +391,7 @@ static int col_free(int q) { return 4 + 3 * SH_NQ + q; }
 static int write_gp(const char *dir, const sh_opts *o, char *err)
 {
     app_atomic a;
-    if (open_out(dir, "shock.gp", &a, err))
+    if (app_atomic_open_in(&a, dir, "shock.gp", err))
         return -1;
     FILE *f = a.f;
     app_gnuplot_head(f, "shock.png", "size 1500,900 enhanced font 'Sans,11' linewidth 1.3", 0);

@@ -20,25 +20,13 @@ typedef struct row {
     rs_solution rel;
 } row;
 
-static int open_out(const char *dir, const char *name, app_atomic *a, char *err)
-{
-    char *path = app_path_join(dir, name);
-    if (!path) {
-        app_errf(err, "out of memory");
-        return -1;
-    }
-    int rc = app_atomic_open(a, path, err);
-    free(path);
-    return rc;
-}
-
 static void cnum(FILE *f, double x) { isinf(x) ? fputs("inf", f) : fprintf(f, "%.10g", x); }
 
 static int write_rows(const char *dir, const sh_opts *o, const row *rw, int n,
                       const rs_solution *sod, char *err)
 {
     app_atomic a;
-    if (open_out(dir, "sweep.csv", &a, err))
+    if (app_atomic_open_in(&a, dir, "sweep.csv", err))
         return -1;
     fprintf(a.f, "c,balls,collisions,t,kn,p,p_err,p_rel,p_sod,v,v_err,v_rel,v_sod,"
                  "shock,shock_err,shock_rel,shock_sod\n");
@@ -58,7 +46,7 @@ static int write_profiles(const char *dir, const double *cs, int n, int nb, cons
                           const double *prof, char *err)
 {
     app_atomic a;
-    if (open_out(dir, "sweep_profiles.csv", &a, err))
+    if (app_atomic_open_in(&a, dir, "sweep_profiles.csv", err))
         return -1;
     fprintf(a.f, "k,c,x,n,n_err,v,v_err,p,p_err,n_rel,v_rel,p_rel,n_sod,v_sod,p_sod\n");
     for (int k = 0; k < n; k++)
@@ -129,7 +117,7 @@ static void jnum(FILE *f, double x) { isfinite(x) ? fprintf(f, "%.6g", x) : fput
 static int write_summary(const char *dir, const row *rw, int n, char *err)
 {
     app_atomic a;
-    if (open_out(dir, "summary.json", &a, err))
+    if (app_atomic_open_in(&a, dir, "summary.json", err))
         return -1;
     static const char *const qn[3] = {"p_star", "v_star", "shock"};
     fprintf(a.f, "{\n  \"relcol\": 1, \"program\": \"relcol-shock --sweep-c\",\n  \"order\": {\n");
@@ -152,7 +140,7 @@ static int write_summary(const char *dir, const row *rw, int n, char *err)
 static int write_gp(const char *dir, const sh_opts *o, const double *cs, int n, char *err)
 {
     app_atomic a;
-    if (open_out(dir, "sweep.gp", &a, err))
+    if (app_atomic_open_in(&a, dir, "sweep.gp", err))
         return -1;
     FILE *f = a.f;
     char term[96];
