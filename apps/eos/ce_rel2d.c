@@ -1,8 +1,8 @@
 /* ce_rel2d.c — Chapman–Enskog eta, lambda, zeta of the 2-D invariant Boltzmann gas, on
  * Laguerre trial functions in the kinetic energy; the collision brackets by Gauss quadrature
  * over the pair's invariant mass and boost and by harmonics on the CM circle, where the
- * angular law enters only through its cosine moments gamma_k (papers/transport.md,
- * section 13, has the derivation and the checks). */
+ * angular law enters only through its cosine moments gamma_k;
+ * papers/transport-2d.md has the derivation and the checks. */
 #include "ce_rel2d.h"
 
 #include <math.h>
@@ -317,7 +317,7 @@ int ce_rel2d_compute(double z, int order, ce_rel2d_law law, const ce_rel2d_quad 
         one_minus_gamma[k - 1] = 1.0 - c2_laws[law].gamma(k);
 
     /* [psi_i, psi_j] = (1/4) int d^3P e^-(P0 - 2m) p* / Z^2 . 2 pi sum_k (1 - gamma_k)
-     * (C_k C'_k + S_k S'_k), d^3P = 2 pi sqrt(s) du dw (papers/transport.md, section 13) */
+     * (C_k C'_k + S_k S'_k), d^3P = 2 pi sqrt(s) du dw (papers/transport-2d.md) */
     double A[C2_NSET][CE_REL2D_MAX_ORDER][CE_REL2D_MAX_ORDER] = {{{0}}};
     const double *xu = gsl_integration_fixed_nodes(gu), *wu = gsl_integration_fixed_weights(gu);
     const double *xw = gsl_integration_fixed_nodes(gw), *ww = gsl_integration_fixed_weights(gw);

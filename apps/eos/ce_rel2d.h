@@ -1,7 +1,7 @@
 /* ce_rel2d.h — Chapman–Enskog shear viscosity, heat conductivity and bulk viscosity of the
  * dilute relativistic gas in two space dimensions (2+1), invariant Boltzmann equation
  * (Møller flux), by deterministic quadrature (GSL): the 2-D counterpart of ce_rel.h.
- * papers/transport.md, section 13. The angular law in the pair's CM frame is a table
+ * papers/transport-2d.md. The angular law in the pair's CM frame is a table
  * entry: isotropic (constant differential cross-section per angle) or the hard-disc law
  * (uniform impact parameter, (sigma/2)|sin(chi/2)|) — in 3-D the two coincide, in 2-D
  * they do not. Units: kT = c = 1 and sigma_T (the total cross-section, a length; 2 sigma
@@ -26,7 +26,8 @@ typedef struct {
     int n_u, n_w, n_ang;
 } ce_rel2d_quad;
 
-/* The defaults: every figure of section 13 is converged in them (the test doubles them). */
+/* The defaults: every figure of papers/transport-2d.md is converged in them (the test
+ * doubles them). */
 ce_rel2d_quad ce_rel2d_quad_default(void);
 
 /* The law's name ("isotropic", "hard-disc"), or NULL for an unknown law. */

@@ -1,7 +1,7 @@
 /* test_ce_rel2d — the 2-D invariant-Boltzmann Chapman–Enskog references
  * (apps/eos/ce_rel2d.c) against closed forms derived by hand, an independent classical
  * quadrature of the Sonine brackets and an independent Monte Carlo of the relativistic
- * first approximation (papers/transport.md, section 13). Units kT = c = sigma_T = 1,
+ * first approximation (papers/transport-2d.md). Units kT = c = sigma_T = 1,
  * z = m c^2 / kT; discs of diameter sigma have sigma_T = 2 sigma. */
 #include <math.h>
 #include <stdio.h>
@@ -64,7 +64,7 @@ static void test_juttner_moments(void)
     }
 }
 
-/* Massless first approximation, derived by hand in section 13 (only the k = 2 harmonic
+/* Massless first approximation, derived by hand in papers/transport-2d.md (only the k = 2 harmonic
  * on the CM circle): eta_1 = 12/(11 (1 - gamma_2)), lambda_1 = 12/(5 (1 - gamma_2)),
  * gamma_2 = 0 isotropic, -1/15 hard-disc law. Then convergence with the order; zeta = 0. */
 static void test_massless(void)
@@ -80,7 +80,7 @@ static void test_massless(void)
                         i16 = at(0.0, 16, CE_REL2D_ISOTROPIC);
     ENSURE(i16.eta > i12.eta && i16.eta - i12.eta < 1e-5 && i12.eta - i8.eta < 1e-4);
     ENSURE(i16.lambda > i12.lambda && i16.lambda - i12.lambda < 0.5 * (i12.lambda - i8.lambda));
-    ENSURE(i16.eta > 1.138 && i16.eta < 1.1381); /* section 13's table: 1.13808 */
+    ENSURE(i16.eta > 1.138 && i16.eta < 1.1381); /* papers/transport-2d.md's table: 1.13808 */
     /* the massless limit is continuous: z = 1e-4 within 1e-5 of z = 0 */
     ENSURE_REL(at(1e-4, 3, CE_REL2D_ISOTROPIC).eta, at(0.0, 3, CE_REL2D_ISOTROPIC).eta, 1e-5);
 }
@@ -193,9 +193,9 @@ static double classical(int s, int N, int disc)
 }
 
 /* Classical (z = 1e6; the relativistic corrections are +1.06/z for eta, +0.31/z for
- * lambda, -9.9/z for zeta, section 13): the hard-disc law gives the hard-disc values
+ * lambda, -9.9/z for zeta, papers/transport-2d.md): the hard-disc law gives the hard-disc values
  * eta_1 = (1/(2 sigma)) sqrt(m kT/pi) and lambda_1 = (2k/sigma) sqrt(kT/(pi m)) with
- * sigma = sigma_T/2, and zeta_1 = (2/sqrt pi) z^-3/2 (derived in section 13); the
+ * sigma = sigma_T/2, and zeta_1 = (2/sqrt pi) z^-3/2 (derived in papers/transport-2d.md); the
  * isotropic law 16/15 of them. Orders 2-4 against the independent classical quadrature. */
 static void test_classical(void)
 {
