@@ -349,15 +349,18 @@ int main(int argc, char **argv)
             break;
         }
     }
-    if (interrupted || rc) /* the bar stays where the run stopped */
+    /* read once: a SIGINT landing between the reads (final.json written as finished, the exit
+     * saying interrupted) made a continuation run on past t_end; a run that reached t_end is done */
+    const int stopped = interrupted && rc_sim_time(sim) < s.t_end;
+    if (stopped || rc) /* the bar stays where the run stopped */
         app_progress_stop(&bar);
     else
         app_progress_done(&bar);
     double wall = now() - wall0;
-    if (interrupted && !rc)
+    if (stopped && !rc)
         fprintf(stderr, "%s: interrupted at t = %.17g: writing the restart state\n", prog,
                 rc_sim_time(sim));
-    if (simout_close(&o, sim, wall, interrupted, err)) {
+    if (simout_close(&o, sim, wall, stopped, err)) {
         if (!rc)
             rc = fail(1, "%s", err);
         else
@@ -373,5 +376,5 @@ int main(int argc, char **argv)
     }
     rc_sim_free(&sim);
     scn_free(&s);
-    return rc ? rc : (interrupted ? 130 : 0);
+    return rc ? rc : (stopped ? 130 : 0);
 }
